@@ -1,0 +1,237 @@
+#include "cliarguments.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+namespace pkm::cli {
+
+namespace {
+
+enum OptionFlag : unsigned {
+    OptionJson = 1u << 0,
+    OptionCsv = 1u << 1,
+    OptionSet = 1u << 2,
+    OptionSweep = 1u << 3, ///< --var, --from, --to, --steps
+    OptionDesign = 1u << 4, ///< takes a DESIGN argument
+};
+
+struct CommandSpec {
+    Command command;
+    std::string_view name;
+    unsigned options;
+};
+
+constexpr std::array<CommandSpec, 4> commandSpecs = {{
+    {Command::List, "list", OptionJson},
+    {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
+    {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet},
+    {Command::Sweep, "sweep", OptionDesign | OptionJson | OptionCsv | OptionSet | OptionSweep},
+}};
+
+const CommandSpec *findCommand(std::string_view name)
+{
+    for (const CommandSpec &spec : commandSpecs) {
+        if (spec.name == name)
+            return &spec;
+    }
+    return nullptr;
+}
+
+/// The flag of an option ("--json"), 0 for an unknown one.
+unsigned optionFlag(std::string_view option)
+{
+    if (option == "--json")
+        return OptionJson;
+    if (option == "--csv")
+        return OptionCsv;
+    if (option == "--set")
+        return OptionSet;
+    if (option == "--var" || option == "--from" || option == "--to" || option == "--steps")
+        return OptionSweep;
+    return 0;
+}
+
+/// Locale-independent: std::from_chars reads '.' as the decimal separator whatever LC_NUMERIC
+/// says. The whole text must be a finite number ("5mm", "nan" and "1e999" are refused).
+std::optional<double> parseNumber(std::string_view text)
+{
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+        text.remove_prefix(1);
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
+        text.remove_suffix(1);
+    if (text.size() > 1 && text.front() == '+' && text[1] != '-')
+        text.remove_prefix(1);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        return std::nullopt;
+    return value;
+}
+
+Failure notANumber(const std::string &context, const std::string &culprit, std::string_view text)
+{
+    std::string message = context + ": '" + std::string(text) + "' is not a number";
+    if (text.find(',') != std::string_view::npos)
+        message += " (use '.' as the decimal separator)";
+    return usageFailure(culprit, message + ".");
+}
+
+bool isHelp(const std::string &argument)
+{
+    return argument == "-h" || argument == "--help";
+}
+
+} // namespace
+
+std::string_view commandName(Command command)
+{
+    for (const CommandSpec &spec : commandSpecs) {
+        if (spec.command == command)
+            return spec.name;
+    }
+    return {};
+}
+
+Failure usageFailure(std::string culprit, std::string message)
+{
+    return Failure {FailureKind::InvalidParameter, std::move(culprit), std::move(message)};
+}
+
+Failure inContext(Failure failure, const std::string &context)
+{
+    failure.message = context + ": " + failure.message;
+    return failure;
+}
+
+Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
+{
+    Invocation invocation;
+    if (arguments.empty())
+        return usageFailure({}, "No command given: try 'pkm --help'.");
+
+    const std::string &first = arguments.front();
+    if (isHelp(first) || first == "help") {
+        invocation.help = true;
+        if (first == "help" && arguments.size() > 1) {
+            const CommandSpec *spec = findCommand(arguments[1]);
+            if (!spec)
+                return usageFailure(arguments[1], "Unknown command '" + arguments[1] + "': try 'pkm --help'.");
+            invocation.command = spec->command;
+        }
+        return invocation;
+    }
+    if (first == "--version" || first == "-V") {
+        invocation.version = true;
+        return invocation;
+    }
+    if (first.starts_with('-'))
+        return usageFailure(first, "Unknown option '" + first + "' before the command: try 'pkm --help'.");
+    const CommandSpec *spec = findCommand(first);
+    if (!spec)
+        return usageFailure(first, "Unknown command '" + first + "': try 'pkm --help'.");
+    const CommandSpec &command = *spec;
+    invocation.command = command.command;
+    // Help wins over any other mistake on the line, even after "--".
+    if (std::any_of(arguments.begin() + 1, arguments.end(), isHelp)) {
+        invocation.help = true;
+        return invocation;
+    }
+
+    const std::string quotedCommand = "'pkm " + std::string(command.name) + "'";
+    const std::string seeHelp = " (see 'pkm " + std::string(command.name) + " --help')";
+    bool optionsEnded = false;
+    for (std::size_t i = 1; i < arguments.size(); ++i) {
+        const std::string &argument = arguments[i];
+        if (optionsEnded || !argument.starts_with('-') || argument == "-") {
+            if (!(command.options & OptionDesign) || invocation.design)
+                return usageFailure(argument, "Unexpected argument '" + argument + "'" + seeHelp + ".");
+            invocation.design = argument;
+            continue;
+        }
+        if (argument == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        std::string option = argument;
+        std::optional<std::string> inlineValue;
+        if (const auto equals = argument.find('='); argument.starts_with("--") && equals != std::string::npos) {
+            option = argument.substr(0, equals);
+            inlineValue = argument.substr(equals + 1);
+        }
+        const unsigned flag = optionFlag(option);
+        if (!(flag & command.options)) {
+            return usageFailure(option, "'" + option + "' is not an option of " + quotedCommand + seeHelp + ".");
+        }
+        if (flag == OptionJson || flag == OptionCsv) {
+            if (inlineValue)
+                return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
+            (flag == OptionJson ? invocation.json : invocation.csv) = true;
+            continue;
+        }
+        // The remaining options take a value, which may look like a negative number.
+        std::string value;
+        if (inlineValue) {
+            value = *inlineValue;
+        } else if (i + 1 < arguments.size()) {
+            value = arguments[++i];
+        } else {
+            return usageFailure(option, "'" + option + "' needs a value" + seeHelp + ".");
+        }
+        const std::string context = option + " " + value;
+        if (option == "--set") {
+            const auto equals = value.find('=');
+            if (equals == std::string::npos || equals == 0)
+                return usageFailure(value, "--set needs NAME=VALUE, not '" + value + "'" + seeHelp + ".");
+            const std::string name = value.substr(0, equals);
+            const std::string_view number = std::string_view(value).substr(equals + 1);
+            const auto parsed = parseNumber(number);
+            if (!parsed)
+                return notANumber(context, name, number);
+            invocation.sets.push_back({value, name, *parsed});
+        } else if (option == "--var") {
+            invocation.var = value;
+        } else if (option == "--steps") {
+            const auto number = parseNumber(value);
+            // 10^9 rows are ~300 GB of CSV: far beyond any use, and it bounds the memory for
+            // the chunk start poses.
+            if (!number || *number < 1 || *number > 1e9 || *number != std::floor(*number)) {
+                return usageFailure("--steps",
+                    context
+                        + ": the number of steps must be a whole number from 1 to "
+                          "1000000000.");
+            }
+            invocation.steps = static_cast<std::int64_t>(*number);
+        } else {
+            const auto number = parseNumber(value);
+            if (!number)
+                return notANumber(context, option, value);
+            (option == "--from" ? invocation.from : invocation.to) = *number;
+        }
+    }
+
+    if ((command.options & OptionDesign) && !invocation.design) {
+        return usageFailure("DESIGN",
+            quotedCommand + " needs a DESIGN: a preset id (see 'pkm list') or a .pkm.json file" + seeHelp + ".");
+    }
+    if (invocation.json && invocation.csv)
+        return usageFailure("--csv", "--csv and --json exclude each other: give one.");
+    if (command.options & OptionSweep) {
+        const auto missing = [&](const char *option, const char *what) {
+            return usageFailure(option, quotedCommand + " needs " + option + " " + what + seeHelp + ".");
+        };
+        if (!invocation.var)
+            return missing("--var", "NAME (a pose variable or a parameter)");
+        if (!invocation.from)
+            return missing("--from", "A (the first value)");
+        if (!invocation.to)
+            return missing("--to", "B (the last value)");
+        if (!invocation.steps)
+            return missing("--steps", "K (the number of rows)");
+    }
+    return invocation;
+}
+
+} // namespace pkm::cli

@@ -1,0 +1,126 @@
+#include "clidesign.h"
+
+#include <QString>
+
+#include <optional>
+
+namespace pkm::cli {
+
+namespace {
+
+QList<QPair<QString, double>> displayValues(const std::vector<Setting> &settings)
+{
+    QList<QPair<QString, double>> values;
+    for (const Setting &setting : settings)
+        values.append({QString::fromStdString(setting.name), setting.value});
+    return values;
+}
+
+/// Refuses --set values that mix actuated inputs and outputs: the pose would be overdetermined.
+std::optional<Failure> mixedPoseSets(const Mechanism &mechanism, const std::vector<Setting> &poseSets)
+{
+    const Setting *input = nullptr;
+    const Setting *output = nullptr;
+    for (const Setting &setting : poseSets) {
+        const auto index = static_cast<std::size_t>(mechanism.variableIndex(setting.name));
+        const Setting *&first = mechanism.variableInfo()[index].actuated ? input : output;
+        if (!first)
+            first = &setting;
+    }
+    if (!input || !output)
+        return std::nullopt;
+    return usageFailure(output->name,
+        "--set " + input->text + " and --set " + output->text
+            + " mix an actuated input and an output: give the inputs (direct "
+              "kinematics) or the outputs (inverse kinematics), not both.");
+}
+
+} // namespace
+
+const ParameterInfo *findParameter(const Mechanism &mechanism, std::string_view name)
+{
+    for (const ParameterInfo &info : mechanism.parameterInfo()) {
+        if (info.name == name)
+            return &info;
+    }
+    return nullptr;
+}
+
+Failure unknownSetName(
+    const Mechanism &mechanism, const std::string &context, const std::string &name, const std::string &origin)
+{
+    return Failure {FailureKind::UnknownName, name,
+        context + ": a " + std::string(mechanism.kind()) + " has no parameter or pose variable named '" + name
+            + "' (see 'pkm show " + origin + "')."};
+}
+
+Result<Pose> solvePoseSets(const Mechanism &mechanism, const Pose &current, const std::vector<Setting> &poseSets)
+{
+    auto solved = designfile::solveDisplayVariables(mechanism, current, displayValues(poseSets));
+    if (solved)
+        return solved;
+    std::string context;
+    for (const Setting &setting : poseSets) {
+        if (setting.name == solved.failure().culprit)
+            context = "--set " + setting.text;
+    }
+    if (context.empty()) {
+        for (const Setting &setting : poseSets)
+            context += (context.empty() ? "--set " : " --set ") + setting.text;
+    }
+    return inContext(solved.failure(), context);
+}
+
+Result<PreparedDesign> prepareDesign(const std::string &origin, const std::vector<Setting> &sets)
+{
+    PreparedDesign prepared;
+    prepared.origin = origin;
+    auto loaded = designfile::load(QString::fromStdString(origin));
+    if (!loaded)
+        return loaded.failure();
+    prepared.design = *loaded;
+    prepared.mechanism = prepared.design.mechanism;
+    prepared.pose = prepared.design.pose;
+
+    bool parametersChanged = false;
+    for (const Setting &setting : sets) {
+        const std::string context = "--set " + setting.text;
+        if (findParameter(*prepared.mechanism, setting.name)) {
+            auto changed = designfile::setDisplayParameter(
+                prepared.mechanism, QString::fromStdString(setting.name), setting.value);
+            if (!changed)
+                return inContext(changed.failure(), context);
+            prepared.mechanism = *changed;
+            parametersChanged = true;
+        } else if (prepared.mechanism->variableIndex(setting.name) >= 0) {
+            prepared.poseSets.push_back(setting);
+        } else {
+            return unknownSetName(*prepared.mechanism, context, setting.name, origin);
+        }
+    }
+
+    const Mechanism &mechanism = *prepared.mechanism;
+    if (auto mixed = mixedPoseSets(mechanism, prepared.poseSets))
+        return *mixed;
+    if (parametersChanged) {
+        // The stored pose belongs to the old design: keep its outputs if the new one reaches them.
+        auto again = mechanism.solveInverse(prepared.pose.outputs, &prepared.pose);
+        if (again) {
+            prepared.pose = *again;
+        } else {
+            prepared.pose = mechanism.homePose();
+            if (prepared.poseSets.empty())
+                prepared.note = "the stored pose does not fit the changed design (" + again.failure().message
+                    + "), so the home pose is used.";
+        }
+    }
+    if (!prepared.poseSets.empty()) {
+        auto solved = solvePoseSets(mechanism, prepared.pose, prepared.poseSets);
+        if (!solved)
+            return solved.failure();
+        prepared.pose = *solved;
+    }
+    return prepared;
+}
+
+} // namespace pkm::cli

@@ -1,0 +1,37 @@
+#pragma once
+/// The quantities of a mechanism as `pkm eval` and `pkm sweep` report them: the JSON keys of
+/// the report groups, their order, and the report of one pose as JSON.
+
+#include "jsonwriter.h"
+#include "mechanism.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace pkm::cli {
+
+/// "pose", "jacobian", "derived": the JSON key of a report group.
+std::string_view reportGroupKey(ReportGroup group);
+
+/// The order of eval's report (CLI.md): pose, jacobian, then singularity, then derived.
+inline constexpr std::array<ReportGroup, 2> groupsBeforeSingularity = {ReportGroup::Pose, ReportGroup::Jacobian};
+inline constexpr std::array<ReportGroup, 1> groupsAfterSingularity = {ReportGroup::Derived};
+
+/// Whether every value of `entry` in the buffer filled by Mechanism::evaluate() is finite.
+bool allFinite(const ReportEntry &entry, std::span<const double> values);
+
+/// The value of parameter `info` in `values` (Mechanism::parameters()) in display units; NaN
+/// when the set does not hold it.
+double parameterDisplayValue(const ParameterSet &values, const ParameterInfo &info);
+
+/// "parameters": every parameter, stored and derived (k), in display units and
+/// parameterInfo() order. `inlined`: on one line.
+void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inlined);
+
+/// "pose", "jacobian", "singularity", "derived" into the open object. Quantities that are not
+/// finite at this pose are null and listed in singularity.undefined, so a script learns why.
+void writeReportJson(
+    JsonWriter &json, const ReportLayout &layout, std::span<const double> values, const Singularity &singularity);
+
+} // namespace pkm::cli

@@ -1,0 +1,50 @@
+#pragma once
+/// Undo commands of the document. Each stores the whole design before and after: designs are
+/// small immutable values, so this is simpler and safer than inverse operations.
+
+#include "designfile.h"
+
+#include <QUndoCommand>
+
+namespace pkm {
+
+class Document;
+
+/// Replaces the design (opening a preset or a file).
+class ReplaceDesignCommand : public QUndoCommand
+{
+public:
+    ReplaceDesignCommand(Document *document, Design before, Design after, const QString &text);
+    void undo() override;
+    void redo() override;
+
+private:
+    Document *m_document;
+    Design m_before;
+    Design m_after;
+};
+
+/// Changes one parameter. A stepping sequence of the same parameter (arrow keys, mouse wheel)
+/// merges into one step; a merged change back to the start is obsolete and leaves the stack.
+class SetParameterCommand : public QUndoCommand
+{
+public:
+    /// `continuous`: part of a stepping sequence (arrow keys, wheel) that merges into the
+    /// previous step of the same parameter.
+    SetParameterCommand(Document *document, const QString &name, Design before, Design after, bool continuous);
+    void undo() override;
+    void redo() override;
+    int id() const override { return 1; }
+    bool mergeWith(const QUndoCommand *other) override;
+
+    const QString &name() const { return m_name; }
+
+private:
+    Document *m_document;
+    QString m_name;
+    bool m_continuous;
+    Design m_before;
+    Design m_after;
+};
+
+} // namespace pkm

@@ -1,0 +1,241 @@
+#include "designfile.h"
+
+#include "registry.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+namespace pkm {
+
+QString toQString(const std::string &text)
+{
+    return QString::fromStdString(text);
+}
+
+QString toQString(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+namespace designfile {
+
+namespace {
+Failure fileFailure(const QString &culprit, const QString &message)
+{
+    return Failure{FailureKind::InvalidParameter, culprit.toStdString(), message.toStdString()};
+}
+
+const ParameterInfo *findParameter(const Mechanism &mechanism, const QString &name)
+{
+    for (const ParameterInfo &info : mechanism.parameterInfo()) {
+        if (toQString(info.name) == name)
+            return &info;
+    }
+    return nullptr;
+}
+
+QString presetPath(const QString &id)
+{
+    return QStringLiteral(":/presets/%1.pkm.json").arg(id);
+}
+} // namespace
+
+Result<Design> parse(const QByteArray &json, const QString &origin)
+{
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &error);
+    if (error.error != QJsonParseError::NoError) {
+        return fileFailure(origin, QStringLiteral("%1 is not valid JSON (%2 at byte %3).")
+                                       .arg(origin, error.errorString())
+                                       .arg(error.offset));
+    }
+    const QJsonObject root = document.object();
+    if (!document.isObject() || root.value(QStringLiteral("format")).toString() != QLatin1String(formatName))
+        return fileFailure(origin, QStringLiteral("%1 is not a PKM Studio design file.").arg(origin));
+    const int version = root.value(QStringLiteral("version")).toInt(-1);
+    if (version > formatVersion) {
+        return fileFailure(origin, QStringLiteral("%1 was written by a newer PKM Studio (format version %2; this "
+                                                  "version reads up to %3).")
+                                       .arg(origin)
+                                       .arg(version)
+                                       .arg(formatVersion));
+    }
+    if (version < 1)
+        return fileFailure(origin, QStringLiteral("%1 has no valid format version.").arg(origin));
+
+    const QString kindId = root.value(QStringLiteral("mechanism")).toString();
+    if (!findMechanismKind(kindId.toStdString()))
+        return fileFailure(origin, QStringLiteral("%1 names an unknown mechanism kind '%2'.").arg(origin, kindId));
+    auto defaults = createMechanism(kindId.toStdString(), {});
+    if (!defaults)
+        return defaults.failure();
+
+    ParameterSet values;
+    const QJsonObject parameters = root.value(QStringLiteral("parameters")).toObject();
+    for (auto it = parameters.begin(); it != parameters.end(); ++it) {
+        const ParameterInfo *info = findParameter(**defaults, it.key());
+        if (!info)
+            return fileFailure(origin, QStringLiteral("%1: unknown parameter '%2'.").arg(origin, it.key()));
+        if (!it.value().isDouble())
+            return fileFailure(origin, QStringLiteral("%1: parameter '%2' is not a number.").arg(origin, it.key()));
+        values[info->name] = info->unit.fromDisplay(it.value().toDouble());
+    }
+    auto mechanism = createMechanism(kindId.toStdString(), values);
+    if (!mechanism) {
+        Failure f = mechanism.failure();
+        f.message = origin.toStdString() + ": " + f.message;
+        return f;
+    }
+
+    Design design;
+    design.id = root.value(QStringLiteral("id")).toString();
+    design.title = root.value(QStringLiteral("title")).toString();
+    design.description = root.value(QStringLiteral("description")).toString();
+    design.mechanism = *mechanism;
+    design.pose = design.mechanism->homePose();
+
+    QList<QPair<QString, double>> pose;
+    const QJsonObject poseObject = root.value(QStringLiteral("pose")).toObject();
+    for (auto it = poseObject.begin(); it != poseObject.end(); ++it) {
+        if (!it.value().isDouble())
+            return fileFailure(origin, QStringLiteral("%1: pose value '%2' is not a number.").arg(origin, it.key()));
+        pose.append({it.key(), it.value().toDouble()});
+    }
+    if (!pose.isEmpty()) {
+        auto solved = solveDisplayVariables(*design.mechanism, design.pose, pose);
+        if (!solved) {
+            Failure f = solved.failure();
+            f.message = origin.toStdString() + ": " + f.message;
+            return f;
+        }
+        design.pose = *solved;
+    }
+    return design;
+}
+
+Result<Design> load(const QString &presetOrPath)
+{
+    QString path = presetOrPath;
+    if (!presetOrPath.contains(QLatin1Char('/')) && !presetOrPath.endsWith(QLatin1String(".json"))) {
+        path = presetPath(presetOrPath);
+        if (!QFile::exists(path)) {
+            return fileFailure(presetOrPath,
+                               QStringLiteral("'%1' is neither a preset id (see 'pkm list') nor a design file.")
+                                   .arg(presetOrPath));
+        }
+    }
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return fileFailure(presetOrPath, QStringLiteral("Cannot open %1: %2.").arg(presetOrPath, file.errorString()));
+    return parse(file.readAll(), presetOrPath);
+}
+
+QByteArray serialize(const Design &design)
+{
+    QJsonObject root;
+    root.insert(QStringLiteral("format"), QLatin1String(formatName));
+    root.insert(QStringLiteral("version"), formatVersion);
+    if (!design.id.isEmpty())
+        root.insert(QStringLiteral("id"), design.id);
+    root.insert(QStringLiteral("title"), design.title);
+    if (!design.description.isEmpty())
+        root.insert(QStringLiteral("description"), design.description);
+    root.insert(QStringLiteral("mechanism"), toQString(design.mechanism->kind()));
+
+    QJsonObject parameters;
+    const ParameterSet values = design.mechanism->parameters();
+    for (const ParameterInfo &info : design.mechanism->parameterInfo()) {
+        if (info.stored)
+            parameters.insert(toQString(info.name), info.unit.toDisplay(values.at(info.name)));
+    }
+    root.insert(QStringLiteral("parameters"), parameters);
+
+    // The outputs fix the pose (inverse kinematics is unique where direct is not).
+    QJsonObject pose;
+    const auto &variables = design.mechanism->variableInfo();
+    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
+        if (!variables[i].actuated) {
+            pose.insert(toQString(variables[i].name),
+                        variables[i].unit.toDisplay(design.mechanism->variableValue(design.pose, i)));
+        }
+    }
+    root.insert(QStringLiteral("pose"), pose);
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+Result<bool> save(const Design &design, const QString &path)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return fileFailure(path, QStringLiteral("Cannot write %1: %2.").arg(path, file.errorString()));
+    file.write(serialize(design));
+    if (!file.commit())
+        return fileFailure(path, QStringLiteral("Cannot write %1: %2.").arg(path, file.errorString()));
+    return true;
+}
+
+QList<PresetInfo> presets()
+{
+    QList<PresetInfo> list;
+    const QStringList files = QDir(QStringLiteral(":/presets")).entryList({QStringLiteral("*.pkm.json")}, QDir::Files,
+                                                                           QDir::Name);
+    for (const QString &name : files) {
+        QFile file(QStringLiteral(":/presets/") + name);
+        if (!file.open(QIODevice::ReadOnly))
+            continue;
+        const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+        list.append({root.value(QStringLiteral("id")).toString(), root.value(QStringLiteral("mechanism")).toString(),
+                     root.value(QStringLiteral("title")).toString()});
+    }
+    return list;
+}
+
+Result<MechanismPtr> setDisplayParameter(const MechanismPtr &mechanism, const QString &name, double displayValue)
+{
+    const ParameterInfo *info = findParameter(*mechanism, name);
+    if (!info) {
+        return Failure{FailureKind::UnknownName, name.toStdString(),
+                       "Unknown parameter '" + name.toStdString() + "' (see 'pkm show')."};
+    }
+    return mechanism->withParameter(info->name, info->unit.fromDisplay(displayValue));
+}
+
+Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &current,
+                                   const QList<QPair<QString, double>> &values)
+{
+    const auto &variables = mechanism.variableInfo();
+    const int inputs = mechanism.inputCount();
+    Coordinates q = current.inputs;
+    Coordinates x = current.outputs;
+    bool anyInput = false;
+    bool anyOutput = false;
+    for (const auto &[name, display] : values) {
+        const int index = mechanism.variableIndex(name.toStdString());
+        if (index < 0) {
+            return Failure{FailureKind::UnknownName, name.toStdString(),
+                           "Unknown pose variable '" + name.toStdString() + "'."};
+        }
+        const double value = variables[index].unit.fromDisplay(display);
+        if (index < inputs) {
+            q[index] = value;
+            anyInput = true;
+        } else {
+            x[index - inputs] = value;
+            anyOutput = true;
+        }
+    }
+    if (anyInput && anyOutput) {
+        return Failure{FailureKind::InvalidParameter, values.front().first.toStdString(),
+                       "Give either the actuated inputs or the outputs of the pose, not both."};
+    }
+    if (anyInput)
+        return mechanism.solveDirect(q, &current);
+    return mechanism.solveInverse(x, &current);
+}
+
+} // namespace designfile
+} // namespace pkm

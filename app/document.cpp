@@ -1,0 +1,117 @@
+#include "document.h"
+
+#include "commands.h"
+#include "quantityformat.h"
+
+#include <cmath>
+
+namespace pkm {
+
+namespace {
+/// Below this singularity margin the status bar warns that the pose is nearly singular.
+constexpr double nearSingularMargin = 0.02;
+} // namespace
+
+Document::Document(QObject *parent)
+    : QObject(parent)
+{
+    auto initial = designfile::load(QStringLiteral("pjoint-prototype"));
+    Q_ASSERT(initial.ok());
+    m_design = *initial;
+}
+
+Result<bool> Document::open(const QString &presetOrPath)
+{
+    auto loaded = designfile::load(presetOrPath);
+    if (!loaded)
+        return loaded.failure();
+    const QString title = loaded->title.isEmpty() ? presetOrPath : loaded->title;
+    m_undoStack.push(new ReplaceDesignCommand(this, m_design, *loaded, tr("Open %1").arg(title)));
+    return true;
+}
+
+Result<bool> Document::setParameter(const QString &name, double displayValue, bool continuous)
+{
+    auto changed = designfile::setDisplayParameter(m_design.mechanism, name, displayValue);
+    if (!changed)
+        return changed.failure();
+    Design next = m_design;
+    next.mechanism = *changed;
+    next.pose = carryPose(*next.mechanism, m_design.pose);
+    if (next.mechanism->parameters() == m_design.mechanism->parameters())
+        return true;
+    m_undoStack.push(new SetParameterCommand(this, name, m_design, next, continuous));
+    return true;
+}
+
+Result<Pose> Document::setVariable(int variable, double value)
+{
+    const Mechanism &m = *m_design.mechanism;
+    const Interval range = m.variableRange(variable);
+    auto solved = m.solveWith(m_design.pose, variable, std::isfinite(value) ? range.clamp(value) : value);
+    if (solved)
+        applyPose(*solved);
+    return solved;
+}
+
+Result<Pose> Document::dragHandle(int handle, const Eigen::Vector2d &target)
+{
+    auto solved = m_design.mechanism->dragHandle(m_design.pose, handle, target);
+    if (solved)
+        applyPose(*solved);
+    return solved;
+}
+
+QString Document::limitNote() const
+{
+    const Mechanism &m = *m_design.mechanism;
+    const auto &variables = m.variableInfo();
+    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
+        const VariableInfo &info = variables[i];
+        const Interval range = m.variableRange(i);
+        const double value = m.variableValue(m_design.pose, i);
+        const double tolerance = 1e-9 * std::max({1.0, std::abs(range.min), std::abs(range.max)});
+        const bool atMin = value <= range.min + tolerance;
+        const bool atMax = value >= range.max - tolerance;
+        if (!atMin && !atMax)
+            continue;
+        const QString symbol = toQString(info.symbol);
+        const QString limit = formatQuantity(atMax ? range.max : range.min, info.unit, info.decimals);
+        return atMax ? tr("%1 stops at its upper limit %2, set by the design's range.").arg(symbol, limit)
+                     : tr("%1 stops at its lower limit %2, set by the design's range.").arg(symbol, limit);
+    }
+    std::vector<double> values(m.reportLayout().size);
+    const Singularity singularity = m.evaluate(m_design.pose, values);
+    if (singularity.type != SingularityType::None)
+        return tr("Singular pose (%1): the mechanism cannot be driven here.").arg(toQString(singularityName(singularity.type)));
+    if (singularity.margin < nearSingularMargin)
+        return tr("Close to a singular pose: small input steps make large output jumps.");
+    return {};
+}
+
+void Document::applyDesign(const Design &design)
+{
+    m_design = design;
+    emit designChanged();
+}
+
+void Document::applyPose(const Pose &pose)
+{
+    m_design.pose = pose;
+    emit poseChanged();
+}
+
+Pose Document::carryPose(const Mechanism &mechanism, const Pose &old)
+{
+    // Keep the outputs (what the user looks at: θ, the platform) and let the inputs follow;
+    // past a narrowed range, stop at the limit.
+    Coordinates outputs = old.outputs;
+    const int inputs = mechanism.inputCount();
+    for (int i = 0; i < outputs.size(); ++i)
+        outputs[i] = mechanism.variableRange(inputs + i).clamp(outputs[i]);
+    if (auto kept = mechanism.solveInverse(outputs, &old))
+        return *kept;
+    return mechanism.homePose();
+}
+
+} // namespace pkm

@@ -1,0 +1,52 @@
+// pkm-studio: the desktop application. Usage: pkm-studio [PRESET-ID | DESIGN.pkm.json]
+#include "document.h"
+#include "mainwindow.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QScreen>
+
+#include <cstdio>
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("PKM Studio"));
+    QApplication::setApplicationName(QStringLiteral("pkm-studio"));
+    QApplication::setApplicationDisplayName(QStringLiteral("PKM Studio"));
+    QApplication::setApplicationVersion(QStringLiteral(PKM_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("pkm-studio"));
+    // A classroom projects this: a size larger than the desktop default reads from the back row.
+    QFont font = QApplication::font();
+    if (font.pointSizeF() < 10.5)
+        font.setPointSizeF(10.5);
+    QApplication::setFont(font);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Design, analyse and teach parallel-kinematic mechanisms."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("design"),
+                                 QStringLiteral("Preset id (see 'pkm list') or design file to open; "
+                                                "default: pjoint-prototype."));
+    parser.process(app);
+
+    pkm::MainWindow window;
+    const QStringList designs = parser.positionalArguments();
+    if (!designs.isEmpty() && !window.openDesign(designs.first())) {
+        std::fprintf(stderr, "pkm-studio: %s\n", qPrintable(window.lastStatus()));
+    } else {
+        // Opening at start is not an edit the user should be able to undo.
+        window.document()->undoStack()->clear();
+    }
+    // First start: fill the screen (also where no window manager honours "maximized");
+    // later starts restore the remembered geometry, maximized or not.
+    if (!window.restoredGeometry()) {
+        if (QScreen *screen = QGuiApplication::primaryScreen())
+            window.setGeometry(screen->availableGeometry());
+        window.showMaximized();
+    } else {
+        window.show();
+    }
+    return app.exec();
+}

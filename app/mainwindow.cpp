@@ -1,0 +1,311 @@
+#include "mainwindow.h"
+
+#include "designpanel.h"
+#include "document.h"
+#include "linkageview.h"
+#include "pjoint.h"
+#include "pjointplots.h"
+#include "quantityformat.h"
+#include "valuestable.h"
+#include "variablepanel.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace pkm {
+
+namespace {
+QString qs(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+QString failureText(const Failure &failure)
+{
+    return QString::fromStdString(failure.message);
+}
+
+constexpr int settingsVersion = 1;
+} // namespace
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent)
+    , m_document(new Document(this))
+{
+    setWindowIcon(QIcon(QStringLiteral(":/icons/pkm-studio.svg")));
+
+    m_view = new LinkageView(this);
+    m_view->setMinimumSize(420, 360);
+    m_variables = new VariablePanel(this);
+
+    auto *left = new QWidget(this);
+    auto *leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(m_view, 1);
+    leftLayout->addWidget(m_variables);
+
+    m_plots = new QStackedWidget(this);
+    m_pjointPlots = new PJointPlots(this);
+    m_plots->addWidget(m_pjointPlots);
+
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    m_splitter->setObjectName(QStringLiteral("mainSplitter"));
+    m_splitter->addWidget(left);
+    m_splitter->addWidget(m_plots);
+    // The plots carry more text than the linkage: give them the larger share.
+    m_splitter->setStretchFactor(0, 2);
+    m_splitter->setStretchFactor(1, 3);
+    m_splitter->setSizes({560, 840});
+    m_splitter->setChildrenCollapsible(false);
+    setCentralWidget(m_splitter);
+
+    createDocks();
+    createActions();
+
+    m_poseLabel = new QLabel(this);
+    m_singularityLabel = new QLabel(this);
+    statusBar()->addPermanentWidget(m_poseLabel);
+    statusBar()->addPermanentWidget(m_singularityLabel);
+
+    connect(m_document, &Document::designChanged, this, &MainWindow::onDesignChanged);
+    connect(m_document, &Document::poseChanged, this, &MainWindow::onPoseChanged);
+
+    connect(m_variables, &VariablePanel::variableEdited, this, [this](int variable, double value) {
+        auto solved = m_document->setVariable(variable, value);
+        if (!solved)
+            showStatus(failureText(solved.failure()), true);
+    });
+    connect(m_view, &LinkageView::handleDragged, this, [this](int handle, const Eigen::Vector2d &target) {
+        auto solved = m_document->dragHandle(handle, target);
+        if (!solved)
+            showStatus(failureText(solved.failure()), true);
+    });
+    connect(m_designPanel, &DesignPanel::parameterEdited, this,
+            [this](const QString &name, double value, bool continuous) {
+                auto changed = m_document->setParameter(name, value, continuous);
+                if (!changed) {
+                    m_designPanel->markInvalid(name, failureText(changed.failure()));
+                    showStatus(failureText(changed.failure()), true);
+                }
+            });
+
+    onDesignChanged();
+    restoreLayout();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createDocks()
+{
+    m_designPanel = new DesignPanel(this);
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidget(m_designPanel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(410);
+    auto *designDock = new QDockWidget(tr("Design"), this);
+    designDock->setObjectName(QStringLiteral("designDock"));
+    designDock->setWidget(scroll);
+    addDockWidget(Qt::LeftDockWidgetArea, designDock);
+
+    m_values = new ValuesTable(this);
+    m_values->setMinimumWidth(410);
+    auto *valuesDock = new QDockWidget(tr("Values at this pose"), this);
+    valuesDock->setObjectName(QStringLiteral("valuesDock"));
+    valuesDock->setWidget(m_values);
+    addDockWidget(Qt::LeftDockWidgetArea, valuesDock);
+    splitDockWidget(designDock, valuesDock, Qt::Vertical);
+    resizeDocks({designDock, valuesDock}, {560, 440}, Qt::Vertical);
+    resizeDocks({designDock}, {420}, Qt::Horizontal);
+}
+
+void MainWindow::createActions()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *open = file->addAction(tr("&Open Design…"), this, &MainWindow::openFile);
+    open->setShortcut(QKeySequence::Open);
+    QAction *saveAs = file->addAction(tr("Save Design &As…"), this, &MainWindow::saveFileAs);
+    saveAs->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu *presets = menuBar()->addMenu(tr("&Presets"));
+    QString lastKind;
+    for (const PresetInfo &preset : designfile::presets()) {
+        if (!lastKind.isEmpty() && preset.kind != lastKind)
+            presets->addSeparator();
+        lastKind = preset.kind;
+        QAction *action = presets->addAction(preset.title, this, [this, id = preset.id] { openDesign(id); });
+        action->setData(preset.id);
+        action->setObjectName(QStringLiteral("preset_") + preset.id);
+    }
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    QAction *fit = view->addAction(tr("&Fit Mechanism"), m_view, &LinkageView::fitToView);
+    fit->setShortcut(Qt::Key_F);
+    QAction *zoomIn = view->addAction(tr("Zoom &In"), m_view, &LinkageView::zoomIn);
+    zoomIn->setShortcut(QKeySequence::ZoomIn);
+    QAction *zoomOut = view->addAction(tr("Zoom &Out"), m_view, &LinkageView::zoomOut);
+    zoomOut->setShortcut(QKeySequence::ZoomOut);
+    view->addSeparator();
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        view->addAction(dock->toggleViewAction());
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About PKM Studio"), this, &MainWindow::about);
+
+    QToolBar *toolbar = addToolBar(tr("Main"));
+    toolbar->setObjectName(QStringLiteral("mainToolBar"));
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    toolbar->addAction(open);
+    toolbar->addSeparator();
+    toolbar->addAction(undo);
+    toolbar->addAction(redo);
+    toolbar->addSeparator();
+    toolbar->addAction(fit);
+    toolbar->addAction(zoomIn);
+    toolbar->addAction(zoomOut);
+}
+
+bool MainWindow::openDesign(const QString &presetOrPath)
+{
+    auto opened = m_document->open(presetOrPath);
+    if (!opened) {
+        showStatus(failureText(opened.failure()), true);
+        return false;
+    }
+    m_view->fitToView();
+    return true;
+}
+
+void MainWindow::onDesignChanged()
+{
+    const Design &design = m_document->design();
+    const MechanismPtr &mechanism = design.mechanism;
+    setWindowTitle(tr("%1 — PKM Studio").arg(design.title.isEmpty() ? qs(mechanism->kind()) : design.title));
+    m_designPanel->setMechanism(mechanism);
+    m_variables->setMechanism(mechanism);
+    m_values->setMechanism(mechanism);
+    if (const auto *joint = dynamic_cast<const PJoint *>(mechanism.get())) {
+        m_pjointPlots->setDesign(joint->design());
+        m_plots->setCurrentWidget(m_pjointPlots);
+    }
+    onPoseChanged();
+}
+
+void MainWindow::onPoseChanged()
+{
+    const MechanismPtr &mechanism = m_document->mechanism();
+    const Pose &pose = m_document->pose();
+    m_variables->setPose(pose);
+    m_values->setPose(pose);
+    m_view->setScene(mechanism->scene(pose));
+    if (dynamic_cast<const PJoint *>(mechanism.get()))
+        m_pjointPlots->setTheta(pose.outputs[0]);
+
+    QStringList summary;
+    const auto &variables = mechanism->variableInfo();
+    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
+        summary << QStringLiteral("%1 = %2").arg(qs(variables[i].symbol),
+                                                 formatQuantity(mechanism->variableValue(pose, i), variables[i].unit,
+                                                                variables[i].decimals));
+    }
+    m_poseLabel->setText(summary.join(QStringLiteral("   ")));
+
+    const QString note = m_document->limitNote();
+    m_view->setMessage(note);
+    if (!note.isEmpty())
+        showStatus(note);
+    else if (!m_statusIsError)
+        statusBar()->clearMessage();
+}
+
+void MainWindow::showStatus(const QString &message, bool error)
+{
+    m_lastStatus = message;
+    m_statusIsError = error;
+    statusBar()->setStyleSheet(error ? QStringLiteral("QStatusBar { color: #b3261e; font-weight: bold; }")
+                                     : QString());
+    statusBar()->showMessage(message, error ? 10000 : 0);
+}
+
+void MainWindow::openFile()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Design"), QString(),
+                                                      tr("PKM Studio designs (*.pkm.json);;All files (*)"));
+    if (!path.isEmpty())
+        openDesign(path);
+}
+
+void MainWindow::saveFileAs()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Design As"), QString(),
+                                                tr("PKM Studio designs (*.pkm.json)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QLatin1String(".json")))
+        path += QStringLiteral(".pkm.json");
+    Design design = m_document->design();
+    design.id.clear(); // a saved copy is the user's design, not the preset
+    auto saved = designfile::save(design, path);
+    if (!saved)
+        QMessageBox::warning(this, tr("Save Design"), failureText(saved.failure()));
+    else
+        showStatus(tr("Saved %1").arg(path));
+}
+
+void MainWindow::about()
+{
+    QMessageBox::about(this, tr("About PKM Studio"),
+                       tr("<h3>PKM Studio %1</h3><p>Design, analysis and teaching of parallel-kinematic "
+                          "mechanisms.</p><p>Licensed under the GNU General Public License, version 3 or "
+                          "later.</p>")
+                           .arg(QStringLiteral(PKM_VERSION)));
+}
+
+void MainWindow::restoreLayout()
+{
+    QSettings settings;
+    if (settings.value(QStringLiteral("layout/version")).toInt() != settingsVersion)
+        return;
+    m_restoredGeometry = restoreGeometry(settings.value(QStringLiteral("layout/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("layout/state")).toByteArray(), settingsVersion);
+    m_splitter->restoreState(settings.value(QStringLiteral("layout/splitter")).toByteArray());
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    QSettings settings;
+    settings.setValue(QStringLiteral("layout/version"), settingsVersion);
+    settings.setValue(QStringLiteral("layout/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("layout/state"), saveState(settingsVersion));
+    settings.setValue(QStringLiteral("layout/splitter"), m_splitter->saveState());
+    event->accept();
+}
+
+} // namespace pkm

@@ -1,0 +1,73 @@
+#pragma once
+/// The main window: the linkage view, the joint-variable sliders, the design panel, live values
+/// and plots, all reading one Document and asking it for every change.
+
+#include <QMainWindow>
+
+class QLabel;
+class QMenu;
+class QSplitter;
+class QStackedWidget;
+
+namespace pkm {
+
+class DesignPanel;
+class Document;
+class LinkageView;
+class PJointPlots;
+class ValuesTable;
+class VariablePanel;
+
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    Document *document() const { return m_document; }
+    LinkageView *linkageView() const { return m_view; }
+    VariablePanel *variablePanel() const { return m_variables; }
+    DesignPanel *designPanel() const { return m_designPanel; }
+    ValuesTable *valuesTable() const { return m_values; }
+    PJointPlots *pjointPlots() const { return m_pjointPlots; }
+    /// The last message the status bar showed (tests read it after it times out).
+    QString lastStatus() const { return m_lastStatus; }
+
+    /// Whether a remembered window geometry was restored at construction.
+    bool restoredGeometry() const { return m_restoredGeometry; }
+
+    /// Opens a preset id or a design file; on failure says why and keeps the current design.
+    bool openDesign(const QString &presetOrPath);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void createActions();
+    void createDocks();
+    void onDesignChanged();
+    void onPoseChanged();
+    void showStatus(const QString &message, bool error = false);
+    void openFile();
+    void saveFileAs();
+    void about();
+    void restoreLayout();
+
+    Document *m_document = nullptr;
+    LinkageView *m_view = nullptr;
+    VariablePanel *m_variables = nullptr;
+    DesignPanel *m_designPanel = nullptr;
+    ValuesTable *m_values = nullptr;
+    PJointPlots *m_pjointPlots = nullptr;
+    QStackedWidget *m_plots = nullptr;
+    QSplitter *m_splitter = nullptr;
+    QLabel *m_poseLabel = nullptr;
+    QLabel *m_singularityLabel = nullptr;
+    QString m_lastStatus;
+    bool m_statusIsError = false;
+    bool m_restoredGeometry = false;
+};
+
+} // namespace pkm

@@ -1,0 +1,122 @@
+#include "mechanism.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace pkm {
+
+const ReportEntry *ReportLayout::find(std::string_view name) const
+{
+    for (const ReportEntry &entry : entries) {
+        if (entry.name == name)
+            return &entry;
+    }
+    return nullptr;
+}
+
+std::string_view singularityName(SingularityType type)
+{
+    switch (type) {
+    case SingularityType::None: return "none";
+    case SingularityType::Inverse: return "inverse";
+    case SingularityType::Direct: return "direct";
+    case SingularityType::Combined: return "combined";
+    }
+    return "none";
+}
+
+int Mechanism::inputCount() const
+{
+    int count = 0;
+    for (const VariableInfo &info : variableInfo())
+        count += info.actuated ? 1 : 0;
+    return count;
+}
+
+int Mechanism::outputCount() const
+{
+    return static_cast<int>(variableInfo().size()) - inputCount();
+}
+
+int Mechanism::variableIndex(std::string_view name) const
+{
+    const auto &infos = variableInfo();
+    for (std::size_t i = 0; i < infos.size(); ++i) {
+        if (infos[i].name == name)
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
+double Mechanism::variableValue(const Pose &pose, int variable) const
+{
+    const int inputs = inputCount();
+    return variable < inputs ? pose.inputs[variable] : pose.outputs[variable - inputs];
+}
+
+Result<Pose> Mechanism::solveWith(const Pose &current, int variable, double value) const
+{
+    const int inputs = inputCount();
+    if (variable < 0 || variable >= static_cast<int>(variableInfo().size()))
+        return Failure{FailureKind::UnknownName, {}, "No joint variable with that index."};
+    if (!std::isfinite(value)) {
+        const std::string &name = variableInfo()[variable].name;
+        return Failure{FailureKind::OutOfRange, name, name + " must be a finite number."};
+    }
+    if (variable < inputs) {
+        Coordinates q = current.inputs;
+        q[variable] = value;
+        return solveDirect(q, &current);
+    }
+    Coordinates x = current.outputs;
+    x[variable - inputs] = value;
+    return solveInverse(x, &current);
+}
+
+Result<double> Mechanism::checkDomain(const ParameterInfo &info, double value)
+{
+    const Interval &d = info.domain;
+    const bool tooLow = info.openMin ? !(value > d.min) : !(value >= d.min);
+    const bool tooHigh = info.openMax ? !(value < d.max) : !(value <= d.max);
+    if (!std::isfinite(value) || tooLow || tooHigh) {
+        // Built with append(): GCC 12 warns falsely (-Wrestrict) on chains of operator+.
+        std::string message = info.name;
+        message.append(" (").append(info.label).append(") = ");
+        message.append(std::isfinite(value) ? formatNumber(info.unit.toDisplay(value)) : std::string("not a number"));
+        message.append(" is invalid: it must be ");
+        const double lo = info.unit.toDisplay(d.min);
+        if (std::isinf(d.max)) {
+            message.append(info.openMin ? "greater than " : "at least ").append(formatNumber(lo));
+        } else {
+            message.append(info.openMin ? "(" : "[").append(formatNumber(lo)).append(", ");
+            message.append(formatNumber(info.unit.toDisplay(d.max))).append(info.openMax ? ")" : "]");
+        }
+        if (!info.unit.symbol.empty())
+            message.append(" ").append(info.unit.symbol);
+        message.append(".");
+        return Failure{FailureKind::InvalidParameter, info.name, message};
+    }
+    return value;
+}
+
+std::string formatNumber(double value, int decimals)
+{
+    if (!std::isfinite(value))
+        return std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
+    char buffer[64];
+    auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+    if (ec != std::errc())
+        return "?";
+    std::string text(buffer, end);
+    if (text.find('.') != std::string::npos) {
+        while (!text.empty() && text.back() == '0')
+            text.pop_back();
+        if (!text.empty() && text.back() == '.')
+            text.pop_back();
+    }
+    if (text == "-0")
+        text = "0";
+    return text;
+}
+
+} // namespace pkm

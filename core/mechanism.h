@@ -1,0 +1,155 @@
+#pragma once
+/// The one interface every mechanism implements, so that the GUI, the CLI and the tests are
+/// generic. A Mechanism is an immutable design (dimensions, limits, actuator): solving takes
+/// the design and the joint variables and returns a Pose value. No hidden mutable state, so
+/// one Mechanism may be used from many threads at once.
+///
+/// Units: core units (mm, rad, N, N·m, s); ParameterInfo/VariableInfo carry the display unit.
+
+#include "result.h"
+#include "scene.h"
+#include "units.h"
+
+#include <Eigen/Core>
+
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pkm {
+
+/// Named design parameter values in core units (the stored, independent ones).
+using ParameterSet = std::map<std::string, double, std::less<>>;
+
+/// Joint coordinates of one kind (inputs or outputs); at most 6, never on the heap.
+using Coordinates = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1>;
+
+struct Interval {
+    double min = 0.0;
+    double max = 0.0;
+    bool contains(double v, double tolerance = 0.0) const { return v >= min - tolerance && v <= max + tolerance; }
+    double clamp(double v) const { return v < min ? min : (v > max ? max : v); }
+};
+
+enum class ParameterGroup { Geometry, Range, Actuator, Drawing, Mode };
+
+struct ParameterInfo {
+    std::string name;        ///< key in files, CLI and JSON ("a", "theta_min")
+    std::string symbol;      ///< as printed ("a", "θ_min")
+    std::string label;       ///< English description ("crank (lever) length")
+    Unit unit;               ///< display unit
+    ParameterGroup group = ParameterGroup::Geometry;
+    Interval domain;         ///< allowed values, core units
+    bool openMin = false;    ///< domain.min itself is not allowed
+    bool openMax = false;    ///< domain.max itself is not allowed
+    bool stored = true;      ///< false: derived from the stored ones (k = b/a), still settable
+    int decimals = 2;        ///< display decimals
+    double displayStep = 1;  ///< spin-box step, display units
+};
+
+struct VariableInfo {
+    std::string name;   ///< "theta", "d"
+    std::string symbol; ///< "θ", "d"
+    std::string label;  ///< "output angle"
+    Unit unit;
+    bool actuated = false; ///< true: an input (driven by an actuator); false: an output
+    int decimals = 2;
+};
+
+/// One pose: the actuated inputs and the outputs, consistent with each other.
+struct Pose {
+    Coordinates inputs;
+    Coordinates outputs;
+    int mode = 0; ///< assembly/working mode index where the mechanism has several
+};
+
+enum class ReportGroup { Pose, Jacobian, Derived };
+
+/// Where one named quantity sits in the flat value buffer filled by Mechanism::evaluate().
+struct ReportEntry {
+    ReportGroup group = ReportGroup::Derived;
+    std::string name;   ///< JSON key
+    std::string symbol; ///< as printed
+    std::string label;  ///< English description
+    Unit unit;
+    int rows = 1;
+    int cols = 1;
+    int offset = 0; ///< index of the first value (row-major) in the buffer
+    int decimals = 3;
+};
+
+struct ReportLayout {
+    std::vector<ReportEntry> entries;
+    int size = 0; ///< number of doubles the buffer needs
+
+    const ReportEntry *find(std::string_view name) const;
+};
+
+enum class SingularityType { None, Inverse, Direct, Combined };
+std::string_view singularityName(SingularityType type); ///< "none", "inverse", "direct", "combined"
+
+struct Singularity {
+    SingularityType type = SingularityType::None;
+    double margin = 1.0; ///< dimensionless distance from the nearest singularity, 0 at it
+};
+
+class Mechanism;
+using MechanismPtr = std::shared_ptr<const Mechanism>;
+
+class Mechanism
+{
+public:
+    virtual ~Mechanism() = default;
+
+    virtual std::string_view kind() const = 0; ///< "pjoint", "moma", …
+
+    // -- design ---------------------------------------------------------------------------
+    virtual const std::vector<ParameterInfo> &parameterInfo() const = 0;
+    /// All parameter values (stored and derived), core units.
+    virtual ParameterSet parameters() const = 0;
+    /// A new design with one parameter changed, validated; the failure names the culprit.
+    virtual Result<MechanismPtr> withParameter(std::string_view name, double value) const = 0;
+    /// Warnings about a valid but questionable design (interference, poor transmission).
+    virtual std::vector<std::string> designWarnings() const { return {}; }
+
+    // -- joint variables ------------------------------------------------------------------
+    virtual const std::vector<VariableInfo> &variableInfo() const = 0; ///< inputs first
+    int inputCount() const;
+    int outputCount() const;
+    /// Allowed interval of variable i (index into variableInfo()), core units.
+    virtual Interval variableRange(int variable) const = 0;
+    virtual Pose homePose() const = 0;
+
+    /// Direct kinematics: outputs from inputs. `near` picks the assembly mode to stay in.
+    virtual Result<Pose> solveDirect(const Coordinates &inputs, const Pose *near = nullptr) const = 0;
+    /// Inverse kinematics: inputs from outputs.
+    virtual Result<Pose> solveInverse(const Coordinates &outputs, const Pose *near = nullptr) const = 0;
+    /// Solve with one variable (index into variableInfo()) set and the others of its kind
+    /// taken from `current`.
+    Result<Pose> solveWith(const Pose &current, int variable, double value) const;
+    /// Index into variableInfo() of the named variable, or -1.
+    int variableIndex(std::string_view name) const;
+    double variableValue(const Pose &pose, int variable) const;
+
+    // -- analysis -------------------------------------------------------------------------
+    virtual const ReportLayout &reportLayout() const = 0;
+    /// Fills `values` (reportLayout().size doubles) for a solved pose. Never allocates.
+    virtual Singularity evaluate(const Pose &pose, std::span<double> values) const = 0;
+
+    // -- drawing --------------------------------------------------------------------------
+    virtual Scene scene(const Pose &pose) const = 0;
+    /// Dragging scene handle `handle` to `target` (scene plane, mm): the pose that follows.
+    virtual Result<Pose> dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const = 0;
+
+protected:
+    /// Validates `value` against the parameter's domain; the failure names it.
+    static Result<double> checkDomain(const ParameterInfo &info, double value);
+};
+
+/// Formats a number for messages with up to `decimals` decimals, trailing zeros removed.
+std::string formatNumber(double value, int decimals = 3);
+
+} // namespace pkm

@@ -1,0 +1,494 @@
+#include "pjoint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace pkm {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+constexpr double infinity = std::numeric_limits<double>::infinity();
+/// Relative tolerance for "at a limit" and "at a singularity" (scale-free quantities).
+constexpr double relativeTolerance = 1e-9;
+
+double radicand(const PJointDesign &p, double theta)
+{
+    const double k = p.k();
+    return 1.0 + k * k + 2.0 * k * std::sin(theta);
+}
+
+/// Signed angle from direction u to direction v, in (−π, π].
+double signedAngle(const Eigen::Vector2d &u, const Eigen::Vector2d &v)
+{
+    return std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
+}
+} // namespace
+
+namespace pjoint {
+
+double constraint(const PJointDesign &p, double theta, double d)
+{
+    return p.a * p.a * radicand(p, theta) - d * d; // (1)
+}
+
+double diagonal(const PJointDesign &p, double theta)
+{
+    return p.a * std::sqrt(radicand(p, theta)); // (2)
+}
+
+double angle(const PJointDesign &p, double d)
+{
+    const double k = p.k();
+    const double s = (d * d - p.a * p.a * (1.0 + k * k)) / (2.0 * p.a * p.a * k); // (3)
+    if (s < -1.0 || s > 1.0)
+        return std::numeric_limits<double>::quiet_NaN();
+    const double c = std::sqrt(1.0 - s * s); // (4): the branch −90° < θ < 90°
+    return std::atan2(s, c);                 // (5)
+}
+
+double jacobian(const PJointDesign &p, double theta)
+{
+    return p.a * p.k() * std::cos(theta) / std::sqrt(radicand(p, theta)); // (7)
+}
+
+double jacobianD(const PJointDesign &p, double theta)
+{
+    return 2.0 * diagonal(p, theta); // (10)
+}
+
+double jacobianTheta(const PJointDesign &p, double theta)
+{
+    return 2.0 * p.a * p.a * p.k() * std::cos(theta); // (11)
+}
+
+double jacobianDerivative(const PJointDesign &p, double theta)
+{
+    const double k = p.k();
+    const double s = std::sin(theta);
+    const double r = radicand(p, theta);
+    return -p.a * k * (k + s) * (1.0 + k * s) / (r * std::sqrt(r));
+}
+
+double diagonalAcceleration(const PJointDesign &p, double theta, double thetaDot, double thetaDDot)
+{
+    // (18) with (19–20) corrected: the document drops θ̈ from the first term and writes θ̇
+    // where θ̇² belongs in the second (DOMAIN §5.1).
+    return jacobian(p, theta) * thetaDDot + jacobianDerivative(p, theta) * thetaDot * thetaDot;
+}
+
+double angularAcceleration(const PJointDesign &p, double theta, double thetaDot, double dDDot)
+{
+    return (dDDot - jacobianDerivative(p, theta) * thetaDot * thetaDot) / jacobian(p, theta);
+}
+
+double passiveAngle(const PJointDesign &p, double theta)
+{
+    return std::atan2(p.a * std::cos(theta), p.b + p.a * std::sin(theta));
+}
+
+double transmissionAngle(const PJointDesign &p, double theta)
+{
+    const double d = diagonal(p, theta);
+    const double c = (p.a * p.a + d * d - p.b * p.b) / (2.0 * p.a * d);
+    return std::acos(std::clamp(c, -1.0, 1.0));
+}
+
+double outputTorque(const PJointDesign &p, double theta, double force)
+{
+    return jacobian(p, theta) * force * 1e-3; // (13), N·mm → N·m
+}
+
+double actuatorForce(const PJointDesign &p, double theta, double torque)
+{
+    return torque * 1e3 / jacobian(p, theta); // (14)
+}
+
+double motorTorque(const PJointDesign &p, double force)
+{
+    return force * p.lead / (2.0 * pi * p.efficiency) * 1e-3; // (15), N·mm → N·m
+}
+
+} // namespace pjoint
+
+// -- design ------------------------------------------------------------------------------
+
+const std::vector<ParameterInfo> &PJoint::parameterInfo() const
+{
+    static const std::vector<ParameterInfo> infos = [] {
+        const Interval positive{0.0, infinity};
+        const Interval halfTurn{-90.0 * units::degree, 90.0 * units::degree};
+        using G = ParameterGroup;
+        std::vector<ParameterInfo> v;
+        v.push_back({"a", "a", "crank (lever) length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"b", "b", "base and coupler length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"k", "k", "ratio k = b/a", units::none, G::Geometry, positive, true, false, false, 4, 0.01});
+        v.push_back({"theta_min", "θ_min", "lower limit of θ", units::angle, G::Range, halfTurn, true, true, true, 2, 1});
+        v.push_back({"theta_max", "θ_max", "upper limit of θ", units::angle, G::Range, halfTurn, true, true, true, 2, 1});
+        v.push_back({"lead", "h", "lead of the screw", units::millimetrePerRevolution, G::Actuator, positive, true, false, true, 4, 0.1});
+        v.push_back({"step", "Δd", "linear step", units::millimetrePerStep, G::Actuator, positive, true, false, true, 5, 0.001});
+        v.push_back({"speed_max", "ḋ_max", "max. linear speed", units::millimetrePerSecond, G::Actuator, positive, true, false, true, 2, 1});
+        v.push_back({"force_max", "F_max", "max. thrust force", units::newton, G::Actuator, positive, true, false, true, 1, 5});
+        v.push_back({"efficiency", "η", "screw efficiency", units::none, G::Actuator, Interval{0.0, 1.0}, true, false, true, 3, 0.01});
+        v.push_back({"motor_length", "L_M", "motor body length", units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
+        v.push_back({"motor_width", "W_M", "motor body width", units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
+        v.push_back({"screw_diameter", "d_s", "screw diameter", units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1});
+        return v;
+    }();
+    return infos;
+}
+
+ParameterSet PJoint::parameters() const
+{
+    const PJointDesign &p = m_design;
+    return {{"a", p.a},
+            {"b", p.b},
+            {"k", p.k()},
+            {"theta_min", p.thetaMin},
+            {"theta_max", p.thetaMax},
+            {"lead", p.lead},
+            {"step", p.step},
+            {"speed_max", p.speedMax},
+            {"force_max", p.forceMax},
+            {"efficiency", p.efficiency},
+            {"motor_length", p.motorLength},
+            {"motor_width", p.motorWidth},
+            {"screw_diameter", p.screwDiameter}};
+}
+
+PJointDesign PJoint::designFrom(const ParameterSet &parameters, PJointDesign p)
+{
+    auto take = [&](const char *name, double &field) {
+        if (auto it = parameters.find(name); it != parameters.end())
+            field = it->second;
+    };
+    take("a", p.a);
+    take("b", p.b);
+    take("theta_min", p.thetaMin);
+    take("theta_max", p.thetaMax);
+    take("lead", p.lead);
+    take("step", p.step);
+    take("speed_max", p.speedMax);
+    take("force_max", p.forceMax);
+    take("efficiency", p.efficiency);
+    take("motor_length", p.motorLength);
+    take("motor_width", p.motorWidth);
+    take("screw_diameter", p.screwDiameter);
+    return p;
+}
+
+Result<MechanismPtr> PJoint::create(const PJointDesign &design)
+{
+    PJoint candidate(design);
+    const ParameterSet values = candidate.parameters();
+    for (const ParameterInfo &info : candidate.parameterInfo()) {
+        auto checked = checkDomain(info, values.at(info.name));
+        if (!checked)
+            return checked.failure();
+    }
+    if (!(design.thetaMin < design.thetaMax)) {
+        return Failure{FailureKind::InvalidParameter, "theta_min",
+                       "theta_min = " + formatNumber(units::angle.toDisplay(design.thetaMin))
+                           + "° must be less than theta_max = "
+                           + formatNumber(units::angle.toDisplay(design.thetaMax)) + "°."};
+    }
+    return MechanismPtr(new PJoint(design));
+}
+
+Result<MechanismPtr> PJoint::createFrom(const ParameterSet &parameters)
+{
+    PJointDesign design = designFrom(parameters);
+    if (auto k = parameters.find("k"); k != parameters.end()) {
+        if (parameters.count("b") && std::abs(k->second * design.a - design.b) > 1e-9 * design.b) {
+            return Failure{FailureKind::InvalidParameter, "k",
+                           "k = " + formatNumber(k->second, 6) + " disagrees with b/a = "
+                               + formatNumber(design.b / design.a, 6) + ": give b or k, not both."};
+        }
+        design.b = k->second * design.a;
+    }
+    return create(design);
+}
+
+Result<MechanismPtr> PJoint::withParameter(std::string_view name, double value) const
+{
+    const ParameterInfo *info = nullptr;
+    for (const ParameterInfo &candidate : parameterInfo()) {
+        if (candidate.name == name)
+            info = &candidate;
+    }
+    if (!info)
+        return Failure{FailureKind::UnknownName, std::string(name),
+                       "The П-joint has no parameter named '" + std::string(name) + "'."};
+    auto checked = checkDomain(*info, value);
+    if (!checked)
+        return checked.failure();
+
+    PJointDesign next = m_design;
+    if (name == "k") {
+        next.b = value * next.a; // k is kept as b/a: setting it resizes the coupler
+    } else {
+        ParameterSet one{{std::string(name), value}};
+        next = designFrom(one, next);
+    }
+    auto made = create(next);
+    if (!made && made.failure().culprit == "theta_min" && name == "theta_max") {
+        Failure f = made.failure();
+        f.culprit = "theta_max";
+        f.message = "theta_max = " + formatNumber(units::angle.toDisplay(next.thetaMax))
+                  + "° must be greater than theta_min = " + formatNumber(units::angle.toDisplay(next.thetaMin))
+                  + "°.";
+        return f;
+    }
+    return made;
+}
+
+std::vector<std::string> PJoint::designWarnings() const
+{
+    std::vector<std::string> warnings;
+    if (m_design.motorLength >= dMin()) {
+        warnings.push_back("The motor body (" + formatNumber(m_design.motorLength, 1)
+                           + " mm) is longer than d_min = " + formatNumber(dMin(), 1)
+                           + " mm: the diagonal cannot retract that far.");
+    }
+    return warnings;
+}
+
+// -- joint variables ---------------------------------------------------------------------
+
+const std::vector<VariableInfo> &PJoint::variableInfo() const
+{
+    static const std::vector<VariableInfo> infos = {
+        {"d", "d", "diagonal length (actuated)", units::millimetre, true, 2},
+        {"theta", "θ", "output angle", units::angle, false, 2},
+    };
+    return infos;
+}
+
+double PJoint::dMin() const
+{
+    return pjoint::diagonal(m_design, m_design.thetaMin);
+}
+
+double PJoint::dMax() const
+{
+    return pjoint::diagonal(m_design, m_design.thetaMax);
+}
+
+Interval PJoint::variableRange(int variable) const
+{
+    if (variable == variableD)
+        return {dMin(), dMax()};
+    return {m_design.thetaMin, m_design.thetaMax};
+}
+
+Pose PJoint::homePose() const
+{
+    const double theta = std::clamp(0.0, m_design.thetaMin, m_design.thetaMax);
+    return *solveInverse(Coordinates::Constant(1, theta));
+}
+
+Result<Pose> PJoint::solveDirect(const Coordinates &inputs, const Pose *) const
+{
+    const double d = inputs[0];
+    const PJointDesign &p = m_design;
+    if (!std::isfinite(d))
+        return Failure{FailureKind::OutOfRange, "d", "d must be a finite number."};
+    const double lo = std::abs(p.a - p.b);
+    const double hi = p.a + p.b;
+    if (d < lo || d > hi) {
+        return Failure{FailureKind::Unreachable, "d",
+                       "d = " + formatNumber(d) + " mm cannot close the parallelogram: it must lie in ["
+                           + formatNumber(lo) + ", " + formatNumber(hi) + "] mm (|a − b| to a + b)."};
+    }
+    const Interval range = variableRange(variableD);
+    const double tolerance = relativeTolerance * hi;
+    if (!range.contains(d, tolerance)) {
+        return Failure{FailureKind::OutOfRange, "d",
+                       "d = " + formatNumber(d) + " mm is outside the stroke [" + formatNumber(range.min)
+                           + ", " + formatNumber(range.max) + "] mm that the θ range allows."};
+    }
+    const double theta = std::clamp(pjoint::angle(p, range.clamp(d)), p.thetaMin, p.thetaMax);
+    Pose pose;
+    pose.inputs = Coordinates::Constant(1, d);
+    pose.outputs = Coordinates::Constant(1, theta);
+    return pose;
+}
+
+Result<Pose> PJoint::solveInverse(const Coordinates &outputs, const Pose *) const
+{
+    const double theta = outputs[0];
+    if (!std::isfinite(theta))
+        return Failure{FailureKind::OutOfRange, "theta", "θ must be a finite number."};
+    const Interval range = variableRange(variableTheta);
+    if (!range.contains(theta, relativeTolerance)) {
+        return Failure{FailureKind::OutOfRange, "theta",
+                       "θ = " + formatNumber(units::angle.toDisplay(theta)) + "° is outside the design range ["
+                           + formatNumber(units::angle.toDisplay(range.min)) + ", "
+                           + formatNumber(units::angle.toDisplay(range.max)) + "]°."};
+    }
+    const double clamped = range.clamp(theta);
+    Pose pose;
+    pose.outputs = Coordinates::Constant(1, clamped);
+    pose.inputs = Coordinates::Constant(1, pjoint::diagonal(m_design, clamped));
+    return pose;
+}
+
+// -- analysis ----------------------------------------------------------------------------
+
+namespace {
+enum Slot {
+    SlotTheta, SlotD, SlotPhi, SlotMu,
+    SlotJ, SlotJInv, SlotJd, SlotJTheta, SlotDJ,
+    SlotTorque, SlotSpeed, SlotResolution, SlotMotorTorque, SlotDMin, SlotDMax, SlotStroke,
+    SlotCount
+};
+} // namespace
+
+const ReportLayout &PJoint::reportLayout() const
+{
+    static const ReportLayout layout = [] {
+        using G = ReportGroup;
+        ReportLayout l;
+        auto add = [&](G group, const char *name, const char *symbol, const char *label, Unit unit, int decimals) {
+            ReportEntry e;
+            e.group = group;
+            e.name = name;
+            e.symbol = symbol;
+            e.label = label;
+            e.unit = unit;
+            e.offset = l.size++;
+            e.decimals = decimals;
+            l.entries.push_back(e);
+        };
+        add(G::Pose, "theta", "θ", "output angle", units::angle, 2);
+        add(G::Pose, "d", "d", "diagonal length", units::millimetre, 2);
+        add(G::Pose, "phi", "φ", "passive angle of the diagonal", units::angle, 2);
+        add(G::Pose, "mu", "μ", "transmission angle", units::angle, 2);
+        add(G::Jacobian, "J", "J", "Jacobian ḋ = J·θ̇", units::millimetrePerRadian, 3);
+        add(G::Jacobian, "J_inv", "J⁻¹", "inverse Jacobian θ̇ = J⁻¹·ḋ", units::radianPerMillimetre, 5);
+        add(G::Jacobian, "J_d", "J_d", "J_d = 2d", units::millimetre, 2);
+        add(G::Jacobian, "J_theta", "J_θ", "J_θ = 2a²k·cos θ", units::squareMillimetrePerRadian, 1);
+        add(G::Jacobian, "dJ_dtheta", "∂J/∂θ", "derivative of J", units::millimetrePerRadian2, 3);
+        add(G::Derived, "torque", "T", "output torque at F_max", units::newtonMetre, 3);
+        add(G::Derived, "speed", "ω", "output speed θ̇ at ḋ_max", units::radianPerSecond, 4);
+        add(G::Derived, "resolution", "Δθ", "output resolution per step", units::anglePerStep, 5);
+        add(G::Derived, "motor_torque", "T_M", "motor torque at F_max", units::newtonMetre, 4);
+        add(G::Derived, "d_min", "d_min", "diagonal at θ_min", units::millimetre, 2);
+        add(G::Derived, "d_max", "d_max", "diagonal at θ_max", units::millimetre, 2);
+        add(G::Derived, "stroke", "d_max − d_min", "actuator stroke", units::millimetre, 2);
+        return l;
+    }();
+    return layout;
+}
+
+Singularity PJoint::singularity(double theta) const
+{
+    // Scale-free measures: |J_θ|/(2a²k) = |cos θ| and |J_d|/(2(a+b)) = d/(a+b).
+    const double directMeasure = std::abs(std::cos(theta));
+    const double inverseMeasure = pjoint::diagonal(m_design, theta) / (m_design.a + m_design.b);
+    const bool direct = directMeasure < relativeTolerance;
+    const bool inverse = inverseMeasure < relativeTolerance;
+    Singularity s;
+    s.type = direct && inverse ? SingularityType::Combined
+           : direct            ? SingularityType::Direct
+           : inverse           ? SingularityType::Inverse
+                               : SingularityType::None;
+    s.margin = std::min(directMeasure, inverseMeasure);
+    return s;
+}
+
+Singularity PJoint::evaluate(const Pose &pose, std::span<double> v) const
+{
+    const PJointDesign &p = m_design;
+    const double theta = pose.outputs[0];
+    const double d = pose.inputs[0];
+    const double J = pjoint::jacobian(p, theta);
+    v[SlotTheta] = theta;
+    v[SlotD] = d;
+    v[SlotPhi] = pjoint::passiveAngle(p, theta);
+    v[SlotMu] = pjoint::transmissionAngle(p, theta);
+    v[SlotJ] = J;
+    v[SlotJInv] = 1.0 / J;
+    v[SlotJd] = 2.0 * d;
+    v[SlotJTheta] = pjoint::jacobianTheta(p, theta);
+    v[SlotDJ] = pjoint::jacobianDerivative(p, theta);
+    v[SlotTorque] = J * p.forceMax * 1e-3;
+    v[SlotSpeed] = p.speedMax / J;
+    v[SlotResolution] = p.step / J;
+    v[SlotMotorTorque] = pjoint::motorTorque(p, p.forceMax);
+    v[SlotDMin] = dMin();
+    v[SlotDMax] = dMax();
+    v[SlotStroke] = v[SlotDMax] - v[SlotDMin];
+    return singularity(theta);
+}
+
+// -- drawing -----------------------------------------------------------------------------
+
+Scene PJoint::scene(const Pose &pose) const
+{
+    const PJointDesign &p = m_design;
+    const double theta = pose.outputs[0];
+    const Eigen::Vector2d crank = p.a * Eigen::Vector2d(std::sin(theta), std::cos(theta));
+    const Eigen::Vector2d o(0, 0), b(p.b, 0), a = b + crank, c = o + crank;
+    auto v3 = [](const Eigen::Vector2d &v) { return Eigen::Vector3d(v.x(), v.y(), 0.0); };
+
+    Scene s;
+    enum { O, B, A, C };
+    s.joints = {{v3(o), "O", JointKind::Ground},
+                {v3(b), "B", JointKind::Ground},
+                {v3(a), "A", JointKind::Revolute},
+                {v3(c), "C", JointKind::Revolute}};
+    s.bars = {{O, B, BarKind::Ground, "b"},
+              {B, A, BarKind::Crank, "a"},
+              {O, C, BarKind::Crank, "a"},
+              {C, A, BarKind::Coupler, "b"}};
+    s.actuators = {{O, A, p.motorLength, p.motorWidth, p.screwDiameter, "d"}};
+
+    const double arc = 0.22 * p.a;
+    const double phi = pjoint::passiveAngle(p, theta);
+    const Eigen::Vector2d toO = (o - a).normalized(), toB = (b - a).normalized();
+    const double muStart = std::atan2(toB.y(), toB.x());
+    const double mu = signedAngle(toB, toO);
+    auto deg = [](double r) { return formatNumber(units::angle.toDisplay(r), 1) + "°"; };
+    s.angles = {{B, 0.5 * std::numbers::pi, -theta, arc, "θ = " + deg(theta)},
+                {O, 0.0, phi, 1.15 * arc, "φ = " + deg(phi)},
+                {A, muStart, mu, 0.8 * arc, "μ = " + deg(std::abs(mu))}};
+
+    const double d = pose.inputs[0];
+    // O lies to the left of B→A for every |θ| < 90°: a negative offset keeps the a-dimension
+    // outside the parallelogram.
+    const double sideB = -1.0;
+    s.dimensions = {{O, B, -0.18 * p.a, "b = " + formatNumber(p.b, 1) + " mm"},
+                    {B, A, sideB * 0.16 * p.a, "a = " + formatNumber(p.a, 1) + " mm"},
+                    {O, A, 0.0, "d = " + formatNumber(d, 2) + " mm"}};
+    s.handles = {{A, "drag A to set θ"}, {C, "drag C to set θ"}};
+
+    // Extent over the whole θ range so that fitting the view does not follow the motion.
+    Eigen::AlignedBox3d box;
+    box.extend(v3(o)).extend(v3(b));
+    for (int i = 0; i <= 32; ++i) {
+        const double t = p.thetaMin + (p.thetaMax - p.thetaMin) * i / 32.0;
+        const Eigen::Vector2d r = p.a * Eigen::Vector2d(std::sin(t), std::cos(t));
+        box.extend(v3(b + r)).extend(v3(o + r));
+    }
+    const Eigen::Vector3d margin(0.25 * p.a, 0.25 * p.a, 0.0);
+    box.extend(box.min() - margin).extend(box.max() + margin);
+    s.extent = box;
+    return s;
+}
+
+Result<Pose> PJoint::dragHandle(const Pose &, int handle, const Eigen::Vector2d &target) const
+{
+    // A = B + a(sin θ, cos θ) and C = O + a(sin θ, cos θ): θ is the direction of the target
+    // seen from the handle's ground pivot, measured from the vertical.
+    const Eigen::Vector2d pivot = handle == 0 ? Eigen::Vector2d(m_design.b, 0) : Eigen::Vector2d(0, 0);
+    const Eigen::Vector2d r = target - pivot;
+    if (r.norm() < 1e-9 * m_design.a)
+        return Failure{FailureKind::Unreachable, "theta", "The pointer is on the pivot: θ is undefined there."};
+    // Past a limit the joint stops at it; the caller sees the pose at the limit.
+    const double theta = std::clamp(std::atan2(r.x(), r.y()), m_design.thetaMin, m_design.thetaMax);
+    return solveInverse(Coordinates::Constant(1, theta));
+}
+
+} // namespace pkm

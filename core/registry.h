@@ -1,0 +1,24 @@
+#pragma once
+/// The mechanisms PKM Studio knows, by kind id. Adding a mechanism means adding one entry here.
+
+#include "mechanism.h"
+
+#include <string_view>
+#include <vector>
+
+namespace pkm {
+
+struct MechanismKind {
+    std::string_view id;    ///< "pjoint"
+    std::string_view title; ///< "Active П-joint"
+    /// Builds a validated design from named values; missing ones take the kind's defaults,
+    /// unknown names are refused.
+    Result<MechanismPtr> (*create)(const ParameterSet &parameters);
+};
+
+const std::vector<MechanismKind> &mechanismKinds();
+const MechanismKind *findMechanismKind(std::string_view id);
+/// Refuses names the kind does not know, then builds the design.
+Result<MechanismPtr> createMechanism(std::string_view kind, const ParameterSet &parameters);
+
+} // namespace pkm

@@ -1,0 +1,77 @@
+#pragma once
+/// A drawable description of a mechanism in one pose, read by the 2D view, the 3D view and the
+/// exporters. Coordinates in mm; the mechanism plane is z = 0, y up.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace pkm {
+
+enum class JointKind { Ground, Revolute, Spherical, Slider, Point };
+enum class BarKind { Ground, Crank, Coupler, Link, Rod, Platform };
+
+struct SceneJoint {
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    std::string label;
+    JointKind kind = JointKind::Revolute;
+};
+
+struct SceneBar {
+    int from = 0;
+    int to = 0;
+    BarKind kind = BarKind::Link;
+    std::string label;
+};
+
+/// A linear actuator between two joints: a motor body of `bodyLength` × `bodyWidth` at
+/// `from`, and a screw of `rodDiameter` from the body to `to`; its visible extension is the
+/// distance from→to minus the body length.
+struct SceneActuator {
+    int from = 0;
+    int to = 0;
+    double bodyLength = 0.0;
+    double bodyWidth = 0.0;
+    double rodDiameter = 0.0;
+    std::string label;
+};
+
+/// An angle to mark with an arc at joint `vertex`: from direction angle `start` (rad, from +x,
+/// counter-clockwise) over `sweep` rad (signed).
+struct SceneAngle {
+    int vertex = 0;
+    double start = 0.0;
+    double sweep = 0.0;
+    double radius = 0.0; ///< preferred arc radius, mm
+    std::string label;   ///< "θ = 12.0°"
+};
+
+/// A dimension line between two joints, offset sideways by `offset` mm (positive: to the left
+/// of from→to), with its text.
+struct SceneDimension {
+    int from = 0;
+    int to = 0;
+    double offset = 0.0;
+    std::string text;
+};
+
+/// A joint the user may drag; the mechanism's dragHandle() turns the target into a pose.
+struct SceneHandle {
+    int joint = 0;
+    std::string hint; ///< what dragging does ("drag to set θ")
+};
+
+struct Scene {
+    std::vector<SceneJoint> joints;
+    std::vector<SceneBar> bars;
+    std::vector<SceneActuator> actuators;
+    std::vector<SceneAngle> angles;
+    std::vector<SceneDimension> dimensions;
+    std::vector<SceneHandle> handles;
+    /// Box holding the mechanism over its whole range of motion, so "fit" does not jump.
+    Eigen::AlignedBox3d extent;
+};
+
+} // namespace pkm

@@ -1,0 +1,40 @@
+#pragma once
+/// Units. Inside core/ lengths are millimetres, angles radians, forces newtons, torques
+/// newton-metres, times seconds. A Unit says how a core value is shown to a person (UI, CLI):
+/// display = core × scale. Only angle-bearing units have a scale other than 1.
+
+#include <numbers>
+#include <string_view>
+
+namespace pkm {
+
+struct Unit {
+    std::string_view symbol; ///< display symbol, UTF-8 ("mm", "°", "N·m"); empty: dimensionless
+    double scale = 1.0;      ///< display value = core value × scale
+
+    double toDisplay(double coreValue) const { return coreValue * scale; }
+    double fromDisplay(double displayValue) const { return displayValue / scale; }
+};
+
+namespace units {
+inline constexpr double degree = std::numbers::pi / 180.0; ///< radians per degree
+
+inline constexpr Unit none{"", 1.0};
+inline constexpr Unit millimetre{"mm", 1.0};
+inline constexpr Unit squareMillimetre{"mm²", 1.0};
+inline constexpr Unit angle{"°", 180.0 / std::numbers::pi};             ///< core: rad
+inline constexpr Unit newton{"N", 1.0};
+inline constexpr Unit newtonMetre{"N·m", 1.0};
+inline constexpr Unit millimetrePerSecond{"mm/s", 1.0};
+inline constexpr Unit radianPerSecond{"rad/s", 1.0};
+inline constexpr Unit millimetrePerRadian{"mm/rad", 1.0};
+inline constexpr Unit millimetrePerRadian2{"mm/rad²", 1.0};
+inline constexpr Unit squareMillimetrePerRadian{"mm²/rad", 1.0};
+inline constexpr Unit radianPerMillimetre{"rad/mm", 1.0};
+inline constexpr Unit millimetrePerRevolution{"mm/rev", 1.0};
+inline constexpr Unit millimetrePerStep{"mm/step", 1.0};
+inline constexpr Unit anglePerStep{"°/step", 180.0 / std::numbers::pi}; ///< core: rad/step
+inline constexpr Unit newtonMetrePerRadian{"N·m/rad", 1.0};
+} // namespace units
+
+} // namespace pkm

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# From nothing to a running PKM Studio: installs missing Debian packages, builds in Release and
+# starts pkm-studio with the active П-joint prototype open. Extra arguments go to pkm-studio
+# (a preset id or a design file replaces the prototype).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --target pkm-studio pkm
+if [[ $# -eq 0 ]]; then
+    set -- pjoint-prototype
+fi
+exec build/bin/pkm-studio "$@"

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Builds everything (Release, warnings as errors) and runs the whole test suite. Benchmarks
+# are not tests: run them with  ctest --test-dir build -L bench --output-on-failure
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPKM_WARNINGS_AS_ERRORS=ON -DPKM_BUILD_TESTS=ON
+cmake --build build
+ctest --test-dir build --output-on-failure --label-exclude bench -j 2

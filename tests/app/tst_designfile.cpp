@@ -1,0 +1,127 @@
+// Design files and presets: every preset loads, save → load is exact, bad files are refused
+// with a message naming the file.
+#include "designfile.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace pkm;
+
+class TestDesignFile : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void presetsLoad()
+    {
+        const QList<PresetInfo> presets = designfile::presets();
+        QStringList ids;
+        for (const PresetInfo &preset : presets) {
+            ids << preset.id;
+            auto design = designfile::load(preset.id);
+            QVERIFY2(design.ok(), design ? "" : design.failure().message.c_str());
+            QCOMPARE(design->id, preset.id);
+            QCOMPARE(QString::fromUtf8(design->mechanism->kind().data()), preset.kind);
+            QVERIFY(!design->title.isEmpty());
+        }
+        for (const char *id : {"pjoint-prototype", "pjoint-study-k03", "pjoint-study-k04", "pjoint-study-k05"})
+            QVERIFY2(ids.contains(QLatin1String(id)), id);
+    }
+
+    void prototypeValues()
+    {
+        auto design = designfile::load(QStringLiteral("pjoint-prototype"));
+        QVERIFY(design.ok());
+        const ParameterSet p = design->mechanism->parameters();
+        QCOMPARE(p.at("a"), 170.0);
+        QCOMPARE(p.at("k"), 0.4);
+        QCOMPARE(p.at("theta_max"), 60 * units::degree);
+        QCOMPARE(p.at("lead"), 2.54);
+        QCOMPARE(p.at("step"), 0.0127);
+        QCOMPARE(p.at("speed_max"), 50.0);
+        QCOMPARE(p.at("force_max"), 130.0);
+    }
+
+    void saveLoadRoundTrip()
+    {
+        auto design = designfile::load(QStringLiteral("pjoint-prototype"));
+        auto changed = designfile::setDisplayParameter(design->mechanism, QStringLiteral("a"), 183.25);
+        QVERIFY(changed.ok());
+        design->mechanism = *changed;
+        auto pose = designfile::solveDisplayVariables(*design->mechanism, design->pose, {{QStringLiteral("theta"), 17.5}});
+        QVERIFY(pose.ok());
+        design->pose = *pose;
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("mine.pkm.json"));
+        QVERIFY(designfile::save(*design, path).ok());
+        auto loaded = designfile::load(path);
+        QVERIFY2(loaded.ok(), loaded ? "" : loaded.failure().message.c_str());
+        QCOMPARE(loaded->mechanism->parameters(), design->mechanism->parameters());
+        QVERIFY(std::abs(loaded->pose.outputs[0] - design->pose.outputs[0]) < 1e-15);
+        QCOMPARE(designfile::serialize(*loaded), designfile::serialize(*design));
+    }
+
+    void badFiles_data()
+    {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("expected");
+        const QByteArray head = R"({"format": "pkm-studio-design", "version": 1, "mechanism": "pjoint", )";
+        QTest::newRow("not json") << QByteArray("{ broken") << "not valid JSON";
+        QTest::newRow("other format") << QByteArray(R"({"format": "x"})") << "not a PKM Studio design";
+        QTest::newRow("newer version")
+            << QByteArray(R"({"format": "pkm-studio-design", "version": 99, "mechanism": "pjoint"})") << "newer";
+        QTest::newRow("unknown kind")
+            << QByteArray(R"({"format": "pkm-studio-design", "version": 1, "mechanism": "robot"})") << "unknown mechanism";
+        QTest::newRow("unknown parameter") << QByteArray(head + R"("parameters": {"zz": 1}})") << "unknown parameter 'zz'";
+        QTest::newRow("text value") << QByteArray(head + R"("parameters": {"a": "long"}})") << "'a' is not a number";
+        QTest::newRow("invalid value") << QByteArray(head + R"("parameters": {"a": -1}})") << "a (crank";
+        QTest::newRow("pose out of range") << QByteArray(head + R"("pose": {"theta": 80}})") << "θ = 80";
+    }
+    void badFiles()
+    {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bad.pkm.json"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(content);
+        file.close();
+        auto loaded = designfile::load(path);
+        QVERIFY(!loaded.ok());
+        const QString message = QString::fromStdString(loaded.failure().message);
+        QVERIFY2(message.contains(expected), qPrintable(message));
+        QVERIFY2(message.contains(path), qPrintable(message));
+    }
+
+    void missingFileAndPreset()
+    {
+        QVERIFY(!designfile::load(QStringLiteral("/nonexistent/x.pkm.json")).ok());
+        auto none = designfile::load(QStringLiteral("no-such-preset"));
+        QVERIFY(!none.ok());
+        QVERIFY(QString::fromStdString(none.failure().message).contains(QStringLiteral("no-such-preset")));
+    }
+
+    void saveIsAtomic()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("keep.pkm.json"));
+        auto design = designfile::load(QStringLiteral("pjoint-prototype"));
+        QVERIFY(designfile::save(*design, path).ok());
+        QFile before(path);
+        QVERIFY(before.open(QIODevice::ReadOnly));
+        const QByteArray original = before.readAll();
+        before.close();
+        // a save into a folder that does not exist fails and names the path
+        auto failed = designfile::save(*design, dir.filePath(QStringLiteral("missing/dir/x.pkm.json")));
+        QVERIFY(!failed.ok());
+        QVERIFY(QString::fromStdString(failed.failure().message).contains(QStringLiteral("missing/dir")));
+        QFile after(path);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), original);
+    }
+};
+
+QTEST_MAIN(TestDesignFile)
+#include "tst_designfile.moc"

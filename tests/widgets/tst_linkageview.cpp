@@ -1,0 +1,483 @@
+// The 2D linkage view driven like a user would: a real П-joint, mouse presses, moves, wheel
+// turns, and the scene fed back through the mechanism as the document would.
+
+#include "linkageview.h"
+#include "pjoint.h"
+
+#include <QApplication>
+#include <QBuffer>
+#include <QImage>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QSignalSpy>
+#include <QTest>
+#include <QWheelEvent>
+
+#include <cmath>
+
+using namespace pkm;
+
+namespace {
+
+Eigen::Vector2d jointPosition(const Scene &scene, int joint)
+{
+    return scene.joints[std::size_t(joint)].position.head<2>();
+}
+
+double distance(const QPointF &a, const QPointF &b)
+{
+    return std::hypot(a.x() - b.x(), a.y() - b.y());
+}
+
+bool sameMapping(const ViewMapping &a, const ViewMapping &b)
+{
+    return a.scale == b.scale && a.origin == b.origin;
+}
+
+/// A mouse move with the buttons still held, which QTest::mouseMove does not carry everywhere.
+void moveMouse(QWidget *widget, const QPointF &position, Qt::MouseButtons buttons)
+{
+    QMouseEvent move(QEvent::MouseMove, position, widget->mapToGlobal(position), Qt::NoButton, buttons, Qt::NoModifier);
+    QApplication::sendEvent(widget, &move);
+}
+
+void turnWheel(QWidget *widget, const QPointF &position, int angleDelta)
+{
+    QWheelEvent wheel(position, widget->mapToGlobal(position), QPoint(), QPoint(0, angleDelta), Qt::NoButton,
+        Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(widget, &wheel);
+}
+
+int darkPixels(const QImage &image, const QPoint &centre, int halfSize)
+{
+    int count = 0;
+    for (int y = centre.y() - halfSize; y <= centre.y() + halfSize; ++y) {
+        for (int x = centre.x() - halfSize; x <= centre.x() + halfSize; ++x) {
+            if (image.rect().contains(x, y) && qGray(image.pixel(x, y)) < 110)
+                ++count;
+        }
+    }
+    return count;
+}
+
+} // namespace
+
+class TestLinkageView : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+
+    void fitShowsWholeExtent_data() { thetaTable(); }
+    void fitShowsWholeExtent();
+    void handlePositionMapsToJoint_data() { thetaTable(); }
+    void handlePositionMapsToJoint();
+    void dragEmitsTargetsAndFollowsScene_data() { thetaTable(); }
+    void dragEmitsTargetsAndFollowsScene();
+    void hoverShowsHintAndCursor();
+    void wheelZoomKeepsPointUnderCursor();
+    void setSceneKeepsMapping_data() { thetaTable(); }
+    void setSceneKeepsMapping();
+    void zoomSlotsAndDoubleClickFit();
+    void resizeRefitsUntilUserMoves();
+    void renderDrawsMotorBody_data() { thetaTable(); }
+    void renderDrawsMotorBody();
+    void degenerateScenesDoNotCrash();
+    void rendersIntoPdf();
+    void paintIsCountedAndTimed();
+
+private:
+    static void thetaTable();
+    Pose poseAt(double thetaDegrees) const;
+    Scene sceneAt(double thetaDegrees) const { return m_mechanism->scene(poseAt(thetaDegrees)); }
+
+    MechanismPtr m_mechanism;
+    PJointDesign m_design;
+};
+
+void TestLinkageView::thetaTable()
+{
+    QTest::addColumn<double>("theta"); // degrees
+    QTest::newRow("theta_min") << -60.0;
+    QTest::newRow("-30") << -30.0;
+    QTest::newRow("home") << 0.0;
+    QTest::newRow("45") << 45.0;
+    QTest::newRow("theta_max") << 60.0;
+}
+
+Pose TestLinkageView::poseAt(double thetaDegrees) const
+{
+    const Result<Pose> pose = m_mechanism->solveInverse(Coordinates::Constant(1, thetaDegrees * units::degree));
+    return pose.ok() ? pose.value() : m_mechanism->homePose();
+}
+
+void TestLinkageView::initTestCase()
+{
+    const Result<MechanismPtr> mechanism = PJoint::create(m_design);
+    QVERIFY(mechanism.ok());
+    m_mechanism = mechanism.value();
+    for (double theta : {-60.0, -30.0, 0.0, 45.0, 60.0})
+        QVERIFY(m_mechanism->solveInverse(Coordinates::Constant(1, theta * units::degree)).ok());
+    QCOMPARE(m_mechanism->scene(m_mechanism->homePose()).handles.front().joint, 2); // A
+}
+
+void TestLinkageView::fitShowsWholeExtent()
+{
+    QFETCH(double, theta);
+    LinkageView view;
+    view.resize(800, 600);
+    view.setScene(sceneAt(theta));
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+
+    const Eigen::AlignedBox3d extent = view.scene().extent;
+    QVERIFY(!extent.isEmpty());
+    const QRectF widget(view.rect());
+    using Corner = Eigen::AlignedBox3d::CornerType;
+    for (Corner corner :
+        {Corner::BottomLeftFloor, Corner::BottomRightFloor, Corner::TopLeftFloor, Corner::TopRightFloor}) {
+        const QPointF p = view.mapping().toDevice(extent.corner(corner));
+        QVERIFY2(widget.contains(p), qPrintable(QStringLiteral("corner at %1, %2").arg(p.x()).arg(p.y())));
+    }
+    // Fitted, not merely inside: one axis of the extent spans the widget less the margins.
+    const double width = extent.sizes().x() * view.mapping().scale, height = extent.sizes().y() * view.mapping().scale;
+    QVERIFY(width > 0.85 * widget.width() || height > 0.85 * widget.height());
+    // Every joint is drawn inside too.
+    for (const SceneJoint &joint : view.scene().joints)
+        QVERIFY(widget.contains(view.mapping().toDevice(joint.position)));
+}
+
+void TestLinkageView::handlePositionMapsToJoint()
+{
+    QFETCH(double, theta);
+    LinkageView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const Scene scene = sceneAt(theta);
+    view.setScene(scene);
+
+    const ViewMapping mapping = view.mapping();
+    const Eigen::Vector2d a = jointPosition(scene, scene.handles[0].joint);
+    const Eigen::Vector2d back = mapping.toScene(view.handlePosition(0));
+    QVERIFY2((back - a).norm() * mapping.scale < 0.5, qPrintable(QString::number((back - a).norm() * mapping.scale)));
+    QVERIFY(distance(view.handlePosition(0), mapping.toDevice(a)) < 0.5);
+    // The prototype's A: B + a(sin θ, cos θ).
+    const double t = theta * units::degree;
+    const Eigen::Vector2d expected(m_design.b + m_design.a * std::sin(t), m_design.a * std::cos(t));
+    QVERIFY((a - expected).norm() < 1e-9);
+    QCOMPARE(view.handlePosition(7), QPointF()); // no such handle
+}
+
+void TestLinkageView::dragEmitsTargetsAndFollowsScene()
+{
+    QFETCH(double, theta);
+    LinkageView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    Pose pose = poseAt(theta);
+    view.setScene(m_mechanism->scene(pose));
+    const ViewMapping mapping = view.mapping();
+
+    QSignalSpy started(&view, &LinkageView::dragStarted);
+    QSignalSpy dragged(&view, &LinkageView::handleDragged);
+    QSignalSpy finished(&view, &LinkageView::dragFinished);
+
+    const QPoint press = view.handlePosition(0).toPoint();
+    QTest::mousePress(&view, Qt::LeftButton, Qt::NoModifier, press);
+    QCOMPARE(started.count(), 1);
+    QCOMPARE(started.at(0).at(0).toInt(), 0);
+    QCOMPARE(view.activeHandle(), 0);
+    QCOMPARE(view.cursor().shape(), Qt::ClosedHandCursor);
+
+    // Move the pointer to where A is 10° further on, within the θ range.
+    const double targetTheta = (theta <= 50.0 ? theta + 10.0 : theta - 10.0) * units::degree;
+    const Eigen::Vector2d targetA(m_design.b + m_design.a * std::sin(targetTheta), m_design.a * std::cos(targetTheta));
+    const QPoint mouse = mapping.toDevice(targetA).toPoint();
+    moveMouse(&view, mouse, Qt::LeftButton);
+    QCOMPARE(dragged.count(), 1);
+    QCOMPARE(dragged.at(0).at(0).toInt(), 0);
+    const Eigen::Vector2d target = dragged.at(0).at(1).value<Eigen::Vector2d>();
+    QVERIFY((target - mapping.toScene(QPointF(mouse))).norm() < 1e-9);
+    QVERIFY((target - targetA).norm() * mapping.scale < 1.0); // the pointer rounded to a pixel
+    QVERIFY(sameMapping(view.mapping(), mapping)); // dragging does not pan
+
+    // The owner answers with the pose that follows; the view draws A under the pointer.
+    const Result<Pose> next = m_mechanism->dragHandle(pose, 0, target);
+    QVERIFY(next.ok());
+    QVERIFY(std::abs(next->outputs[0] - targetTheta) < 1e-2);
+    const QPointF before = view.handlePosition(0);
+    const int paints = view.paintCount();
+    view.setScene(m_mechanism->scene(next.value()));
+    QVERIFY(distance(view.handlePosition(0), QPointF(mouse)) < 1.5);
+    QVERIFY(distance(view.handlePosition(0), before) > 10.0);
+    QTRY_VERIFY(view.paintCount() > paints);
+
+    const QImage shown = view.grab().toImage();
+    const QPoint drawn = view.handlePosition(0).toPoint();
+    QCOMPARE(QColor(shown.pixel(drawn)), QColor(Qt::white)); // the pivot's white fill
+    QVERIFY(QColor(shown.pixel(before.toPoint())) != QColor(Qt::white));
+
+    QTest::mouseRelease(&view, Qt::LeftButton, Qt::NoModifier, mouse);
+    QCOMPARE(finished.count(), 1);
+    QCOMPARE(dragged.count(), 1);
+    QVERIFY(view.cursor().shape() != Qt::ClosedHandCursor);
+
+    // A move after the release is a hover, not a drag.
+    moveMouse(&view, mouse + QPoint(40, 40), Qt::NoButton);
+    QCOMPARE(dragged.count(), 1);
+}
+
+void TestLinkageView::hoverShowsHintAndCursor()
+{
+    LinkageView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(sceneAt(20.0));
+
+    const QPointF c = view.handlePosition(1);
+    moveMouse(&view, c + QPointF(5.0, -5.0), Qt::NoButton);
+    QCOMPARE(view.activeHandle(), 1);
+    QCOMPARE(view.cursor().shape(), Qt::OpenHandCursor);
+    QCOMPARE(view.toolTip(), QString::fromStdString(view.scene().handles[1].hint));
+    QVERIFY(!view.toolTip().isEmpty());
+
+    moveMouse(&view, c + QPointF(LinkageView::hitRadius + 20.0, 0.0), Qt::NoButton);
+    QCOMPARE(view.activeHandle(), -1);
+    QVERIFY(view.toolTip().isEmpty());
+    QVERIFY(view.cursor().shape() != Qt::OpenHandCursor);
+}
+
+void TestLinkageView::wheelZoomKeepsPointUnderCursor()
+{
+    LinkageView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(sceneAt(0.0));
+
+    for (const QPointF anchor : {QPointF(300.0, 250.0), QPointF(620.5, 80.25)}) {
+        const ViewMapping before = view.mapping();
+        const Eigen::Vector2d fixed = before.toScene(anchor);
+        turnWheel(&view, anchor, 120);
+        QVERIFY(std::abs(view.mapping().scale / before.scale - LinkageView::zoomStep) < 1e-12);
+        QVERIFY(distance(view.mapping().toDevice(fixed), anchor) < 1e-6);
+        turnWheel(&view, anchor, -240);
+        QVERIFY(view.mapping().scale < before.scale);
+        QVERIFY(distance(view.mapping().toDevice(fixed), anchor) < 1e-6);
+    }
+}
+
+void TestLinkageView::setSceneKeepsMapping()
+{
+    QFETCH(double, theta);
+    LinkageView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(sceneAt(0.0));
+    const ViewMapping fitted = view.mapping();
+
+    view.setScene(sceneAt(theta));
+    QVERIFY(sameMapping(view.mapping(), fitted));
+
+    // After a zoom the new pose does not refit either.
+    view.zoomIn();
+    const ViewMapping zoomed = view.mapping();
+    view.setScene(sceneAt(-theta));
+    QVERIFY(sameMapping(view.mapping(), zoomed));
+}
+
+void TestLinkageView::zoomSlotsAndDoubleClickFit()
+{
+    LinkageView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(sceneAt(30.0));
+    const ViewMapping fitted = view.mapping();
+    const QPointF centre = QRectF(view.rect()).center();
+    const Eigen::Vector2d middle = fitted.toScene(centre);
+
+    view.zoomIn();
+    QVERIFY(std::abs(view.mapping().scale - fitted.scale * LinkageView::zoomStep) < 1e-9);
+    QVERIFY(distance(view.mapping().toDevice(middle), centre) < 1e-6);
+    view.zoomOut();
+    view.zoomOut();
+    QVERIFY(view.mapping().scale < fitted.scale);
+
+    // Pan with the middle button, then double-click on empty space: back to the fit.
+    QTest::mousePress(&view, Qt::MiddleButton, Qt::NoModifier, QPoint(100, 100));
+    moveMouse(&view, QPointF(160.0, 130.0), Qt::MiddleButton);
+    QTest::mouseRelease(&view, Qt::MiddleButton, Qt::NoModifier, QPoint(160, 130));
+    QVERIFY(!sameMapping(view.mapping(), fitted));
+    QPoint empty(10, 10);
+    QVERIFY(view.handleAt(empty) < 0);
+    QTest::mouseDClick(&view, Qt::LeftButton, Qt::NoModifier, empty);
+    QVERIFY(sameMapping(view.mapping(), fitted));
+
+    // The fitToView() slot does the same.
+    view.zoomIn();
+    view.fitToView();
+    QVERIFY(sameMapping(view.mapping(), fitted));
+}
+
+void TestLinkageView::resizeRefitsUntilUserMoves()
+{
+    LinkageView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(sceneAt(0.0));
+    const double small = view.mapping().scale;
+
+    view.resize(1200, 900);
+    QTRY_COMPARE(view.size(), QSize(1200, 900));
+    QVERIFY(view.mapping().scale > small);
+    QVERIFY(
+        sameMapping(view.mapping(), LinkageView::fittedMapping(view.scene(), QRectF(view.rect()), view.sceneStyle())));
+
+    view.zoomOut();
+    const double zoomed = view.mapping().scale;
+    view.resize(900, 700);
+    QTRY_COMPARE(view.size(), QSize(900, 700));
+    QCOMPARE(view.mapping().scale, zoomed);
+}
+
+void TestLinkageView::renderDrawsMotorBody()
+{
+    QFETCH(double, theta);
+    const Scene scene = sceneAt(theta);
+    const SceneStyle style;
+    QImage image(1200, 900, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::magenta); // anything left unpainted would show
+    {
+        QPainter painter(&image);
+        LinkageView::renderScene(painter, QRectF(image.rect()), scene, style);
+    }
+    const ViewMapping mapping = LinkageView::fittedMapping(scene, QRectF(image.rect()), style);
+
+    // The motor body: a dark block from O along O→A. Sample it on a 5 × 5 grid over its inner
+    // part (labels with knock-out boxes may cover a strip of it).
+    const SceneActuator &actuator = scene.actuators.front();
+    const Eigen::Vector2d o = jointPosition(scene, actuator.from), a = jointPosition(scene, actuator.to);
+    const Eigen::Vector2d along = (a - o).normalized(), across(-along.y(), along.x());
+    int dark = 0;
+    for (int i = 0; i < 5; ++i) {
+        for (int j = 0; j < 5; ++j) {
+            const Eigen::Vector2d sample
+                = o + (0.2 + 0.15 * i) * actuator.bodyLength * along + (-0.3 + 0.15 * j) * actuator.bodyWidth * across;
+            if (qGray(image.pixel(mapping.toDevice(sample).toPoint())) < 110)
+                ++dark;
+        }
+    }
+    QVERIFY2(dark >= 15, qPrintable(QStringLiteral("%1 dark samples of 25").arg(dark)));
+    // Its middle in particular, unless a label sits there.
+    QVERIFY(darkPixels(image, mapping.toDevice(o + 0.5 * actuator.bodyLength * along).toPoint(), 3) >= 5);
+
+    // Far from the mechanism: background, not magenta, not dark.
+    const QColor corner = image.pixelColor(4, 4);
+    QVERIFY(corner != QColor(Qt::magenta));
+    QVERIFY(qGray(corner.rgb()) > 200);
+    // The screw, between the body and A, is drawn and lighter than the body.
+    const Eigen::Vector2d screwPoint = o + (actuator.bodyLength + 4.0) * (a - o).normalized();
+    const QColor screw = image.pixelColor(mapping.toDevice(screwPoint).toPoint());
+    QVERIFY(qGray(screw.rgb()) > 110 && qGray(screw.rgb()) < 235);
+}
+
+void TestLinkageView::degenerateScenesDoNotCrash()
+{
+    Scene scene = sceneAt(0.0);
+    QImage image(600, 400, QImage::Format_ARGB32_Premultiplied);
+    auto render = [&image](const Scene &s) {
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        LinkageView::renderScene(painter, QRectF(image.rect()), s, SceneStyle {});
+    };
+
+    // The pose is shorter than the motor body: the body is clipped at A, no screw.
+    Scene shortActuator = scene;
+    shortActuator.actuators[0].bodyLength = 1000.0;
+    render(shortActuator);
+    const ViewMapping mapping = LinkageView::fittedMapping(shortActuator, QRectF(image.rect()), SceneStyle {});
+    const Eigen::Vector2d o = jointPosition(scene, 0), a = jointPosition(scene, 2);
+    QVERIFY(darkPixels(image, mapping.toDevice(0.5 * (o + a)).toPoint(), 2) >= 20); // body up to A
+
+    // Zero length, zero and negative sizes, bad joint indices, an empty extent, empty scene.
+    Scene odd = scene;
+    odd.joints[2].position = odd.joints[0].position;
+    odd.actuators[0].rodDiameter = 0.0;
+    odd.actuators.push_back({0, 3, -5.0, -1.0, -1.0, "x"});
+    odd.bars.push_back({1, 99, BarKind::Rod, "bad"});
+    odd.angles.push_back({42, 0.0, 1.0, 10.0, "bad"});
+    odd.angles.push_back({1, 0.0, 0.0, 0.0, "zero"});
+    odd.dimensions.push_back({3, 3, 5.0, "same joint"});
+    odd.dimensions.push_back({0, 1, 0.0, ""});
+    odd.handles.push_back({-1, "bad"});
+    render(odd);
+    odd.extent = Eigen::AlignedBox3d();
+    render(odd);
+    render(Scene {});
+
+    LinkageView view;
+    view.resize(400, 300);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(odd);
+    view.repaint();
+    QVERIFY(view.handleAt(QPointF(-1e6, -1e6)) < 0);
+    QCOMPARE(view.handlePosition(2), QPointF());
+}
+
+void TestLinkageView::rendersIntoPdf()
+{
+    // The export path: a vector device at 300 dpi, symbols and text scaled with pixelSize.
+    QBuffer buffer;
+    QVERIFY(buffer.open(QIODevice::WriteOnly));
+    {
+        QPdfWriter pdf(&buffer);
+        pdf.setResolution(300);
+        pdf.setPageSize(QPageSize(QPageSize::A4));
+        pdf.setPageOrientation(QPageLayout::Landscape);
+        SceneStyle style;
+        style.pixelSize = pdf.resolution() / 96.0;
+        QPainter painter(&pdf);
+        QVERIFY(painter.isActive());
+        LinkageView view;
+        view.setScene(sceneAt(30.0));
+        view.setSceneStyle(style);
+        view.renderTo(painter, QRectF(0, 0, pdf.width(), pdf.height()));
+    }
+    QVERIFY(buffer.data().startsWith("%PDF"));
+    QVERIFY(buffer.size() > 2000);
+}
+
+void TestLinkageView::paintIsCountedAndTimed()
+{
+    LinkageView view;
+    view.resize(1600, 1000);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(sceneAt(30.0));
+    view.setMessage(QStringLiteral("θ stops at its upper limit 60°"));
+
+    const int before = view.paintCount();
+    double fastest = 1e9, total = 0.0;
+    constexpr int repeats = 50;
+    for (int i = 0; i < repeats; ++i) {
+        view.repaint();
+        fastest = std::min(fastest, view.lastPaintMilliseconds());
+        total += view.lastPaintMilliseconds();
+    }
+    QCOMPARE(view.paintCount(), before + repeats);
+    QVERIFY(view.lastPaintMilliseconds() > 0.0);
+    // Reported, not asserted: timings belong to bench/, this only shows them in the log.
+    qInfo("paint 1600x1000: fastest %.3f ms, mean %.3f ms", fastest, total / repeats);
+}
+
+QTEST_MAIN(TestLinkageView)
+#include "tst_linkageview.moc"

@@ -1,0 +1,249 @@
+#include "designpanel.h"
+
+#include "quantityformat.h"
+
+#include <QEvent>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+
+#include <cmath>
+
+namespace pkm {
+
+namespace {
+QString qs(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+QString groupTitle(ParameterGroup group)
+{
+    switch (group) {
+    case ParameterGroup::Geometry: return DesignPanel::tr("Geometry");
+    case ParameterGroup::Range: return DesignPanel::tr("Motion range");
+    case ParameterGroup::Actuator: return DesignPanel::tr("Actuator");
+    case ParameterGroup::Drawing: return DesignPanel::tr("Motor body (drawing)");
+    case ParameterGroup::Mode: return DesignPanel::tr("Modes");
+    }
+    return {};
+}
+
+const char *nameProperty = "pkmParameter";
+} // namespace
+
+bool parseNumber(const QString &text, const QString &unitSymbol, double *value)
+{
+    QString t = text.trimmed();
+    if (!unitSymbol.isEmpty() && t.endsWith(unitSymbol))
+        t = t.left(t.size() - unitSymbol.size()).trimmed();
+    t.replace(QChar(0x2212), QLatin1Char('-')); // typographic minus
+    bool ok = false;
+    double v = QLocale().toDouble(t, &ok);
+    if (!ok)
+        v = QLocale::c().toDouble(t, &ok);
+    if (!ok || !std::isfinite(v))
+        return false;
+    *value = v;
+    return true;
+}
+
+DesignPanel::DesignPanel(QWidget *parent)
+    : QWidget(parent)
+{
+    auto *layout = new QVBoxLayout(this);
+    m_title = new QLabel(this);
+    m_title->setWordWrap(true);
+    QFont titleFont = m_title->font();
+    titleFont.setBold(true);
+    m_title->setFont(titleFont);
+    layout->addWidget(m_title);
+    m_groups = new QVBoxLayout;
+    layout->addLayout(m_groups);
+    m_message = new QLabel(this);
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet(QStringLiteral("color: #b3261e; font-weight: bold;"));
+    m_message->hide();
+    layout->addWidget(m_message);
+    m_warnings = new QLabel(this);
+    m_warnings->setWordWrap(true);
+    m_warnings->setStyleSheet(QStringLiteral("color: #8a5a00;"));
+    m_warnings->hide();
+    layout->addWidget(m_warnings);
+    layout->addStretch(1);
+}
+
+void DesignPanel::setMechanism(const MechanismPtr &mechanism)
+{
+    const bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind();
+    m_mechanism = mechanism;
+    if (rebuildNeeded)
+        rebuild();
+    showValues();
+}
+
+void DesignPanel::rebuild()
+{
+    while (QLayoutItem *item = m_groups->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_fields.clear();
+    QHash<int, QFormLayout *> forms;
+    for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
+        const int group = static_cast<int>(info.group);
+        if (!forms.contains(group)) {
+            auto *box = new QGroupBox(groupTitle(info.group), this);
+            auto *form = new QFormLayout(box);
+            form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+            m_groups->addWidget(box);
+            forms.insert(group, form);
+        }
+        const QString name = qs(info.name);
+        auto *row = new QWidget;
+        auto *rowLayout = new QHBoxLayout(row);
+        rowLayout->setContentsMargins(0, 0, 0, 0);
+        auto *edit = new QLineEdit(row);
+        edit->setObjectName(QStringLiteral("parameter_") + name);
+        edit->setProperty(nameProperty, name);
+        edit->setAlignment(Qt::AlignRight);
+        edit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0000.00000")));
+        edit->installEventFilter(this);
+        const QString unit = unitText(info.unit);
+        QString range = info.domain.max == std::numeric_limits<double>::infinity()
+                          ? tr("greater than %1").arg(QLocale().toString(info.unit.toDisplay(info.domain.min)))
+                          : tr("between %1 and %2")
+                                .arg(QLocale().toString(info.unit.toDisplay(info.domain.min)),
+                                     QLocale().toString(info.unit.toDisplay(info.domain.max)));
+        edit->setToolTip(tr("%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.")
+                             .arg(qs(info.label), name, range, unit)
+                             .arg(QLocale().toString(info.displayStep)));
+        connect(edit, &QLineEdit::editingFinished, this, [this, name] { commit(name, false); });
+        rowLayout->addWidget(edit, 1);
+        auto *unitLabel = new QLabel(unit, row);
+        unitLabel->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")));
+        rowLayout->addWidget(unitLabel);
+        auto *label = new QLabel(QStringLiteral("<b>%1</b>&nbsp; %2").arg(qs(info.symbol).toHtmlEscaped(),
+                                                                      qs(info.label).toHtmlEscaped()));
+        label->setBuddy(edit);
+        label->setToolTip(edit->toolTip());
+        forms.value(group)->addRow(label, row);
+        m_fields.insert(name, edit);
+    }
+}
+
+void DesignPanel::showValues()
+{
+    const ParameterSet values = m_mechanism->parameters();
+    for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
+        QLineEdit *edit = m_fields.value(qs(info.name));
+        if (!edit)
+            continue;
+        const double display = info.unit.toDisplay(values.at(info.name));
+        // Enough decimals to show the stored value, trailing zeros dropped.
+        QString text = QLocale().toString(display, 'f', info.decimals + 2);
+        const QChar point = QLocale().decimalPoint().at(0);
+        if (text.contains(point)) {
+            while (text.endsWith(QLatin1Char('0')))
+                text.chop(1);
+            if (text.endsWith(point))
+                text.chop(1);
+        }
+        edit->setText(text);
+        setMark(edit, false);
+    }
+    m_message->hide();
+    QStringList warnings;
+    for (const std::string &w : m_mechanism->designWarnings())
+        warnings << QString::fromStdString(w);
+    m_warnings->setText(warnings.join(QLatin1Char('\n')));
+    m_warnings->setVisible(!warnings.isEmpty());
+}
+
+void DesignPanel::markInvalid(const QString &name, const QString &message)
+{
+    if (QLineEdit *edit = m_fields.value(name))
+        setMark(edit, true);
+    m_message->setText(message + QLatin1Char(' ') + tr("The last valid design is kept."));
+    m_message->show();
+}
+
+QString DesignPanel::message() const
+{
+    return m_message->isVisible() ? m_message->text() : QString();
+}
+
+void DesignPanel::setMark(QLineEdit *field, bool invalid)
+{
+    field->setStyleSheet(invalid ? QStringLiteral("QLineEdit { background: #fde7e5; border: 2px solid #b3261e; }")
+                                 : QString());
+}
+
+void DesignPanel::commit(const QString &name, bool continuous)
+{
+    QLineEdit *edit = m_fields.value(name);
+    if (!edit || !m_mechanism)
+        return;
+    const ParameterSet values = m_mechanism->parameters();
+    for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
+        if (qs(info.name) != name)
+            continue;
+        double value = 0;
+        if (!parseNumber(edit->text(), unitText(info.unit), &value)) {
+            markInvalid(name, tr("%1 (%2): '%3' is not a number.").arg(name, qs(info.label), edit->text()));
+            return;
+        }
+        // An unchanged field (focus left without an edit) is not an edit.
+        const double current = info.unit.toDisplay(values.at(info.name));
+        if (!continuous && std::abs(value - current) <= 1e-12 * std::max(1.0, std::abs(current))
+            && edit->styleSheet().isEmpty())
+            return;
+        emit parameterEdited(name, value, continuous);
+        return;
+    }
+}
+
+void DesignPanel::step(const QString &name, int steps)
+{
+    QLineEdit *edit = m_fields.value(name);
+    for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
+        if (qs(info.name) != name)
+            continue;
+        double value = info.unit.toDisplay(m_mechanism->parameters().at(info.name));
+        value = std::round((value + steps * info.displayStep) / info.displayStep) * info.displayStep;
+        edit->setText(QLocale().toString(value, 'f', info.decimals + 2));
+        commit(name, true);
+        return;
+    }
+}
+
+bool DesignPanel::eventFilter(QObject *watched, QEvent *event)
+{
+    auto *edit = qobject_cast<QLineEdit *>(watched);
+    if (!edit)
+        return QWidget::eventFilter(watched, event);
+    const QString name = edit->property(nameProperty).toString();
+    if (event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent *>(event)->key();
+        if (key == Qt::Key_Up || key == Qt::Key_Down) {
+            step(name, key == Qt::Key_Up ? 1 : -1);
+            return true;
+        }
+        if (key == Qt::Key_Escape) {
+            showValues();
+            return true;
+        }
+    } else if (event->type() == QEvent::Wheel && edit->hasFocus()) {
+        const int delta = static_cast<QWheelEvent *>(event)->angleDelta().y();
+        if (delta != 0)
+            step(name, delta > 0 ? 1 : -1);
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+} // namespace pkm

@@ -1,0 +1,107 @@
+#pragma once
+/// The 2D linkage view: shows one Scene on a mm grid, zooms and pans, and turns a drag of a
+/// scene handle into handleDragged() requests. It never changes the pose itself: its owner
+/// answers handleDragged() by solving the mechanism and calling setScene() with the result.
+
+#include "scene.h"
+#include "scenepainter.h"
+
+#include <Eigen/Core>
+
+#include <QMetaType>
+#include <QWidget>
+
+// Here, not in core: core stays free of Qt (ARCHITECTURE.md).
+Q_DECLARE_METATYPE(Eigen::Vector2d)
+
+namespace pkm {
+
+class LinkageView : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit LinkageView(QWidget *parent = nullptr);
+
+    /// Cheap: stores the scene and schedules a repaint. Only the first scene is fitted; later
+    /// ones keep the mapping so the drawing does not jump while the user drags.
+    void setScene(const Scene &scene);
+    const Scene &scene() const { return m_scene; }
+
+    /// One line at the bottom-left ("θ stops at its upper limit 60°"); empty hides it.
+    void setMessage(const QString &message);
+    QString message() const { return m_message; }
+
+    void setSceneStyle(const SceneStyle &style);
+    const SceneStyle &sceneStyle() const { return m_style; }
+
+    ViewMapping mapping() const { return m_mapping; }
+    /// Device (widget) position of handle `handle`'s joint; a null point for a bad index.
+    QPointF handlePosition(int handle) const;
+    /// The handle whose joint is within the hit radius of `position` (widget), or −1.
+    int handleAt(const QPointF &position) const;
+    /// The hovered or dragged handle, or −1.
+    int activeHandle() const { return m_dragHandle >= 0 ? m_dragHandle : m_hoverHandle; }
+
+    /// Draws the current scene, fitted to its extent, into `target` of any painter (PNG, SVG
+    /// and PDF export): background, grid, scene and scale bar; no handle rings, no message.
+    void renderTo(QPainter &painter, const QRectF &target) const;
+    /// The same for any scene, without a view.
+    static void renderScene(QPainter &painter, const QRectF &target, const Scene &scene, const SceneStyle &style);
+    /// The mapping renderScene() uses for `target`.
+    static ViewMapping fittedMapping(const Scene &scene, const QRectF &target, const SceneStyle &style);
+
+    int paintCount() const { return m_paintCount; }
+    double lastPaintMilliseconds() const { return m_lastPaintMilliseconds; }
+
+    QSize sizeHint() const override { return {800, 600}; }
+    QSize minimumSizeHint() const override { return {200, 150}; }
+
+    static constexpr double hitRadius = 12.0; ///< device px around a handle's joint
+    static constexpr double zoomStep = 1.25; ///< per wheel notch and per zoomIn()
+
+public slots:
+    void fitToView();
+    void zoomIn();
+    void zoomOut();
+
+signals:
+    void dragStarted(int handle);
+    /// The pointer dragging `handle` is at `targetMm` (scene plane, mm).
+    void handleDragged(int handle, const Eigen::Vector2d &targetMm);
+    void dragFinished();
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void leaveEvent(QEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+
+private:
+    /// Scales by `factor` keeping the scene point under `anchor` (widget) where it is.
+    void zoomAbout(const QPointF &anchor, double factor);
+    void setHoverHandle(int handle);
+    void updateCursor();
+
+    Scene m_scene;
+    bool m_hasScene = false;
+    SceneStyle m_style;
+    ViewMapping m_mapping;
+    bool m_userMoved = false; ///< zoomed or panned since the last fit: resizing keeps the mapping
+    QString m_message;
+
+    int m_hoverHandle = -1;
+    int m_dragHandle = -1;
+    bool m_panning = false;
+    QPointF m_lastPanPosition;
+
+    int m_paintCount = 0;
+    double m_lastPaintMilliseconds = 0.0;
+};
+
+} // namespace pkm

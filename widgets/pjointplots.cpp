@@ -1,0 +1,517 @@
+#include "pjointplots.h"
+
+#include "pjointcurves.h"
+
+#include <qcustomplot.h>
+
+#include <QBoxLayout>
+#include <QEvent>
+#include <QGridLayout>
+#include <QLocale>
+#include <QTabWidget>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pkm {
+
+namespace {
+
+using pjointcurves::familyK;
+using pjointcurves::quantities;
+using pjointcurves::Quantity;
+using pjointcurves::symbolOf;
+using pjointcurves::Tab;
+using pjointcurves::unitOf;
+using pjointcurves::valueText;
+static_assert(PJointPlots::PlotCount == pjointcurves::quantityCount, "one quantity per plot, in PlotIndex order");
+
+/// Fig. 10: below this μ the actuator pushes almost along the crank, so J = a·sin μ (and with it
+/// the output torque per newton) is nearly zero. Not the four-bar's usual 40°: with this μ (at
+/// A, between diagonal and crank) μ ≤ arcsin k, ≤ 30° for every preferred k ≤ 0.5. The document
+/// accepts θ within −75…75°, where μ ≥ 3.4° (k = 0.3) … 5.0° (k = 0.5).
+constexpr double weakTransmission = 5.0; ///< °
+constexpr double steepFrom = 40.0, steepTo = 60.0; ///< °, DOMAIN §1: "changes steeply"
+constexpr double recommendedFrom = -60.0, recommendedTo = 40.0; ///< °, DOMAIN §1
+constexpr std::array<QRgb, familyK.size()> familyRgb {0x5e9c76, 0x8e6fb0, 0xc08a3e, 0x8c8c8c, 0xb0b0b0};
+
+constexpr QRgb designRgb = 0x1f5fa8;
+constexpr QRgb cursorRgb = 0xd0312d;
+constexpr QRgb gridRgb = 0xe2e2e2;
+constexpr QRgb axisRgb = 0x303030;
+constexpr QRgb steepFillRgb = 0xfcdcb4, steepEdgeRgb = 0xe8a04c;
+constexpr QRgb recommendedFillRgb = 0xeaf5e7;
+constexpr QRgb weakFillRgb = 0xf6e0e0, weakEdgeRgb = 0xd9a0a0;
+
+constexpr double tickPoints = 11, labelPoints = 12, titlePoints = 13, subtitlePoints = 10.5, legendPoints = 11,
+                 cursorPoints = 11;
+
+QFont fontOf(const QFont &base, double points, bool bold = false)
+{
+    QFont font(base);
+    font.setPointSizeF(points);
+    font.setBold(bold);
+    return font;
+}
+
+/// Degree tick labels ("−45°") at a fixed step, for θ and for the φ, μ axes.
+class DegreeTicker : public QCPAxisTickerFixed
+{
+protected:
+    QString getTickLabel(double tick, const QLocale &locale, QChar, int) override
+    {
+        return locale.toString(qRound(tick)).replace(QLatin1Char('-'), QChar(0x2212)) + QChar(0x00B0);
+    }
+};
+
+void setDegreeTicks(QCPAxis *axis, double step)
+{
+    auto ticker = QSharedPointer<DegreeTicker>::create();
+    ticker->setTickStep(step);
+    ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
+    axis->setTicker(ticker);
+}
+
+QVector<QCPGraphData> toGraphData(const pjointcurves::Curve &curve)
+{
+    QVector<QCPGraphData> data;
+    data.reserve(qsizetype(curve.size()));
+    for (const pjointcurves::Point &point : curve)
+        data.append(QCPGraphData(point.theta, point.value));
+    return data;
+}
+
+/// A light band [from, to] in θ over the whole height of the axis rect (vertical) or in the
+/// value over its whole width (horizontal).
+QCPItemRect *addBand(QCustomPlot *plot, Qt::Orientation orientation, double from, double to, QRgb fill, QPen edge)
+{
+    const bool vertical = orientation == Qt::Vertical;
+    auto *band = new QCPItemRect(plot);
+    band->setLayer(QStringLiteral("bands"));
+    for (QCPItemPosition *corner : {band->topLeft, band->bottomRight}) {
+        corner->setTypeX(vertical ? QCPItemPosition::ptPlotCoords : QCPItemPosition::ptAxisRectRatio);
+        corner->setTypeY(vertical ? QCPItemPosition::ptAxisRectRatio : QCPItemPosition::ptPlotCoords);
+    }
+    band->topLeft->setCoords(vertical ? from : 0.0, vertical ? 0.0 : to);
+    band->bottomRight->setCoords(vertical ? to : 1.0, vertical ? 1.0 : from);
+    band->setBrush(QColor(fill));
+    band->setPen(edge);
+    band->setSelectable(false);
+    return band;
+}
+
+/// Items have no legend entry: an empty bar plottable gives the band a filled swatch there.
+QCPBars *addSwatch(QCustomPlot *plot, QRgb fill, QPen edge)
+{
+    auto *swatch = new QCPBars(plot->xAxis, plot->yAxis);
+    swatch->setBrush(QColor(fill));
+    swatch->setPen(edge);
+    swatch->setSelectable(QCP::stNone);
+    return swatch;
+}
+
+} // namespace
+
+PJointPlots::PJointPlots(QWidget *parent)
+    : QWidget(parent)
+    , m_tabs(new QTabWidget(this))
+{
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_tabs);
+    m_tabs->setFont(fontOf(font(), labelPoints));
+
+    std::array<QWidget *, 3> pages {};
+    for (QWidget *&page : pages) {
+        page = new QWidget;
+        m_tabs->addTab(page, QString());
+    }
+    for (int i = 0; i < PlotCount; ++i)
+        createPanel(i);
+
+    // Geometry: fig. 8 has the largest legend, so it takes the left half; φ and μ share the right.
+    auto *geometry = new QGridLayout(pages[int(Tab::Geometry)]);
+    geometry->addWidget(m_panels[DiagonalPlot].plot, 0, 0, 2, 1);
+    geometry->addWidget(m_panels[PassiveAnglePlot].plot, 0, 1);
+    geometry->addWidget(m_panels[TransmissionAnglePlot].plot, 1, 1);
+    auto *jacobian = new QHBoxLayout(pages[int(Tab::Jacobian)]);
+    jacobian->addWidget(m_panels[JacobianPlot].plot);
+    jacobian->addWidget(m_panels[InverseJacobianPlot].plot);
+    // Actuator: figs 15 and 16 side by side, fig. 17 below across the width, so that each keeps
+    // a readable θ axis when the plot area is only about 800 px wide (1920 px screen).
+    auto *actuator = new QGridLayout(pages[int(Tab::Actuator)]);
+    actuator->addWidget(m_panels[ResolutionPlot].plot, 0, 0);
+    actuator->addWidget(m_panels[SpeedPlot].plot, 0, 1);
+    actuator->addWidget(m_panels[TorquePlot].plot, 1, 0, 1, 2);
+    for (QLayout *l : std::initializer_list<QLayout *> {geometry, jacobian, actuator}) {
+        l->setContentsMargins(4, 4, 4, 4);
+        l->setSpacing(6);
+    }
+
+    setDesign(m_design);
+}
+
+PJointPlots::~PJointPlots() = default;
+
+void PJointPlots::createPanel(int index)
+{
+    const Quantity &q = quantities[index];
+    Panel &p = m_panels[index];
+    auto *plot = new QCustomPlot;
+    p.plot = plot;
+    plot->installEventFilter(this);
+    plot->setBackground(Qt::white);
+    plot->setMinimumSize(260, 220);
+
+    // Layers, bottom to top: background, bands, grid, family, main (this design), axes,
+    // legend, overlay, cursor. The cursor has its own buffer so a slider move redraws it alone;
+    // everything below shares one (the overlay, buffered by default for QCP's selection rect,
+    // which this read-only view never shows), so a paint composites two pixmaps, not three.
+    plot->addLayer(QStringLiteral("bands"), plot->layer(QStringLiteral("grid")), QCustomPlot::limBelow);
+    plot->addLayer(QStringLiteral("family"), plot->layer(QStringLiteral("main")), QCustomPlot::limBelow);
+    plot->layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmLogical);
+    plot->addLayer(QStringLiteral("cursor"), plot->layer(QStringLiteral("overlay")), QCustomPlot::limAbove);
+    p.cursorLayer = plot->layer(QStringLiteral("cursor"));
+    p.cursorLayer->setMode(QCPLayer::lmBuffered);
+
+    // Title, subtitle and legend above the axis rect, so the legend never covers a curve.
+    QCPLayoutGrid *grid = plot->plotLayout();
+    for (int row = 0; row < 3; ++row)
+        grid->insertRow(0);
+    p.title = new QCPTextElement(plot, QString(), fontOf(font(), titlePoints, true));
+    p.subtitle = new QCPTextElement(plot, QString(), fontOf(font(), subtitlePoints));
+    p.subtitle->setTextColor(QColor(0x505050));
+    grid->addElement(0, 0, p.title);
+    grid->addElement(1, 0, p.subtitle);
+    plot->axisRect()->insetLayout()->take(plot->legend);
+    grid->addElement(2, 0, plot->legend);
+    for (int row = 0; row < 3; ++row)
+        grid->setRowStretchFactor(row, 0.001);
+    grid->setRowSpacing(2);
+    plot->legend->setVisible(true);
+    plot->legend->setFont(fontOf(font(), legendPoints));
+    plot->legend->setBorderPen(Qt::NoPen);
+    plot->legend->setIconSize(30, 14);
+    plot->legend->setColumnSpacing(18);
+    plot->legend->setRowSpacing(1);
+    plot->legend->setMargins(QMargins(8, 2, 8, 2));
+
+    for (QCPAxis *axis : {plot->xAxis, plot->yAxis, plot->xAxis2, plot->yAxis2}) {
+        const QPen pen(QColor(axisRgb), 1.2);
+        axis->setBasePen(pen);
+        axis->setTickPen(pen);
+        axis->setSubTickPen(QPen(QColor(axisRgb), 1.0));
+        axis->setTickLabelFont(fontOf(font(), tickPoints));
+        axis->setLabelFont(fontOf(font(), labelPoints));
+        axis->grid()->setPen(QPen(QColor(gridRgb), 1.0));
+        axis->grid()->setZeroLinePen(Qt::NoPen);
+    }
+    for (QCPAxis *axis : {plot->xAxis2, plot->yAxis2}) { // a closed frame, no second scale
+        axis->setVisible(true);
+        axis->setTicks(false);
+        axis->setTickLabels(false);
+    }
+    plot->xAxis->setSubTicks(false);
+    setDegreeTicks(plot->xAxis, 30.0); // steps set in recompute()
+    if (q.unit.symbol == units::angle.symbol)
+        setDegreeTicks(plot->yAxis, 30.0);
+    else
+        plot->yAxis->ticker()->setTickCount(6);
+
+    // Curves. graph(0) is this design over its range; the rest are drawn underneath it.
+    p.design = plot->addGraph();
+    p.design->setPen(QPen(QColor(designRgb), 2.5));
+    if (pjointcurves::hasExtension(q)) { // figs. 8–12 reach beyond the design's θ range
+        p.extension = plot->addGraph();
+        QColor light(designRgb);
+        light.setAlpha(150);
+        p.extension->setPen(QPen(light, 1.5, Qt::DashLine));
+        p.extension->setLayer(QStringLiteral("family"));
+    }
+    for (int j = 0; j < q.familySize; ++j) {
+        QCPGraph *graph = plot->addGraph();
+        graph->setPen(
+            QPen(QColor(familyRgb[size_t(j)]), 1.5, familyK[size_t(j)] >= 1.0 ? Qt::DashDotLine : Qt::SolidLine));
+        graph->setLayer(QStringLiteral("family"));
+        p.family[size_t(j)] = graph;
+    }
+    for (int g = 0; g < plot->graphCount(); ++g)
+        plot->graph(g)->setSelectable(QCP::stNone);
+
+    // Bands: the steep region and the recommended range (DOMAIN §1) where J matters.
+    if (q.tab != Tab::Geometry) {
+        addBand(plot, Qt::Vertical, recommendedFrom, recommendedTo, recommendedFillRgb, Qt::NoPen);
+        addBand(plot, Qt::Vertical, steepFrom, steepTo, steepFillRgb, QPen(QColor(steepEdgeRgb), 1.0));
+        p.recommendedSwatch = addSwatch(plot, recommendedFillRgb, QPen(QColor(0xa8cfa0), 1.0));
+        p.steepSwatch = addSwatch(plot, steepFillRgb, QPen(QColor(steepEdgeRgb), 1.0));
+    }
+    if (index == TransmissionAnglePlot) { // μ ≥ 0
+        addBand(plot, Qt::Horizontal, 0.0, weakTransmission, weakFillRgb, Qt::NoPen);
+        p.weakTransmissionSwatch = addSwatch(plot, weakFillRgb, QPen(QColor(weakEdgeRgb), 1.0));
+    }
+
+    // Cursor: a vertical line at θ, a marker on this design's curve, its value beside it.
+    const QColor red(cursorRgb);
+    p.cursorLine = new QCPItemStraightLine(plot);
+    p.cursorLine->setPen(QPen(red, 1.5));
+    p.cursorMarker = new QCPItemTracer(plot);
+    p.cursorMarker->setStyle(QCPItemTracer::tsCircle);
+    p.cursorMarker->setSize(11);
+    p.cursorMarker->setPen(QPen(red, 2.0));
+    p.cursorMarker->setBrush(Qt::white);
+    p.cursorLabel = new QCPItemText(plot);
+    p.cursorLabel->setFont(fontOf(font(), cursorPoints, true));
+    p.cursorLabel->setColor(QColor(0x202020));
+    p.cursorLabel->setBrush(QColor(255, 255, 255, 235));
+    p.cursorLabel->setPen(QPen(red, 1.0));
+    p.cursorLabel->setPadding(QMargins(6, 3, 6, 3));
+    p.cursorLabel->position->setParentAnchor(p.cursorMarker->position);
+    p.cursorLabel->position->setType(QCPItemPosition::ptAbsolute); // pixel offsets from the marker
+    for (QCPAbstractItem *item :
+        std::initializer_list<QCPAbstractItem *> {p.cursorLine, p.cursorMarker, p.cursorLabel}) {
+        item->setLayer(p.cursorLayer);
+        item->setSelectable(false);
+    }
+}
+
+void PJointPlots::setDesign(const PJointDesign &design)
+{
+    m_design = design;
+    for (int i = 0; i < PlotCount; ++i)
+        recompute(i);
+    retranslate(); // the legend and the subtitles quote the design
+    for (int i = 0; i < PlotCount; ++i) {
+        placeCursor(i); // its value and its label's side depend on the new curve and y range
+        m_panels[i].needsReplot = true;
+        refresh(i);
+    }
+}
+
+void PJointPlots::setTheta(double thetaRadians)
+{
+    m_theta = thetaRadians;
+    for (int i = 0; i < PlotCount; ++i) {
+        placeCursor(i);
+        m_panels[i].needsCursorReplot = true;
+        refresh(i);
+    }
+}
+
+QCustomPlot *PJointPlots::plot(int i) const
+{
+    return i >= 0 && i < PlotCount ? m_panels[i].plot : nullptr;
+}
+
+QString PJointPlots::plotName(int i) const
+{
+    return i >= 0 && i < PlotCount ? QString::fromLatin1(quantities[i].name) : QString();
+}
+
+int PJointPlots::plotIndex(const QString &name) const
+{
+    for (int i = 0; i < PlotCount; ++i)
+        if (name == QLatin1String(quantities[i].name))
+            return i;
+    return -1;
+}
+
+double PJointPlots::cursorTheta() const
+{
+    return m_panels[0].cursorLine->point1->key();
+}
+
+double PJointPlots::cursorValue(int i) const
+{
+    return i >= 0 && i < PlotCount ? m_panels[i].cursorValue : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool PJointPlots::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::Show || event->type() == QEvent::Resize) {
+        for (int i = 0; i < PlotCount; ++i) {
+            if (m_panels[i].plot != watched)
+                continue;
+            if (event->type() == QEvent::Resize)
+                fitToWidth(i);
+            else
+                refresh(i, true); // its tab became visible: catch up with what it missed
+            break;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void PJointPlots::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        for (int i = 0; i < PlotCount; ++i) {
+            m_panels[i].needsReplot = true;
+            refresh(i, true);
+        }
+    }
+    QWidget::changeEvent(event);
+}
+
+void PJointPlots::recompute(int index)
+{
+    Panel &p = m_panels[index];
+    const pjointcurves::Plot curves = pjointcurves::compute(m_design, index);
+    p.design->data()->set(toGraphData(curves.design), true);
+    if (p.extension) {
+        p.extension->data()->set(toGraphData(curves.extension), true);
+        if (curves.extensionBeyond)
+            p.extension->addToLegend();
+        else
+            p.extension->removeFromLegend();
+    }
+    for (size_t j = 0; j < curves.family.size(); ++j)
+        p.family[j]->data()->set(toGraphData(curves.family[j]), true);
+
+    p.plot->xAxis->setRange(curves.theta.lower, curves.theta.upper);
+    p.plot->yAxis->setRange(curves.value.lower, curves.value.upper);
+    if (quantities[index].unit.symbol == units::angle.symbol)
+        qSharedPointerCast<QCPAxisTickerFixed>(p.plot->yAxis->ticker())
+            ->setTickStep(pjointcurves::angleStep(curves.value.upper - curves.value.lower));
+}
+
+void PJointPlots::placeCursor(int index)
+{
+    Panel &p = m_panels[index];
+    const double x = m_theta / units::degree;
+    const double value = quantities[index].value(m_design, m_theta);
+    p.cursorValue = value;
+
+    p.cursorLine->point1->setCoords(x, 0.0);
+    p.cursorLine->point2->setCoords(x, 1.0);
+
+    // The marker sits on the curve; off the y range it is hidden and the label waits at the
+    // edge with an arrow, so a near-singular value never moves the axes.
+    const QCPRange xRange = p.plot->xAxis->range();
+    const QCPRange yRange = p.plot->yAxis->range();
+    const bool finite = std::isfinite(value);
+    const double shown = finite ? std::clamp(value, yRange.lower, yRange.upper) : yRange.upper;
+    p.cursorMarker->position->setCoords(x, shown);
+    p.cursorMarker->setVisible(finite && yRange.contains(value));
+
+    QString text = valueText(index, value);
+    if (!finite || value > yRange.upper)
+        text += QStringLiteral(" ↑");
+    else if (value < yRange.lower)
+        text += QStringLiteral(" ↓");
+    p.cursorLabel->setText(text);
+
+    // Beside the marker, on the side with more room.
+    const bool right = x > xRange.center();
+    const bool upper = shown > yRange.center();
+    p.cursorLabel->setPositionAlignment(
+        (right ? Qt::AlignRight : Qt::AlignLeft) | (upper ? Qt::AlignTop : Qt::AlignBottom));
+    p.cursorLabel->position->setCoords(right ? -12.0 : 12.0, upper ? 12.0 : -12.0);
+}
+
+void PJointPlots::refresh(int index, bool queued)
+{
+    Panel &p = m_panels[index];
+    if (!p.plot->isVisible())
+        return; // on a hidden tab: the Show event brings it up to date
+    if (p.needsReplot)
+        p.plot->replot(queued ? QCustomPlot::rpQueuedReplot : QCustomPlot::rpRefreshHint);
+    else if (p.needsCursorReplot)
+        p.cursorLayer->replot(); // the cursor alone: the curves' buffer is reused
+    p.needsReplot = false;
+    p.needsCursorReplot = false;
+}
+
+void PJointPlots::fitToWidth(int index)
+{
+    QCustomPlot *plot = m_panels[index].plot;
+    const int axisPixels = plot->width() - 110; // less the y tick labels, axis title and margins
+    qSharedPointerCast<QCPAxisTickerFixed>(plot->xAxis->ticker())
+        ->setTickStep(pjointcurves::thetaStep(plot->xAxis->range().size(), axisPixels));
+
+    // As many legend columns as the width allows, balanced over the rows.
+    QCPLegend *legend = plot->legend;
+    int count = 0;
+    int widest = 0;
+    for (int j = 0; j < legend->itemCount(); ++j) { // cells of the grid, some of them empty
+        if (const QCPAbstractLegendItem *item = legend->item(j)) {
+            ++count;
+            widest = std::max(widest, item->minimumOuterSizeHint().width());
+        }
+    }
+    if (count == 0)
+        return;
+    const int available = plot->width() - legend->margins().left() - legend->margins().right();
+    const int fit = std::clamp((available + legend->columnSpacing()) / (widest + legend->columnSpacing()), 1, count);
+    const int rows = (count + fit - 1) / fit;
+    const int columns = (count + rows - 1) / rows;
+    if (columns != legend->wrap() || legend->fillOrder() != QCPLayoutGrid::foColumnsFirst) {
+        legend->setWrap(columns);
+        legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    }
+}
+
+void PJointPlots::retranslate()
+{
+    m_tabs->setTabText(int(Tab::Geometry), tr("Geometry"));
+    m_tabs->setTabText(int(Tab::Jacobian), tr("Jacobian"));
+    m_tabs->setTabText(int(Tab::Actuator), tr("Actuator"));
+
+    const QLocale locale;
+    auto number = [&](double v, int decimals) {
+        return locale.toString(v, 'f', decimals).replace(QLatin1Char('-'), QChar(0x2212));
+    };
+    const QString a = locale.toString(m_design.a, 'g', 6);
+    const QString k = number(m_design.k(), 2);
+    const QString thetaMin = number(m_design.thetaMin / units::degree, 0);
+    const QString thetaMax = number(m_design.thetaMax / units::degree, 0);
+    const QString motorTorque = number(pjoint::motorTorque(m_design, m_design.forceMax), 3);
+
+    const std::array<QString, PlotCount> titles {
+        tr("Fig. 8 — diagonal length d(θ), (2)"),
+        tr("Fig. 9 — passive angle φ(θ)"),
+        tr("Fig. 10 — transmission angle μ(θ)"),
+        tr("Fig. 11 — Jacobian J(θ) = ∂d/∂θ, (7)"),
+        tr("Fig. 12 — inverse Jacobian J⁻¹(θ), (8)"),
+        tr("Fig. 15 — output resolution Δθ = Δd/J"),
+        tr("Fig. 16 — output speed θ̇ = ḋ_max/J"),
+        tr("Fig. 17 — output torque T = J·F_max, (13)"),
+    };
+    const std::array<QString, PlotCount> subtitles {
+        tr("a = %1 mm, k = %2, θ %3°…%4°; family at the same a").arg(a, k, thetaMin, thetaMax),
+        tr("diagonal OA from the base OB"),
+        tr("at A, diagonal to crank; J = a·sin μ"),
+        tr("ḋ = J·θ̇; a = %1 mm, k = %2").arg(a, k),
+        tr("θ̇ = J⁻¹·ḋ; J⁻¹ → ∞ at θ = ±90°"),
+        tr("one motor step Δd = %1 mm").arg(locale.toString(m_design.step, 'g', 6)),
+        tr("at the maximum linear speed ḋ_max = %1 mm/s").arg(locale.toString(m_design.speedMax, 'g', 6)),
+        // (15) T_M = F·h/(2π·η) does not depend on θ: one number, not a curve.
+        tr("F_max = %1 N; motor torque T_M = %2 N·m at any θ (15)")
+            .arg(locale.toString(m_design.forceMax, 'g', 6), motorTorque),
+    };
+
+    for (int i = 0; i < PlotCount; ++i) {
+        Panel &p = m_panels[i];
+        p.title->setText(titles[size_t(i)]);
+        p.subtitle->setText(subtitles[size_t(i)]);
+        p.plot->xAxis->setLabel(tr("θ (°)"));
+        // The dot of θ̇ is lost in a rotated label at this size: spell the derivative out.
+        const QString symbol = i == SpeedPlot ? tr("dθ/dt") : symbolOf(i);
+        p.plot->yAxis->setLabel(tr("%1 (%2)").arg(symbol, unitOf(i)));
+        p.design->setName(tr("this design (k = %1)").arg(k));
+        if (p.extension)
+            p.extension->setName(tr("beyond its θ range"));
+        for (int j = 0; j < quantities[i].familySize; ++j)
+            p.family[size_t(j)]->setName(tr("k = %1").arg(locale.toString(familyK[size_t(j)], 'f', 1)));
+        if (p.recommendedSwatch)
+            p.recommendedSwatch->setName(tr("recommended −60°…40°"));
+        if (p.steepSwatch)
+            p.steepSwatch->setName(tr("steep region 40°…60°"));
+        if (p.weakTransmissionSwatch)
+            p.weakTransmissionSwatch->setName(tr("μ < %1°: force almost along the crank").arg(weakTransmission));
+        fitToWidth(i);
+    }
+}
+
+} // namespace pkm

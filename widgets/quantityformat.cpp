@@ -1,0 +1,26 @@
+#include "quantityformat.h"
+
+#include <cmath>
+
+namespace pkm {
+
+QString unitText(const Unit &unit)
+{
+    return QString::fromUtf8(unit.symbol.data(), static_cast<qsizetype>(unit.symbol.size()));
+}
+
+QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale)
+{
+    const double display = unit.toDisplay(coreValue);
+    if (!std::isfinite(display))
+        return QStringLiteral("—");
+    QString text = locale.toString(display, 'f', decimals);
+    const QString symbol = unitText(unit);
+    if (symbol.isEmpty())
+        return text;
+    if (symbol.startsWith(QChar(0x00B0))) // degrees: no space, as in "60°" and "0.01°/step"
+        return text + symbol;
+    return text + QLatin1Char(' ') + symbol;
+}
+
+} // namespace pkm

@@ -1,0 +1,131 @@
+#pragma once
+/// Label layout for ScenePainter: while the geometry is drawn, SceneLabels learns what each
+/// label must keep off (obstacles) and what leaves each joint (rays); once all of it is known
+/// it places the labels where they collide with nothing, and draws them last, so no line
+/// crosses a label. Internal to pkm_widgets.
+
+#include "scene.h"
+#include "scenepainter.h"
+
+#include <QColor>
+#include <QFont>
+#include <QFontMetricsF>
+#include <QPointF>
+#include <QSizeF>
+#include <QString>
+
+#include <array>
+#include <vector>
+
+class QPaintDevice;
+class QPainter;
+
+namespace pkm {
+
+namespace detail {
+
+/// A convex quadrilateral in device units: drawn geometry or a placed label.
+using Quad = std::array<QPointF, 4>;
+
+/// The outline of a line from `a` to `b` drawn `2 × halfWidth` wide, caps included.
+Quad segmentQuad(const QPointF &a, const QPointF &b, double halfWidth);
+/// A `size` box about `centre`, turned as QPainter::rotate(rotationDegrees) turns it.
+Quad boxQuad(const QPointF &centre, const QSizeF &size, double rotationDegrees);
+/// Separating-axis test of two convex quads.
+bool overlap(const Quad &a, const Quad &b);
+
+/// The application's font at `pixels` device units, so labels match the rest of the UI.
+QFont labelFont(double pixels, bool bold);
+
+} // namespace detail
+
+/// Text is collected while drawing the geometry and drawn last, so no line crosses a label.
+struct SceneLabel {
+    QPointF centre;
+    double rotationDegrees = 0.0;
+    QString text;
+    bool joint = false; ///< bold joint name
+    QColor colour;
+};
+
+/// Labels placed once all geometry is known, so they can avoid it.
+struct PendingAngleLabel {
+    int vertex = 0;
+    double radius = 0.0; ///< device
+    double start = 0.0;
+    double sweep = 0.0;
+    QString text;
+};
+struct PendingMemberLabel {
+    int from = 0;
+    int to = 0;
+    QString text;
+    QColor colour;
+    bool preferReadingUp = true; ///< dimension text: above the member as read
+};
+
+class SceneLabels
+{
+public:
+    /// `points` are the scene's joints in device units; scene, points, mapping and style must
+    /// outlive this object. `device` sets the font metrics (a printer's differ from a screen's).
+    SceneLabels(const Scene &scene, const std::vector<QPointF> &points, const ViewMapping &mapping,
+        const SceneStyle &style, const QPaintDevice *device);
+
+    // -- while the geometry is drawn ------------------------------------------------------
+    /// Something leaves `joint` towards `towards` (device) for `reach` device units: joint
+    /// names go into the widest gap between such rays.
+    void addRay(int joint, const QPointF &towards, double reach);
+    /// A drawn line from `a` to `b`, `2 × halfWidth` wide, that no label may cover.
+    void addObstacle(const QPointF &a, const QPointF &b, double halfWidth);
+    void addObstacle(const detail::Quad &quad);
+    void addMemberLabel(const PendingMemberLabel &label);
+    void addAngleLabel(const PendingAngleLabel &label);
+    /// A label whose place is fixed (a dimension's text on its line); it becomes an obstacle.
+    void place(const SceneLabel &label);
+    /// Drops the pending labels of actuators whose joints a dimension already names.
+    void dropDimensionedActuatorLabels();
+    /// Whether a member drawn so far leaves `joint` along the unit device `direction`.
+    bool alongMember(int joint, const QPointF &direction) const;
+
+    // -- once all geometry is drawn -------------------------------------------------------
+    /// Places the pending labels, most constrained first.
+    void placeAll();
+    /// Draws the placed labels, each on an opaque knock-out box.
+    void draw(QPainter &painter) const;
+
+private:
+    /// A direction leaving a joint (device, unit): joint names go into the widest gap between them.
+    struct Ray {
+        QPointF direction;
+        double reach = 0.0;
+    };
+
+    bool valid(int joint) const { return joint >= 0 && joint < int(m_points.size()); }
+    const QPointF &point(int joint) const { return m_points[std::size_t(joint)]; }
+    QSizeF textSize(const QString &text, bool joint = false) const;
+    bool isFree(const detail::Quad &box) const;
+    /// Places `label` at the first free candidate centre, or the first one when none is free.
+    void placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates);
+    double memberHalfWidth(int from, int to, double fraction) const;
+    void placeMemberLabels(bool dimensions);
+    void placeAngleLabels();
+    void placeJointLabels();
+
+    const Scene &m_scene;
+    const std::vector<QPointF> &m_points; ///< joint positions, device
+    const ViewMapping &m_mapping;
+    const SceneStyle &m_style;
+    const double m_px;
+    QFont m_font;
+    QFont m_jointFont;
+    QFontMetricsF m_metrics;
+    QFontMetricsF m_jointMetrics;
+    std::vector<std::vector<Ray>> m_rays; ///< per joint: what leaves it
+    std::vector<detail::Quad> m_obstacles; ///< what labels must not cover
+    std::vector<PendingMemberLabel> m_memberLabels;
+    std::vector<PendingAngleLabel> m_angleLabels;
+    std::vector<SceneLabel> m_labels;
+};
+
+} // namespace pkm

@@ -1,0 +1,135 @@
+#include "valuestable.h"
+
+#include "quantityformat.h"
+
+#include <QHeaderView>
+
+#include <cmath>
+#include <optional>
+
+namespace pkm {
+
+namespace {
+QString qs(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+QString groupTitle(ReportGroup group)
+{
+    switch (group) {
+    case ReportGroup::Pose: return ValuesTable::tr("Pose");
+    case ReportGroup::Jacobian: return ValuesTable::tr("Jacobian");
+    case ReportGroup::Derived: return ValuesTable::tr("Derived");
+    }
+    return {};
+}
+
+QString singularityText(SingularityType type)
+{
+    switch (type) {
+    case SingularityType::None: return ValuesTable::tr("none");
+    case SingularityType::Inverse: return ValuesTable::tr("inverse");
+    case SingularityType::Direct: return ValuesTable::tr("direct");
+    case SingularityType::Combined: return ValuesTable::tr("combined");
+    }
+    return {};
+}
+} // namespace
+
+ValuesTable::ValuesTable(QWidget *parent)
+    : QTreeWidget(parent)
+{
+    setColumnCount(3);
+    setHeaderLabels({tr("Quantity"), tr("Value"), tr("Meaning")});
+    setRootIsDecorated(false);
+    setUniformRowHeights(true);
+    setSelectionMode(QAbstractItemView::NoSelection);
+    setFocusPolicy(Qt::NoFocus);
+    // Not ResizeToContents: that re-measures every row on every slider move. The columns are
+    // sized when the values first appear and widen only when a longer text comes.
+    header()->setSectionResizeMode(QHeaderView::Interactive);
+    header()->setStretchLastSection(true);
+}
+
+void ValuesTable::setMechanism(const MechanismPtr &mechanism)
+{
+    const bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind();
+    m_mechanism = mechanism;
+    if (rebuildNeeded)
+        rebuild();
+}
+
+void ValuesTable::rebuild()
+{
+    clear();
+    m_items.clear();
+    const ReportLayout &layout = m_mechanism->reportLayout();
+    m_values.assign(layout.size, 0.0);
+    m_widestValue = 0;
+    QFont groupFont = font();
+    groupFont.setBold(true);
+    std::optional<ReportGroup> current;
+    auto addGroup = [&](const QString &title) {
+        auto *item = new QTreeWidgetItem(this, {title});
+        item->setFirstColumnSpanned(true);
+        item->setFont(0, groupFont);
+        item->setBackground(0, QColor(0xe8, 0xee, 0xf4));
+    };
+    for (const ReportEntry &entry : layout.entries) {
+        if (!current || *current != entry.group) {
+            current = entry.group;
+            addGroup(groupTitle(entry.group));
+        }
+        auto *item = new QTreeWidgetItem(this, {qs(entry.symbol), QString(), qs(entry.label)});
+        item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
+        item->setData(0, Qt::UserRole, qs(entry.name));
+        m_items.push_back(item);
+    }
+    addGroup(tr("Singularity"));
+    m_singularity = new QTreeWidgetItem(this, {tr("class"), QString(), tr("none, inverse, direct or combined")});
+    m_singularity->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
+}
+
+void ValuesTable::setPose(const Pose &pose)
+{
+    if (!m_mechanism)
+        return;
+    const Singularity singularity = m_mechanism->evaluate(pose, m_values);
+    const ReportLayout &layout = m_mechanism->reportLayout();
+    qsizetype widest = 0;
+    for (std::size_t i = 0; i < layout.entries.size(); ++i) {
+        const ReportEntry &entry = layout.entries[i];
+        QStringList parts;
+        for (int j = 0; j < entry.rows * entry.cols; ++j)
+            parts << formatQuantity(m_values[entry.offset + j], entry.unit, entry.decimals);
+        const QString text = parts.join(QStringLiteral(", "));
+        widest = std::max(widest, text.size());
+        m_items[i]->setText(1, text);
+    }
+    QString text = singularityText(singularity.type);
+    if (singularity.type == SingularityType::None)
+        text += tr(" (margin %1)").arg(QLocale().toString(singularity.margin, 'f', 3));
+    m_singularity->setText(1, text);
+    widest = std::max(widest, text.size());
+    if (widest > m_widestValue) {
+        m_widestValue = widest;
+        resizeColumnToContents(0);
+        resizeColumnToContents(1);
+    }
+    m_singularity->setForeground(1, singularity.type == SingularityType::None ? palette().text().color()
+                                                                            : QColor(0xb3, 0x26, 0x1e));
+}
+
+QString ValuesTable::valueText(const QString &name) const
+{
+    if (name == QLatin1String("singularity"))
+        return m_singularity ? m_singularity->text(1) : QString();
+    for (const QTreeWidgetItem *item : m_items) {
+        if (item->data(0, Qt::UserRole).toString() == name)
+            return item->text(1);
+    }
+    return {};
+}
+
+} // namespace pkm

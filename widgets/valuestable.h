@@ -1,0 +1,35 @@
+#pragma once
+/// Live values of the current pose: every entry of the mechanism's report (pose, Jacobian,
+/// derived) and the singularity class, grouped, with units and meanings.
+
+#include "mechanism.h"
+
+#include <QTreeWidget>
+#include <vector>
+
+namespace pkm {
+
+class ValuesTable : public QTreeWidget
+{
+    Q_OBJECT
+
+public:
+    explicit ValuesTable(QWidget *parent = nullptr);
+
+    void setMechanism(const MechanismPtr &mechanism);
+    void setPose(const Pose &pose);
+
+    /// The text shown for a report entry ("J") or "singularity"; for tests.
+    QString valueText(const QString &name) const;
+
+private:
+    void rebuild();
+
+    MechanismPtr m_mechanism;
+    std::vector<QTreeWidgetItem *> m_items; ///< one per report entry
+    QTreeWidgetItem *m_singularity = nullptr;
+    std::vector<double> m_values;
+    qsizetype m_widestValue = 0; ///< longest value text so far, in characters
+};
+
+} // namespace pkm

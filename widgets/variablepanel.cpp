@@ -1,0 +1,136 @@
+#include "variablepanel.h"
+
+#include "quantityformat.h"
+
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <cmath>
+
+namespace pkm {
+
+namespace {
+QString qs(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+} // namespace
+
+VariablePanel::VariablePanel(QWidget *parent)
+    : QWidget(parent)
+{
+    m_grid = new QGridLayout(this);
+    m_grid->setColumnStretch(2, 1);
+    m_grid->setHorizontalSpacing(10);
+}
+
+void VariablePanel::setMechanism(const MechanismPtr &mechanism)
+{
+    const bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind();
+    m_mechanism = mechanism;
+    if (rebuildNeeded)
+        rebuild();
+    updateRanges();
+}
+
+void VariablePanel::rebuild()
+{
+    while (QLayoutItem *item = m_grid->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_rows.clear();
+    const auto &variables = m_mechanism->variableInfo();
+    QFont big = font();
+    big.setPointSizeF(big.pointSizeF() * 1.25);
+    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
+        const VariableInfo &info = variables[i];
+        Row row;
+        const QString role = info.actuated ? tr("input, actuated") : tr("output");
+        row.name = new QLabel(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>")
+                                  .arg(qs(info.symbol).toHtmlEscaped(), role),
+                              this);
+        row.name->setFont(big);
+        row.name->setToolTip(qs(info.label));
+        row.minimum = new QLabel(this);
+        row.maximum = new QLabel(this);
+        row.minimum->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        row.slider = new QSlider(Qt::Horizontal, this);
+        row.slider->setObjectName(QStringLiteral("slider_") + qs(info.name));
+        row.slider->setRange(0, sliderSteps);
+        row.slider->setMinimumWidth(120);
+        row.slider->setToolTip(tr("Drag to set %1 (%2)").arg(qs(info.symbol), qs(info.label)));
+        row.spinBox = new QDoubleSpinBox(this);
+        row.spinBox->setObjectName(QStringLiteral("spin_") + qs(info.name));
+        row.spinBox->setDecimals(info.decimals);
+        row.spinBox->setKeyboardTracking(false);
+        row.spinBox->setAccelerated(true);
+        row.spinBox->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue); // past a limit: stop at it
+        row.spinBox->setFont(big);
+        row.spinBox->setMinimumWidth(140);
+        row.spinBox->setAlignment(Qt::AlignRight);
+        const QString unit = unitText(info.unit);
+        row.spinBox->setSuffix(unit.startsWith(QChar(0x00B0)) ? unit : QLatin1Char(' ') + unit);
+
+        connect(row.slider, &QSlider::valueChanged, this, [this, i](int position) {
+            if (m_updating)
+                return;
+            const Interval range = m_mechanism->variableRange(i);
+            emit variableEdited(i, range.min + (range.max - range.min) * position / double(sliderSteps));
+        });
+        connect(row.slider, &QSlider::sliderPressed, this, &VariablePanel::sliderPressed);
+        connect(row.slider, &QSlider::sliderReleased, this, &VariablePanel::sliderReleased);
+        connect(row.spinBox, &QDoubleSpinBox::valueChanged, this, [this, i](double display) {
+            if (m_updating)
+                return;
+            emit variableEdited(i, m_mechanism->variableInfo()[i].unit.fromDisplay(display));
+        });
+
+        m_grid->addWidget(row.name, i, 0);
+        m_grid->addWidget(row.minimum, i, 1);
+        m_grid->addWidget(row.slider, i, 2);
+        m_grid->addWidget(row.maximum, i, 3);
+        m_grid->addWidget(row.spinBox, i, 4);
+        m_rows.append(row);
+    }
+}
+
+void VariablePanel::updateRanges()
+{
+    m_updating = true;
+    const auto &variables = m_mechanism->variableInfo();
+    for (int i = 0; i < m_rows.size(); ++i) {
+        const VariableInfo &info = variables[i];
+        const Interval range = m_mechanism->variableRange(i);
+        Row &row = m_rows[i];
+        row.minimum->setText(formatQuantity(range.min, info.unit, 1));
+        row.maximum->setText(formatQuantity(range.max, info.unit, 1));
+        // Round the spin box limits outwards to its decimals, so the exact limit is reachable.
+        const double scale = std::pow(10.0, info.decimals);
+        const double lo = info.unit.toDisplay(range.min), hi = info.unit.toDisplay(range.max);
+        row.spinBox->setRange(std::floor(lo * scale) / scale, std::ceil(hi * scale) / scale);
+        row.spinBox->setSingleStep(std::pow(10.0, std::floor(std::log10(std::max(hi - lo, 1e-9))) - 2) * 10);
+    }
+    m_updating = false;
+}
+
+void VariablePanel::setPose(const Pose &pose)
+{
+    m_updating = true;
+    for (int i = 0; i < m_rows.size(); ++i) {
+        const Interval range = m_mechanism->variableRange(i);
+        const double value = m_mechanism->variableValue(pose, i);
+        Row &row = m_rows[i];
+        const double fraction = range.max > range.min ? (value - range.min) / (range.max - range.min) : 0.0;
+        // While the user drags this slider, leave it where the hand is.
+        if (!row.slider->isSliderDown())
+            row.slider->setValue(static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * sliderSteps)));
+        row.spinBox->setValue(m_mechanism->variableInfo()[i].unit.toDisplay(value));
+    }
+    m_updating = false;
+}
+
+} // namespace pkm
