@@ -1,5 +1,6 @@
 #include "designfile.h"
 
+#include "quantityformat.h"
 #include "registry.h"
 
 #include <QDir>
@@ -10,16 +11,6 @@
 #include <QSaveFile>
 
 namespace pkm {
-
-QString toQString(const std::string &text)
-{
-    return QString::fromStdString(text);
-}
-
-QString toQString(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
 
 namespace designfile {
 

@@ -47,7 +47,4 @@ Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &curre
                                    const QList<QPair<QString, double>> &values);
 } // namespace designfile
 
-QString toQString(const std::string &text);
-QString toQString(std::string_view text);
-
 } // namespace pkm

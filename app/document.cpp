@@ -48,6 +48,7 @@ Result<Pose> Document::setVariable(int variable, double value)
 {
     const Mechanism &m = *m_design.mechanism;
     const Interval range = m.variableRange(variable);
+    m_drivenVariable = variable;
     auto solved = m.solveWith(m_design.pose, variable, std::isfinite(value) ? range.clamp(value) : value);
     if (solved)
         applyPose(*solved);
@@ -56,6 +57,7 @@ Result<Pose> Document::setVariable(int variable, double value)
 
 Result<Pose> Document::dragHandle(int handle, const Eigen::Vector2d &target)
 {
+    m_drivenVariable = m_design.mechanism->inputCount(); // a drag moves the outputs
     auto solved = m_design.mechanism->dragHandle(m_design.pose, handle, target);
     if (solved)
         applyPose(*solved);
@@ -66,7 +68,10 @@ QString Document::limitNote() const
 {
     const Mechanism &m = *m_design.mechanism;
     const auto &variables = m.variableInfo();
-    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
+    const int count = static_cast<int>(variables.size());
+    // Name the variable the user drives first: moving θ to its limit is about θ, not d.
+    for (int n = 0; n < count; ++n) {
+        const int i = (m_drivenVariable + n) % count;
         const VariableInfo &info = variables[i];
         const Interval range = m.variableRange(i);
         const double value = m.variableValue(m_design.pose, i);
@@ -77,8 +82,8 @@ QString Document::limitNote() const
             continue;
         const QString symbol = toQString(info.symbol);
         const QString limit = formatQuantity(atMax ? range.max : range.min, info.unit, info.decimals);
-        return atMax ? tr("%1 stops at its upper limit %2, set by the design's range.").arg(symbol, limit)
-                     : tr("%1 stops at its lower limit %2, set by the design's range.").arg(symbol, limit);
+        return atMax ? tr("%1 stops at its upper limit %2 (design range).").arg(symbol, limit)
+                     : tr("%1 stops at its lower limit %2 (design range).").arg(symbol, limit);
     }
     std::vector<double> values(m.reportLayout().size);
     const Singularity singularity = m.evaluate(m_design.pose, values);

@@ -53,6 +53,7 @@ private:
 
     Design m_design;
     QUndoStack m_undoStack;
+    int m_drivenVariable = 0; ///< the variable the user moved last (index into variableInfo())
 };
 
 } // namespace pkm

@@ -23,6 +23,7 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -30,11 +31,6 @@
 namespace pkm {
 
 namespace {
-QString qs(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
 QString failureText(const Failure &failure)
 {
     return QString::fromStdString(failure.message);
@@ -50,7 +46,7 @@ MainWindow::MainWindow(QWidget *parent)
     setWindowIcon(QIcon(QStringLiteral(":/icons/pkm-studio.svg")));
 
     m_view = new LinkageView(this);
-    m_view->setMinimumSize(420, 360);
+    m_view->setMinimumSize(340, 300);
     m_variables = new VariablePanel(this);
 
     auto *left = new QWidget(this);
@@ -118,21 +114,27 @@ void MainWindow::createDocks()
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(410);
+    scroll->setMinimumWidth(330);
     auto *designDock = new QDockWidget(tr("Design"), this);
     designDock->setObjectName(QStringLiteral("designDock"));
     designDock->setWidget(scroll);
     addDockWidget(Qt::LeftDockWidgetArea, designDock);
 
     m_values = new ValuesTable(this);
-    m_values->setMinimumWidth(410);
+    m_values->setMinimumWidth(330);
     auto *valuesDock = new QDockWidget(tr("Values at this pose"), this);
     valuesDock->setObjectName(QStringLiteral("valuesDock"));
     valuesDock->setWidget(m_values);
     addDockWidget(Qt::LeftDockWidgetArea, valuesDock);
     splitDockWidget(designDock, valuesDock, Qt::Vertical);
-    resizeDocks({designDock, valuesDock}, {560, 440}, Qt::Vertical);
-    resizeDocks({designDock}, {420}, Qt::Horizontal);
+    // Small minimum sizes keep the window usable on a 1366×768 laptop; on a larger screen the
+    // docks start wider (once the window has its size, unless a saved layout is restored).
+    QTimer::singleShot(0, this, [this, designDock, valuesDock] {
+        if (m_restoredGeometry)
+            return;
+        resizeDocks({designDock}, {width() >= 1600 ? 420 : 340}, Qt::Horizontal);
+        resizeDocks({designDock, valuesDock}, {height() * 55 / 100, height() * 45 / 100}, Qt::Vertical);
+    });
 }
 
 void MainWindow::createActions()
@@ -207,7 +209,7 @@ void MainWindow::onDesignChanged()
 {
     const Design &design = m_document->design();
     const MechanismPtr &mechanism = design.mechanism;
-    setWindowTitle(tr("%1 — PKM Studio").arg(design.title.isEmpty() ? qs(mechanism->kind()) : design.title));
+    setWindowTitle(tr("%1 — PKM Studio").arg(design.title.isEmpty() ? toQString(mechanism->kind()) : design.title));
     m_designPanel->setMechanism(mechanism);
     m_variables->setMechanism(mechanism);
     m_values->setMechanism(mechanism);
@@ -231,7 +233,7 @@ void MainWindow::onPoseChanged()
     QStringList summary;
     const auto &variables = mechanism->variableInfo();
     for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
-        summary << QStringLiteral("%1 = %2").arg(qs(variables[i].symbol),
+        summary << QStringLiteral("%1 = %2").arg(toQString(variables[i].symbol),
                                                  formatQuantity(mechanism->variableValue(pose, i), variables[i].unit,
                                                                 variables[i].decimals));
     }

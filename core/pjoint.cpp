@@ -472,7 +472,7 @@ Scene PJoint::scene(const Pose &pose) const
         const Eigen::Vector2d r = p.a * Eigen::Vector2d(std::sin(t), std::cos(t));
         box.extend(v3(b + r)).extend(v3(o + r));
     }
-    const Eigen::Vector3d margin(0.25 * p.a, 0.25 * p.a, 0.0);
+    const Eigen::Vector3d margin(0.12 * p.a, 0.12 * p.a, 0.0);
     box.extend(box.min() - margin).extend(box.max() + margin);
     s.extent = box;
     return s;

@@ -16,11 +16,6 @@
 namespace pkm {
 
 namespace {
-QString qs(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
 QString groupTitle(ParameterGroup group)
 {
     switch (group) {
@@ -103,7 +98,7 @@ void DesignPanel::rebuild()
             m_groups->addWidget(box);
             forms.insert(group, form);
         }
-        const QString name = qs(info.name);
+        const QString name = toQString(info.name);
         auto *row = new QWidget;
         auto *rowLayout = new QHBoxLayout(row);
         rowLayout->setContentsMargins(0, 0, 0, 0);
@@ -120,15 +115,15 @@ void DesignPanel::rebuild()
                                 .arg(QLocale().toString(info.unit.toDisplay(info.domain.min)),
                                      QLocale().toString(info.unit.toDisplay(info.domain.max)));
         edit->setToolTip(tr("%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.")
-                             .arg(qs(info.label), name, range, unit)
+                             .arg(toQString(info.label), name, range, unit)
                              .arg(QLocale().toString(info.displayStep)));
         connect(edit, &QLineEdit::editingFinished, this, [this, name] { commit(name, false); });
         rowLayout->addWidget(edit, 1);
         auto *unitLabel = new QLabel(unit, row);
         unitLabel->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")));
         rowLayout->addWidget(unitLabel);
-        auto *label = new QLabel(QStringLiteral("<b>%1</b>&nbsp; %2").arg(qs(info.symbol).toHtmlEscaped(),
-                                                                      qs(info.label).toHtmlEscaped()));
+        auto *label = new QLabel(QStringLiteral("<b>%1</b>&nbsp; %2").arg(toQString(info.symbol).toHtmlEscaped(),
+                                                                      toQString(info.label).toHtmlEscaped()));
         label->setBuddy(edit);
         label->setToolTip(edit->toolTip());
         forms.value(group)->addRow(label, row);
@@ -140,7 +135,7 @@ void DesignPanel::showValues()
 {
     const ParameterSet values = m_mechanism->parameters();
     for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
-        QLineEdit *edit = m_fields.value(qs(info.name));
+        QLineEdit *edit = m_fields.value(toQString(info.name));
         if (!edit)
             continue;
         const double display = info.unit.toDisplay(values.at(info.name));
@@ -190,11 +185,11 @@ void DesignPanel::commit(const QString &name, bool continuous)
         return;
     const ParameterSet values = m_mechanism->parameters();
     for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
-        if (qs(info.name) != name)
+        if (toQString(info.name) != name)
             continue;
         double value = 0;
         if (!parseNumber(edit->text(), unitText(info.unit), &value)) {
-            markInvalid(name, tr("%1 (%2): '%3' is not a number.").arg(name, qs(info.label), edit->text()));
+            markInvalid(name, tr("%1 (%2): '%3' is not a number.").arg(name, toQString(info.label), edit->text()));
             return;
         }
         // An unchanged field (focus left without an edit) is not an edit.
@@ -211,7 +206,7 @@ void DesignPanel::step(const QString &name, int steps)
 {
     QLineEdit *edit = m_fields.value(name);
     for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
-        if (qs(info.name) != name)
+        if (toQString(info.name) != name)
             continue;
         double value = info.unit.toDisplay(m_mechanism->parameters().at(info.name));
         value = std::round((value + steps * info.displayStep) / info.displayStep) * info.displayStep;

@@ -1,5 +1,7 @@
 #include "pjointcurves.h"
 
+#include "quantityformat.h"
+
 #include <QLocale>
 
 #include <algorithm>
@@ -156,8 +158,7 @@ QString symbolOf(int index)
 
 QString unitOf(int index)
 {
-    const std::string_view unit = quantities[size_t(index)].unit.symbol;
-    return QString::fromUtf8(unit.data(), qsizetype(unit.size()));
+    return unitText(quantities[size_t(index)].unit);
 }
 
 QString valueText(int index, double value)

@@ -4,9 +4,14 @@
 
 namespace pkm {
 
+QString toQString(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
 QString unitText(const Unit &unit)
 {
-    return QString::fromUtf8(unit.symbol.data(), static_cast<qsizetype>(unit.symbol.size()));
+    return toQString(unit.symbol);
 }
 
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale)

@@ -7,8 +7,12 @@
 #include <QLocale>
 #include <QString>
 
+#include <string_view>
+
 namespace pkm {
 
+/// Core strings are UTF-8.
+QString toQString(std::string_view text);
 QString unitText(const Unit &unit);
 /// `coreValue` in core units; shown in the unit's display units.
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale = QLocale());

@@ -10,11 +10,6 @@
 namespace pkm {
 
 namespace {
-QString qs(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
 QString groupTitle(ReportGroup group)
 {
     switch (group) {
@@ -81,9 +76,9 @@ void ValuesTable::rebuild()
             current = entry.group;
             addGroup(groupTitle(entry.group));
         }
-        auto *item = new QTreeWidgetItem(this, {qs(entry.symbol), QString(), qs(entry.label)});
+        auto *item = new QTreeWidgetItem(this, {toQString(entry.symbol), QString(), toQString(entry.label)});
         item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
-        item->setData(0, Qt::UserRole, qs(entry.name));
+        item->setData(0, Qt::UserRole, toQString(entry.name));
         m_items.push_back(item);
     }
     addGroup(tr("Singularity"));

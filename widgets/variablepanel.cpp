@@ -12,13 +12,6 @@
 
 namespace pkm {
 
-namespace {
-QString qs(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-} // namespace
-
 VariablePanel::VariablePanel(QWidget *parent)
     : QWidget(parent)
 {
@@ -51,20 +44,20 @@ void VariablePanel::rebuild()
         Row row;
         const QString role = info.actuated ? tr("input, actuated") : tr("output");
         row.name = new QLabel(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>")
-                                  .arg(qs(info.symbol).toHtmlEscaped(), role),
+                                  .arg(toQString(info.symbol).toHtmlEscaped(), role),
                               this);
         row.name->setFont(big);
-        row.name->setToolTip(qs(info.label));
+        row.name->setToolTip(toQString(info.label));
         row.minimum = new QLabel(this);
         row.maximum = new QLabel(this);
         row.minimum->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         row.slider = new QSlider(Qt::Horizontal, this);
-        row.slider->setObjectName(QStringLiteral("slider_") + qs(info.name));
+        row.slider->setObjectName(QStringLiteral("slider_") + toQString(info.name));
         row.slider->setRange(0, sliderSteps);
         row.slider->setMinimumWidth(120);
-        row.slider->setToolTip(tr("Drag to set %1 (%2)").arg(qs(info.symbol), qs(info.label)));
+        row.slider->setToolTip(tr("Drag to set %1 (%2)").arg(toQString(info.symbol), toQString(info.label)));
         row.spinBox = new QDoubleSpinBox(this);
-        row.spinBox->setObjectName(QStringLiteral("spin_") + qs(info.name));
+        row.spinBox->setObjectName(QStringLiteral("spin_") + toQString(info.name));
         row.spinBox->setDecimals(info.decimals);
         row.spinBox->setKeyboardTracking(false);
         row.spinBox->setAccelerated(true);

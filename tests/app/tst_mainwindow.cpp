@@ -10,6 +10,7 @@
 #include "valuestable.h"
 #include "variablepanel.h"
 
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QSignalSpy>
@@ -216,6 +217,23 @@ private slots:
         edit->setFocus();
         QTest::keyClick(edit, Qt::Key_Escape);
         QVERIFY(edit->styleSheet().isEmpty());
+    }
+
+    void layoutIsRemembered()
+    {
+        QDockWidget *values = m_window->findChild<QDockWidget *>(QStringLiteral("valuesDock"));
+        QVERIFY(values);
+        values->hide();
+        m_window->resize(1500, 950);
+        m_window->close(); // saves the layout
+        MainWindow second;
+        QVERIFY(second.restoredGeometry());
+        QCOMPARE(second.height(), 950); // the width may grow to the docks' minimum
+        second.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&second));
+        QVERIFY(!second.findChild<QDockWidget *>(QStringLiteral("valuesDock"))->isVisible());
+        values->show();
+        m_window->show();
     }
 
     void presetMenuOpensStudy()
