@@ -8,7 +8,7 @@ packages=(
     qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-svg-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libeigen3-dev libqcustomplot-dev libgl-dev
-    fonts-dejavu-core
+    fonts-dejavu-core locales
 )
 
 missing=()

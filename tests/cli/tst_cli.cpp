@@ -13,7 +13,6 @@
 #include <QtTest>
 
 #include <charconv>
-#include <clocale>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -732,19 +731,35 @@ void TestCli::fastNumbersMatchToChars()
 
 void TestCli::numbersIgnoreLocale()
 {
-    // QCoreApplication calls setlocale(LC_ALL, ""); a comma locale must not change anything.
-    const char *previous = std::setlocale(LC_NUMERIC, nullptr);
-    const std::string saved = previous ? previous : "C";
-    if (!std::setlocale(LC_NUMERIC, "de_DE.UTF-8") && !std::setlocale(LC_NUMERIC, "fr_FR.UTF-8"))
-        QSKIP("no locale with a decimal comma is installed");
-    std::string text;
-    cli::appendNumber(text, 0.5);
-    const Run run = runInProcess({QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--set"),
-                                  QStringLiteral("theta=30.5"), QStringLiteral("--json")});
-    std::setlocale(LC_NUMERIC, saved.c_str());
-    QCOMPARE(QString::fromStdString(text), QStringLiteral("0.5"));
-    QCOMPARE(run.exitCode, 0);
-    QVERIFY(run.out.contains("\"theta\": 30.5"));
+    // QCoreApplication calls setlocale(LC_ALL, ""): a decimal-comma locale must change nothing.
+    // The locale is compiled into a temporary folder (localedef, Debian package "locales"),
+    // so the test needs no system-wide locale and runs the real binary under it.
+    QTemporaryDir locales;
+    QVERIFY(locales.isValid());
+    QProcess localedef;
+    localedef.start(QStringLiteral("localedef"),
+                    {QStringLiteral("-i"), QStringLiteral("de_DE"), QStringLiteral("-f"), QStringLiteral("UTF-8"),
+                     locales.filePath(QStringLiteral("de_DE.UTF-8"))});
+    QVERIFY2(localedef.waitForFinished(60000), "localedef did not finish");
+    QVERIFY2(localedef.exitCode() == 0 || QFile::exists(locales.filePath(QStringLiteral("de_DE.UTF-8/LC_NUMERIC"))),
+             localedef.readAllStandardError().constData());
+
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("LOCPATH"), locales.path());
+    environment.insert(QStringLiteral("LC_ALL"), QStringLiteral("de_DE.UTF-8"));
+    const QStringList arguments {QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--set"),
+                                 QStringLiteral("theta=30.5"), QStringLiteral("--json")};
+    const Run german = runPkm(arguments, environment);
+    const Run plain = runPkm(arguments);
+    QCOMPARE(german.exitCode, 0);
+    QVERIFY(german.out.contains("\"theta\": 30.5"));
+    QCOMPARE(german.out, plain.out);
+    // and the comma locale really is in force in such a process
+    QProcess localeCheck;
+    localeCheck.setProcessEnvironment(environment);
+    localeCheck.start(QStringLiteral("locale"), {QStringLiteral("decimal_point")});
+    QVERIFY(localeCheck.waitForFinished(10000));
+    QCOMPARE(localeCheck.readAllStandardOutput().trimmed(), QByteArray(","));
 }
 
 void TestCli::notFiniteIsNullAndMatricesNest()
