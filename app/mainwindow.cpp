@@ -104,7 +104,16 @@ MainWindow::MainWindow(QWidget *parent)
     restoreLayout();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // Closing the window moves the focus out of a design field, which commits what it holds
+    // (an edit in progress, or a rejected value). By then this window is half destroyed: the
+    // panels must not call back into it.
+    disconnect(m_designPanel, nullptr, this, nullptr);
+    disconnect(m_variables, nullptr, this, nullptr);
+    disconnect(m_view, nullptr, this, nullptr);
+    disconnect(m_document, nullptr, this, nullptr);
+}
 
 void MainWindow::createDocks()
 {
@@ -218,6 +227,25 @@ void MainWindow::onDesignChanged()
         m_plots->setCurrentWidget(m_pjointPlots);
     }
     onPoseChanged();
+    keepMechanismInView();
+}
+
+void MainWindow::keepMechanismInView()
+{
+    // Refit only when the new design leaves the view or shrinks to a small part of it: a
+    // fixed scale while stepping a dimension shows the mechanism growing or shrinking.
+    const Eigen::AlignedBox3d &extent = m_view->scene().extent;
+    if (extent.isEmpty())
+        return;
+    const ViewMapping mapping = m_view->mapping();
+    const QRectF drawn = QRectF(mapping.toDevice(Eigen::Vector2d(extent.min().head<2>())),
+                                mapping.toDevice(Eigen::Vector2d(extent.max().head<2>())))
+                             .normalized();
+    const QRectF area = QRectF(m_view->rect());
+    const bool outside = !area.contains(drawn);
+    const bool tiny = drawn.width() < 0.3 * area.width() && drawn.height() < 0.3 * area.height();
+    if (outside || tiny)
+        m_view->fitToView();
 }
 
 void MainWindow::onPoseChanged()

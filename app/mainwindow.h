@@ -49,6 +49,7 @@ private:
     void createDocks();
     void onDesignChanged();
     void onPoseChanged();
+    void keepMechanismInView();
     void showStatus(const QString &message, bool error = false);
     void openFile();
     void saveFileAs();

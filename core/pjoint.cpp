@@ -110,6 +110,25 @@ double motorTorque(const PJointDesign &p, double force)
     return force * p.lead / (2.0 * pi * p.efficiency) * 1e-3; // (15), N·mm → N·m
 }
 
+Interval recommendedRange(const PJointDesign &p, double share)
+{
+    // J peaks where sin θ = −k (k < 1) or −1/k (k > 1), and rises before and falls after it.
+    const double k = p.k();
+    const double peak = std::clamp(std::asin(-std::min(k, 1.0 / k)), p.thetaMin, p.thetaMax);
+    const double threshold = share * jacobian(p, peak);
+    // Bisection on a monotone stretch for the θ where J crosses the threshold.
+    auto crossing = [&](double inside, double outside) {
+        if (jacobian(p, outside) >= threshold)
+            return outside;
+        for (int i = 0; i < 60; ++i) {
+            const double middle = 0.5 * (inside + outside);
+            (jacobian(p, middle) >= threshold ? inside : outside) = middle;
+        }
+        return inside;
+    };
+    return {crossing(peak, p.thetaMin), crossing(peak, p.thetaMax)};
+}
+
 } // namespace pjoint
 
 // -- design ------------------------------------------------------------------------------
@@ -341,6 +360,7 @@ enum Slot {
     SlotTheta, SlotD, SlotPhi, SlotMu,
     SlotJ, SlotJInv, SlotJd, SlotJTheta, SlotDJ,
     SlotTorque, SlotSpeed, SlotResolution, SlotMotorTorque, SlotDMin, SlotDMax, SlotStroke,
+    SlotRecommendedMin, SlotRecommendedMax,
     SlotCount
 };
 } // namespace
@@ -377,6 +397,8 @@ const ReportLayout &PJoint::reportLayout() const
         add(G::Derived, "d_min", "d_min", "diagonal at θ_min", units::millimetre, 2);
         add(G::Derived, "d_max", "d_max", "diagonal at θ_max", units::millimetre, 2);
         add(G::Derived, "stroke", "d_max − d_min", "actuator stroke", units::millimetre, 2);
+        add(G::Derived, "recommended_min", "θ_rec,min", "recommended range from (J ≥ 60 % of best)", units::angle, 1);
+        add(G::Derived, "recommended_max", "θ_rec,max", "recommended range to (J ≥ 60 % of best)", units::angle, 1);
         return l;
     }();
     return layout;
@@ -420,6 +442,9 @@ Singularity PJoint::evaluate(const Pose &pose, std::span<double> v) const
     v[SlotDMin] = dMin();
     v[SlotDMax] = dMax();
     v[SlotStroke] = v[SlotDMax] - v[SlotDMin];
+    const Interval recommended = pjoint::recommendedRange(p);
+    v[SlotRecommendedMin] = recommended.min;
+    v[SlotRecommendedMax] = recommended.max;
     return singularity(theta);
 }
 

@@ -59,6 +59,13 @@ double outputTorque(const PJointDesign &design, double theta, double force);
 double actuatorForce(const PJointDesign &design, double theta, double torque);
 /// (15) T_M = F·h/(2π·η), motor torque in N·m for actuator force F in N.
 double motorTorque(const PJointDesign &design, double force);
+/// Share of the best output torque that the recommended range keeps (see recommendedRange).
+inline constexpr double recommendedTorqueShare = 0.6;
+/// The recommended working range, rad: the part of [θ_min, θ_max] where J — and with it the
+/// output torque, speed and resolution — stays within `share` of its best over the range.
+/// Beyond it the characteristics change steeply. For the prototype this gives −60°…39.2°,
+/// the document's "θ = [−60°, 40°]" (section 4.2). J is unimodal in θ, so this is one interval.
+Interval recommendedRange(const PJointDesign &design, double share = recommendedTorqueShare);
 } // namespace pjoint
 
 class PJoint final : public Mechanism

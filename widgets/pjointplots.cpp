@@ -32,8 +32,6 @@ static_assert(PJointPlots::PlotCount == pjointcurves::quantityCount, "one quanti
 /// A, between diagonal and crank) μ ≤ arcsin k, ≤ 30° for every preferred k ≤ 0.5. The document
 /// accepts θ within −75…75°, where μ ≥ 3.4° (k = 0.3) … 5.0° (k = 0.5).
 constexpr double weakTransmission = 5.0; ///< °
-constexpr double steepFrom = 40.0, steepTo = 60.0; ///< °, DOMAIN §1: "changes steeply"
-constexpr double recommendedFrom = -60.0, recommendedTo = 40.0; ///< °, DOMAIN §1
 constexpr std::array<QRgb, familyK.size()> familyRgb {0x5e9c76, 0x8e6fb0, 0xc08a3e, 0x8c8c8c, 0xb0b0b0};
 
 constexpr QRgb designRgb = 0x1f5fa8;
@@ -80,6 +78,14 @@ QVector<QCPGraphData> toGraphData(const pjointcurves::Curve &curve)
     for (const pjointcurves::Point &point : curve)
         data.append(QCPGraphData(point.theta, point.value));
     return data;
+}
+
+/// Moves a vertical band to [from, to] in θ; a band narrower than 0.05° is hidden.
+void setBand(QCPItemRect *band, double from, double to)
+{
+    band->topLeft->setCoords(from, 0.0);
+    band->bottomRight->setCoords(to, 1.0);
+    band->setVisible(to - from > 0.05);
 }
 
 /// A light band [from, to] in θ over the whole height of the axis rect (vertical) or in the
@@ -239,10 +245,12 @@ void PJointPlots::createPanel(int index)
     for (int g = 0; g < plot->graphCount(); ++g)
         plot->graph(g)->setSelectable(QCP::stNone);
 
-    // Bands: the steep region and the recommended range (DOMAIN §1) where J matters.
+    // Bands: the recommended range and the steep regions beyond it, computed for the design
+    // (pjoint::recommendedRange; for the prototype the document's −60°…40° and 40°…60°).
     if (q.tab != Tab::Geometry) {
-        addBand(plot, Qt::Vertical, recommendedFrom, recommendedTo, recommendedFillRgb, Qt::NoPen);
-        addBand(plot, Qt::Vertical, steepFrom, steepTo, steepFillRgb, QPen(QColor(steepEdgeRgb), 1.0));
+        p.recommendedBand = addBand(plot, Qt::Vertical, 0.0, 0.0, recommendedFillRgb, Qt::NoPen);
+        for (QCPItemRect *&band : p.steepBands)
+            band = addBand(plot, Qt::Vertical, 0.0, 0.0, steepFillRgb, QPen(QColor(steepEdgeRgb), 1.0));
         p.recommendedSwatch = addSwatch(plot, recommendedFillRgb, QPen(QColor(0xa8cfa0), 1.0));
         p.steepSwatch = addSwatch(plot, steepFillRgb, QPen(QColor(steepEdgeRgb), 1.0));
     }
@@ -369,6 +377,14 @@ void PJointPlots::recompute(int index)
     for (size_t j = 0; j < curves.family.size(); ++j)
         p.family[j]->data()->set(toGraphData(curves.family[j]), true);
 
+    if (p.recommendedBand) {
+        const Interval recommended = pjoint::recommendedRange(m_design);
+        const double from = recommended.min / units::degree, to = recommended.max / units::degree;
+        const double bounds[] = {m_design.thetaMin / units::degree, from, to, m_design.thetaMax / units::degree};
+        setBand(p.recommendedBand, from, to);
+        setBand(p.steepBands[0], bounds[0], bounds[1]);
+        setBand(p.steepBands[1], bounds[2], bounds[3]);
+    }
     p.plot->xAxis->setRange(curves.theta.lower, curves.theta.upper);
     p.plot->yAxis->setRange(curves.value.lower, curves.value.upper);
     if (quantities[index].unit.symbol == units::angle.symbol)
@@ -504,10 +520,15 @@ void PJointPlots::retranslate()
             p.extension->setName(tr("beyond its θ range"));
         for (int j = 0; j < quantities[i].familySize; ++j)
             p.family[size_t(j)]->setName(tr("k = %1").arg(locale.toString(familyK[size_t(j)], 'f', 1)));
-        if (p.recommendedSwatch)
-            p.recommendedSwatch->setName(tr("recommended −60°…40°"));
+        if (p.recommendedSwatch) {
+            const Interval recommended = pjoint::recommendedRange(m_design);
+            p.recommendedSwatch->setName(tr("recommended %1°…%2° (J ≥ %3 % of best)")
+                                             .arg(number(recommended.min / units::degree, 0),
+                                                  number(recommended.max / units::degree, 0))
+                                             .arg(pjoint::recommendedTorqueShare * 100));
+        }
         if (p.steepSwatch)
-            p.steepSwatch->setName(tr("steep region 40°…60°"));
+            p.steepSwatch->setName(tr("steep region"));
         if (p.weakTransmissionSwatch)
             p.weakTransmissionSwatch->setName(tr("μ < %1°: force almost along the crank").arg(weakTransmission));
         fitToWidth(i);

@@ -20,6 +20,7 @@
 class QCustomPlot;
 class QCPBars;
 class QCPGraph;
+class QCPItemRect;
 class QCPItemStraightLine;
 class QCPItemText;
 class QCPItemTracer;
@@ -84,6 +85,8 @@ private:
         QCPGraph *design = nullptr; ///< graph(0): the current design over [θ_min, θ_max]
         QCPGraph *extension = nullptr; ///< the current design beyond its range, or null
         std::array<QCPGraph *, 5> family {}; ///< the k-family (Geometry tab), or null
+        QCPItemRect *recommendedBand = nullptr; ///< figs 11–17: the recommended range, or null
+        std::array<QCPItemRect *, 2> steepBands {}; ///< below and above it
         QCPBars *steepSwatch = nullptr; ///< legend entries of the bands, or null
         QCPBars *recommendedSwatch = nullptr;
         QCPBars *weakTransmissionSwatch = nullptr; ///< fig. 10's μ < 5° band

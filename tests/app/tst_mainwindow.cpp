@@ -183,6 +183,18 @@ private slots:
         w.document()->undoStack()->undo();
     }
 
+    void viewKeepsLargerDesignInSight()
+    {
+        MainWindow &w = *m_window;
+        typeInto(w.designPanel()->field(QStringLiteral("a")), QStringLiteral("600"));
+        QCOMPARE(joint(w).design().a, 600.0);
+        LinkageView *view = w.linkageView();
+        for (const SceneJoint &j : view->scene().joints)
+            QVERIFY(QRectF(view->rect()).contains(view->mapping().toDevice(Eigen::Vector2d(j.position.head<2>()))));
+        w.document()->undoStack()->undo();
+        QCOMPARE(joint(w).design().a, 170.0);
+    }
+
     void badInput_data()
     {
         QTest::addColumn<QString>("field");
@@ -217,6 +229,20 @@ private slots:
         edit->setFocus();
         QTest::keyClick(edit, Qt::Key_Escape);
         QVERIFY(edit->styleSheet().isEmpty());
+    }
+
+    void closingWithRejectedFieldIsSafe()
+    {
+        // Closing moves the focus out of the field, which commits it once more while the
+        // window is being destroyed.
+        auto *window = new MainWindow;
+        window->show();
+        QApplication::setActiveWindow(window);
+        QVERIFY(QTest::qWaitForWindowActive(window));
+        typeInto(window->designPanel()->field(QStringLiteral("a")), QStringLiteral("-5"));
+        QVERIFY(window->designPanel()->field(QStringLiteral("a"))->hasFocus());
+        delete window;
+        // Reaching this line is the test; the Asan build also reports any use after free.
     }
 
     void layoutIsRemembered()

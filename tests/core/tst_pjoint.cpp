@@ -235,6 +235,45 @@ private slots:
         QVERIFY(dropSteep > 0.3 * pjoint::jacobian(p, 40 * deg));
     }
 
+    void recommendedRange_data()
+    {
+        QTest::addColumn<double>("k");
+        QTest::addColumn<double>("thetaMin");
+        QTest::addColumn<double>("thetaMax");
+        QTest::newRow("prototype") << 0.4 << -60.0 << 60.0;
+        QTest::newRow("k 0.3 wide") << 0.3 << -89.0 << 89.0;
+        QTest::newRow("k 1.5") << 1.5 << -80.0 << 80.0;
+        QTest::newRow("k 1") << 1.0 << -80.0 << 80.0;
+        QTest::newRow("peak outside range") << 0.4 << 10.0 << 70.0;
+    }
+    void recommendedRange()
+    {
+        QFETCH(double, k);
+        QFETCH(double, thetaMin);
+        QFETCH(double, thetaMax);
+        const PJointDesign p = design(170, k, thetaMin, thetaMax);
+        const Interval r = pjoint::recommendedRange(p);
+        QVERIFY(r.min >= p.thetaMin && r.max <= p.thetaMax && r.min < r.max);
+        // J ≥ 60 % of its best inside, below it just outside (unless at the design's limit)
+        double best = 0;
+        for (int i = 0; i <= 4000; ++i)
+            best = std::max(best, pjoint::jacobian(p, p.thetaMin + (p.thetaMax - p.thetaMin) * i / 4000.0));
+        for (int i = 0; i <= 100; ++i)
+            QVERIFY(pjoint::jacobian(p, r.min + (r.max - r.min) * i / 100.0) >= 0.6 * best * (1 - 1e-6));
+        if (r.max < p.thetaMax)
+            QVERIFY(std::abs(pjoint::jacobian(p, r.max) - 0.6 * best) < 1e-6 * best);
+        if (r.min > p.thetaMin)
+            QVERIFY(std::abs(pjoint::jacobian(p, r.min) - 0.6 * best) < 1e-6 * best);
+    }
+
+    void prototypeRecommendedRangeMatchesDocument()
+    {
+        // Section 4.2: "the most favourable range would be θ = [−60°, 40°]".
+        const Interval r = pjoint::recommendedRange(design(170, 0.4));
+        QCOMPARE(r.min, -60 * deg);
+        QVERIFY(std::abs(r.max / deg - 40) < 1.0);
+    }
+
     void singularities()
     {
         // (9–11): all singularities lie on θ = ±90°; J_θ = 0 is direct, J_d = 0 inverse.
