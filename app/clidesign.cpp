@@ -2,6 +2,7 @@
 
 #include <QString>
 
+#include <map>
 #include <optional>
 
 namespace pkm::cli {
@@ -82,21 +83,29 @@ Result<PreparedDesign> prepareDesign(const std::string &origin, const std::vecto
     prepared.mechanism = prepared.design.mechanism;
     prepared.pose = prepared.design.pose;
 
-    bool parametersChanged = false;
+    // All parameter changes go to the design at once, so their order does not matter (k with a)
+    // and contradictions (b with k) are refused; a parameter given twice takes the last value.
+    ParameterSet changes;
+    std::map<std::string, std::string> contexts;
     for (const Setting &setting : sets) {
         const std::string context = "--set " + setting.text;
-        if (findParameter(*prepared.mechanism, setting.name)) {
-            auto changed = designfile::setDisplayParameter(
-                prepared.mechanism, QString::fromStdString(setting.name), setting.value);
-            if (!changed)
-                return inContext(changed.failure(), context);
-            prepared.mechanism = *changed;
-            parametersChanged = true;
+        if (const ParameterInfo *info = findParameter(*prepared.mechanism, setting.name)) {
+            changes[setting.name] = info->unit.fromDisplay(setting.value);
+            contexts[setting.name] = context;
         } else if (prepared.mechanism->variableIndex(setting.name) >= 0) {
             prepared.poseSets.push_back(setting);
         } else {
             return unknownSetName(*prepared.mechanism, context, setting.name, origin);
         }
+    }
+    const bool parametersChanged = !changes.empty();
+    if (parametersChanged) {
+        auto changed = prepared.mechanism->withParameters(changes);
+        if (!changed) {
+            const auto culprit = contexts.find(changed.failure().culprit);
+            return inContext(changed.failure(), culprit != contexts.end() ? culprit->second : contexts.begin()->second);
+        }
+        prepared.mechanism = *changed;
     }
 
     const Mechanism &mechanism = *prepared.mechanism;

@@ -73,6 +73,17 @@ Result<Pose> Mechanism::solveWith(const Pose &current, int variable, double valu
     return solveInverse(x, &current);
 }
 
+Result<MechanismPtr> Mechanism::withParameters(const ParameterSet &changes) const
+{
+    Result<MechanismPtr> current = MechanismPtr(shared_from_this());
+    for (const auto &[name, value] : changes) {
+        current = (*current)->withParameter(name, value);
+        if (!current)
+            return current;
+    }
+    return current;
+}
+
 Result<double> Mechanism::checkDomain(const ParameterInfo &info, double value)
 {
     const Interval &d = info.domain;
@@ -103,7 +114,13 @@ std::string formatNumber(double value, int decimals)
 {
     if (!std::isfinite(value))
         return std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
-    char buffer[64];
+    char buffer[400];
+    // Very large or very small magnitudes read better, and fit, in scientific notation.
+    const double magnitude = std::abs(value);
+    if (magnitude >= 1e9 || (magnitude > 0 && magnitude < 1e-6)) {
+        auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6);
+        return ec == std::errc() ? std::string(buffer, end) : std::string("?");
+    }
     auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
     if (ec != std::errc())
         return "?";

@@ -88,6 +88,15 @@ struct ReportLayout {
     const ReportEntry *find(std::string_view name) const;
 };
 
+/// The Jacobians of a pose, from the constraint F(x, q) = 0 with inputs q and outputs x:
+/// J_q·q̇ = J_x·ẋ, so q̇ = J·ẋ with J = J_q⁻¹·J_x. det J_q = 0: inverse-kinematic singularity;
+/// det J_x = 0: direct-kinematic singularity.
+struct Jacobians {
+    Eigen::MatrixXd inputs;  ///< J_q (the П-joint's J_d)
+    Eigen::MatrixXd outputs; ///< J_x (the П-joint's J_θ)
+    Eigen::MatrixXd full;    ///< J = J_q⁻¹·J_x
+};
+
 enum class SingularityType { None, Inverse, Direct, Combined };
 std::string_view singularityName(SingularityType type); ///< "none", "inverse", "direct", "combined"
 
@@ -99,7 +108,7 @@ struct Singularity {
 class Mechanism;
 using MechanismPtr = std::shared_ptr<const Mechanism>;
 
-class Mechanism
+class Mechanism : public std::enable_shared_from_this<Mechanism>
 {
 public:
     virtual ~Mechanism() = default;
@@ -112,6 +121,10 @@ public:
     virtual ParameterSet parameters() const = 0;
     /// A new design with one parameter changed, validated; the failure names the culprit.
     virtual Result<MechanismPtr> withParameter(std::string_view name, double value) const = 0;
+    /// A new design with several parameters changed at once, validated once, so that the order
+    /// does not matter (θ_min and θ_max moved together, k given with a). The default applies
+    /// them one by one.
+    virtual Result<MechanismPtr> withParameters(const ParameterSet &changes) const;
     /// Warnings about a valid but questionable design (interference, poor transmission).
     virtual std::vector<std::string> designWarnings() const { return {}; }
 
@@ -138,6 +151,8 @@ public:
     virtual const ReportLayout &reportLayout() const = 0;
     /// Fills `values` (reportLayout().size doubles) for a solved pose. Never allocates.
     virtual Singularity evaluate(const Pose &pose, std::span<double> values) const = 0;
+    /// The Jacobians as matrices (allocates: for analysis, not for sweeps).
+    virtual Jacobians jacobians(const Pose &pose) const = 0;
 
     // -- drawing --------------------------------------------------------------------------
     virtual Scene scene(const Pose &pose) const = 0;

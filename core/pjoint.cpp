@@ -110,6 +110,16 @@ double motorTorque(const PJointDesign &p, double force)
     return force * p.lead / (2.0 * pi * p.efficiency) * 1e-3; // (15), N·mm → N·m
 }
 
+double outputSpeed(const PJointDesign &p, double theta, double dDot)
+{
+    return dDot / jacobian(p, theta); // (8)
+}
+
+double outputResolution(const PJointDesign &p, double theta, double step)
+{
+    return step / jacobian(p, theta);
+}
+
 Interval recommendedRange(const PJointDesign &p, double share)
 {
     // J peaks where sin θ = −k (k < 1) or −1/k (k > 1), and rises before and falls after it.
@@ -206,6 +216,13 @@ Result<MechanismPtr> PJoint::create(const PJointDesign &design)
         if (!checked)
             return checked.failure();
     }
+    // A design far outside any real proportion (a = 1e-300 mm) would give k, d or J that are
+    // not finite numbers: refuse it rather than show them.
+    const double k = design.k();
+    if (!(k >= 1e-6 && k <= 1e6)) {
+        return Failure{FailureKind::InvalidParameter, "k",
+                       "k = b/a = " + formatNumber(k, 6) + " is out of proportion: it must lie between 1e-6 and 1e6."};
+    }
     if (!(design.thetaMin < design.thetaMax)) {
         return Failure{FailureKind::InvalidParameter, "theta_min",
                        "theta_min = " + formatNumber(units::angle.toDisplay(design.thetaMin))
@@ -215,48 +232,68 @@ Result<MechanismPtr> PJoint::create(const PJointDesign &design)
     return MechanismPtr(new PJoint(design));
 }
 
+PJoint::PJoint(const PJointDesign &design)
+    : m_design(design)
+    , m_recommended(pjoint::recommendedRange(design))
+{
+}
+
+Result<PJointDesign> PJoint::withK(PJointDesign design, const ParameterSet &changes)
+{
+    if (auto k = changes.find("k"); k != changes.end()) {
+        if (changes.count("b")) {
+            return Failure{FailureKind::InvalidParameter, "k",
+                           "k = " + formatNumber(k->second, 6) + " and b = " + formatNumber(changes.at("b"), 6)
+                               + " mm both set the coupler: give b or k, not both."};
+        }
+        design.b = k->second * design.a; // k is kept as b/a: it sizes the coupler
+    }
+    return design;
+}
+
 Result<MechanismPtr> PJoint::createFrom(const ParameterSet &parameters)
 {
-    PJointDesign design = designFrom(parameters);
-    if (auto k = parameters.find("k"); k != parameters.end()) {
-        if (parameters.count("b") && std::abs(k->second * design.a - design.b) > 1e-9 * design.b) {
-            return Failure{FailureKind::InvalidParameter, "k",
-                           "k = " + formatNumber(k->second, 6) + " disagrees with b/a = "
-                               + formatNumber(design.b / design.a, 6) + ": give b or k, not both."};
+    auto design = withK(designFrom(parameters), parameters);
+    if (!design)
+        return design.failure();
+    return create(*design);
+}
+
+Result<MechanismPtr> PJoint::withParameters(const ParameterSet &changes) const
+{
+    for (const auto &[name, value] : changes) {
+        bool known = false;
+        for (const ParameterInfo &info : parameterInfo()) {
+            if (info.name == name) {
+                known = true;
+                if (auto checked = checkDomain(info, value); !checked)
+                    return checked.failure();
+            }
         }
-        design.b = k->second * design.a;
+        if (!known)
+            return Failure{FailureKind::UnknownName, name, "The П-joint has no parameter named '" + name + "'."};
     }
-    return create(design);
+    auto design = withK(designFrom(changes, m_design), changes);
+    if (!design)
+        return design.failure();
+    return create(*design);
 }
 
 Result<MechanismPtr> PJoint::withParameter(std::string_view name, double value) const
 {
-    const ParameterInfo *info = nullptr;
-    for (const ParameterInfo &candidate : parameterInfo()) {
-        if (candidate.name == name)
-            info = &candidate;
-    }
-    if (!info)
-        return Failure{FailureKind::UnknownName, std::string(name),
-                       "The П-joint has no parameter named '" + std::string(name) + "'."};
-    auto checked = checkDomain(*info, value);
-    if (!checked)
-        return checked.failure();
-
-    PJointDesign next = m_design;
-    if (name == "k") {
-        next.b = value * next.a; // k is kept as b/a: setting it resizes the coupler
-    } else {
-        ParameterSet one{{std::string(name), value}};
-        next = designFrom(one, next);
-    }
-    auto made = create(next);
-    if (!made && made.failure().culprit == "theta_min" && name == "theta_max") {
+    auto made = withParameters({{std::string(name), value}});
+    // A failure of a check across parameters (θ_min < θ_max, a computable k) is about the
+    // parameter that was just changed.
+    if (!made && made.failure().kind == FailureKind::InvalidParameter && made.failure().culprit != name) {
         Failure f = made.failure();
-        f.culprit = "theta_max";
-        f.message = "theta_max = " + formatNumber(units::angle.toDisplay(next.thetaMax))
-                  + "° must be greater than theta_min = " + formatNumber(units::angle.toDisplay(next.thetaMin))
-                  + "°.";
+        f.culprit = std::string(name);
+        if (name == "theta_max" && f.message.starts_with("theta_min")) {
+            f.message = "theta_max = " + formatNumber(units::angle.toDisplay(value))
+                      + "° must be greater than theta_min = "
+                      + formatNumber(units::angle.toDisplay(m_design.thetaMin)) + "°.";
+        } else {
+            f.message = std::string(name) + ": " + f.message;
+        }
         return f;
     }
     return made;
@@ -313,19 +350,15 @@ Result<Pose> PJoint::solveDirect(const Coordinates &inputs, const Pose *) const
     const PJointDesign &p = m_design;
     if (!std::isfinite(d))
         return Failure{FailureKind::OutOfRange, "d", "d must be a finite number."};
-    const double lo = std::abs(p.a - p.b);
-    const double hi = p.a + p.b;
-    if (d < lo || d > hi) {
-        return Failure{FailureKind::Unreachable, "d",
-                       "d = " + formatNumber(d) + " mm cannot close the parallelogram: it must lie in ["
-                           + formatNumber(lo) + ", " + formatNumber(hi) + "] mm (|a − b| to a + b)."};
-    }
+    // The stroke, d(θ_min)…d(θ_max), is what the user may ask for; past |a − b|…a + b the
+    // parallelogram could not even close, which makes it unreachable rather than out of range.
     const Interval range = variableRange(variableD);
-    const double tolerance = relativeTolerance * hi;
+    const double tolerance = relativeTolerance * (p.a + p.b);
     if (!range.contains(d, tolerance)) {
-        return Failure{FailureKind::OutOfRange, "d",
-                       "d = " + formatNumber(d) + " mm is outside the stroke [" + formatNumber(range.min)
-                           + ", " + formatNumber(range.max) + "] mm that the θ range allows."};
+        const bool closes = d >= std::abs(p.a - p.b) && d <= p.a + p.b;
+        return Failure{closes ? FailureKind::OutOfRange : FailureKind::Unreachable, "d",
+                       "d = " + formatNumber(d) + " mm is outside the stroke [" + formatNumber(range.min) + ", "
+                           + formatNumber(range.max) + "] mm that the θ range allows."};
     }
     const double theta = std::clamp(pjoint::angle(p, range.clamp(d)), p.thetaMin, p.thetaMax);
     Pose pose;
@@ -416,7 +449,9 @@ Singularity PJoint::singularity(double theta) const
            : direct            ? SingularityType::Direct
            : inverse           ? SingularityType::Inverse
                                : SingularityType::None;
-    s.margin = std::min(directMeasure, inverseMeasure);
+    // Every singularity of the П-joint lies at θ = ±90° (the inverse one only together with the
+    // direct one, for k = 1): |cos θ| is the distance to the nearest.
+    s.margin = directMeasure;
     return s;
 }
 
@@ -435,17 +470,26 @@ Singularity PJoint::evaluate(const Pose &pose, std::span<double> v) const
     v[SlotJd] = 2.0 * d;
     v[SlotJTheta] = pjoint::jacobianTheta(p, theta);
     v[SlotDJ] = pjoint::jacobianDerivative(p, theta);
-    v[SlotTorque] = J * p.forceMax * 1e-3;
-    v[SlotSpeed] = p.speedMax / J;
-    v[SlotResolution] = p.step / J;
+    v[SlotTorque] = pjoint::outputTorque(p, theta, p.forceMax);
+    v[SlotSpeed] = pjoint::outputSpeed(p, theta, p.speedMax);
+    v[SlotResolution] = pjoint::outputResolution(p, theta, p.step);
     v[SlotMotorTorque] = pjoint::motorTorque(p, p.forceMax);
     v[SlotDMin] = dMin();
     v[SlotDMax] = dMax();
     v[SlotStroke] = v[SlotDMax] - v[SlotDMin];
-    const Interval recommended = pjoint::recommendedRange(p);
-    v[SlotRecommendedMin] = recommended.min;
-    v[SlotRecommendedMax] = recommended.max;
+    v[SlotRecommendedMin] = m_recommended.min;
+    v[SlotRecommendedMax] = m_recommended.max;
     return singularity(theta);
+}
+
+Jacobians PJoint::jacobians(const Pose &pose) const
+{
+    const double theta = pose.outputs[0];
+    Jacobians j;
+    j.inputs = Eigen::MatrixXd::Constant(1, 1, pjoint::jacobianD(m_design, theta));
+    j.outputs = Eigen::MatrixXd::Constant(1, 1, pjoint::jacobianTheta(m_design, theta));
+    j.full = Eigen::MatrixXd::Constant(1, 1, pjoint::jacobian(m_design, theta));
+    return j;
 }
 
 // -- drawing -----------------------------------------------------------------------------
@@ -464,8 +508,9 @@ Scene PJoint::scene(const Pose &pose) const
                 {v3(b), "B", JointKind::Ground},
                 {v3(a), "A", JointKind::Revolute},
                 {v3(c), "C", JointKind::Revolute}};
-    s.bars = {{O, B, BarKind::Ground, "b"},
-              {B, A, BarKind::Crank, "a"},
+    // B–A and O–B carry dimension lines with their lengths; a name on them would collide.
+    s.bars = {{O, B, BarKind::Ground, ""},
+              {B, A, BarKind::Crank, ""},
               {O, C, BarKind::Crank, "a"},
               {C, A, BarKind::Coupler, "b"}};
     s.actuators = {{O, A, p.motorLength, p.motorWidth, p.screwDiameter, "d"}};

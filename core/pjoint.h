@@ -59,6 +59,10 @@ double outputTorque(const PJointDesign &design, double theta, double force);
 double actuatorForce(const PJointDesign &design, double theta, double torque);
 /// (15) T_M = F·h/(2π·η), motor torque in N·m for actuator force F in N.
 double motorTorque(const PJointDesign &design, double force);
+/// (8) Output speed θ̇ = ḋ/J in rad/s for the actuator speed ḋ in mm/s (fig. 16).
+double outputSpeed(const PJointDesign &design, double theta, double dDot);
+/// Output resolution Δθ = Δd/J in rad for one actuator step Δd in mm (fig. 15).
+double outputResolution(const PJointDesign &design, double theta, double step);
 /// Share of the best output torque that the recommended range keeps (see recommendedRange).
 inline constexpr double recommendedTorqueShare = 0.6;
 /// The recommended working range, rad: the part of [θ_min, θ_max] where J — and with it the
@@ -83,6 +87,8 @@ public:
     const std::vector<ParameterInfo> &parameterInfo() const override;
     ParameterSet parameters() const override;
     Result<MechanismPtr> withParameter(std::string_view name, double value) const override;
+    /// k, if changed, sets b = k·a with the new a; b and k together are refused.
+    Result<MechanismPtr> withParameters(const ParameterSet &changes) const override;
     std::vector<std::string> designWarnings() const override;
 
     const std::vector<VariableInfo> &variableInfo() const override;
@@ -93,6 +99,8 @@ public:
 
     const ReportLayout &reportLayout() const override;
     Singularity evaluate(const Pose &pose, std::span<double> values) const override;
+    /// 1×1: J_q = J_d, J_x = J_θ, J = J_d⁻¹·J_θ (9–11).
+    Jacobians jacobians(const Pose &pose) const override;
 
     Scene scene(const Pose &pose) const override;
     Result<Pose> dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const override;
@@ -101,13 +109,18 @@ public:
     Singularity singularity(double theta) const;
     double dMin() const; ///< d(θ_min)
     double dMax() const; ///< d(θ_max)
+    /// pjoint::recommendedRange of the design, computed once.
+    const Interval &recommendedRange() const { return m_recommended; }
 
     static constexpr int variableD = 0;     ///< index of d in variableInfo()
     static constexpr int variableTheta = 1; ///< index of θ in variableInfo()
 
 private:
-    explicit PJoint(const PJointDesign &design) : m_design(design) {}
+    explicit PJoint(const PJointDesign &design);
+    static Result<PJointDesign> withK(PJointDesign design, const ParameterSet &changes);
+
     PJointDesign m_design;
+    Interval m_recommended;
 };
 
 } // namespace pkm

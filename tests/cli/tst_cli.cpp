@@ -144,6 +144,10 @@ public:
         values[5] = std::numeric_limits<double>::infinity(); // e.g. 1/J at a singular pose
         return {SingularityType::Direct, 0.0};
     }
+    Jacobians jacobians(const Pose &) const override
+    {
+        return {Eigen::MatrixXd::Identity(2, 2), Eigen::MatrixXd::Identity(2, 2), Eigen::MatrixXd::Identity(2, 2)};
+    }
     Scene scene(const Pose &) const override { return {}; }
     Result<Pose> dragHandle(const Pose &current, int, const Eigen::Vector2d &) const override { return current; }
 };
@@ -164,6 +168,8 @@ private slots:
     void inverseThenDirect_data();
     void inverseThenDirect();
     void settingKResizesCoupler();
+    void parameterOrderDoesNotMatter();
+    void couplerGivenTwiceIsRefused();
     void changedParameterKeepsPose();
     void storedPoseFallsBackToHome();
     void designFile();
@@ -299,9 +305,32 @@ void TestCli::settingKResizesCoupler()
     QCOMPARE(parameters.value(QStringLiteral("k")).toDouble(), 0.5);
 }
 
+void TestCli::parameterOrderDoesNotMatter()
+{
+    // k with a: the coupler is k·a with the new a, in either order.
+    for (const QStringList &sets : {QStringList {QStringLiteral("k=0.5"), QStringLiteral("a=200")},
+                                    QStringList {QStringLiteral("a=200"), QStringLiteral("k=0.5")}}) {
+        int exitCode = -1;
+        const QJsonObject parameters = evalJson(sets, &exitCode).value(QStringLiteral("parameters")).toObject();
+        QCOMPARE(exitCode, 0);
+        QCOMPARE(parameters.value(QStringLiteral("b")).toDouble(), 100.0);
+        QCOMPARE(parameters.value(QStringLiteral("k")).toDouble(), 0.5);
+    }
+}
+
+void TestCli::couplerGivenTwiceIsRefused()
+{
+    const Run run = runPkm({QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--set"),
+                            QStringLiteral("k=0.5"), QStringLiteral("--set"), QStringLiteral("b=70")});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY(run.out.isEmpty());
+    QVERIFY2(run.err.contains("give b or k, not both"), run.err.constData());
+    QCOMPARE(run.err.count('\n'), 1);
+}
+
 void TestCli::changedParameterKeepsPose()
 {
-    // --set applies parameters in order, then the pose: θ = 70° is reachable once θ_max = 80°.
+    // --set applies the parameters first, then the pose: θ = 70° is reachable once θ_max = 80°.
     int exitCode = -1;
     const QJsonObject root = evalJson({QStringLiteral("theta=70"), QStringLiteral("theta_max=80")}, &exitCode);
     QCOMPARE(exitCode, 0);

@@ -283,6 +283,7 @@ private slots:
         QCOMPARE(joint->singularity(90 * deg).type, SingularityType::Direct);
         QCOMPARE(joint->singularity(-90 * deg).type, SingularityType::Direct);
         QVERIFY(joint->singularity(89.9 * deg).margin < joint->singularity(60 * deg).margin);
+        QCOMPARE(joint->singularity(-60 * deg).margin, 0.5); // |cos θ|: the distance to θ = ±90°
         // k = 1, folded flat: d = 0 as well → combined.
         auto square = make(design(170, 1.0, -89, 89));
         QCOMPARE(square->singularity(-90 * deg).type, SingularityType::Combined);
@@ -344,6 +345,47 @@ private slots:
         auto conflicting = PJoint::createFrom({{"a", 200.0}, {"b", 50.0}, {"k", 0.3}});
         QVERIFY(!conflicting.ok());
         QCOMPARE(conflicting.failure().culprit, std::string("k"));
+    }
+
+    void severalParametersAtOnce()
+    {
+        auto joint = make(design(170, 0.4));
+        // k with a: b = k·a with the new a, whatever the order in the set
+        auto both = joint->withParameters({{"k", 0.5}, {"a", 200.0}});
+        QVERIFY(both.ok());
+        QCOMPARE((*both)->parameters().at("b"), 100.0);
+        // a range moved past the old one in one step
+        auto moved = joint->withParameters({{"theta_min", 70 * deg}, {"theta_max", 80 * deg}});
+        QVERIFY(moved.ok());
+        // b and k together contradict each other
+        auto conflict = joint->withParameters({{"b", 70.0}, {"k", 0.5}});
+        QVERIFY(!conflict.ok());
+        QCOMPARE(conflict.failure().culprit, std::string("k"));
+        auto unknown = joint->withParameters({{"zz", 1.0}});
+        QVERIFY(!unknown.ok());
+        QCOMPARE(unknown.failure().kind, FailureKind::UnknownName);
+    }
+
+    void outOfProportionRefused()
+    {
+        auto joint = make(design(170, 0.4));
+        auto tiny = joint->withParameter("a", 1e-300);
+        QVERIFY(!tiny.ok());
+        QCOMPARE(tiny.failure().culprit, std::string("a"));
+        QVERIFY(QString::fromStdString(tiny.failure().message).contains(QStringLiteral("out of proportion")));
+    }
+
+    void jacobianMatrices_data() { addDesignRows(); }
+    void jacobianMatrices()
+    {
+        QFETCH(double, a);
+        QFETCH(double, k);
+        QFETCH(double, thetaDeg);
+        auto joint = make(design(a, k, -89.95, 89.95));
+        auto pose = joint->solveInverse(Coordinates::Constant(1, thetaDeg * deg));
+        const Jacobians j = joint->jacobians(*pose);
+        QCOMPARE(j.full(0, 0), pjoint::jacobian(joint->design(), thetaDeg * deg));
+        QVERIFY(std::abs(j.inputs(0, 0) * j.full(0, 0) - j.outputs(0, 0)) < 1e-9 * j.outputs.norm() + 1e-12);
     }
 
     void outOfReach_data()
@@ -411,7 +453,7 @@ private slots:
             return (s.joints[bar.to].position - s.joints[bar.from].position).norm();
         };
         for (const SceneBar &bar : s.bars)
-            QVERIFY(std::abs(length(bar) - (bar.label == "a" ? a : k * a)) < 1e-9 * a);
+            QVERIFY(std::abs(length(bar) - (bar.kind == BarKind::Crank ? a : k * a)) < 1e-9 * a);
         const SceneActuator &act = s.actuators.front();
         QVERIFY(std::abs((s.joints[act.to].position - s.joints[act.from].position).norm() - pose->inputs[0]) < 1e-9 * a);
         for (const SceneJoint &joint : s.joints)

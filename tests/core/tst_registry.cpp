@@ -36,6 +36,29 @@ private slots:
         }
     }
 
+    void jacobiansAgainstFiniteDifferences()
+    {
+        // For every kind, at its home pose: J = J_q⁻¹·J_x, and J maps a small output step to
+        // the input step the inverse kinematics gives.
+        for (const MechanismKind &kind : mechanismKinds()) {
+            auto made = createMechanism(kind.id, {});
+            const Mechanism &m = **made;
+            const Pose home = m.homePose();
+            const Jacobians j = m.jacobians(home);
+            QVERIFY((j.inputs * j.full - j.outputs).norm() <= 1e-9 * j.outputs.norm());
+            const double h = 1e-6;
+            for (int c = 0; c < m.outputCount(); ++c) {
+                Coordinates plus = home.outputs, minus = home.outputs;
+                plus[c] += h;
+                minus[c] -= h;
+                auto up = m.solveInverse(plus, &home), down = m.solveInverse(minus, &home);
+                QVERIFY(up.ok() && down.ok());
+                const Eigen::VectorXd column = (up->inputs - down->inputs) / (2 * h);
+                QVERIFY((column - j.full.col(c)).norm() <= 1e-5 * std::max(1.0, j.full.norm()));
+            }
+        }
+    }
+
     void unknownKindAndParameter()
     {
         auto none = createMechanism("nosuch", {});
@@ -56,6 +79,8 @@ private slots:
         QTest::newRow("negative zero") << -0.0001 << 2 << "0";
         QTest::newRow("rounding") << 116.1999 << 1 << "116.2";
         QTest::newRow("nan") << std::nan("") << 2 << "nan";
+        QTest::newRow("huge") << 6.8e301 << 6 << "6.8e+301";
+        QTest::newRow("tiny") << 1.5e-9 << 3 << "1.5e-09";
     }
     void formatting()
     {
