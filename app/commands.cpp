@@ -2,6 +2,8 @@
 
 #include "document.h"
 
+#include <QCoreApplication>
+
 namespace pkm {
 
 ReplaceDesignCommand::ReplaceDesignCommand(Document *document, Design before, Design after, const QString &text)
@@ -30,7 +32,7 @@ SetParameterCommand::SetParameterCommand(Document *document, const QString &name
     , m_before(std::move(before))
     , m_after(std::move(after))
 {
-    setText(QObject::tr("Change %1").arg(name));
+    setText(QCoreApplication::translate("pkm::SetParameterCommand", "Change %1").arg(name));
 }
 
 void SetParameterCommand::undo()

@@ -216,6 +216,7 @@ bool MainWindow::openDesign(const QString &presetOrPath)
 
 void MainWindow::onDesignChanged()
 {
+    m_statusIsError = false; // a design change that arrives is a success: the error is over
     const Design &design = m_document->design();
     const MechanismPtr &mechanism = design.mechanism;
     setWindowTitle(tr("%1 — PKM Studio").arg(design.title.isEmpty() ? toQString(mechanism->kind()) : design.title));
@@ -281,7 +282,7 @@ void MainWindow::showStatus(const QString &message, bool error)
     m_statusIsError = error;
     statusBar()->setStyleSheet(error ? QStringLiteral("QStatusBar { color: #b3261e; font-weight: bold; }")
                                      : QString());
-    statusBar()->showMessage(message, error ? 10000 : 0);
+    statusBar()->showMessage(message); // an error stays until the next change succeeds
 }
 
 void MainWindow::openFile()

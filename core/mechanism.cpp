@@ -103,7 +103,7 @@ Result<double> Mechanism::checkDomain(const ParameterInfo &info, double value)
             message.append(formatNumber(info.unit.toDisplay(d.max))).append(info.openMax ? ")" : "]");
         }
         if (!info.unit.symbol.empty())
-            message.append(" ").append(info.unit.symbol);
+            message.append(info.unit.symbol == units::angle.symbol ? "" : " ").append(info.unit.symbol);
         message.append(".");
         return Failure{FailureKind::InvalidParameter, info.name, message};
     }

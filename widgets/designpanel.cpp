@@ -29,6 +29,7 @@ QString groupTitle(ParameterGroup group)
 }
 
 const char *nameProperty = "pkmParameter";
+const char *helpProperty = "pkmHelp"; ///< the field's tooltip while it is valid
 } // namespace
 
 bool parseNumber(const QString &text, const QString &unitSymbol, double *value)
@@ -57,13 +58,15 @@ DesignPanel::DesignPanel(QWidget *parent)
     titleFont.setBold(true);
     m_title->setFont(titleFont);
     layout->addWidget(m_title);
-    m_groups = new QVBoxLayout;
-    layout->addLayout(m_groups);
+    // The message goes above the fields, where it is seen without scrolling the panel.
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
-    m_message->setStyleSheet(QStringLiteral("color: #b3261e; font-weight: bold;"));
+    m_message->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; font-weight: bold; background: #fde7e5;"
+                                            " border: 1px solid #b3261e; padding: 4px; }"));
     m_message->hide();
     layout->addWidget(m_message);
+    m_groups = new QVBoxLayout;
+    layout->addLayout(m_groups);
     m_warnings = new QLabel(this);
     m_warnings->setWordWrap(true);
     m_warnings->setStyleSheet(QStringLiteral("color: #8a5a00;"));
@@ -126,6 +129,7 @@ void DesignPanel::rebuild()
                                                                       toQString(info.label).toHtmlEscaped()));
         label->setBuddy(edit);
         label->setToolTip(edit->toolTip());
+        edit->setProperty(helpProperty, edit->toolTip());
         forms.value(group)->addRow(label, row);
         m_fields.insert(name, edit);
     }
@@ -161,8 +165,10 @@ void DesignPanel::showValues()
 
 void DesignPanel::markInvalid(const QString &name, const QString &message)
 {
-    if (QLineEdit *edit = m_fields.value(name))
+    if (QLineEdit *edit = m_fields.value(name)) {
         setMark(edit, true);
+        edit->setToolTip(message);
+    }
     m_message->setText(message + QLatin1Char(' ') + tr("The last valid design is kept."));
     m_message->show();
 }
@@ -176,6 +182,8 @@ void DesignPanel::setMark(QLineEdit *field, bool invalid)
 {
     field->setStyleSheet(invalid ? QStringLiteral("QLineEdit { background: #fde7e5; border: 2px solid #b3261e; }")
                                  : QString());
+    if (!invalid)
+        field->setToolTip(field->property(helpProperty).toString());
 }
 
 void DesignPanel::commit(const QString &name, bool continuous)
@@ -209,7 +217,9 @@ void DesignPanel::step(const QString &name, int steps)
         if (toQString(info.name) != name)
             continue;
         double value = info.unit.toDisplay(m_mechanism->parameters().at(info.name));
-        value = std::round((value + steps * info.displayStep) / info.displayStep) * info.displayStep;
+        // Step from the value itself (Up then Down comes back), rounded only to hide binary noise.
+        const double scale = std::pow(10.0, info.decimals + 2);
+        value = std::round((value + steps * info.displayStep) * scale) / scale;
         edit->setText(QLocale().toString(value, 'f', info.decimals + 2));
         commit(name, true);
         return;

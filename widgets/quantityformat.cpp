@@ -19,7 +19,10 @@ QString formatQuantity(double coreValue, const Unit &unit, int decimals, const Q
     const double display = unit.toDisplay(coreValue);
     if (!std::isfinite(display))
         return QStringLiteral("—");
-    QString text = locale.toString(display, 'f', decimals);
+    // No group separators: "1044.03", as the spin boxes and fields show it.
+    QLocale plain = locale;
+    plain.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    QString text = plain.toString(display, 'f', decimals);
     const QString symbol = unitText(unit);
     if (symbol.isEmpty())
         return text;

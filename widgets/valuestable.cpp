@@ -104,7 +104,7 @@ void ValuesTable::setPose(const Pose &pose)
     }
     QString text = singularityText(singularity.type);
     if (singularity.type == SingularityType::None)
-        text += tr(" (margin %1)").arg(QLocale().toString(singularity.margin, 'f', 3));
+        text = tr("%1 (margin %2)").arg(text, QLocale().toString(singularity.margin, 'f', 3));
     m_singularity->setText(1, text);
     widest = std::max(widest, text.size());
     if (widest > m_widestValue) {

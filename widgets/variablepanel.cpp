@@ -105,7 +105,8 @@ void VariablePanel::updateRanges()
         const double scale = std::pow(10.0, info.decimals);
         const double lo = info.unit.toDisplay(range.min), hi = info.unit.toDisplay(range.max);
         row.spinBox->setRange(std::floor(lo * scale) / scale, std::ceil(hi * scale) / scale);
-        row.spinBox->setSingleStep(std::pow(10.0, std::floor(std::log10(std::max(hi - lo, 1e-9))) - 2) * 10);
+        // One arrow click: about a hundredth of the range, as a power of ten (1° for ±60°).
+        row.spinBox->setSingleStep(std::pow(10.0, std::floor(std::log10(std::max(hi - lo, 1e-9))) - 2));
     }
     m_updating = false;
 }

@@ -2,9 +2,12 @@
 // with a message naming the file.
 #include "designfile.h"
 
+#include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <sys/stat.h>
 
 using namespace pkm;
 
@@ -120,6 +123,22 @@ private slots:
         QFile after(path);
         QVERIFY(after.open(QIODevice::ReadOnly));
         QCOMPARE(after.readAll(), original);
+        after.close();
+
+        // Saving over the file writes a new one and renames it into place (QSaveFile): a reader
+        // holding the old file, or a crash mid-write, never sees half a design.
+        struct stat before_{}, replaced{};
+        QVERIFY(::stat(QFile::encodeName(path).constData(), &before_) == 0);
+        QFile reader(path);
+        QVERIFY(reader.open(QIODevice::ReadOnly));
+        auto changed = designfile::setDisplayParameter(design->mechanism, QStringLiteral("a"), 200);
+        design->mechanism = *changed;
+        QVERIFY(designfile::save(*design, path).ok());
+        QVERIFY(::stat(QFile::encodeName(path).constData(), &replaced) == 0);
+        QVERIFY(replaced.st_ino != before_.st_ino);
+        QCOMPARE(reader.readAll(), original); // the old content, whole
+        QVERIFY(designfile::load(path)->mechanism->parameters().at("a") == 200.0);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList {QStringLiteral("keep.pkm.json")});
     }
 };
 

@@ -10,6 +10,7 @@
 #include "valuestable.h"
 #include "variablepanel.h"
 
+#include <QAction>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
@@ -125,6 +126,21 @@ private slots:
         slider->setValue(VariablePanel::sliderSteps / 2);
         checkFollows(0.0);
         QTRY_VERIFY(m_window->linkageView()->paintCount() > paintsBefore);
+    }
+
+    void sliderDragKeepsTheHand()
+    {
+        // While the hand holds the slider, the pose follows it and the slider is not moved
+        // back under the hand by the answer.
+        QSlider *slider = m_window->variablePanel()->slider(PJoint::variableTheta);
+        slider->setSliderDown(true);
+        for (int position : {6000, 7000, 8000}) {
+            slider->setValue(position);
+            QCOMPARE(slider->value(), position);
+            checkFollows((-60 + 120.0 * position / VariablePanel::sliderSteps) * deg);
+        }
+        slider->setSliderDown(false);
+        QCOMPARE(slider->value(), 8000);
     }
 
     void dSpinBoxSolvesTheta()
@@ -264,7 +280,9 @@ private slots:
 
     void presetMenuOpensStudy()
     {
-        QVERIFY(m_window->openDesign(QStringLiteral("pjoint-study-k03")));
+        QAction *preset = m_window->findChild<QAction *>(QStringLiteral("preset_pjoint-study-k03"));
+        QVERIFY(preset);
+        preset->trigger();
         QCOMPARE(joint(*m_window).design().a, 1000.0);
         QVERIFY(std::abs(joint(*m_window).design().k() - 0.3) < 1e-12);
         QCOMPARE(m_window->variablePanel()->spinBox(PJoint::variableTheta)->maximum(), 75.0);
