@@ -52,12 +52,6 @@ DesignPanel::DesignPanel(QWidget *parent)
     : QWidget(parent)
 {
     auto *layout = new QVBoxLayout(this);
-    m_title = new QLabel(this);
-    m_title->setWordWrap(true);
-    QFont titleFont = m_title->font();
-    titleFont.setBold(true);
-    m_title->setFont(titleFont);
-    layout->addWidget(m_title);
     // The message goes above the fields, where it is seen without scrolling the panel.
     m_message = new QLabel(this);
     m_message->setWordWrap(true);

@@ -48,7 +48,6 @@ private:
     QHash<QString, QLineEdit *> m_fields;
     QLabel *m_message = nullptr;
     QLabel *m_warnings = nullptr;
-    QLabel *m_title = nullptr;
 };
 
 /// Parses a number typed by a person: the locale's form or the C form ("0,4" and "0.4" in a
