@@ -195,8 +195,7 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             invocation.var = value;
         } else if (option == "--steps") {
             const auto number = parseNumber(value);
-            // 10^9 rows are ~300 GB of CSV: far beyond any use, and it bounds the memory for
-            // the chunk start poses.
+            // 10^9 rows are ~300 GB of CSV: far beyond any use.
             if (!number || *number < 1 || *number > 1e9 || *number != std::floor(*number)) {
                 return usageFailure("--steps",
                     context

@@ -7,23 +7,16 @@
 
 #include <QString>
 
-#include <algorithm>
-#include <atomic>
-#include <cmath>
-#include <condition_variable>
-#include <cstring>
-#include <functional>
-#include <mutex>
+#include <cstddef>
 #include <string_view>
-#include <thread>
+#include <vector>
 
 namespace pkm::cli {
 
 namespace {
 
-/// Rows per chunk: big enough that a chunk is one large fwrite (≈ 1 MB of CSV), small enough
-/// that two chunks per thread in flight stay a few MB.
-constexpr std::int64_t chunkRows = 4096;
+/// The rows are formatted into one buffer that is written out whenever it holds this much.
+constexpr std::size_t flushBytes = std::size_t {1} << 20;
 
 /// "75°", "500 mm", "0.4": a value in display units with its unit, for messages.
 std::string withUnit(double displayValue, const Unit &unit)
@@ -40,100 +33,6 @@ std::string withUnit(double displayValue, const Unit &unit)
 bool writeAll(std::FILE *out, std::string_view text)
 {
     return std::fwrite(text.data(), 1, text.size(), out) == text.size();
-}
-
-/// The text of one chunk of rows: `bytes` keeps its size between chunks (CSV rows are written
-/// through a pointer into it), `length` is how much of it is text.
-struct ChunkText {
-    std::string bytes;
-    std::size_t length = 0;
-    std::string_view view() const { return {bytes.data(), length}; }
-};
-
-/// Formats chunks 0 … chunks − 1 with `format` on worker threads and writes them in order on
-/// the calling thread. `format` returning false stops everything: NotDeterministic.
-Sweep::Outcome writeChunks(
-    std::int64_t chunks, const std::function<bool(std::int64_t, ChunkText &)> &format, std::FILE *out)
-{
-    const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
-    if (chunks < 2 || threads < 2) {
-        ChunkText text;
-        for (std::int64_t chunk = 0; chunk < chunks; ++chunk) {
-            if (!format(chunk, text))
-                return Sweep::Outcome::NotDeterministic;
-            if (!writeAll(out, text.view()))
-                return Sweep::Outcome::OutputError;
-        }
-        return Sweep::Outcome::Written;
-    }
-
-    // A ring of 2 buffers per thread: chunk c goes to slot c % slotCount once chunk c − slotCount has
-    // been written, which bounds the memory whatever K is.
-    const auto slotCount = static_cast<std::int64_t>(2 * threads);
-    std::vector<ChunkText> texts(static_cast<std::size_t>(slotCount));
-    std::vector<std::int64_t> ready(static_cast<std::size_t>(slotCount), -1);
-    std::mutex mutex;
-    std::condition_variable changed;
-    std::int64_t written = 0;
-    bool stop = false;
-    bool failed = false;
-    std::atomic<std::int64_t> next {0};
-
-    const auto work = [&] {
-        for (;;) {
-            const std::int64_t chunk = next.fetch_add(1);
-            if (chunk >= chunks)
-                return;
-            const auto slot = static_cast<std::size_t>(chunk % slotCount);
-            {
-                std::unique_lock lock(mutex);
-                changed.wait(lock, [&] { return stop || written > chunk - slotCount; });
-                if (stop)
-                    return;
-            }
-            const bool ok = format(chunk, texts[slot]);
-            {
-                std::lock_guard lock(mutex);
-                failed = failed || !ok;
-                stop = stop || !ok;
-                ready[slot] = chunk;
-            }
-            changed.notify_all();
-        }
-    };
-    std::vector<std::thread> workers;
-    for (unsigned t = 0; t < threads; ++t)
-        workers.emplace_back(work);
-
-    bool writeOk = true;
-    for (std::int64_t chunk = 0; chunk < chunks; ++chunk) {
-        const auto slot = static_cast<std::size_t>(chunk % slotCount);
-        {
-            std::unique_lock lock(mutex);
-            changed.wait(lock, [&] { return stop || ready[slot] == chunk; });
-            if (stop)
-                break;
-        }
-        if (!writeAll(out, texts[slot].view())) {
-            writeOk = false;
-            break;
-        }
-        {
-            std::lock_guard lock(mutex);
-            written = chunk + 1;
-        }
-        changed.notify_all();
-    }
-    {
-        std::lock_guard lock(mutex);
-        stop = true;
-    }
-    changed.notify_all();
-    for (std::thread &worker : workers)
-        worker.join();
-    if (failed)
-        return Sweep::Outcome::NotDeterministic;
-    return writeOk ? Sweep::Outcome::Written : Sweep::Outcome::OutputError;
 }
 
 } // namespace
@@ -155,15 +54,12 @@ Result<Sweep> Sweep::solve(const PreparedDesign &design, const Invocation &invoc
     else
         return unknownSetName(mechanism, "--var " + sweep.m_var, sweep.m_var, design.origin);
 
-    // Solve every step before printing anything, so a failure leaves stdout empty. The pose at
-    // the start of each chunk is kept: the formatting pass then runs the chunks in parallel,
-    // independently, and gives exactly the rows a serial loop would.
-    sweep.m_chunkStarts.reserve(static_cast<std::size_t>((sweep.m_steps + chunkRows - 1) / chunkRows));
+    // Solve every step before printing anything, so a failure leaves stdout empty. Only
+    // whether each step solves is kept: write() solves them again, in the same order from the
+    // same start, so memory stays constant whatever the number of steps.
     Pose near = design.pose;
     Step step;
     for (std::int64_t i = 0; i < sweep.m_steps; ++i) {
-        if (i % chunkRows == 0)
-            sweep.m_chunkStarts.push_back(near);
         if (const auto failure = sweep.solveStep(i, near, step)) {
             const std::string context = "sweep step " + std::to_string(i + 1) + " of " + std::to_string(sweep.m_steps)
                 + " (" + sweep.m_var + " = " + withUnit(sweep.valueAt(i), sweep.m_unit) + ")";
@@ -231,42 +127,48 @@ void Sweep::jsonHeader(std::string &out) const
 Sweep::Outcome Sweep::write(std::FILE *out) const
 {
     const SweepRowFormatter formatter(*m_design->mechanism, m_parameter != nullptr);
+    // text[0, length) is formatted and not yet written. JSON rows are appended to it; CSV rows
+    // are written through a pointer into room for one more row at its longest.
     std::string text;
     if (m_json)
         jsonHeader(text);
     else
         formatter.csvHeader(text);
-    if (!writeAll(out, text))
-        return Outcome::OutputError;
-
-    const auto formatChunk = [&](std::int64_t chunk, ChunkText &chunkText) {
-        const std::int64_t begin = chunk * chunkRows;
-        const std::int64_t end = std::min(m_steps, begin + chunkRows);
-        std::string &bytes = chunkText.bytes;
+    std::size_t length = text.size();
+    if (m_json)
+        text.reserve(2 * flushBytes);
+    else
+        text.resize(length + flushBytes + formatter.csvRowBound());
+    const auto flush = [&] {
+        const bool ok = writeAll(out, {text.data(), length});
+        length = 0;
         if (m_json)
-            bytes.clear();
-        else if (const auto room = static_cast<std::size_t>(end - begin) * formatter.csvRowBound(); bytes.size() < room)
-            bytes.resize(room); // CSV rows are written straight into a buffer for the longest possible rows
-        char *cursor = bytes.data();
-        std::vector<double> values(formatter.valueCount());
-        Pose near = m_chunkStarts[static_cast<std::size_t>(chunk)];
-        Step step;
-        for (std::int64_t i = begin; i < end; ++i) {
-            if (solveStep(i, near, step).has_value())
-                return false; // solve() solved it: the mechanism is not deterministic
-            if (m_json)
-                formatter.jsonRow(bytes, i, *step.mechanism, step.pose, values);
-            else
-                cursor = formatter.csvRow(cursor, *step.mechanism, step.pose, values);
-            near = step.pose;
-        }
-        chunkText.length = m_json ? bytes.size() : static_cast<std::size_t>(cursor - bytes.data());
-        return true;
+            text.clear();
+        return ok;
     };
-    const Outcome rows = writeChunks(static_cast<std::int64_t>(m_chunkStarts.size()), formatChunk, out);
-    if (rows != Outcome::Written)
-        return rows;
-    return writeAll(out, m_json ? "\n]\n}\n" : "") ? Outcome::Written : Outcome::OutputError;
+
+    std::vector<double> values(formatter.valueCount());
+    Pose near = m_design->pose;
+    Step step;
+    for (std::int64_t i = 0; i < m_steps; ++i) {
+        if (solveStep(i, near, step).has_value())
+            return Outcome::NotDeterministic; // solve() solved it from the same pose
+        if (m_json) {
+            formatter.jsonRow(text, i, *step.mechanism, step.pose, values);
+            length = text.size();
+        } else {
+            length = static_cast<std::size_t>(
+                formatter.csvRow(text.data() + length, *step.mechanism, step.pose, values) - text.data());
+        }
+        if (length >= flushBytes && !flush())
+            return Outcome::OutputError;
+        near = step.pose;
+    }
+    if (m_json) {
+        text += "\n]\n}\n";
+        length = text.size();
+    }
+    return flush() ? Outcome::Written : Outcome::OutputError;
 }
 
 } // namespace pkm::cli

@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace pkm::cli {
 
@@ -25,10 +24,10 @@ public:
     enum class Outcome {
         Written,
         OutputError, ///< `out` could not be written
-        NotDeterministic, ///< a step solved by solve() failed the second time (a bug)
+        NotDeterministic, ///< a step solved by solve() failed when solved again (a bug)
     };
-    /// Writes the header, every row and the trailer to `out`. The rows are formatted in
-    /// parallel chunks and written in order.
+    /// Writes the header, every row and the trailer to `out`, solving the steps again: solve()
+    /// keeps no poses, so the memory does not grow with the number of steps.
     Outcome write(std::FILE *out) const;
 
 private:
@@ -61,7 +60,6 @@ private:
     double m_to = 0.0;
     std::int64_t m_steps = 1;
     bool m_json = false;
-    std::vector<Pose> m_chunkStarts; ///< the pose each chunk of rows starts from
 };
 
 } // namespace pkm::cli
