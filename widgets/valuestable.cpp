@@ -79,6 +79,7 @@ void ValuesTable::rebuild()
         auto *item = new QTreeWidgetItem(this, {toQString(entry.symbol), QString(), toQString(entry.label)});
         item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
         item->setData(0, Qt::UserRole, toQString(entry.name));
+        item->setToolTip(2, toQString(entry.label)); // the column may be too narrow for it
         m_items.push_back(item);
     }
     addGroup(tr("Singularity"));
