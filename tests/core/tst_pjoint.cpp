@@ -53,6 +53,25 @@ void addDesignRows()
     }
     QTest::addRow("a1000 k0.4 th33") << 1000.0 << 0.4 << 33.0;
 }
+
+/// The joint of the current data row (addDesignRows) over θ ±89.95°, posed at the row's θ.
+struct RowPose {
+    std::shared_ptr<const PJoint> joint;
+    Pose pose;
+    double a = 0;
+    double k = 0;
+    double theta = 0; ///< rad
+};
+
+RowPose rowPose()
+{
+    QFETCH(double, a);
+    QFETCH(double, k);
+    QFETCH(double, thetaDeg);
+    RowPose row{make(design(a, k, -89.95, 89.95)), {}, a, k, thetaDeg * deg};
+    row.pose = *row.joint->solveInverse(Coordinates::Constant(1, row.theta));
+    return row;
+}
 } // namespace
 
 class TestPJoint : public QObject
@@ -378,13 +397,9 @@ private slots:
     void jacobianMatrices_data() { addDesignRows(); }
     void jacobianMatrices()
     {
-        QFETCH(double, a);
-        QFETCH(double, k);
-        QFETCH(double, thetaDeg);
-        auto joint = make(design(a, k, -89.95, 89.95));
-        auto pose = joint->solveInverse(Coordinates::Constant(1, thetaDeg * deg));
-        const Jacobians j = joint->jacobians(*pose);
-        QCOMPARE(j.full(0, 0), pjoint::jacobian(joint->design(), thetaDeg * deg));
+        const RowPose row = rowPose();
+        const Jacobians j = row.joint->jacobians(row.pose);
+        QCOMPARE(j.full(0, 0), pjoint::jacobian(row.joint->design(), row.theta));
         QVERIFY(std::abs(j.inputs(0, 0) * j.full(0, 0) - j.outputs(0, 0)) < 1e-9 * j.outputs.norm() + 1e-12);
     }
 
@@ -443,19 +458,16 @@ private slots:
     void sceneMatchesPose_data() { addDesignRows(); }
     void sceneMatchesPose()
     {
-        QFETCH(double, a);
-        QFETCH(double, k);
-        QFETCH(double, thetaDeg);
-        auto joint = make(design(a, k, -89.95, 89.95));
-        auto pose = joint->solveInverse(Coordinates::Constant(1, thetaDeg * deg));
-        const Scene s = joint->scene(*pose);
+        const RowPose row = rowPose();
+        const double a = row.a, k = row.k;
+        const Scene s = row.joint->scene(row.pose);
         auto length = [&](const SceneBar &bar) {
             return (s.joints[bar.to].position - s.joints[bar.from].position).norm();
         };
         for (const SceneBar &bar : s.bars)
             QVERIFY(std::abs(length(bar) - (bar.kind == BarKind::Crank ? a : k * a)) < 1e-9 * a);
         const SceneActuator &act = s.actuators.front();
-        QVERIFY(std::abs((s.joints[act.to].position - s.joints[act.from].position).norm() - pose->inputs[0]) < 1e-9 * a);
+        QVERIFY(std::abs((s.joints[act.to].position - s.joints[act.from].position).norm() - row.pose.inputs[0]) < 1e-9 * a);
         for (const SceneJoint &joint : s.joints)
             QVERIFY(s.extent.contains(joint.position));
     }
