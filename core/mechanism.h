@@ -106,7 +106,17 @@ struct Singularity {
 };
 
 class Mechanism;
+class PlanarWorkspace;
 using MechanismPtr = std::shared_ptr<const Mechanism>;
+
+/// The same pose seen in another working or assembly mode of the design: what the GUI draws as
+/// a ghost and switches to only when the user asks (never silently).
+struct ModeAlternative {
+    std::string label;     ///< "other assembly mode", "leg 1: other working mode"
+    ParameterSet changes;  ///< the mode parameters that select it
+    MechanismPtr mechanism; ///< the design with `changes` applied
+    Pose pose;             ///< the pose in that mode (same inputs or same outputs)
+};
 
 class Mechanism : public std::enable_shared_from_this<Mechanism>
 {
@@ -153,6 +163,11 @@ public:
     virtual Singularity evaluate(const Pose &pose, std::span<double> values) const = 0;
     /// The Jacobians as matrices (allocates: for analysis, not for sweeps).
     virtual Jacobians jacobians(const Pose &pose) const = 0;
+
+    /// The other working/assembly modes the mechanism could be in at this pose.
+    virtual std::vector<ModeAlternative> modeAlternatives(const Pose &) const { return {}; }
+    /// Workspace and singularity maps, for mechanisms whose outputs are a point of the plane.
+    virtual const PlanarWorkspace *planarWorkspace() const { return nullptr; }
 
     // -- drawing --------------------------------------------------------------------------
     virtual Scene scene(const Pose &pose) const = 0;

@@ -1,5 +1,6 @@
 #include "registry.h"
 
+#include "moma.h"
 #include "pjoint.h"
 
 namespace pkm {
@@ -8,6 +9,7 @@ const std::vector<MechanismKind> &mechanismKinds()
 {
     static const std::vector<MechanismKind> kinds = {
         {"pjoint", "Active П-joint", &PJoint::createFrom},
+        {"moma", "MOMA 2-axis parallel mechanism", &Moma::createFrom},
     };
     return kinds;
 }

@@ -38,6 +38,15 @@ struct SceneActuator {
     std::string label;
 };
 
+/// A straight guide (rail) of a slider or a linear axis, from `start` to `end` (its stroke),
+/// fixed to the ground; `label` names it ("PO₁").
+struct SceneGuide {
+    Eigen::Vector3d start = Eigen::Vector3d::Zero();
+    Eigen::Vector3d end = Eigen::Vector3d::Zero();
+    double width = 12.0; ///< drawn width of the rail, mm
+    std::string label;
+};
+
 /// An angle to mark with an arc at joint `vertex`: from direction angle `start` (rad, from +x,
 /// counter-clockwise) over `sweep` rad (signed).
 struct SceneAngle {
@@ -67,6 +76,7 @@ struct Scene {
     std::vector<SceneJoint> joints;
     std::vector<SceneBar> bars;
     std::vector<SceneActuator> actuators;
+    std::vector<SceneGuide> guides;
     std::vector<SceneAngle> angles;
     std::vector<SceneDimension> dimensions;
     std::vector<SceneHandle> handles;

@@ -1,0 +1,2 @@
+#pragma once
+// pkm workspace and pkm map (in progress).

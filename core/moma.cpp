@@ -1,0 +1,746 @@
+#include "moma.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pkm {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+
+std::string legName(int leg)
+{
+    return leg == 0 ? "1" : "2";
+}
+
+Eigen::Vector2d normal(const Eigen::Vector2d &a)
+{
+    return {-a.y(), a.x()};
+}
+
+double cross(const Eigen::Vector2d &u, const Eigen::Vector2d &v)
+{
+    return u.x() * v.y() - u.y() * v.x();
+}
+} // namespace
+
+// -- closed forms --------------------------------------------------------------------------
+
+namespace moma {
+
+double projection(const MomaDesign &design, int leg, const Eigen::Vector2d &platform)
+{
+    return direction(design.alpha[leg]).dot(platform - design.reference[leg]);
+}
+
+double discriminant(const MomaDesign &design, int leg, const Eigen::Vector2d &platform)
+{
+    const Eigen::Vector2d r = platform - design.reference[leg];
+    const double B = direction(design.alpha[leg]).dot(r);
+    const double C = r.squaredNorm() - design.length[leg] * design.length[leg];
+    return B * B - C;
+}
+
+Eigen::Vector2d sliderJoint(const MomaDesign &design, int leg, double p)
+{
+    return design.reference[leg] + p * direction(design.alpha[leg]);
+}
+
+double constraint(const MomaDesign &design, int leg, double p, const Eigen::Vector2d &platform)
+{
+    return (platform - sliderJoint(design, leg, p)).squaredNorm() - design.length[leg] * design.length[leg];
+}
+
+double side(const Eigen::Vector2d &z1, const Eigen::Vector2d &z2, const Eigen::Vector2d &platform)
+{
+    return cross(z2 - z1, platform - z1);
+}
+
+int innerSide(const MomaDesign &design, int leg)
+{
+    // The other guide's mid-stroke point decides which side of this guide is "inner".
+    const int other = 1 - leg;
+    const double mid = 0.5 * (design.strokeMin + design.strokeMax);
+    const Eigen::Vector2d target = sliderJoint(design, other, mid) - design.reference[leg];
+    const double c = cross(direction(design.alpha[leg]), target);
+    const double scale = std::max(1.0, target.norm());
+    return std::abs(c) < 1e-9 * scale ? 0 : (c > 0 ? 1 : -1);
+}
+
+double inverseMargin(const MomaDesign &design, int leg, double p, const Eigen::Vector2d &platform)
+{
+    const Eigen::Vector2d link = platform - sliderJoint(design, leg, p);
+    return std::abs(link.dot(direction(design.alpha[leg]))) / design.length[leg];
+}
+
+double directMargin(const MomaDesign &design, const Eigen::Vector2d &z1, const Eigen::Vector2d &z2,
+                    const Eigen::Vector2d &platform)
+{
+    return std::abs(cross(platform - z1, platform - z2)) / (design.length[0] * design.length[1]);
+}
+
+} // namespace moma
+
+// -- design --------------------------------------------------------------------------------
+
+namespace {
+const std::vector<ParameterInfo> &momaParameterInfo()
+{
+    static const std::vector<ParameterInfo> infos = [] {
+        const Interval coordinate{-1e5, 1e5};
+        const Interval positive{0.0, 1e5};
+        const Interval turn{-360.0 * units::degree, 360.0 * units::degree};
+        const Interval halfTurn{-180.0 * units::degree, 180.0 * units::degree};
+        const Interval sign{-1.0, 1.0};
+        using G = ParameterGroup;
+        std::vector<ParameterInfo> v;
+        v.push_back({"R1x", "x_R1", "guide 1 reference point, x", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"R1y", "y_R1", "guide 1 reference point, y", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"R2x", "x_R2", "guide 2 reference point, x", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"R2y", "y_R2", "guide 2 reference point, y", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"alpha1", "α₁", "direction of guide 1", units::angle, G::Geometry, turn, false, false, true, 2, 1});
+        v.push_back({"alpha2", "α₂", "direction of guide 2", units::angle, G::Geometry, turn, false, false, true, 2, 1});
+        v.push_back({"gamma1", "γ₁", "turn of guide 1 from vertical (α₁ = 270° + γ₁)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
+        v.push_back({"gamma2", "γ₂", "turn of guide 2 from vertical (α₂ = 270° + γ₂)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
+        v.push_back({"l1", "l₁", "length of link S₁", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"l2", "l₂", "length of link S₂", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"p_min", "p_min", "start of the stroke", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        v.push_back({"p_max", "p_max", "end of the stroke", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        v.push_back({"branch1", "β₁", "working mode of leg 1 (p₁ = B₁ ± √…)", units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"branch2", "β₂", "working mode of leg 2 (p₂ = B₂ ± √…)", units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"assembly", "σ", "assembly mode (+1: platform left of Z₁→Z₂)", units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"one_side", "one side", "links stay on the inner side of their guides (1) or not (0)", units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1});
+        v.push_back({"guide_width", "w_g", "drawn width of a guide", units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
+        return v;
+    }();
+    return infos;
+}
+} // namespace
+
+const std::vector<ParameterInfo> &Moma::parameterInfo() const
+{
+    return momaParameterInfo();
+}
+
+namespace {
+ParameterSet parametersOf(const MomaDesign &d)
+{
+    return {{"R1x", d.reference[0].x()},
+            {"R1y", d.reference[0].y()},
+            {"R2x", d.reference[1].x()},
+            {"R2y", d.reference[1].y()},
+            {"alpha1", d.alpha[0]},
+            {"alpha2", d.alpha[1]},
+            {"gamma1", std::remainder(d.alpha[0] - 1.5 * pi, 2 * pi)},
+            {"gamma2", std::remainder(d.alpha[1] - 1.5 * pi, 2 * pi)},
+            {"l1", d.length[0]},
+            {"l2", d.length[1]},
+            {"p_min", d.strokeMin},
+            {"p_max", d.strokeMax},
+            {"branch1", double(d.branch[0])},
+            {"branch2", double(d.branch[1])},
+            {"assembly", double(d.assembly)},
+            {"one_side", d.oneSide ? 1.0 : 0.0},
+            {"guide_width", d.guideWidth}};
+}
+} // namespace
+
+ParameterSet Moma::parameters() const
+{
+    return parametersOf(m_design);
+}
+
+namespace {
+/// The design with `changes` applied, or why not (unknown name, α and γ of one guide together).
+Result<MomaDesign> applyChanges(MomaDesign d, const ParameterSet &changes, const std::vector<ParameterInfo> &infos)
+{
+    for (const auto &[name, value] : changes) {
+        const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
+        if (info == infos.end())
+            return Failure{FailureKind::UnknownName, name, "MOMA has no parameter named '" + name + "'."};
+    }
+    for (int leg = 0; leg < 2; ++leg) {
+        const std::string alpha = "alpha" + legName(leg), gamma = "gamma" + legName(leg);
+        if (changes.count(alpha) && changes.count(gamma)) {
+            return Failure{FailureKind::InvalidParameter, gamma,
+                           alpha + " and " + gamma + " both turn guide " + legName(leg) + ": give one of them."};
+        }
+    }
+    auto take = [&](const char *name, double &field) {
+        if (auto it = changes.find(name); it != changes.end())
+            field = it->second;
+    };
+    auto takeInt = [&](const char *name, int &field) {
+        if (auto it = changes.find(name); it != changes.end())
+            field = it->second > 0 ? 1 : -1;
+    };
+    take("R1x", d.reference[0].x());
+    take("R1y", d.reference[0].y());
+    take("R2x", d.reference[1].x());
+    take("R2y", d.reference[1].y());
+    take("alpha1", d.alpha[0]);
+    take("alpha2", d.alpha[1]);
+    if (auto it = changes.find("gamma1"); it != changes.end())
+        d.alpha[0] = 1.5 * pi + it->second;
+    if (auto it = changes.find("gamma2"); it != changes.end())
+        d.alpha[1] = 1.5 * pi + it->second;
+    take("l1", d.length[0]);
+    take("l2", d.length[1]);
+    take("p_min", d.strokeMin);
+    take("p_max", d.strokeMax);
+    takeInt("branch1", d.branch[0]);
+    takeInt("branch2", d.branch[1]);
+    takeInt("assembly", d.assembly);
+    if (auto it = changes.find("one_side"); it != changes.end())
+        d.oneSide = it->second > 0.5;
+    take("guide_width", d.guideWidth);
+    return d;
+}
+
+/// ±1 parameters and the 0/1 switch take exactly those values.
+Result<bool> checkModes(const ParameterSet &changes)
+{
+    for (const char *name : {"branch1", "branch2", "assembly"}) {
+        if (auto it = changes.find(name); it != changes.end() && it->second != 1.0 && it->second != -1.0) {
+            return Failure{FailureKind::InvalidParameter, name,
+                           std::string(name) + " = " + formatNumber(it->second) + " is invalid: it must be -1 or +1."};
+        }
+    }
+    if (auto it = changes.find("one_side"); it != changes.end() && it->second != 0.0 && it->second != 1.0) {
+        return Failure{FailureKind::InvalidParameter, "one_side",
+                       "one_side = " + formatNumber(it->second) + " is invalid: it must be 0 (off) or 1 (on)."};
+    }
+    return true;
+}
+} // namespace
+
+Result<MechanismPtr> Moma::create(const MomaDesign &design)
+{
+    const ParameterSet values = parametersOf(design);
+    for (const ParameterInfo &info : momaParameterInfo()) {
+        if (auto checked = checkDomain(info, values.at(info.name)); !checked)
+            return checked.failure();
+    }
+    if (auto modes = checkModes(values); !modes)
+        return modes.failure();
+    if (!(design.strokeMin < design.strokeMax)) {
+        return Failure{FailureKind::InvalidParameter, "p_min",
+                       "p_min = " + formatNumber(design.strokeMin) + " mm must be less than p_max = "
+                           + formatNumber(design.strokeMax) + " mm."};
+    }
+    // Two guides on one line whose strokes overlap let the slider joints coincide.
+    const Eigen::Vector2d a1 = moma::direction(design.alpha[0]), a2 = moma::direction(design.alpha[1]);
+    const Eigen::Vector2d r = design.reference[1] - design.reference[0];
+    const double scale = std::max({1.0, design.length[0], design.length[1], r.norm()});
+    if (std::abs(cross(a1, a2)) < 1e-9 && std::abs(cross(a1, r)) < 1e-9 * scale) {
+        auto along = [&](int leg, double p) { return a1.dot(moma::sliderJoint(design, leg, p) - design.reference[0]); };
+        const double lo1 = std::min(along(0, design.strokeMin), along(0, design.strokeMax));
+        const double hi1 = std::max(along(0, design.strokeMin), along(0, design.strokeMax));
+        const double lo2 = std::min(along(1, design.strokeMin), along(1, design.strokeMax));
+        const double hi2 = std::max(along(1, design.strokeMin), along(1, design.strokeMax));
+        if (lo1 <= hi2 && lo2 <= hi1) {
+            return Failure{FailureKind::InvalidParameter, "R2x",
+                           "The guides lie on one line and their strokes overlap: the slider joints Z₁ and Z₂ "
+                           "could coincide. Move R₂ or turn a guide."};
+        }
+    }
+    Moma candidate(design);
+    if (!candidate.m_home.inputs.size()) {
+        std::string message = "This configuration has no workspace: with l₁ = ";
+        message.append(formatNumber(design.length[0])).append(" mm, l₂ = ").append(formatNumber(design.length[1]));
+        message.append(" mm and strokes [").append(formatNumber(design.strokeMin)).append(", ");
+        message.append(formatNumber(design.strokeMax)).append("] mm the links cannot meet in the chosen working "
+                                                              "and assembly modes.");
+        return Failure{FailureKind::Unreachable, "l1", message};
+    }
+    return MechanismPtr(new Moma(candidate));
+}
+
+Result<MechanismPtr> Moma::createFrom(const ParameterSet &parameters)
+{
+    if (auto modes = checkModes(parameters); !modes)
+        return modes.failure();
+    auto design = applyChanges(MomaDesign{}, parameters, momaParameterInfo());
+    if (!design)
+        return design.failure();
+    return create(*design);
+}
+
+Result<MechanismPtr> Moma::withParameters(const ParameterSet &changes) const
+{
+    for (const auto &[name, value] : changes) {
+        for (const ParameterInfo &info : parameterInfo()) {
+            if (info.name == name) {
+                if (auto checked = checkDomain(info, value); !checked)
+                    return checked.failure();
+            }
+        }
+    }
+    if (auto modes = checkModes(changes); !modes)
+        return modes.failure();
+    auto design = applyChanges(m_design, changes, parameterInfo());
+    if (!design)
+        return design.failure();
+    auto made = create(*design);
+    // A check across parameters (stroke order, empty workspace) is about what was changed.
+    if (!made && changes.size() == 1 && made.failure().culprit != changes.begin()->first) {
+        Failure f = made.failure();
+        f.culprit = changes.begin()->first;
+        return f;
+    }
+    return made;
+}
+
+Result<MechanismPtr> Moma::withParameter(std::string_view name, double value) const
+{
+    return withParameters({{std::string(name), value}});
+}
+
+std::vector<std::string> Moma::designWarnings() const
+{
+    std::vector<std::string> warnings;
+    const Eigen::Vector2d a1 = moma::direction(m_design.alpha[0]), a2 = moma::direction(m_design.alpha[1]);
+    // Crossing guides: the sliders can collide where the strokes cross.
+    const Eigen::Vector2d r = m_design.reference[1] - m_design.reference[0];
+    const double det = cross(a1, -a2);
+    if (std::abs(det) > 1e-9) {
+        const double p1 = cross(r, -a2) / det, p2 = cross(a1, r) / det;
+        if (p1 >= m_design.strokeMin && p1 <= m_design.strokeMax && p2 >= m_design.strokeMin && p2 <= m_design.strokeMax)
+            warnings.push_back("The guides cross inside their strokes: the sliders can collide there.");
+    }
+    return warnings;
+}
+
+// -- joint variables -----------------------------------------------------------------------
+
+const std::vector<VariableInfo> &Moma::variableInfo() const
+{
+    static const std::vector<VariableInfo> infos = {
+        {"p1", "p₁", "slider 1 position (actuated)", units::millimetre, true, 2},
+        {"p2", "p₂", "slider 2 position (actuated)", units::millimetre, true, 2},
+        {"x", "x", "platform x", units::millimetre, false, 2},
+        {"y", "y", "platform y", units::millimetre, false, 2},
+    };
+    return infos;
+}
+
+Interval Moma::variableRange(int variable) const
+{
+    switch (variable) {
+    case variableP1:
+    case variableP2: return {m_design.strokeMin, m_design.strokeMax};
+    case variableX: return {m_bounds.min().x(), m_bounds.max().x()};
+    default: return {m_bounds.min().y(), m_bounds.max().y()};
+    }
+}
+
+Moma::Moma(const MomaDesign &design)
+    : m_design(design)
+{
+    // Home: the pose of largest singularity margin on a grid of slider positions; none means
+    // the workspace is empty (create() refuses the design then).
+    constexpr int samples = 61;
+    double best = -1.0;
+    for (int i = 0; i < samples; ++i) {
+        for (int j = 0; j < samples; ++j) {
+            const double p1 = design.strokeMin + (design.strokeMax - design.strokeMin) * i / (samples - 1);
+            const double p2 = design.strokeMin + (design.strokeMax - design.strokeMin) * j / (samples - 1);
+            auto pose = direct(p1, p2);
+            if (!pose)
+                continue;
+            const double margin = singularity(*pose).margin;
+            if (margin > best) {
+                best = margin;
+                m_home = *pose;
+            }
+        }
+    }
+    if (m_home.inputs.size())
+        m_bounds = computeBounds();
+}
+
+Eigen::AlignedBox2d Moma::computeBounds() const
+{
+    // Each leg reaches a capsule around its stroke; the workspace lies in both. Sample that box
+    // and keep the reachable cells, widened by two cells for what the grid misses.
+    Eigen::AlignedBox2d box;
+    for (int leg = 0; leg < 2; ++leg) {
+        Eigen::AlignedBox2d capsule;
+        capsule.extend(moma::sliderJoint(m_design, leg, m_design.strokeMin));
+        capsule.extend(moma::sliderJoint(m_design, leg, m_design.strokeMax));
+        capsule.min().array() -= m_design.length[leg];
+        capsule.max().array() += m_design.length[leg];
+        box = leg == 0 ? capsule : box.intersection(capsule);
+    }
+    constexpr int n = 256;
+    const MapGrid grid = squareGrid(box, n);
+    std::vector<float> row(static_cast<std::size_t>(grid.columns));
+    Eigen::AlignedBox2d reached;
+    for (int r = 0; r < grid.rows; ++r) {
+        fillMapRow(MapQuantity::Determinant, grid.y(r), grid.x(0), grid.dx(), row, {});
+        for (int c = 0; c < grid.columns; ++c) {
+            if (!std::isnan(row[static_cast<std::size_t>(c)]))
+                reached.extend(Eigen::Vector2d(grid.x(c), grid.y(r)));
+        }
+    }
+    reached.extend(m_home.outputs.head<2>());
+    const Eigen::Vector2d pad(2.0 * grid.dx(), 2.0 * grid.dy());
+    Eigen::AlignedBox2d bounds(reached.min() - pad, reached.max() + pad);
+    return bounds.intersection(box);
+}
+
+// -- kinematics ----------------------------------------------------------------------------
+
+std::string Moma::oneSideViolation(const Eigen::Vector2d &platform, const std::array<Eigen::Vector2d, 2> &z) const
+{
+    if (!m_design.oneSide)
+        return {};
+    for (int leg = 0; leg < 2; ++leg) {
+        const int inner = moma::innerSide(m_design, leg);
+        const double c = cross(moma::direction(m_design.alpha[leg]), platform - z[leg]);
+        if (inner != 0 && c * inner < -1e-9 * m_design.length[leg]) {
+            return "link S" + legName(leg) + " would lie on the outer side of guide " + legName(leg)
+                 + " (the one-side constraint is on)";
+        }
+    }
+    return {};
+}
+
+Result<Pose> Moma::direct(double p1, double p2) const
+{
+    const MomaDesign &d = m_design;
+    const std::array<Eigen::Vector2d, 2> z = {moma::sliderJoint(d, 0, p1), moma::sliderJoint(d, 1, p2)};
+    const Eigen::Vector2d between = z[1] - z[0];
+    const double distance = between.norm();
+    const double l1 = d.length[0], l2 = d.length[1];
+    const double scale = std::max(l1, l2);
+    // Circle–circle intersection measured along Z₁→Z₂ (no division by x_Z2 − x_Z1: DOMAIN §5.4).
+    if (distance < 1e-9 * scale) {
+        return Failure{FailureKind::Singular, "p1",
+                       "The slider joints Z₁ and Z₂ coincide at p₁ = " + formatNumber(p1) + " mm, p₂ = "
+                           + formatNumber(p2) + " mm: the platform position is undetermined."};
+    }
+    if (distance > l1 + l2 + 1e-12 * scale || distance < std::abs(l1 - l2) - 1e-12 * scale) {
+        std::string message = "The links cannot meet at p₁ = ";
+        message.append(formatNumber(p1)).append(" mm, p₂ = ").append(formatNumber(p2)).append(" mm: |Z₁Z₂| = ");
+        message.append(formatNumber(distance)).append(" mm is ");
+        message.append(distance > l1 + l2 ? "more than l₁ + l₂ = " + formatNumber(l1 + l2)
+                                          : "less than |l₁ − l₂| = " + formatNumber(std::abs(l1 - l2)));
+        message.append(" mm.");
+        return Failure{FailureKind::Unreachable, "p1", message};
+    }
+    const Eigen::Vector2d u = between / distance;
+    const double along = (l1 * l1 - l2 * l2 + distance * distance) / (2.0 * distance);
+    const double across = std::sqrt(std::max(0.0, l1 * l1 - along * along));
+    const Eigen::Vector2d platform = z[0] + along * u + d.assembly * across * normal(u);
+    // The working modes: leg i's link component along its guide, (P − Z_i)·a_i = B_i − p_i, is
+    // −β_i·√(B_i² − C_i): it must not have the sign of β_i.
+    for (int leg = 0; leg < 2; ++leg) {
+        const double w = (platform - z[leg]).dot(moma::direction(d.alpha[leg]));
+        if (w * d.branch[leg] > 1e-9 * d.length[leg]) {
+            std::string message = "At p₁ = ";
+            message.append(formatNumber(p1)).append(" mm, p₂ = ").append(formatNumber(p2));
+            message.append(" mm leg ").append(legName(leg)).append(" would be past perpendicular to its guide, ");
+            message.append("in its other working mode (an inverse singularity lies between); switch the mode to go on.");
+            return Failure{FailureKind::Unreachable, "p" + legName(leg), message};
+        }
+    }
+    if (auto violation = oneSideViolation(platform, z); !violation.empty()) {
+        return Failure{FailureKind::Unreachable, "p1",
+                       "At p₁ = " + formatNumber(p1) + " mm, p₂ = " + formatNumber(p2) + " mm " + violation + "."};
+    }
+    Pose pose;
+    pose.inputs.resize(2);
+    pose.inputs << p1, p2;
+    pose.outputs.resize(2);
+    pose.outputs << platform.x(), platform.y();
+    return pose;
+}
+
+Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
+{
+    const MomaDesign &d = m_design;
+    std::array<double, 2> p{};
+    std::array<Eigen::Vector2d, 2> z;
+    const std::string where = "(" + formatNumber(platform.x()) + ", " + formatNumber(platform.y()) + ") mm";
+    for (int leg = 0; leg < 2; ++leg) {
+        const double D = moma::discriminant(d, leg, platform); // (9)
+        const double l = d.length[leg];
+        if (D < -1e-9 * l * l) {
+            return Failure{FailureKind::Unreachable, "x",
+                           "The platform cannot reach " + where + ": it lies more than l" + legName(leg) + " = "
+                               + formatNumber(l) + " mm from guide " + legName(leg) + "."};
+        }
+        p[leg] = moma::projection(d, leg, platform) + d.branch[leg] * std::sqrt(std::max(0.0, D)); // (7)
+        const double tolerance = 1e-9 * std::max(1.0, d.strokeMax - d.strokeMin);
+        if (p[leg] < d.strokeMin - tolerance || p[leg] > d.strokeMax + tolerance) {
+            std::string message = "The platform cannot reach ";
+            message.append(where).append(": slider ").append(legName(leg)).append(" would have to be at p")
+                .append(legName(leg)).append(" = ").append(formatNumber(p[leg])).append(" mm, outside its stroke [")
+                .append(formatNumber(d.strokeMin)).append(", ").append(formatNumber(d.strokeMax)).append("] mm.");
+            return Failure{FailureKind::OutOfRange, "p" + legName(leg), message};
+        }
+        p[leg] = std::clamp(p[leg], d.strokeMin, d.strokeMax);
+        z[leg] = moma::sliderJoint(d, leg, p[leg]);
+    }
+    const double s = moma::side(z[0], z[1], platform);
+    if (s * d.assembly < -1e-9 * d.length[0] * d.length[1]) {
+        return Failure{FailureKind::Unreachable, "x",
+                       "The platform cannot reach " + where
+                           + " in this assembly mode: it would cross the line Z₁Z₂, where the links are collinear "
+                             "(a direct singularity); switch the assembly mode to go on."};
+    }
+    if (auto violation = oneSideViolation(platform, z); !violation.empty())
+        return Failure{FailureKind::Unreachable, "x", "The platform cannot reach " + where + ": " + violation + "."};
+    Pose pose;
+    pose.inputs.resize(2);
+    pose.inputs << p[0], p[1];
+    pose.outputs.resize(2);
+    pose.outputs << platform.x(), platform.y();
+    return pose;
+}
+
+Result<Pose> Moma::solveDirect(const Coordinates &inputs, const Pose *) const
+{
+    for (int leg = 0; leg < 2; ++leg) {
+        const double p = inputs[leg];
+        if (!std::isfinite(p))
+            return Failure{FailureKind::OutOfRange, "p" + legName(leg), "p" + legName(leg) + " must be a finite number."};
+        if (p < m_design.strokeMin || p > m_design.strokeMax) {
+            return Failure{FailureKind::OutOfRange, "p" + legName(leg),
+                           "p" + legName(leg) + " = " + formatNumber(p) + " mm is outside the stroke ["
+                               + formatNumber(m_design.strokeMin) + ", " + formatNumber(m_design.strokeMax) + "] mm."};
+        }
+    }
+    return direct(inputs[0], inputs[1]);
+}
+
+Result<Pose> Moma::solveInverse(const Coordinates &outputs, const Pose *) const
+{
+    for (int i = 0; i < 2; ++i) {
+        if (!std::isfinite(outputs[i])) {
+            const std::string name = i == 0 ? "x" : "y";
+            return Failure{FailureKind::OutOfRange, name, name + " must be a finite number."};
+        }
+    }
+    return inverse(outputs.head<2>());
+}
+
+// -- analysis ------------------------------------------------------------------------------
+
+namespace {
+enum Slot {
+    SlotP1, SlotP2, SlotX, SlotY,
+    SlotJp, SlotJx = SlotJp + 4, SlotJ = SlotJx + 4, SlotDetJ = SlotJ + 4, SlotDetJp, SlotDetJx, SlotCond,
+    SlotLinkAngle1, SlotLinkAngle2, SlotLinksAngle, SlotMargin,
+    SlotCount
+};
+} // namespace
+
+const ReportLayout &Moma::reportLayout() const
+{
+    static const ReportLayout layout = [] {
+        using G = ReportGroup;
+        ReportLayout l;
+        auto add = [&](G group, const char *name, const char *symbol, const char *label, Unit unit, int decimals,
+                       int size = 1) {
+            ReportEntry e;
+            e.group = group;
+            e.name = name;
+            e.symbol = symbol;
+            e.label = label;
+            e.unit = unit;
+            e.rows = size;
+            e.cols = size;
+            e.offset = l.size;
+            l.size += size * size;
+            e.decimals = decimals;
+            l.entries.push_back(e);
+        };
+        add(G::Pose, "p1", "p₁", "slider 1 position", units::millimetre, 2);
+        add(G::Pose, "p2", "p₂", "slider 2 position", units::millimetre, 2);
+        add(G::Pose, "x", "x", "platform x", units::millimetre, 2);
+        add(G::Pose, "y", "y", "platform y", units::millimetre, 2);
+        add(G::Jacobian, "Jp", "J_p", "J_p = diag(2p_i − 2B_i) (18)", units::millimetre, 2, 2);
+        add(G::Jacobian, "Jx", "J_x", "J_x rows 2(P − Z_i) (20)", units::millimetre, 2, 2);
+        add(G::Jacobian, "J", "J", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)", units::none, 4, 2);
+        add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
+        add(G::Jacobian, "det_Jp", "det J_p", "0 at an inverse singularity", units::squareMillimetre, 1);
+        add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity", units::squareMillimetre, 1);
+        add(G::Jacobian, "cond", "κ(J)", "condition number of J", units::none, 3);
+        add(G::Derived, "link_angle1", "ψ₁", "angle between link S₁ and guide 1 (90°: inverse singularity)", units::angle, 2);
+        add(G::Derived, "link_angle2", "ψ₂", "angle between link S₂ and guide 2 (90°: inverse singularity)", units::angle, 2);
+        add(G::Derived, "links_angle", "ψ₁₂", "angle between the links (0°, 180°: direct singularity)", units::angle, 2);
+        add(G::Derived, "margin", "m", "distance from the nearest singularity (0 … 1)", units::none, 4);
+        return l;
+    }();
+    return layout;
+}
+
+Singularity Moma::singularity(const Pose &pose) const
+{
+    const Eigen::Vector2d platform = pose.outputs.head<2>();
+    const Eigen::Vector2d z1 = moma::sliderJoint(m_design, 0, pose.inputs[0]);
+    const Eigen::Vector2d z2 = moma::sliderJoint(m_design, 1, pose.inputs[1]);
+    const double inverseMargin = std::min(moma::inverseMargin(m_design, 0, pose.inputs[0], platform),
+                                          moma::inverseMargin(m_design, 1, pose.inputs[1], platform));
+    const double directMargin = moma::directMargin(m_design, z1, z2, platform);
+    const bool inverse = inverseMargin < singularTolerance, direct = directMargin < singularTolerance;
+    Singularity s;
+    s.type = inverse && direct ? SingularityType::Combined
+           : inverse           ? SingularityType::Inverse
+           : direct            ? SingularityType::Direct
+                               : SingularityType::None;
+    s.margin = std::min(inverseMargin, directMargin);
+    return s;
+}
+
+Jacobians Moma::jacobians(const Pose &pose) const
+{
+    const Eigen::Vector2d platform = pose.outputs.head<2>();
+    Eigen::Matrix2d jp = Eigen::Matrix2d::Zero(), jx;
+    for (int leg = 0; leg < 2; ++leg) {
+        const double p = pose.inputs[leg];
+        jp(leg, leg) = 2.0 * p - 2.0 * moma::projection(m_design, leg, platform); // (18)
+        jx.row(leg) = 2.0 * (platform - moma::sliderJoint(m_design, leg, p)).transpose(); // (20)
+    }
+    Jacobians j;
+    j.inputs = jp;
+    j.outputs = -jx; // J_q·q̇ = J_x·ẋ in the interface's convention
+    j.full = Eigen::Matrix2d(jp.diagonal().cwiseInverse().asDiagonal() * (-jx));
+    return j;
+}
+
+Singularity Moma::evaluate(const Pose &pose, std::span<double> v) const
+{
+    const Eigen::Vector2d platform = pose.outputs.head<2>();
+    v[SlotP1] = pose.inputs[0];
+    v[SlotP2] = pose.inputs[1];
+    v[SlotX] = platform.x();
+    v[SlotY] = platform.y();
+    std::array<Eigen::Vector2d, 2> link;
+    double detJp = 1.0;
+    for (int leg = 0; leg < 2; ++leg) {
+        const double p = pose.inputs[leg];
+        const double jp = 2.0 * p - 2.0 * moma::projection(m_design, leg, platform);
+        link[leg] = platform - moma::sliderJoint(m_design, leg, p);
+        v[SlotJp + 3 * leg] = jp;
+        v[SlotJp + 1 + leg] = 0.0; // off-diagonal zeros: slots 1 and 2 of the row-major 2×2
+        v[SlotJx + 2 * leg] = 2.0 * link[leg].x();
+        v[SlotJx + 2 * leg + 1] = 2.0 * link[leg].y();
+        v[SlotJ + 2 * leg] = -2.0 * link[leg].x() / jp;
+        v[SlotJ + 2 * leg + 1] = -2.0 * link[leg].y() / jp;
+        detJp *= jp;
+        const double cosine = std::abs(link[leg].dot(moma::direction(m_design.alpha[leg]))) / link[leg].norm();
+        v[SlotLinkAngle1 + leg] = std::acos(std::min(1.0, cosine));
+    }
+    const double detJx = 4.0 * cross(link[0], link[1]);
+    v[SlotDetJp] = detJp;
+    v[SlotDetJx] = detJx;
+    v[SlotDetJ] = detJx / detJp;
+    const Eigen::Matrix2d J = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&v[SlotJ]);
+    const double frobenius = J.squaredNorm(), det = std::abs(J.determinant());
+    const double spread = std::sqrt(std::max(0.0, frobenius * frobenius - 4.0 * det * det));
+    v[SlotCond] = det > 0 ? (frobenius + spread) / (2.0 * det) : std::numeric_limits<double>::infinity();
+    v[SlotLinksAngle] = std::atan2(std::abs(cross(link[0], link[1])), link[0].dot(link[1]));
+    const Singularity s = singularity(pose);
+    v[SlotMargin] = s.margin;
+    return s;
+}
+
+std::vector<ModeAlternative> Moma::modeAlternatives(const Pose &pose) const
+{
+    std::vector<ModeAlternative> alternatives;
+    auto tryMode = [&](const std::string &label, const ParameterSet &changes, bool keepInputs) {
+        auto other = withParameters(changes);
+        if (!other)
+            return false;
+        auto solved = keepInputs ? (*other)->solveDirect(pose.inputs) : (*other)->solveInverse(pose.outputs);
+        if (!solved)
+            return false;
+        alternatives.push_back({label, changes, *other, *solved});
+        return true;
+    };
+    tryMode("other assembly mode (same slider positions)", {{"assembly", -double(m_design.assembly)}}, true);
+    for (int leg = 0; leg < 2; ++leg) {
+        const std::string name = "branch" + legName(leg);
+        const std::string label = "leg " + legName(leg) + ": other working mode (same platform position)";
+        if (!tryMode(label, {{name, -double(m_design.branch[leg])}}, false))
+            tryMode(label, {{name, -double(m_design.branch[leg])}, {"assembly", -double(m_design.assembly)}}, false);
+    }
+    return alternatives;
+}
+
+// -- drawing -------------------------------------------------------------------------------
+
+Scene Moma::scene(const Pose &pose) const
+{
+    const MomaDesign &d = m_design;
+    Scene s;
+    auto to3 = [](const Eigen::Vector2d &v) { return Eigen::Vector3d(v.x(), v.y(), 0.0); };
+    const Eigen::Vector2d platform = pose.outputs.head<2>();
+    const std::array<Eigen::Vector2d, 2> z = {moma::sliderJoint(d, 0, pose.inputs[0]), moma::sliderJoint(d, 1, pose.inputs[1])};
+    s.joints.push_back({to3(platform), "P", JointKind::Revolute});
+    s.joints.push_back({to3(z[0]), "Z₁", JointKind::Slider});
+    s.joints.push_back({to3(z[1]), "Z₂", JointKind::Slider});
+    s.joints.push_back({to3(d.reference[0]), "R₁", JointKind::Point});
+    s.joints.push_back({to3(d.reference[1]), "R₂", JointKind::Point});
+    s.bars.push_back({1, 0, BarKind::Link, "S₁"});
+    s.bars.push_back({2, 0, BarKind::Link, "S₂"});
+    for (int leg = 0; leg < 2; ++leg) {
+        SceneGuide guide;
+        guide.start = to3(moma::sliderJoint(d, leg, d.strokeMin));
+        guide.end = to3(moma::sliderJoint(d, leg, d.strokeMax));
+        guide.width = d.guideWidth;
+        guide.label = "PO" + std::string(leg == 0 ? "₁" : "₂");
+        s.guides.push_back(guide);
+        const double p = pose.inputs[leg];
+        if (std::abs(p) > 1.0) {
+            // p_i measured from R_i, on the side of the guide away from the link
+            const double c = cross(moma::direction(d.alpha[leg]), platform - z[leg]);
+            const double offset = (c > 0 ? -1.0 : 1.0) * (d.guideWidth + 14.0);
+            s.dimensions.push_back({3 + leg, 1 + leg, p > 0 ? offset : -offset,
+                                    "p" + std::string(leg == 0 ? "₁" : "₂") + " = " + formatNumber(p, 1)});
+        }
+        const double gamma = std::remainder(d.alpha[leg] - 1.5 * pi, 2 * pi);
+        if (std::abs(gamma) > 1e-9 && std::abs(gamma) <= 45.0 * units::degree) {
+            s.angles.push_back({3 + leg, 1.5 * pi, gamma, 0.25 * (d.strokeMax - d.strokeMin),
+                                std::string(leg == 0 ? "γ₁" : "γ₂") + " = " + formatNumber(gamma / units::degree, 1) + "°"});
+        }
+    }
+    s.handles.push_back({0, "drag to move the platform (inverse kinematics)"});
+    s.handles.push_back({1, "drag along guide 1 to set p₁ (direct kinematics)"});
+    s.handles.push_back({2, "drag along guide 2 to set p₂ (direct kinematics)"});
+    Eigen::AlignedBox3d extent;
+    for (const SceneGuide &g : s.guides) {
+        extent.extend(g.start);
+        extent.extend(g.end);
+    }
+    extent.extend(to3(d.reference[0]));
+    extent.extend(to3(d.reference[1]));
+    extent.extend(Eigen::Vector3d(m_bounds.min().x(), m_bounds.min().y(), 0.0));
+    extent.extend(Eigen::Vector3d(m_bounds.max().x(), m_bounds.max().y(), 0.0));
+    const Eigen::Vector3d pad = Eigen::Vector3d::Constant(d.guideWidth);
+    s.extent = Eigen::AlignedBox3d(extent.min() - pad, extent.max() + pad);
+    return s;
+}
+
+Result<Pose> Moma::dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const
+{
+    if (handle == 0) {
+        Coordinates outputs(2);
+        outputs << target.x(), target.y();
+        return solveInverse(outputs, &current);
+    }
+    if (handle == 1 || handle == 2) {
+        const int leg = handle - 1;
+        Coordinates inputs = current.inputs;
+        const double p = moma::direction(m_design.alpha[leg]).dot(target - m_design.reference[leg]);
+        inputs[leg] = std::clamp(p, m_design.strokeMin, m_design.strokeMax);
+        return solveDirect(inputs, &current);
+    }
+    return Failure{FailureKind::UnknownName, {}, "No handle with that index."};
+}
+
+} // namespace pkm

@@ -1,0 +1,94 @@
+#pragma once
+/// Workspaces and singularity maps of mechanisms whose two outputs are a point of the plane
+/// (MOMA's platform, the O-X glide's platform). A map is a pure function of (design, grid)
+/// that fills a caller's buffer row by row: no allocation per cell, rows in parallel,
+/// cancellable between rows.
+///
+/// Units: mm for positions and areas (mm²); map values are dimensionless (det J of a
+/// length-to-length Jacobian, its condition number).
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <atomic>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace pkm {
+
+enum class MapQuantity {
+    Determinant, ///< det J = det J_x / det J_q; 0 at a direct, ±∞ at an inverse singularity
+    Condition,   ///< condition number of J (σ_max/σ_min, ≥ 1); +∞ at any singularity
+};
+
+/// A regular grid of cell centres over a box: cell (column c, row r) has its centre at
+/// (xMin + (c + ½)·dx, yMin + (r + ½)·dy); row 0 is the bottom row.
+struct MapGrid {
+    Eigen::AlignedBox2d bounds;
+    int columns = 0;
+    int rows = 0;
+
+    double dx() const { return bounds.sizes().x() / columns; }
+    double dy() const { return bounds.sizes().y() / rows; }
+    double cellArea() const { return dx() * dy(); }
+    double x(int column) const { return bounds.min().x() + (column + 0.5) * dx(); }
+    double y(int row) const { return bounds.min().y() + (row + 0.5) * dy(); }
+    std::size_t cells() const { return static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows); }
+};
+
+/// A singular curve in the plane of the outputs, as a polyline (mm).
+struct SingularCurve {
+    enum class Type { Inverse, Direct } type = Type::Inverse;
+    std::string label; ///< "leg 1 ⟂ guide", "links collinear"
+    std::vector<Eigen::Vector2d> points;
+};
+
+/// Implemented by mechanisms with a planar workspace (Mechanism::planarWorkspace()).
+class PlanarWorkspace
+{
+public:
+    virtual ~PlanarWorkspace() = default;
+
+    /// A box that holds the whole workspace of the design's current modes (mm).
+    virtual Eigen::AlignedBox2d workspaceBounds() const = 0;
+    /// Fills `values` (and `margins`, if not empty) for the `values.size()` cells of one row at
+    /// height y, starting at x0 with spacing dx. A cell the design cannot reach in its current
+    /// working and assembly modes gets NaN in both. `margins` receives the dimensionless
+    /// singularity margin (0 at a singularity, up to 1). Thread-safe, never allocates.
+    virtual void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
+                            std::span<float> margins) const = 0;
+    /// The singular curves inside the workspace, for drawing over a map.
+    virtual std::vector<SingularCurve> singularCurves() const = 0;
+};
+
+/// Below this margin a cell counts as near-singular (≈ 3° from the singular pose).
+inline constexpr double nearSingularMargin = 0.05;
+
+struct MapSummary {
+    MapGrid grid;
+    std::size_t reachableCells = 0;
+    std::size_t nearSingularCells = 0;
+    double min = 0.0; ///< over the reachable, finite cells (0 when there are none)
+    double max = 0.0;
+    double area = 0.0; ///< reachable cells × cell area, mm²
+    double seconds = 0.0;
+    bool cancelled = false;
+};
+
+/// Computes a map over `grid` into `values` (grid.cells() floats, row-major from the bottom
+/// row; NaN where unreachable) on `threads` threads (0: all cores). `margins` may be empty.
+/// Stops between rows once `*cancel` becomes true and returns with summary.cancelled set.
+MapSummary computeMap(const PlanarWorkspace &workspace, MapQuantity quantity, const MapGrid &grid,
+                      std::span<float> values, std::span<float> margins = {},
+                      const std::atomic<bool> *cancel = nullptr, int threads = 0);
+
+/// The grid of `resolution` cells along the longer side of the workspace bounds, with square
+/// cells (resolution ≥ 2).
+MapGrid squareGrid(const Eigen::AlignedBox2d &bounds, int resolution);
+
+/// The outline of the reachable cells (finite values) as segments between cell edges: each
+/// pair of points is one segment of the boundary, in mm.
+std::vector<Eigen::Vector2d> workspaceOutline(const MapGrid &grid, std::span<const float> values);
+
+} // namespace pkm

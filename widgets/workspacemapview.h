@@ -1,0 +1,2 @@
+#pragma once
+// The det J / condition-number map of a planar workspace (in progress).
