@@ -338,20 +338,23 @@ Interval Moma::variableRange(int variable) const
 Moma::Moma(const MomaDesign &design)
     : m_design(design)
 {
-    // Home: the pose of largest singularity margin on a grid of slider positions; none means
-    // the workspace is empty (create() refuses the design then).
+    // Home: on a grid of slider positions, the pose farthest from both the singularities and
+    // the ends of the strokes; none means the workspace is empty (create() refuses the design).
     constexpr int samples = 61;
+    const double stroke = design.strokeMax - design.strokeMin;
     double best = -1.0;
     for (int i = 0; i < samples; ++i) {
         for (int j = 0; j < samples; ++j) {
-            const double p1 = design.strokeMin + (design.strokeMax - design.strokeMin) * i / (samples - 1);
-            const double p2 = design.strokeMin + (design.strokeMax - design.strokeMin) * j / (samples - 1);
+            const double p1 = design.strokeMin + stroke * i / (samples - 1);
+            const double p2 = design.strokeMin + stroke * j / (samples - 1);
             auto pose = direct(p1, p2);
             if (!pose)
                 continue;
-            const double margin = singularity(*pose).margin;
-            if (margin > best) {
-                best = margin;
+            const double centrality = std::min({p1 - design.strokeMin, design.strokeMax - p1, p2 - design.strokeMin,
+                                                design.strokeMax - p2}) / stroke;
+            const double score = std::min(singularity(*pose).margin, 4.0 * centrality) + 1e-3 * centrality;
+            if (score > best) {
+                best = score;
                 m_home = *pose;
             }
         }
