@@ -5,6 +5,7 @@
 #include "clihelp.h"
 #include "clireport.h"
 #include "clisweep.h"
+#include "cliworkspace.h"
 #include "jsonwriter.h"
 #include "registry.h"
 #include "texttable.h"
@@ -62,21 +63,6 @@ std::string_view parameterGroupKey(ParameterGroup group)
 
 constexpr std::array<ParameterGroup, 5> parameterGroups = {ParameterGroup::Geometry, ParameterGroup::Range,
     ParameterGroup::Actuator, ParameterGroup::Drawing, ParameterGroup::Mode};
-
-std::string kindTitle(std::string_view kind)
-{
-    const MechanismKind *found = findMechanismKind(kind);
-    return found ? std::string(found->title) : std::string(kind);
-}
-
-/// The first lines of show and eval: "Design     pjoint-prototype: …" and "Mechanism  pjoint (…)".
-std::string designHeading(const PreparedDesign &prepared)
-{
-    const std::string title = prepared.design.title.toStdString();
-    const std::string_view kind = prepared.mechanism->kind();
-    return "Design     " + (title.empty() ? prepared.origin : prepared.origin + ": " + title) + "\nMechanism  "
-        + std::string(kind) + " (" + kindTitle(kind) + ")\n";
-}
 
 // -- list, show, eval ----------------------------------------------------------------------
 
@@ -330,13 +316,6 @@ std::string evalText(const PreparedDesign &prepared)
 
 // -- running -------------------------------------------------------------------------------
 
-void printError(std::FILE *err, const std::string &message)
-{
-    const std::string line = "pkm: " + message + "\n";
-    std::fwrite(line.data(), 1, line.size(), err);
-    std::fflush(err);
-}
-
 int fail(std::FILE *err, const Failure &failure)
 {
     printError(err, failure.message);
@@ -349,11 +328,6 @@ int finishOutput(std::FILE *out, std::FILE *err, bool ok)
         return CliSuccess;
     printError(err, std::string("Cannot write the output: ") + std::strerror(errno) + ".");
     return CliOutputError;
-}
-
-int printOutput(std::FILE *out, std::FILE *err, std::string_view text)
-{
-    return finishOutput(out, err, std::fwrite(text.data(), 1, text.size(), out) == text.size());
 }
 
 int runSweep(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
@@ -372,6 +346,32 @@ int runSweep(const PreparedDesign &prepared, const Invocation &invocation, std::
 }
 
 } // namespace
+
+std::string kindTitle(std::string_view kind)
+{
+    const MechanismKind *found = findMechanismKind(kind);
+    return found ? std::string(found->title) : std::string(kind);
+}
+
+std::string designHeading(const PreparedDesign &prepared)
+{
+    const std::string title = prepared.design.title.toStdString();
+    const std::string_view kind = prepared.mechanism->kind();
+    return "Design     " + (title.empty() ? prepared.origin : prepared.origin + ": " + title) + "\nMechanism  "
+        + std::string(kind) + " (" + kindTitle(kind) + ")\n";
+}
+
+void printError(std::FILE *err, const std::string &message)
+{
+    const std::string line = "pkm: " + message + "\n";
+    std::fwrite(line.data(), 1, line.size(), err);
+    std::fflush(err);
+}
+
+int printOutput(std::FILE *out, std::FILE *err, std::string_view text)
+{
+    return finishOutput(out, err, std::fwrite(text.data(), 1, text.size(), out) == text.size());
+}
 
 std::string evalJson(const Mechanism &mechanism, const Pose &pose)
 {
@@ -421,6 +421,8 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
         return printOutput(
             out, err, invocation.json ? evalJson(*prepared->mechanism, prepared->pose) + "\n" : evalText(*prepared));
     }
+    if (invocation.command == Command::Workspace || invocation.command == Command::Map)
+        return runWorkspaceCommand(*prepared, invocation, out, err);
     return runSweep(*prepared, invocation, out, err);
 }
 

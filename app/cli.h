@@ -1,15 +1,17 @@
 #pragma once
-/// The headless `pkm` command (contract: CLI.md): list, show, eval and sweep, generic over the
-/// Mechanism interface — every name, unit and quantity comes from parameterInfo(),
-/// variableInfo() and reportLayout(), so a new mechanism needs no change here.
+/// The headless `pkm` command (contract: CLI.md): list, show, eval, sweep, workspace and map,
+/// generic over the Mechanism interface — every name, unit and quantity comes from
+/// parameterInfo(), variableInfo(), reportLayout() and planarWorkspace(), so a new mechanism
+/// needs no change here.
 ///
 /// runCli() is the whole program minus main(): tests call it in-process, main_cli.cpp calls it
 /// with stdout and stderr. It never exits the process and writes nothing to `out` unless the
 /// command succeeds.
 ///
 /// The parts: cliarguments (the command line), clidesign (the design after --set), clihelp,
-/// clisweep and sweeprowformatter (`pkm sweep`), clireport and jsonwriter (JSON output),
-/// texttable (text output), numberformat (the text of every number).
+/// clisweep and sweeprowformatter (`pkm sweep`), cliworkspace (`pkm workspace`, `pkm map`),
+/// clireport and jsonwriter (JSON output), texttable (text output), numberformat (the text of
+/// every number).
 
 #include "mechanism.h"
 
@@ -17,6 +19,7 @@
 
 #include <cstdio>
 #include <string>
+#include <string_view>
 
 namespace pkm {
 
@@ -37,9 +40,22 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err);
 int cliExitCode(const Failure &failure);
 
 namespace cli {
+struct PreparedDesign;
+
 /// The report of one solved pose as `pkm eval --json` prints it (without a trailing newline):
 /// {"mechanism", "parameters", "pose", "jacobian", "singularity", "derived"}.
 std::string evalJson(const Mechanism &mechanism, const Pose &pose);
+
+/// The first lines of show, eval, workspace and map: "Design     moma-3a: …" and
+/// "Mechanism  moma (…)".
+std::string designHeading(const PreparedDesign &prepared);
+/// The title of a mechanism kind ("Active П-joint"), or the kind itself if it is not registered.
+std::string kindTitle(std::string_view kind);
+
+/// "pkm: MESSAGE" on `err`.
+void printError(std::FILE *err, const std::string &message);
+/// Writes `text` to `out`: CliSuccess, or CliOutputError with a message on `err`.
+int printOutput(std::FILE *out, std::FILE *err, std::string_view text);
 } // namespace cli
 
 } // namespace pkm

@@ -16,19 +16,27 @@ enum OptionFlag : unsigned {
     OptionSet = 1u << 2,
     OptionSweep = 1u << 3, ///< --var, --from, --to, --steps
     OptionDesign = 1u << 4, ///< takes a DESIGN argument
+    OptionGrid = 1u << 5,
+    OptionQuantity = 1u << 6,
+    OptionOutput = 1u << 7, ///< -o FILE
 };
 
 struct CommandSpec {
     Command command;
     std::string_view name;
     unsigned options;
+    std::array<std::string_view, 2> outputTypes {}; ///< the extensions -o takes
 };
 
-constexpr std::array<CommandSpec, 4> commandSpecs = {{
+constexpr std::array<CommandSpec, 6> commandSpecs = {{
     {Command::List, "list", OptionJson},
     {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
     {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet},
     {Command::Sweep, "sweep", OptionDesign | OptionJson | OptionCsv | OptionSet | OptionSweep},
+    {Command::Workspace, "workspace", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionOutput,
+        {"png", "svg"}},
+    {Command::Map, "map", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput,
+        {"png", "csv"}},
 }};
 
 const CommandSpec *findCommand(std::string_view name)
@@ -51,6 +59,12 @@ unsigned optionFlag(std::string_view option)
         return OptionSet;
     if (option == "--var" || option == "--from" || option == "--to" || option == "--steps")
         return OptionSweep;
+    if (option == "--grid")
+        return OptionGrid;
+    if (option == "--quantity")
+        return OptionQuantity;
+    if (option == "-o" || option == "--output")
+        return OptionOutput;
     return 0;
 }
 
@@ -93,6 +107,21 @@ std::string_view commandName(Command command)
             return spec.name;
     }
     return {};
+}
+
+std::string fileExtension(std::string_view path)
+{
+    const std::size_t slash = path.find_last_of('/');
+    const std::string_view name = slash == std::string_view::npos ? path : path.substr(slash + 1);
+    const std::size_t dot = name.find_last_of('.');
+    if (dot == std::string_view::npos || dot == 0)
+        return {};
+    std::string extension(name.substr(dot + 1));
+    for (char &c : extension) {
+        if (c >= 'A' && c <= 'Z')
+            c = static_cast<char>(c - 'A' + 'a');
+    }
+    return extension;
 }
 
 Failure usageFailure(std::string culprit, std::string message)
@@ -193,6 +222,29 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             invocation.sets.push_back({value, name, *parsed});
         } else if (option == "--var") {
             invocation.var = value;
+        } else if (option == "--grid") {
+            const auto number = parseNumber(value);
+            if (!number || *number < minGrid || *number > maxGrid || *number != std::floor(*number)) {
+                return usageFailure("--grid",
+                    context + ": the grid must be a whole number of cells from " + std::to_string(minGrid) + " to "
+                        + std::to_string(maxGrid) + " (along the longer side of the workspace).");
+            }
+            invocation.grid = static_cast<int>(*number);
+        } else if (option == "--quantity") {
+            if (value != "det" && value != "cond") {
+                return usageFailure("--quantity",
+                    context + ": the quantity must be 'det' (det J) or 'cond' (the condition number of J).");
+            }
+            invocation.quantity = value;
+        } else if (flag == OptionOutput) {
+            const std::string extension = fileExtension(value);
+            const auto &types = command.outputTypes;
+            if (value.empty() || std::find(types.begin(), types.end(), extension) == types.end()) {
+                return usageFailure(value,
+                    option + " " + value + ": " + quotedCommand + " writes a ." + std::string(types[0]) + " or ."
+                        + std::string(types[1]) + " file, so the name must end in one of these" + seeHelp + ".");
+            }
+            invocation.output = value;
         } else if (option == "--steps") {
             const auto number = parseNumber(value);
             // 10^9 rows are ~300 GB of CSV: far beyond any use.

@@ -12,10 +12,15 @@
 
 namespace pkm::cli {
 
-enum class Command { List, Show, Eval, Sweep };
+enum class Command { List, Show, Eval, Sweep, Workspace, Map };
 
-/// "list", "show", "eval", "sweep".
+/// "list", "show", "eval", "sweep", "workspace", "map".
 std::string_view commandName(Command command);
+
+/// --grid K of workspace and map: K cells along the longer side of the workspace.
+inline constexpr int defaultGrid = 400;
+inline constexpr int minGrid = 10;
+inline constexpr int maxGrid = 4000; ///< 16 million cells, 128 MB of map and margins
 
 /// One --set NAME=VALUE.
 struct Setting {
@@ -36,10 +41,17 @@ struct Invocation {
     std::optional<double> from;
     std::optional<double> to;
     std::optional<std::int64_t> steps;
+    std::optional<int> grid; ///< --grid K (workspace, map): cells along the longer side
+    std::optional<std::string> quantity; ///< --quantity det|cond (map)
+    std::optional<std::string> output; ///< -o FILE (workspace, map), its extension checked
 };
 
-/// Parses `arguments` (without the program name). A command that needs a DESIGN has one, and
-/// sweep has all of --var, --from, --to and --steps.
+/// The lower-case extension of `path` without the dot ("png"), empty without one.
+std::string fileExtension(std::string_view path);
+
+/// Parses `arguments` (without the program name). A command that needs a DESIGN has one,
+/// sweep has all of --var, --from, --to and --steps, --grid is a whole number from 10 to 4000,
+/// --quantity is det or cond, and -o names a file of a type the command writes.
 Result<Invocation> parseArguments(const std::vector<std::string> &arguments);
 
 /// A mistake on the command line: exit status 2.

@@ -17,6 +17,11 @@ Commands:
                                            singularity class, derived quantities
   sweep  DESIGN --var N --from A --to B --steps K [--set N=V]... [--csv|--json]
                                            one row per step, the quantities of eval
+  workspace DESIGN [--grid K] [--set N=V]... [--json] [-o FILE.png|.svg]
+                                           reachable workspace: area, bounds, the area
+                                           of every assembly/working mode
+  map    DESIGN [--grid K] [--quantity det|cond] [--set N=V]... [--json]
+         [-o FILE.png|.csv]                singularity map over the workspace
 
 DESIGN is a preset id (see 'pkm list') or a design file (*.pkm.json).
 --set NAME=VALUE (repeatable) changes a design parameter or sets a pose variable;
@@ -36,7 +41,7 @@ Exit status:
   1  the output could not be written
   2  usage error: bad command line, unknown name, not a number, invalid parameter
      value, unreadable or damaged design file
-  3  no solution: a pose out of range, unreachable or singular
+  3  no solution: a pose out of range, unreachable or singular, an empty workspace
 On an error pkm prints one sentence naming the culprit on stderr and nothing on stdout.
 )";
 
@@ -111,6 +116,66 @@ stderr and exits with status 3 (2 for an invalid parameter value). 'pkm show DES
 the ranges.
 )";
 
+constexpr std::string_view workspaceHelp
+    = R"(Usage: pkm workspace DESIGN [--grid K] [--set NAME=VALUE]... [--json] [-o FILE.png|FILE.svg]
+
+Computes the reachable workspace of a mechanism whose output is a point of the plane (MOMA's
+platform): every cell of a grid of square cells over the workspace bounds that the design
+reaches in its current working and assembly modes, with every actuated input inside its
+range. Prints the area (mm²), the bounds of the reachable cells, the grid and the time, and
+the area of every combination of the design's ±1 mode parameters (MOMA: branch1, branch2,
+assembly); a combination that has no workspace has area 0 and a note.
+
+  --grid K            K cells along the longer side of the workspace bounds, from 10 to
+                      4000 (default 400); a finer grid follows the boundary more closely
+  --set NAME=VALUE    applied first, as in 'pkm eval' (gamma1=-3, l1=200, assembly=1)
+  --json              {"design", "mechanism", "parameters", "area", "bounds": {"x_min",
+                       "x_max", "y_min", "y_max"}, "grid": {"resolution", "columns", "rows",
+                       "x_min", "x_max", "y_min", "y_max"}, "cell_size", "reachable_cells",
+                       "modes": [{MODE: -1|1..., "area", "reachable_cells", "current",
+                       "note"}...], "seconds"}; "area" is the design's own (current modes)
+  -o FILE.png         a picture of the workspace of the current modes: the reachable cells
+                      light blue on white with a dark outline, y up, at least 400 pixels
+  -o FILE.svg         its outline as SVG paths, in mm (viewBox), y up
+                      (-o FILE and --output FILE are the same)
+
+The file is written completely or not at all (a temporary file renamed at the end), before
+anything is printed. An empty workspace (no reachable cell) exits with status 3.
+)";
+
+constexpr std::string_view mapHelp
+    = R"(Usage: pkm map DESIGN [--grid K] [--quantity det|cond] [--set NAME=VALUE]... [--json]
+               [-o FILE.png|FILE.csv]
+
+Computes a singularity map over the workspace of a mechanism whose output is a point of the
+plane, on a grid of square cells over the workspace bounds (the design's current modes),
+and prints a summary: the grid, the bounds of the reachable cells, their number, the least
+and the greatest finite value, the number of near-singular cells (singularity margin below
+0.05, about 3° from a singular pose) and the time.
+
+  --grid K            K cells along the longer side of the workspace bounds, from 10 to
+                      4000 (default 400)
+  --quantity det      det J (the default): 0 at a direct singularity, ±∞ at an inverse one
+  --quantity cond     the condition number of J (>= 1, ∞ at any singularity)
+  --set NAME=VALUE    applied first, as in 'pkm eval'
+  --json              {"design", "mechanism", "parameters", "quantity", "grid":
+                       {"resolution", "columns", "rows", "x_min", "x_max", "y_min",
+                       "y_max"}, "cell_size", "bounds", "reachable_cells", "area", "min",
+                       "max", "near_singular_cells", "near_singular_margin",
+                       "colour_scale" (with -o FILE.png), "seconds"}
+  -o FILE.png         the map as a picture, one pixel per cell, y up, unreachable cells
+                      transparent; det J blue (< 0) – white (0) – red (> 0), clipped at the
+                      98th percentile of |det J|; the condition number on a log scale from 1
+                      (dark) to 100 (yellow)
+  -o FILE.csv         the full map: a header line x,y,value,margin and one row per reachable
+                      cell (mm, from the bottom row up); a value that is not finite (det J
+                      at an inverse singularity) is an empty field
+                      (-o FILE and --output FILE are the same)
+
+The file is written completely or not at all (a temporary file renamed at the end), before
+anything is printed. A map without a reachable cell exits with status 3.
+)";
+
 } // namespace
 
 std::string_view helpText(std::optional<Command> command)
@@ -126,6 +191,10 @@ std::string_view helpText(std::optional<Command> command)
         return evalHelp;
     case Command::Sweep:
         return sweepHelp;
+    case Command::Workspace:
+        return workspaceHelp;
+    case Command::Map:
+        return mapHelp;
     }
     return mainHelp;
 }

@@ -1,1 +1,842 @@
 #include "cliworkspace.h"
+
+#include "cli.h"
+#include "clireport.h"
+#include "jsonwriter.h"
+#include "numberformat.h"
+#include "registry.h"
+#include "texttable.h"
+
+#include <QBuffer>
+#include <QByteArray>
+#include <QRgb>
+#include <QSaveFile>
+#include <QString>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace pkm::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// At most 2^8 combinations of mode parameters are enumerated.
+constexpr std::size_t maxModeParameters = 8;
+/// Pictures of the workspace have at least this many pixels along the longer side.
+constexpr int minPicturePixels = 400;
+/// The condition number at the top of the colour scale of `pkm map --quantity cond -o FILE.png`.
+constexpr double conditionColourLimit = 100.0;
+/// The percentile of |det J| at the ends of the colour scale of a det map.
+constexpr double determinantColourPercentile = 0.98;
+
+// -- numbers and names ---------------------------------------------------------------------
+
+/// Up to 6 significant digits, locale-free: for min and max in the text output.
+std::string shortNumber(double value)
+{
+    if (std::isinf(value))
+        return value > 0 ? "∞" : "-∞";
+    if (std::isnan(value))
+        return "undefined";
+    if (value == 0.0)
+        value = 0.0; // no "-0"
+    char buffer[64];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6).ptr;
+    return std::string(buffer, end);
+}
+
+/// A float map value as the shortest text that reads back as the same float ("0.1", not
+/// "0.100000001490116"), locale-free.
+void appendFloat(std::string &out, float value)
+{
+    if (value == 0.0f)
+        value = 0.0f;
+    char buffer[32];
+    out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+/// A coordinate in mm without the last-ulp noise of the grid arithmetic (1e-9 mm).
+double cleanCoordinate(double value)
+{
+    const double rounded = std::round(value * 1e9) / 1e9;
+    return rounded == 0.0 ? 0.0 : rounded;
+}
+
+std::string_view quantityKey(MapQuantity quantity)
+{
+    return quantity == MapQuantity::Condition ? "cond" : "det";
+}
+
+std::string_view quantityTitle(MapQuantity quantity)
+{
+    return quantity == MapQuantity::Condition ? "condition number of J" : "det J";
+}
+
+/// "Active П-joint" → "active П-joint"; "MOMA …" stays.
+std::string inSentence(std::string title)
+{
+    if (title.size() > 1 && title[0] >= 'A' && title[0] <= 'Z' && title[1] >= 'a' && title[1] <= 'z')
+        title[0] = static_cast<char>(title[0] - 'A' + 'a');
+    return title;
+}
+
+std::string xmlEscaped(std::string_view text)
+{
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
+        }
+    }
+    return out;
+}
+
+// -- grids and maps ------------------------------------------------------------------------
+
+bool reachable(float value)
+{
+    return !std::isnan(value);
+}
+
+struct ComputedMap {
+    MapGrid grid;
+    MapSummary summary;
+    std::vector<float> values;
+    std::vector<float> margins;
+};
+
+/// The map of `workspace` over squareGrid(its bounds, resolution); `values` is reused.
+MapSummary computeInto(const PlanarWorkspace &workspace, MapQuantity quantity, int resolution,
+    std::vector<float> &values, std::vector<float> *margins)
+{
+    const MapGrid grid = squareGrid(workspace.workspaceBounds(), resolution);
+    values.assign(grid.cells(), 0.0f);
+    if (margins)
+        margins->assign(grid.cells(), 0.0f);
+    return computeMap(workspace, quantity, grid, values, margins ? std::span<float>(*margins) : std::span<float>());
+}
+
+/// The box of the reachable cells (their edges, mm); empty when no cell is reachable.
+Eigen::AlignedBox2d reachableBounds(const MapGrid &grid, std::span<const float> values)
+{
+    int cMin = grid.columns, cMax = -1, rMin = grid.rows, rMax = -1;
+    for (int r = 0; r < grid.rows; ++r) {
+        const float *row = values.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns);
+        for (int c = 0; c < grid.columns; ++c) {
+            if (!reachable(row[c]))
+                continue;
+            cMin = std::min(cMin, c);
+            cMax = std::max(cMax, c);
+            rMin = std::min(rMin, r);
+            rMax = std::max(rMax, r);
+        }
+    }
+    Eigen::AlignedBox2d box; // empty
+    if (cMax < 0)
+        return box;
+    const Eigen::Vector2d origin = grid.bounds.min();
+    box.extend(origin + Eigen::Vector2d(cMin * grid.dx(), rMin * grid.dy()));
+    box.extend(origin + Eigen::Vector2d((cMax + 1) * grid.dx(), (rMax + 1) * grid.dy()));
+    return box;
+}
+
+// -- modes ---------------------------------------------------------------------------------
+
+/// The ±1 mode parameters of a design: working and assembly modes (MOMA's branch1, branch2,
+/// assembly), not the 0/1 switches.
+std::vector<const ParameterInfo *> modeParameters(const Mechanism &mechanism)
+{
+    std::vector<const ParameterInfo *> modes;
+    for (const ParameterInfo &info : mechanism.parameterInfo()) {
+        if (info.group == ParameterGroup::Mode && info.domain.min == -1.0 && info.domain.max == 1.0
+            && modes.size() < maxModeParameters)
+            modes.push_back(&info);
+    }
+    return modes;
+}
+
+struct ModeArea {
+    std::vector<double> values; ///< of the mode parameters, display units
+    double area = 0.0;
+    std::size_t reachableCells = 0;
+    bool current = false;
+    std::string note; ///< why the combination has no workspace
+    bool empty = false; ///< the note says the workspace is empty
+};
+
+/// "+1", "-1"
+std::string signText(double value)
+{
+    std::string text(value > 0 ? "+" : "");
+    text += numberText(value);
+    return text;
+}
+
+/// "branch1 = -1, branch2 = -1, assembly = +1"; empty without mode parameters.
+std::string modeText(const std::vector<const ParameterInfo *> &modes, const ParameterSet &parameters)
+{
+    std::string text;
+    for (const ParameterInfo *info : modes) {
+        const auto it = parameters.find(info->name);
+        if (it == parameters.end())
+            continue;
+        text += (text.empty() ? "" : ", ") + info->name + " = " + signText(info->unit.toDisplay(it->second));
+    }
+    return text;
+}
+
+/// Every combination of the mode parameters, the first varying slowest, −1 before +1; the
+/// current one is `current` (its area is not computed again).
+std::vector<ModeArea> modeAreas(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes,
+    const MapSummary &current, int resolution, std::vector<float> &buffer)
+{
+    std::vector<ModeArea> areas;
+    if (modes.empty())
+        return areas;
+    const ParameterSet parameters = mechanism.parameters();
+    const std::size_t count = std::size_t {1} << modes.size();
+    for (std::size_t combination = 0; combination < count; ++combination) {
+        ModeArea mode;
+        ParameterSet changes;
+        bool isCurrent = true;
+        for (std::size_t i = 0; i < modes.size(); ++i) {
+            const ParameterInfo &info = *modes[i];
+            const bool plus = (combination >> (modes.size() - 1 - i)) & 1u;
+            const double value = info.unit.fromDisplay(plus ? 1.0 : -1.0);
+            mode.values.push_back(plus ? 1.0 : -1.0);
+            changes[info.name] = value;
+            const auto it = parameters.find(info.name);
+            isCurrent = isCurrent && it != parameters.end() && it->second == value;
+        }
+        mode.current = isCurrent;
+        if (isCurrent) {
+            mode.area = current.area;
+            mode.reachableCells = current.reachableCells;
+        } else if (auto changed = mechanism.withParameters(changes); !changed) {
+            mode.note = changed.failure().message;
+            mode.empty = changed.failure().kind == FailureKind::Unreachable;
+        } else if (const PlanarWorkspace *workspace = (*changed)->planarWorkspace(); !workspace) {
+            mode.note = "no planar workspace in this mode.";
+        } else {
+            const MapSummary summary = computeInto(*workspace, MapQuantity::Determinant, resolution, buffer, nullptr);
+            mode.area = summary.area;
+            mode.reachableCells = summary.reachableCells;
+        }
+        areas.push_back(std::move(mode));
+    }
+    return areas;
+}
+
+// -- colours and pictures ------------------------------------------------------------------
+
+struct Colour {
+    double r, g, b;
+};
+
+QRgb interpolate(std::span<const Colour> stops, double t)
+{
+    t = std::clamp(std::isnan(t) ? 0.5 : t, 0.0, 1.0) * static_cast<double>(stops.size() - 1);
+    const std::size_t i = std::min(static_cast<std::size_t>(t), stops.size() - 2);
+    const double f = t - static_cast<double>(i);
+    const Colour &a = stops[i], &b = stops[i + 1];
+    const auto channel = [f](double x, double y) { return static_cast<int>(std::lround(x + (y - x) * f)); };
+    return qRgb(channel(a.r, b.r), channel(a.g, b.g), channel(a.b, b.b));
+}
+
+/// Blue (negative) – white (0) – red (positive), ColorBrewer RdBu.
+constexpr std::array<Colour, 7> diverging
+    = {{{5, 48, 97}, {33, 102, 172}, {146, 197, 222}, {247, 247, 247}, {244, 165, 130}, {178, 24, 43}, {103, 0, 31}}};
+/// Dark (well conditioned) to yellow (near singular), viridis.
+constexpr std::array<Colour, 5> sequential
+    = {{{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}}};
+
+constexpr QRgb workspaceFill = qRgb(166, 206, 227);
+constexpr QRgb workspaceLine = qRgb(31, 78, 121);
+
+// -- files ---------------------------------------------------------------------------------
+
+/// Writes `path` atomically: the chunks from `produce` go to a temporary file that replaces
+/// `path` only once all of them were written. The failure names the file.
+template<typename Producer> std::optional<std::string> saveFile(const std::string &path, Producer &&produce)
+{
+    QSaveFile file(QString::fromStdString(path));
+    const auto failure = [&](const QString &why) {
+        std::string reason = why.toStdString();
+        while (!reason.empty() && (reason.back() == '.' || reason.back() == ' '))
+            reason.pop_back();
+        return std::optional<std::string>(
+            "Cannot write '" + path + "': " + (reason.empty() ? "unknown error" : reason) + ".");
+    };
+    if (!file.open(QIODevice::WriteOnly))
+        return failure(file.errorString());
+    const bool written = produce([&](std::string_view chunk) {
+        return file.write(chunk.data(), static_cast<qint64>(chunk.size())) == static_cast<qint64>(chunk.size());
+    });
+    if (!written) {
+        const QString why = file.errorString();
+        file.cancelWriting();
+        return failure(why);
+    }
+    if (!file.commit())
+        return failure(file.errorString());
+    return std::nullopt;
+}
+
+std::optional<std::string> saveBytes(const std::string &path, const QByteArray &bytes)
+{
+    return saveFile(path, [&](auto &&write) { return write(std::string_view(bytes.constData(), bytes.size())); });
+}
+
+std::optional<std::string> savePng(const std::string &path, const QImage &image)
+{
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    if (image.isNull() || !image.save(&buffer, "PNG"))
+        return "Cannot write '" + path + "': the PNG picture could not be encoded.";
+    return saveBytes(path, bytes);
+}
+
+std::optional<std::string> saveMapCsv(const std::string &path, const ComputedMap &map)
+{
+    return saveFile(path, [&](auto &&write) {
+        constexpr std::size_t flushBytes = std::size_t {1} << 20;
+        std::string text = "x,y,value,margin\n";
+        text.reserve(flushBytes + 256);
+        const MapGrid &grid = map.grid;
+        const std::size_t columns = static_cast<std::size_t>(grid.columns);
+        for (int r = 0; r < grid.rows; ++r) {
+            const double y = cleanCoordinate(grid.y(r));
+            for (int c = 0; c < grid.columns; ++c) {
+                const std::size_t i = static_cast<std::size_t>(r) * columns + static_cast<std::size_t>(c);
+                const float value = map.values[i];
+                if (!reachable(value))
+                    continue;
+                appendNumber(text, cleanCoordinate(grid.x(c)));
+                text += ',';
+                appendNumber(text, y);
+                text += ',';
+                if (std::isfinite(value)) // ±∞ at a singularity: an empty field, as in sweep
+                    appendFloat(text, value);
+                text += ',';
+                if (i < map.margins.size() && std::isfinite(map.margins[i]))
+                    appendFloat(text, map.margins[i]);
+                text += '\n';
+            }
+            if (text.size() >= flushBytes) {
+                if (!write(text))
+                    return false;
+                text.clear();
+            }
+        }
+        return write(text);
+    });
+}
+
+// -- the commands --------------------------------------------------------------------------
+
+/// The kinds whose designs have a planar workspace: "moma".
+std::string planarKinds()
+{
+    std::string kinds;
+    for (const MechanismKind &kind : mechanismKinds()) {
+        const auto made = kind.create({});
+        if (made && (*made)->planarWorkspace())
+            kinds += (kinds.empty() ? "" : ", ") + std::string(kind.id);
+    }
+    return kinds;
+}
+
+void writeBoxJson(JsonWriter &json, const Eigen::AlignedBox2d &box)
+{
+    const bool empty = box.isEmpty();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    json.key("x_min").number(empty ? nan : cleanCoordinate(box.min().x()));
+    json.key("x_max").number(empty ? nan : cleanCoordinate(box.max().x()));
+    json.key("y_min").number(empty ? nan : cleanCoordinate(box.min().y()));
+    json.key("y_max").number(empty ? nan : cleanCoordinate(box.max().y()));
+}
+
+void writeGridJson(JsonWriter &json, const MapGrid &grid, int resolution)
+{
+    json.key("grid");
+    json.beginObject(true);
+    json.key("resolution").integer(resolution);
+    json.key("columns").integer(grid.columns);
+    json.key("rows").integer(grid.rows);
+    writeBoxJson(json, grid.bounds);
+    json.endObject();
+    json.key("cell_size").number(grid.dx());
+}
+
+/// "[-150.00, 150.00]"
+std::string intervalText(double a, double b)
+{
+    std::string text("[");
+    text += fixedText(cleanCoordinate(a), 2) + ", " + fixedText(cleanCoordinate(b), 2) + "]";
+    return text;
+}
+
+void addGridRows(TextTable &table, const MapGrid &grid, int resolution, const Eigen::AlignedBox2d &reachableBox,
+    std::size_t reachableCells)
+{
+    table.cells({"grid", std::to_string(grid.columns) + " × " + std::to_string(grid.rows),
+        "cells (--grid " + std::to_string(resolution) + ")"});
+    table.cells({"cell size", fixedText(grid.dx(), 3), "mm"});
+    table.cells({"grid x", intervalText(grid.bounds.min().x(), grid.bounds.max().x()), "mm"});
+    table.cells({"grid y", intervalText(grid.bounds.min().y(), grid.bounds.max().y()), "mm"});
+    table.cells({"reachable cells", std::to_string(reachableCells), ""});
+    if (!reachableBox.isEmpty()) {
+        table.cells({"reachable x", intervalText(reachableBox.min().x(), reachableBox.max().x()), "mm"});
+        table.cells({"reachable y", intervalText(reachableBox.min().y(), reachableBox.max().y()), "mm"});
+    }
+}
+
+struct Context {
+    const PreparedDesign &prepared;
+    const Invocation &invocation;
+    std::FILE *out;
+    std::FILE *err;
+    int resolution = defaultGrid;
+};
+
+int failWith(std::FILE *err, const Failure &failure)
+{
+    printError(err, failure.message);
+    return cliExitCode(failure);
+}
+
+/// The design's modes for headings: " (branch1 = -1, …)" or "".
+std::string modeSuffix(const Mechanism &mechanism)
+{
+    const std::string modes = modeText(modeParameters(mechanism), mechanism.parameters());
+    return modes.empty() ? std::string() : " (" + modes + ")";
+}
+
+std::optional<Failure> emptyWorkspace(const Context &context, const MapSummary &summary)
+{
+    if (summary.reachableCells > 0)
+        return std::nullopt;
+    const MapGrid &grid = summary.grid;
+    return Failure {FailureKind::Unreachable, context.prepared.origin,
+        "The workspace of " + context.prepared.origin + modeSuffix(*context.prepared.mechanism)
+            + " has no reachable cell on the " + std::to_string(grid.columns) + " × " + std::to_string(grid.rows)
+            + " grid over " + intervalText(grid.bounds.min().x(), grid.bounds.max().x()) + " × "
+            + intervalText(grid.bounds.min().y(), grid.bounds.max().y())
+            + " mm: it is empty or thinner than a cell (try a larger --grid)."};
+}
+
+int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
+{
+    const Mechanism &mechanism = *context.prepared.mechanism;
+    const auto start = Clock::now();
+    ComputedMap map;
+    map.summary = computeInto(workspace, MapQuantity::Determinant, context.resolution, map.values, nullptr);
+    map.grid = map.summary.grid;
+    if (auto empty = emptyWorkspace(context, map.summary))
+        return failWith(context.err, *empty);
+    const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
+    const std::vector<const ParameterInfo *> modes = modeParameters(mechanism);
+    std::vector<float> buffer;
+    const std::vector<ModeArea> areas = modeAreas(mechanism, modes, map.summary, context.resolution, buffer);
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+    const std::string suffix = modeSuffix(mechanism);
+    if (const auto &path = context.invocation.output) {
+        std::optional<std::string> failure;
+        if (fileExtension(*path) == "svg") {
+            const std::string title
+                = "Workspace of " + context.prepared.origin + suffix + ": " + fixedText(map.summary.area, 1) + " mm²";
+            failure = saveBytes(*path, QByteArray::fromStdString(workspaceSvg(map.grid, map.values, title)));
+        } else {
+            QImage image = workspaceImage(map.grid, map.values);
+            image.setText(
+                QStringLiteral("Title"), QString::fromStdString("Workspace of " + context.prepared.origin + suffix));
+            failure = savePng(*path, image);
+        }
+        if (failure) {
+            printError(context.err, *failure);
+            return CliOutputError;
+        }
+    }
+
+    std::string out;
+    if (context.invocation.json) {
+        JsonWriter json(out, JsonWriter::Style::Pretty);
+        json.beginObject();
+        json.key("design").string(context.prepared.origin);
+        json.key("mechanism").string(mechanism.kind());
+        writeParametersJson(json, mechanism, true);
+        json.key("area").number(map.summary.area);
+        json.key("bounds");
+        json.beginObject(true);
+        writeBoxJson(json, box);
+        json.endObject();
+        writeGridJson(json, map.grid, context.resolution);
+        json.key("reachable_cells").integer(static_cast<std::int64_t>(map.summary.reachableCells));
+        json.key("modes");
+        json.beginArray();
+        for (const ModeArea &mode : areas) {
+            json.beginObject(true);
+            for (std::size_t i = 0; i < modes.size(); ++i)
+                json.key(modes[i]->name).number(mode.values[i]);
+            json.key("area").number(mode.area);
+            json.key("reachable_cells").integer(static_cast<std::int64_t>(mode.reachableCells));
+            json.key("current").boolean(mode.current);
+            if (!mode.note.empty())
+                json.key("note").string(mode.note);
+            json.endObject();
+        }
+        json.endArray();
+        json.key("seconds").number(seconds);
+        json.endObject();
+        out += '\n';
+    } else {
+        out = designHeading(context.prepared);
+        TextTable table({false, true, false});
+        table.heading("\nWorkspace" + suffix);
+        table.cells({"area", fixedText(map.summary.area, 1), "mm²"});
+        addGridRows(table, map.grid, context.resolution, box, map.summary.reachableCells);
+        table.cells({"time", fixedText(seconds, 3), "s"});
+        table.render(out);
+        if (!areas.empty()) {
+            out += "\nArea per mode\n";
+            std::vector<bool> alignment(modes.size(), true);
+            alignment.push_back(true);
+            alignment.push_back(false);
+            TextTable modeTable(alignment);
+            std::vector<std::string> header;
+            for (const ParameterInfo *info : modes)
+                header.push_back(info->name);
+            header.push_back("area (mm²)");
+            header.push_back("");
+            modeTable.cells(header);
+            for (const ModeArea &mode : areas) {
+                std::vector<std::string> row;
+                for (double value : mode.values)
+                    row.push_back(signText(value));
+                row.push_back(fixedText(mode.area, 1));
+                row.push_back(mode.current ? "current" : mode.empty ? "no workspace in this mode" : mode.note);
+                modeTable.cells(row);
+            }
+            modeTable.render(out);
+        }
+        if (const auto &path = context.invocation.output)
+            out += "\nWrote " + *path + '\n';
+    }
+    return printOutput(context.out, context.err, out);
+}
+
+int runMap(const Context &context, const PlanarWorkspace &workspace)
+{
+    const Mechanism &mechanism = *context.prepared.mechanism;
+    const MapQuantity quantity
+        = context.invocation.quantity.value_or("det") == "cond" ? MapQuantity::Condition : MapQuantity::Determinant;
+    ComputedMap map;
+    map.summary = computeInto(workspace, quantity, context.resolution, map.values, &map.margins);
+    map.grid = map.summary.grid;
+    if (auto empty = emptyWorkspace(context, map.summary))
+        return failWith(context.err, *empty);
+    const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
+
+    const auto &path = context.invocation.output;
+    const bool png = path && fileExtension(*path) == "png";
+    double limit = 0.0;
+    if (path) {
+        std::optional<std::string> failure;
+        if (png) {
+            limit = mapColourLimit(map.values, quantity);
+            QImage image = mapImage(map.grid, map.values, quantity, limit);
+            image.setText(QStringLiteral("Title"),
+                QString::fromStdString(
+                    std::string(quantityTitle(quantity)) + " of " + context.prepared.origin + modeSuffix(mechanism)));
+            failure = savePng(*path, image);
+        } else {
+            failure = saveMapCsv(*path, map);
+        }
+        if (failure) {
+            printError(context.err, *failure);
+            return CliOutputError;
+        }
+    }
+    const double colourMin = quantity == MapQuantity::Condition ? 1.0 : -limit;
+
+    std::string out;
+    if (context.invocation.json) {
+        JsonWriter json(out, JsonWriter::Style::Pretty);
+        json.beginObject();
+        json.key("design").string(context.prepared.origin);
+        json.key("mechanism").string(mechanism.kind());
+        writeParametersJson(json, mechanism, true);
+        json.key("quantity").string(quantityKey(quantity));
+        writeGridJson(json, map.grid, context.resolution);
+        json.key("bounds");
+        json.beginObject(true);
+        writeBoxJson(json, box);
+        json.endObject();
+        json.key("reachable_cells").integer(static_cast<std::int64_t>(map.summary.reachableCells));
+        json.key("area").number(map.summary.area);
+        json.key("min").number(map.summary.min);
+        json.key("max").number(map.summary.max);
+        json.key("near_singular_cells").integer(static_cast<std::int64_t>(map.summary.nearSingularCells));
+        json.key("near_singular_margin").number(nearSingularMargin);
+        if (png) {
+            json.key("colour_scale");
+            json.beginObject(true);
+            json.key("min").number(colourMin);
+            json.key("max").number(limit);
+            json.key("log").boolean(quantity == MapQuantity::Condition);
+            json.endObject();
+        }
+        json.key("seconds").number(map.summary.seconds);
+        json.endObject();
+        out += '\n';
+    } else {
+        out = designHeading(context.prepared);
+        TextTable table({false, true, false});
+        table.heading("\nMap of " + std::string(quantityTitle(quantity)) + modeSuffix(mechanism));
+        addGridRows(table, map.grid, context.resolution, box, map.summary.reachableCells);
+        table.cells({"area", fixedText(map.summary.area, 1), "mm²"});
+        table.cells({"min", shortNumber(map.summary.min), "over the finite cells"});
+        table.cells({"max", shortNumber(map.summary.max), ""});
+        table.cells({"near-singular cells", std::to_string(map.summary.nearSingularCells),
+            "margin < " + numberText(nearSingularMargin)});
+        if (png) {
+            std::string scale("[");
+            scale += shortNumber(colourMin) + ", " + shortNumber(limit) + "]";
+            table.cells({"colours", scale, quantity == MapQuantity::Condition ? "log scale" : "linear, clipped"});
+        }
+        table.cells({"time", fixedText(map.summary.seconds, 3), "s"});
+        table.render(out);
+        if (path)
+            out += "\nWrote " + *path + '\n';
+    }
+    return printOutput(context.out, context.err, out);
+}
+
+} // namespace
+
+QImage workspaceImage(const MapGrid &grid, std::span<const float> values)
+{
+    if (grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells())
+        return {};
+    const int longer = std::max(grid.columns, grid.rows);
+    const int scale = std::max(1, (minPicturePixels + longer - 1) / longer);
+    const int thickness = std::max(1, scale / 4);
+    const int width = grid.columns * scale, height = grid.rows * scale;
+    QImage image(width, height, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    const auto at = [&](int c, int r) {
+        if (c < 0 || r < 0 || c >= grid.columns || r >= grid.rows)
+            return false;
+        return reachable(
+            values[static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns) + static_cast<std::size_t>(c)]);
+    };
+    for (int r = 0; r < grid.rows; ++r) {
+        for (int c = 0; c < grid.columns; ++c) {
+            if (!at(c, r))
+                continue;
+            const bool left = !at(c - 1, r), right = !at(c + 1, r), below = !at(c, r - 1), above = !at(c, r + 1);
+            const int top = (grid.rows - 1 - r) * scale; // row 0 is the bottom row: y up
+            for (int iy = 0; iy < scale; ++iy) {
+                QRgb *line = reinterpret_cast<QRgb *>(image.scanLine(top + iy));
+                for (int ix = 0; ix < scale; ++ix) {
+                    const bool edge = (left && ix < thickness) || (right && ix >= scale - thickness)
+                        || (above && iy < thickness) || (below && iy >= scale - thickness);
+                    line[c * scale + ix] = edge ? workspaceLine : workspaceFill;
+                }
+            }
+        }
+    }
+    return image;
+}
+
+double mapColourLimit(std::span<const float> values, MapQuantity quantity)
+{
+    if (quantity == MapQuantity::Condition)
+        return conditionColourLimit;
+    std::vector<float> magnitudes;
+    for (float value : values) {
+        if (std::isfinite(value))
+            magnitudes.push_back(std::abs(value));
+    }
+    if (magnitudes.empty())
+        return 1.0;
+    const auto k = static_cast<std::size_t>(determinantColourPercentile * static_cast<double>(magnitudes.size() - 1));
+    std::nth_element(magnitudes.begin(), magnitudes.begin() + static_cast<std::ptrdiff_t>(k), magnitudes.end());
+    double limit = magnitudes[k];
+    if (!(limit > 0.0)) // most cells at 0: fall back to the largest value
+        limit = *std::max_element(magnitudes.begin(), magnitudes.end());
+    return limit > 0.0 ? limit : 1.0;
+}
+
+QImage mapImage(const MapGrid &grid, std::span<const float> values, MapQuantity quantity, double limit)
+{
+    if (grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells())
+        return {};
+    QImage image(grid.columns, grid.rows, QImage::Format_ARGB32);
+    image.fill(Qt::transparent);
+    const double logLimit = std::log(std::max(limit, 1.0 + 1e-9));
+    for (int r = 0; r < grid.rows; ++r) {
+        QRgb *line = reinterpret_cast<QRgb *>(image.scanLine(grid.rows - 1 - r)); // y up
+        const float *row = values.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns);
+        for (int c = 0; c < grid.columns; ++c) {
+            const double value = row[c];
+            if (std::isnan(value))
+                continue;
+            if (quantity == MapQuantity::Condition) {
+                const double t = std::isinf(value) ? 1.0 : std::log(std::max(value, 1.0)) / logLimit;
+                line[c] = interpolate(sequential, t);
+            } else {
+                const double t = 0.5 + 0.5 * std::clamp(value / limit, -1.0, 1.0);
+                line[c] = interpolate(diverging, t);
+            }
+        }
+    }
+    return image;
+}
+
+std::string workspaceSvg(const MapGrid &grid, std::span<const float> values, const std::string &title)
+{
+    // workspaceOutline() merges the edges along a grid line into long segments, and two cells
+    // that touch at a corner put a vertex in the middle of such a segment. So the segments are
+    // cut into unit edges between grid vertices (integer coordinates) and joined into closed
+    // loops; where four edges meet the walk turns left, so that the loops touch without
+    // crossing, and only the corners of a loop are written.
+    const std::vector<Eigen::Vector2d> segments = workspaceOutline(grid, values);
+    const double x0 = grid.bounds.min().x(), y0 = grid.bounds.min().y(), dx = grid.dx(), dy = grid.dy();
+    using Vertex = std::array<std::int64_t, 2>;
+    const auto toVertex = [&](const Eigen::Vector2d &p) {
+        return Vertex {std::llround((p.x() - x0) / dx), std::llround((p.y() - y0) / dy)};
+    };
+    const auto keyOf = [&](const Vertex &v) { return v[1] * (static_cast<std::int64_t>(grid.columns) + 1) + v[0]; };
+    std::vector<std::array<Vertex, 2>> edges;
+    for (std::size_t s = 0; s + 1 < segments.size(); s += 2) {
+        const Vertex a = toVertex(segments[s]), b = toVertex(segments[s + 1]);
+        const int axis = a[0] != b[0] ? 0 : 1;
+        const std::int64_t step = b[axis] > a[axis] ? 1 : -1;
+        for (Vertex v = a; v[axis] != b[axis]; v[axis] += step) {
+            Vertex w = v;
+            w[axis] += step;
+            edges.push_back({v, w});
+        }
+    }
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> at;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+        at[keyOf(edges[e][0])].push_back(e);
+        at[keyOf(edges[e][1])].push_back(e);
+    }
+    std::vector<bool> used(edges.size(), false);
+    std::string path;
+    const auto point = [&](char command, const Vertex &v) {
+        path += command;
+        appendNumber(path, cleanCoordinate(x0 + static_cast<double>(v[0]) * dx));
+        path += ',';
+        appendNumber(path, cleanCoordinate(-(y0 + static_cast<double>(v[1]) * dy))); // SVG's y points down
+    };
+    for (std::size_t first = 0; first < edges.size(); ++first) {
+        if (used[first])
+            continue;
+        used[first] = true;
+        const Vertex start = edges[first][0];
+        Vertex current = edges[first][1];
+        Vertex heading {current[0] - start[0], current[1] - start[1]};
+        point('M', start);
+        while (current != start) {
+            std::size_t next = edges.size();
+            std::int64_t best = -2; // left turn 1, straight 0, right turn −1
+            for (std::size_t e : at[keyOf(current)]) {
+                if (used[e])
+                    continue;
+                const Vertex &other = edges[e][0] == current ? edges[e][1] : edges[e][0];
+                const Vertex out {other[0] - current[0], other[1] - current[1]};
+                const std::int64_t cross = heading[0] * out[1] - heading[1] * out[0];
+                if (cross > best) {
+                    best = cross;
+                    next = e;
+                }
+            }
+            if (next == edges.size())
+                break; // cannot happen: every vertex of an outline joins an even number of edges
+            used[next] = true;
+            const Vertex other = edges[next][0] == current ? edges[next][1] : edges[next][0];
+            const Vertex out {other[0] - current[0], other[1] - current[1]};
+            if (out != heading)
+                point('L', current); // a corner
+            heading = out;
+            current = other;
+        }
+        path += 'Z';
+    }
+
+    // The view: the reachable cells with a margin of two cells, in mm, y up.
+    Eigen::AlignedBox2d box = reachableBounds(grid, values);
+    if (box.isEmpty())
+        box = grid.bounds;
+    const Eigen::Vector2d margin(2 * dx, 2 * dy);
+    box.min() -= margin;
+    box.max() += margin;
+    const Eigen::Vector2d size = box.sizes();
+    const double stroke = std::max(size.x(), size.y()) / 400.0;
+    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"";
+    appendNumber(svg, cleanCoordinate(size.x()));
+    svg += "mm\" height=\"";
+    appendNumber(svg, cleanCoordinate(size.y()));
+    svg += "mm\" viewBox=\"";
+    appendNumber(svg, cleanCoordinate(box.min().x()));
+    svg += ' ';
+    appendNumber(svg, cleanCoordinate(-box.max().y()));
+    svg += ' ';
+    appendNumber(svg, cleanCoordinate(size.x()));
+    svg += ' ';
+    appendNumber(svg, cleanCoordinate(size.y()));
+    svg += "\">\n  <title>" + xmlEscaped(title) + "</title>\n";
+    svg += "  <path fill=\"#a6cee3\" fill-rule=\"evenodd\" stroke=\"#1f4e79\" stroke-linejoin=\"round\" "
+           "stroke-width=\"";
+    appendNumber(svg, stroke);
+    svg += "\" d=\"" + path + "\"/>\n</svg>\n";
+    return svg;
+}
+
+int runWorkspaceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
+{
+    const Mechanism &mechanism = *prepared.mechanism;
+    const std::string command(commandName(*invocation.command));
+    const PlanarWorkspace *workspace = mechanism.planarWorkspace();
+    if (!workspace) {
+        const std::string kinds = planarKinds();
+        return failWith(err,
+            usageFailure(prepared.origin,
+                "The " + inSentence(kindTitle(mechanism.kind())) + " has no planar workspace: 'pkm " + command + " "
+                    + prepared.origin + "' needs a mechanism whose output is a point of the plane"
+                    + (kinds.empty() ? std::string() : " (" + kinds + ")") + "."));
+    }
+    Context context {prepared, invocation, out, err, invocation.grid.value_or(defaultGrid)};
+    return invocation.command == Command::Map ? runMap(context, *workspace) : runWorkspace(context, *workspace);
+}
+
+} // namespace pkm::cli

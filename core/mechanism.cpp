@@ -1,5 +1,6 @@
 #include "mechanism.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -71,6 +72,31 @@ Result<Pose> Mechanism::solveWith(const Pose &current, int variable, double valu
     Coordinates x = current.outputs;
     x[variable - inputs] = value;
     return solveInverse(x, &current);
+}
+
+std::vector<ModeAlternative> Mechanism::modeAlternatives(const Pose &pose) const
+{
+    return solveAlternatives(modeNeighbours(), pose);
+}
+
+std::vector<ModeAlternative> Mechanism::solveAlternatives(const std::vector<ModeAlternative> &neighbours,
+                                                          const Pose &pose)
+{
+    std::vector<ModeAlternative> solved;
+    for (const ModeAlternative &neighbour : neighbours) {
+        const bool taken = std::any_of(solved.begin(), solved.end(),
+                                       [&](const ModeAlternative &s) { return s.label == neighbour.label; });
+        if (taken || !neighbour.mechanism)
+            continue;
+        auto pose2 = neighbour.sameInputs ? neighbour.mechanism->solveDirect(pose.inputs, &pose)
+                                          : neighbour.mechanism->solveInverse(pose.outputs, &pose);
+        if (!pose2)
+            continue;
+        ModeAlternative alternative = neighbour;
+        alternative.pose = *pose2;
+        solved.push_back(std::move(alternative));
+    }
+    return solved;
 }
 
 Result<MechanismPtr> Mechanism::withParameters(const ParameterSet &changes) const

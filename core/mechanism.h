@@ -112,10 +112,11 @@ using MechanismPtr = std::shared_ptr<const Mechanism>;
 /// The same pose seen in another working or assembly mode of the design: what the GUI draws as
 /// a ghost and switches to only when the user asks (never silently).
 struct ModeAlternative {
-    std::string label;     ///< "other assembly mode", "leg 1: other working mode"
-    ParameterSet changes;  ///< the mode parameters that select it
+    std::string label;      ///< "other assembly mode", "leg 1: other working mode"
+    ParameterSet changes;   ///< the mode parameters that select it
     MechanismPtr mechanism; ///< the design with `changes` applied
-    Pose pose;             ///< the pose in that mode (same inputs or same outputs)
+    bool sameInputs = true; ///< the alternative keeps the inputs (else the outputs) of the pose
+    Pose pose;              ///< the pose in that mode (empty for a neighbour not yet solved)
 };
 
 class Mechanism : public std::enable_shared_from_this<Mechanism>
@@ -164,8 +165,16 @@ public:
     /// The Jacobians as matrices (allocates: for analysis, not for sweeps).
     virtual Jacobians jacobians(const Pose &pose) const = 0;
 
-    /// The other working/assembly modes the mechanism could be in at this pose.
-    virtual std::vector<ModeAlternative> modeAlternatives(const Pose &) const { return {}; }
+    /// The designs that differ from this one only in a working/assembly mode, in order of
+    /// preference (poses left empty). Costly (it builds designs): callers keep the result for
+    /// as long as the design lives.
+    virtual std::vector<ModeAlternative> modeNeighbours() const { return {}; }
+    /// The other modes the mechanism could be in at this pose: the neighbours solved at the
+    /// pose's inputs (or outputs), one per label.
+    std::vector<ModeAlternative> modeAlternatives(const Pose &pose) const;
+    /// The same for neighbours computed before (cheap: one solve per neighbour).
+    static std::vector<ModeAlternative> solveAlternatives(const std::vector<ModeAlternative> &neighbours,
+                                                          const Pose &pose);
     /// Workspace and singularity maps, for mechanisms whose outputs are a point of the plane.
     virtual const PlanarWorkspace *planarWorkspace() const { return nullptr; }
 

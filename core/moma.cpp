@@ -101,16 +101,16 @@ const std::vector<ParameterInfo> &momaParameterInfo()
         v.push_back({"R2y", "y_R2", "guide 2 reference point, y", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
         v.push_back({"alpha1", "α₁", "direction of guide 1", units::angle, G::Geometry, turn, false, false, true, 2, 1});
         v.push_back({"alpha2", "α₂", "direction of guide 2", units::angle, G::Geometry, turn, false, false, true, 2, 1});
-        v.push_back({"gamma1", "γ₁", "turn of guide 1 from vertical (α₁ = 270° + γ₁)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
-        v.push_back({"gamma2", "γ₂", "turn of guide 2 from vertical (α₂ = 270° + γ₂)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
+        v.push_back({"gamma1", "γ₁", "turn of guide 1 from the vertical (α₁ = 270° + γ₁)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
+        v.push_back({"gamma2", "γ₂", "turn of guide 2 from the vertical (α₂ = 270° + γ₂)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
         v.push_back({"l1", "l₁", "length of link S₁", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
         v.push_back({"l2", "l₂", "length of link S₂", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
         v.push_back({"p_min", "p_min", "start of the stroke", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
         v.push_back({"p_max", "p_max", "end of the stroke", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        v.push_back({"branch1", "β₁", "working mode of leg 1 (p₁ = B₁ ± √…)", units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"branch2", "β₂", "working mode of leg 2 (p₂ = B₂ ± √…)", units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"assembly", "σ", "assembly mode (+1: platform left of Z₁→Z₂)", units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"one_side", "one side", "links stay on the inner side of their guides (1) or not (0)", units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1});
+        v.push_back({"branch1", "β₁", "working mode of leg 1: sign in p₁ = B₁ ± √…", units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"branch2", "β₂", "working mode of leg 2: sign in p₂ = B₂ ± √…", units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"assembly", "σ", "assembly mode: +1 platform left of Z₁→Z₂", units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"one_side", "one side", "links kept on the inner side of the guides (1: on)", units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1});
         v.push_back({"guide_width", "w_g", "drawn width of a guide", units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
         return v;
     }();
@@ -652,27 +652,32 @@ Singularity Moma::evaluate(const Pose &pose, std::span<double> v) const
     return s;
 }
 
-std::vector<ModeAlternative> Moma::modeAlternatives(const Pose &pose) const
+std::vector<ModeAlternative> Moma::modeNeighbours() const
 {
-    std::vector<ModeAlternative> alternatives;
-    auto tryMode = [&](const std::string &label, const ParameterSet &changes, bool keepInputs) {
-        auto other = withParameters(changes);
-        if (!other)
-            return false;
-        auto solved = keepInputs ? (*other)->solveDirect(pose.inputs) : (*other)->solveInverse(pose.outputs);
-        if (!solved)
-            return false;
-        alternatives.push_back({label, changes, *other, *solved});
-        return true;
+    std::vector<ModeAlternative> neighbours;
+    auto add = [&](const std::string &label, const ParameterSet &changes, bool sameInputs) {
+        if (auto other = withParameters(changes))
+            neighbours.push_back({label, changes, *other, sameInputs, {}});
     };
-    tryMode("other assembly mode (same slider positions)", {{"assembly", -double(m_design.assembly)}}, true);
+    const double assembly = -double(m_design.assembly);
+    // The platform mirrored across Z₁Z₂ turns both links about the line: where that carries a
+    // link past perpendicular to its guide, the working modes flip along with the assembly.
+    const std::string mirrored = "other assembly mode (same slider positions)";
+    add(mirrored, {{"assembly", assembly}}, true);
+    add(mirrored, {{"assembly", assembly}, {"branch1", -double(m_design.branch[0])}}, true);
+    add(mirrored, {{"assembly", assembly}, {"branch2", -double(m_design.branch[1])}}, true);
+    add(mirrored, {{"assembly", assembly}, {"branch1", -double(m_design.branch[0])}, {"branch2", -double(m_design.branch[1])}},
+        true);
     for (int leg = 0; leg < 2; ++leg) {
         const std::string name = "branch" + legName(leg);
         const std::string label = "leg " + legName(leg) + ": other working mode (same platform position)";
-        if (!tryMode(label, {{name, -double(m_design.branch[leg])}}, false))
-            tryMode(label, {{name, -double(m_design.branch[leg])}, {"assembly", -double(m_design.assembly)}}, false);
+        const double branch = -double(m_design.branch[leg]);
+        // Moving slider i to the other root may carry Z_i across the platform's side of Z₁Z₂:
+        // then the assembly mode flips with it.
+        add(label, {{name, branch}}, false);
+        add(label, {{name, branch}, {"assembly", assembly}}, false);
     }
-    return alternatives;
+    return neighbours;
 }
 
 // -- drawing -------------------------------------------------------------------------------

@@ -86,7 +86,7 @@ public:
     const ReportLayout &reportLayout() const override;
     Singularity evaluate(const Pose &pose, std::span<double> values) const override;
     Jacobians jacobians(const Pose &pose) const override;
-    std::vector<ModeAlternative> modeAlternatives(const Pose &pose) const override;
+    std::vector<ModeAlternative> modeNeighbours() const override;
     const PlanarWorkspace *planarWorkspace() const override { return this; }
 
     Scene scene(const Pose &pose) const override;

@@ -66,7 +66,9 @@ template <bool Condition, bool Margins>
             const double frobenius = a.lengthSquared * inverseA + b.lengthSquared * inverseB;
             const double det = std::abs(crossLinks) / product;
             const double spread = std::sqrt(std::max(0.0, frobenius * frobenius - 4.0 * det * det));
-            value = (frobenius + spread) / (2.0 * det);
+            // at a singularity ∞/∞ would give NaN, which means "unreachable": κ is +∞ there
+            const bool regular = (Da > 0.0) & (Db > 0.0) & (crossLinks != 0.0);
+            value = regular ? (frobenius + spread) / (2.0 * det) : std::numeric_limits<double>::infinity();
         } else {
             value = branches * crossLinks / product;
         }

@@ -3,13 +3,16 @@
 // published numbers), plus in-process checks of runCli() and the number formatter.
 
 #include "cli.h"
+#include "cliworkspace.h"
 #include "numberformat.h"
 
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QXmlStreamReader>
 #include <QtTest>
 
 #include <charconv>
@@ -55,6 +58,24 @@ QJsonObject evalJson(const QStringList &sets, int *exitCode = nullptr)
     if (exitCode)
         *exitCode = run.exitCode;
     return QJsonDocument::fromJson(run.out).object();
+}
+
+/// Runs `pkm ARGUMENTS... --json` and parses stdout; the exit status goes to `exitCode`.
+QJsonObject runJson(QStringList arguments, int *exitCode = nullptr)
+{
+    arguments << QStringLiteral("--json");
+    const Run run = runPkm(arguments);
+    if (exitCode)
+        *exitCode = run.exitCode;
+    return QJsonDocument::fromJson(run.out).object();
+}
+
+QStringList args(std::initializer_list<const char *> arguments)
+{
+    QStringList list;
+    for (const char *argument : arguments)
+        list << QString::fromUtf8(argument);
+    return list;
 }
 
 QString number(double value)
@@ -176,6 +197,25 @@ private slots:
     void list();
     void show();
     void evalText();
+
+    void momaEvalJsonHasContractKeys_data();
+    void momaEvalJsonHasContractKeys();
+    void momaInverseThenDirect();
+    void momaSingularPose();
+
+    void workspaceJson();
+    void workspaceModes();
+    void workspaceText();
+    void workspaceSet();
+    void workspacePng();
+    void workspaceSvg();
+    void mapJson_data();
+    void mapJson();
+    void mapText();
+    void mapPng();
+    void mapCsv();
+    void outputFileErrors();
+    void mapColourLimitIgnoresSpikes();
 
     void sweepCsv_data();
     void sweepCsv();
@@ -452,6 +492,539 @@ void TestCli::evalText()
     QCOMPARE(thetaEnd, dEnd);
 }
 
+// -- moma: eval ----------------------------------------------------------------------------
+
+void TestCli::momaEvalJsonHasContractKeys_data()
+{
+    QTest::addColumn<QString>("group");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<int>("size"); // 0: a number, 2: a 2×2 row-major nested array
+    const auto add = [](const char *group, std::initializer_list<const char *> keys, int size) {
+        for (const char *key : keys)
+            QTest::addRow("%s.%s", group, key) << QString::fromLatin1(group) << QString::fromLatin1(key) << size;
+    };
+    add("parameters", {"R1x", "R1y", "R2x", "R2y", "alpha1", "alpha2", "l1", "l2", "p_min", "p_max", "branch1",
+                       "branch2", "assembly"}, 0);
+    add("pose", {"p1", "p2", "x", "y"}, 0);
+    add("jacobian", {"Jp", "Jx", "J"}, 2);
+    add("jacobian", {"det_J", "det_Jp", "det_Jx"}, 0);
+}
+
+void TestCli::momaEvalJsonHasContractKeys()
+{
+    QFETCH(QString, group);
+    QFETCH(QString, key);
+    QFETCH(int, size);
+    static int exitCode = -1;
+    static const QJsonObject root = runJson(args({"eval", "moma-3a"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("moma"));
+    const QJsonValue value = root.value(group).toObject().value(key);
+    if (size == 0) {
+        QVERIFY2(value.isDouble(), qPrintable(group + QLatin1Char('.') + key + QStringLiteral(" is missing")));
+        QVERIFY(std::isfinite(value.toDouble()));
+        return;
+    }
+    const QJsonArray rows = value.toArray();
+    QCOMPARE(rows.size(), size);
+    for (const QJsonValue &row : rows) {
+        QCOMPARE(row.toArray().size(), size);
+        for (const QJsonValue &element : row.toArray())
+            QVERIFY(element.isDouble());
+    }
+    const QString type = root.value(QStringLiteral("singularity")).toObject().value(QStringLiteral("type")).toString();
+    QVERIFY2(QStringList({QStringLiteral("none"), QStringLiteral("inverse"), QStringLiteral("direct"),
+                          QStringLiteral("combined")})
+                 .contains(type),
+             qPrintable(type));
+}
+
+void TestCli::momaInverseThenDirect()
+{
+    // J is row-major: det J from its rows is det_J, and det J = det J_x / det J_p.
+    int exitCode = -1;
+    const QJsonObject inverse = runJson(args({"eval", "moma-3a", "--set", "x=10", "--set", "y=-250"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonObject pose = inverse.value(QStringLiteral("pose")).toObject();
+    QCOMPARE(pose.value(QStringLiteral("x")).toDouble(), 10.0);
+    QCOMPARE(pose.value(QStringLiteral("y")).toDouble(), -250.0);
+    const QJsonObject jacobian = inverse.value(QStringLiteral("jacobian")).toObject();
+    const QJsonArray J = jacobian.value(QStringLiteral("J")).toArray();
+    const double det = J[0].toArray()[0].toDouble() * J[1].toArray()[1].toDouble()
+        - J[0].toArray()[1].toDouble() * J[1].toArray()[0].toDouble();
+    const double detJ = jacobian.value(QStringLiteral("det_J")).toDouble();
+    QVERIFY2(std::abs(det - detJ) < 1e-9 * std::abs(detJ), qPrintable(number(det) + QLatin1Char(' ') + number(detJ)));
+    QVERIFY(std::abs(detJ * jacobian.value(QStringLiteral("det_Jp")).toDouble()
+                     - jacobian.value(QStringLiteral("det_Jx")).toDouble())
+            < 1e-6 * std::abs(jacobian.value(QStringLiteral("det_Jx")).toDouble()));
+    QVERIFY(detJ < 0); // 3a in this convention
+
+    const double p1 = pose.value(QStringLiteral("p1")).toDouble();
+    const double p2 = pose.value(QStringLiteral("p2")).toDouble();
+    const QJsonObject direct = runJson(
+        {QStringLiteral("eval"), QStringLiteral("moma-3a"), QStringLiteral("--set"), QStringLiteral("p1=") + number(p1),
+         QStringLiteral("--set"), QStringLiteral("p2=") + number(p2)},
+        &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonObject back = direct.value(QStringLiteral("pose")).toObject();
+    QVERIFY(std::abs(back.value(QStringLiteral("x")).toDouble() - 10.0) < 1e-9);
+    QVERIFY(std::abs(back.value(QStringLiteral("y")).toDouble() + 250.0) < 1e-9);
+}
+
+void TestCli::momaSingularPose()
+{
+    // 3c in the other assembly mode reaches (195, 195) mm, where both links are perpendicular
+    // to their guides: det J_p = 0, det J and J's second row are infinite.
+    const QStringList arguments = args({"eval", "moma-3c", "--set", "assembly=-1", "--set", "x=195", "--set", "y=195"});
+    const Run json = runPkm(QStringList(arguments) << QStringLiteral("--json"));
+    QCOMPARE(json.exitCode, 0);
+    QJsonParseError error;
+    const QJsonObject root = QJsonDocument::fromJson(json.out, &error).object();
+    QCOMPARE(error.error, QJsonParseError::NoError);
+    QVERIFY(!json.out.contains("inf") && !json.out.contains("nan"));
+    const QJsonObject jacobian = root.value(QStringLiteral("jacobian")).toObject();
+    QVERIFY(jacobian.value(QStringLiteral("det_J")).isNull());
+    QCOMPARE(jacobian.value(QStringLiteral("det_Jp")).toDouble(), 0.0);
+    QVERIFY(jacobian.value(QStringLiteral("det_Jx")).isDouble());
+    QCOMPARE(jacobian.value(QStringLiteral("J")).toArray().size(), 2);
+    const QJsonObject singularity = root.value(QStringLiteral("singularity")).toObject();
+    QCOMPARE(singularity.value(QStringLiteral("type")).toString(), QStringLiteral("inverse"));
+    QVERIFY(singularity.value(QStringLiteral("undefined")).toArray().contains(QStringLiteral("det_J")));
+
+    const Run text = runPkm(arguments);
+    QCOMPARE(text.exitCode, 0);
+    const QString out = QString::fromUtf8(text.out);
+    QVERIFY(out.contains(QStringLiteral("undefined")));
+    static const QRegularExpression notANumber(QStringLiteral("\\b(-?inf|nan)\\b"),
+                                               QRegularExpression::CaseInsensitiveOption);
+    QVERIFY2(!notANumber.match(out).hasMatch(), qPrintable(notANumber.match(out).captured()));
+    QVERIFY(out.contains(QStringLiteral("inverse")));
+
+    // Elsewhere on y = 195 mm only leg 1 is singular; the JSON stays valid whatever the values.
+    const Run edge = runPkm(args({"eval", "moma-3c", "--set", "assembly=-1", "--set", "x=190", "--set", "y=195",
+                                  "--json"}));
+    QCOMPARE(edge.exitCode, 0);
+    const QJsonObject edgeRoot = QJsonDocument::fromJson(edge.out, &error).object();
+    QCOMPARE(error.error, QJsonParseError::NoError);
+    QCOMPARE(edgeRoot.value(QStringLiteral("singularity")).toObject().value(QStringLiteral("type")).toString(),
+             QStringLiteral("inverse"));
+    const QJsonValue detJ = edgeRoot.value(QStringLiteral("jacobian")).toObject().value(QStringLiteral("det_J"));
+    QVERIFY(detJ.isNull() || std::abs(detJ.toDouble()) > 1e6);
+}
+
+// -- workspace and map ---------------------------------------------------------------------
+
+void TestCli::workspaceJson()
+{
+    int exitCode = -1;
+    const QJsonObject root = runJson(args({"workspace", "moma-3a"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("moma"));
+    const double area = root.value(QStringLiteral("area")).toDouble();
+    QVERIFY2(std::abs(area - 19300.0) < 0.01 * 19300.0, qPrintable(number(area))); // fig. 6a
+    const QJsonObject grid = root.value(QStringLiteral("grid")).toObject();
+    QCOMPARE(grid.value(QStringLiteral("resolution")).toInt(), 400); // the default
+    QCOMPARE(std::max(grid.value(QStringLiteral("columns")).toInt(), grid.value(QStringLiteral("rows")).toInt()), 400);
+    const double cell = root.value(QStringLiteral("cell_size")).toDouble();
+    const double cells = root.value(QStringLiteral("reachable_cells")).toDouble();
+    QVERIFY(cells > 0);
+    QVERIFY(std::abs(cells * cell * cell - area) < 1e-6 * area);
+    const QJsonObject bounds = root.value(QStringLiteral("bounds")).toObject();
+    for (const char *key : {"x_min", "x_max", "y_min", "y_max"}) {
+        QVERIFY2(bounds.value(QLatin1String(key)).isDouble(), key);
+        QVERIFY2(grid.value(QLatin1String(key)).isDouble(), key);
+    }
+    // 3a is symmetric about x = 0 and lies below the guides' reference points
+    QVERIFY(std::abs(bounds.value(QStringLiteral("x_min")).toDouble() + bounds.value(QStringLiteral("x_max")).toDouble())
+            < 1e-6);
+    QVERIFY(bounds.value(QStringLiteral("y_max")).toDouble() < 0);
+    QVERIFY(bounds.value(QStringLiteral("x_min")).toDouble() >= grid.value(QStringLiteral("x_min")).toDouble());
+    QVERIFY(bounds.value(QStringLiteral("y_max")).toDouble() <= grid.value(QStringLiteral("y_max")).toDouble());
+    QVERIFY(root.value(QStringLiteral("seconds")).toDouble() >= 0);
+}
+
+void TestCli::workspaceModes()
+{
+    int exitCode = -1;
+    const QJsonObject root = runJson(args({"workspace", "moma-3c", "--grid", "100"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonArray modes = root.value(QStringLiteral("modes")).toArray();
+    QCOMPARE(modes.size(), 8); // branch1 × branch2 × assembly
+    int current = 0;
+    QSet<QString> combinations;
+    for (const QJsonValue &value : modes) {
+        const QJsonObject mode = value.toObject();
+        QString key;
+        for (const char *name : {"branch1", "branch2", "assembly"}) {
+            const double sign = mode.value(QLatin1String(name)).toDouble();
+            QVERIFY(sign == 1.0 || sign == -1.0);
+            key += QString::number(sign);
+        }
+        combinations.insert(key);
+        QVERIFY(mode.value(QStringLiteral("area")).toDouble() >= 0);
+        if (mode.value(QStringLiteral("area")).toDouble() == 0)
+            QVERIFY(!mode.value(QStringLiteral("note")).toString().isEmpty());
+        if (mode.value(QStringLiteral("current")).toBool()) {
+            ++current;
+            // the preset's modes: β₁ = β₂ = −1, σ = +1
+            QCOMPARE(key, QStringLiteral("-1-11"));
+            QCOMPARE(mode.value(QStringLiteral("area")).toDouble(), root.value(QStringLiteral("area")).toDouble());
+        }
+    }
+    QCOMPARE(current, 1);
+    QCOMPARE(combinations.size(), 8);
+
+    // --set assembly=-1 makes another combination the current one, with its own area.
+    const QJsonObject other = runJson(args({"workspace", "moma-3c", "--grid", "100", "--set", "assembly=-1"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    for (const QJsonValue &value : other.value(QStringLiteral("modes")).toArray()) {
+        const QJsonObject mode = value.toObject();
+        if (mode.value(QStringLiteral("current")).toBool()) {
+            QCOMPARE(mode.value(QStringLiteral("assembly")).toDouble(), -1.0);
+            QCOMPARE(mode.value(QStringLiteral("area")).toDouble(), other.value(QStringLiteral("area")).toDouble());
+        }
+    }
+    QVERIFY(other.value(QStringLiteral("area")).toDouble() < root.value(QStringLiteral("area")).toDouble());
+}
+
+void TestCli::workspaceText()
+{
+    const Run run = runPkm(args({"workspace", "moma-3a", "--grid", "100"}));
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY(run.err.isEmpty());
+    const QString out = QString::fromUtf8(run.out);
+    QVERIFY(out.contains(QStringLiteral("Design     moma-3a")));
+    QVERIFY(out.contains(QStringLiteral("area")));
+    QVERIFY(out.contains(QStringLiteral("mm²")));
+    QVERIFY(out.contains(QStringLiteral("current")));
+    QVERIFY(out.contains(QStringLiteral("branch1")));
+    const QJsonObject json = runJson(args({"workspace", "moma-3a", "--grid", "100"}));
+    const QString area = QString::number(json.value(QStringLiteral("area")).toDouble(), 'f', 1);
+    QVERIFY2(out.contains(area), qPrintable(area));
+}
+
+void TestCli::workspaceSet()
+{
+    int exitCode = -1;
+    const QJsonObject plain = runJson(args({"workspace", "moma-3a", "--grid", "100"}), &exitCode);
+    const QJsonObject changed = runJson(
+        args({"workspace", "moma-3a", "--grid", "100", "--set", "gamma1=-3", "--set", "l1=200"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonObject parameters = changed.value(QStringLiteral("parameters")).toObject();
+    QVERIFY(std::abs(parameters.value(QStringLiteral("gamma1")).toDouble() + 3.0) < 1e-9);
+    QCOMPARE(parameters.value(QStringLiteral("l1")).toDouble(), 200.0);
+    QVERIFY(changed.value(QStringLiteral("area")).toDouble() > 0);
+    QVERIFY(changed.value(QStringLiteral("area")).toDouble() != plain.value(QStringLiteral("area")).toDouble());
+    // the map takes the same --set
+    const QJsonObject map = runJson(
+        args({"map", "moma-3a", "--grid", "100", "--set", "gamma1=-3", "--set", "l1=200"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(map.value(QStringLiteral("reachable_cells")), changed.value(QStringLiteral("reachable_cells")));
+}
+
+void TestCli::workspacePng()
+{
+    QTemporaryDir directory;
+    const QString path = directory.filePath(QStringLiteral("workspace.png"));
+    int exitCode = -1;
+    const QJsonObject root = runJson({QStringLiteral("workspace"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
+                                      QStringLiteral("100"), QStringLiteral("-o"), path},
+                                     &exitCode);
+    QCOMPARE(exitCode, 0);
+    QVERIFY(root.contains(QStringLiteral("area"))); // the JSON still goes to stdout
+    QImage image(path);
+    QVERIFY(!image.isNull());
+    const QJsonObject grid = root.value(QStringLiteral("grid")).toObject();
+    const int columns = grid.value(QStringLiteral("columns")).toInt();
+    const int rows = grid.value(QStringLiteral("rows")).toInt();
+    // a whole number of pixels per cell, at least 400 along the longer side
+    QVERIFY(std::max(image.width(), image.height()) >= 400);
+    QCOMPARE(image.width() % columns, 0);
+    QCOMPARE(image.width() / columns, image.height() / rows);
+    QCOMPARE(image.height() % rows, 0);
+    // white outside, light blue inside: 3a's workspace is a shield, wide at the top (y up)
+    QCOMPARE(image.pixel(0, image.height() - 1), qRgb(255, 255, 255));
+    QVERIFY(image.pixel(image.width() / 2, image.height() / 2) != qRgb(255, 255, 255));
+    int topRow = 0, bottomRow = 0;
+    for (int x = 0; x < image.width(); ++x) {
+        topRow += image.pixel(x, image.height() / 8) != qRgb(255, 255, 255);
+        bottomRow += image.pixel(x, image.height() * 7 / 8) != qRgb(255, 255, 255);
+    }
+    QVERIFY2(topRow > bottomRow, qPrintable(QString::number(topRow) + QLatin1Char(' ') + QString::number(bottomRow)));
+}
+
+void TestCli::workspaceSvg()
+{
+    QTemporaryDir directory;
+    // 3c on this grid has reachable cells that touch at a corner only
+    for (const char *design : {"moma-3a", "moma-3c"}) {
+        const QString path = directory.filePath(QStringLiteral("%1.SVG").arg(QLatin1String(design)));
+        const QStringList arguments{QStringLiteral("workspace"), QLatin1String(design), QStringLiteral("--grid"),
+                                    QStringLiteral("200"), QStringLiteral("-o"), path};
+        const Run run = runPkm(arguments);
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(run.out.contains(path.toUtf8()));
+        const QJsonObject root = runJson(arguments);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray svg = file.readAll();
+        QVERIFY(svg.contains("<svg"));
+        QVERIFY(svg.contains("<path"));
+        QXmlStreamReader xml(svg);
+        QString d;
+        QStringList viewBox;
+        while (!xml.atEnd()) {
+            if (xml.readNext() != QXmlStreamReader::StartElement)
+                continue;
+            if (xml.name() == QLatin1String("svg"))
+                viewBox = xml.attributes().value(QStringLiteral("viewBox")).toString().split(QLatin1Char(' '));
+            if (xml.name() == QLatin1String("path"))
+                d = xml.attributes().value(QStringLiteral("d")).toString();
+        }
+        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+        QVERIFY(d.startsWith(QLatin1Char('M')));
+        QVERIFY(d.endsWith(QLatin1Char('Z')));
+        QCOMPARE(viewBox.size(), 4);
+        // In mm with y flipped: the viewBox holds the reachable cells.
+        const QJsonObject bounds = root.value(QStringLiteral("bounds")).toObject();
+        const double left = viewBox[0].toDouble(), top = viewBox[1].toDouble();
+        QVERIFY(left < bounds.value(QStringLiteral("x_min")).toDouble());
+        QVERIFY(left + viewBox[2].toDouble() > bounds.value(QStringLiteral("x_max")).toDouble());
+        QVERIFY(top < -bounds.value(QStringLiteral("y_max")).toDouble());
+        QVERIFY(top + viewBox[3].toDouble() > -bounds.value(QStringLiteral("y_min")).toDouble());
+        // The loops enclose exactly the reachable cells: their areas add up to the workspace's
+        // (all loops turn the same way, holes the other way), so none crosses itself.
+        double area = 0;
+        for (const QString &loop : d.split(QLatin1Char('Z'), Qt::SkipEmptyParts)) {
+            QList<QPointF> points;
+            for (const QString &vertex : loop.split(QRegularExpression(QStringLiteral("[ML]")), Qt::SkipEmptyParts)) {
+                const QStringList xy = vertex.split(QLatin1Char(','));
+                QCOMPARE(xy.size(), 2);
+                points.append(QPointF(xy[0].toDouble(), -xy[1].toDouble()));
+            }
+            for (qsizetype i = 0; i < points.size(); ++i) {
+                const QPointF &a = points[i], &b = points[(i + 1) % points.size()];
+                area += 0.5 * (a.x() * b.y() - b.x() * a.y());
+            }
+        }
+        const double expected = root.value(QStringLiteral("area")).toDouble();
+        QVERIFY2(std::abs(std::abs(area) - expected) < 1e-6 * expected, qPrintable(number(area) + QLatin1Char(' ') + number(expected)));
+    }
+}
+
+void TestCli::mapJson_data()
+{
+    QTest::addColumn<QString>("design");
+    QTest::addColumn<QString>("quantity");
+    QTest::newRow("3a det") << QStringLiteral("moma-3a") << QStringLiteral("det");
+    QTest::newRow("3a cond") << QStringLiteral("moma-3a") << QStringLiteral("cond");
+    QTest::newRow("3c det") << QStringLiteral("moma-3c") << QStringLiteral("det");
+    QTest::newRow("3d cond") << QStringLiteral("moma-3d") << QStringLiteral("cond");
+}
+
+void TestCli::mapJson()
+{
+    QFETCH(QString, design);
+    QFETCH(QString, quantity);
+    int exitCode = -1;
+    const QJsonObject root = runJson(
+        {QStringLiteral("map"), design, QStringLiteral("--grid"), QStringLiteral("100"), QStringLiteral("--quantity"),
+         quantity},
+        &exitCode);
+    QCOMPARE(exitCode, 0);
+    for (const char *key : {"grid", "bounds", "reachable_cells", "min", "max", "near_singular_cells", "seconds",
+                            "quantity", "cell_size"})
+        QVERIFY2(root.contains(QLatin1String(key)), key);
+    QCOMPARE(root.value(QStringLiteral("quantity")).toString(), quantity);
+    const QJsonObject grid = root.value(QStringLiteral("grid")).toObject();
+    QCOMPARE(std::max(grid.value(QStringLiteral("columns")).toInt(), grid.value(QStringLiteral("rows")).toInt()), 100);
+    const double min = root.value(QStringLiteral("min")).toDouble();
+    const double max = root.value(QStringLiteral("max")).toDouble();
+    QVERIFY(min <= max);
+    if (quantity == QLatin1String("cond"))
+        QVERIFY2(min >= 1.0 - 1e-6, qPrintable(number(min)));
+    if (design == QLatin1String("moma-3a") && quantity == QLatin1String("det"))
+        QVERIFY2(max < 0, qPrintable(number(max))); // det J < 0 all over 3a's workspace
+    QVERIFY(root.value(QStringLiteral("near_singular_cells")).toInt()
+            <= root.value(QStringLiteral("reachable_cells")).toInt());
+
+    // the same cells as the workspace on the same grid
+    const QJsonObject workspace = runJson({QStringLiteral("workspace"), design, QStringLiteral("--grid"),
+                                           QStringLiteral("100")});
+    QCOMPARE(root.value(QStringLiteral("reachable_cells")), workspace.value(QStringLiteral("reachable_cells")));
+    QCOMPARE(root.value(QStringLiteral("bounds")), workspace.value(QStringLiteral("bounds")));
+}
+
+void TestCli::mapText()
+{
+    const Run run = runPkm(args({"map", "moma-3a", "--grid", "50"}));
+    QCOMPARE(run.exitCode, 0);
+    const QString out = QString::fromUtf8(run.out);
+    for (const char *text : {"Map of det J", "reachable cells", "near-singular cells", "min", "max"})
+        QVERIFY2(out.contains(QLatin1String(text)), text);
+    const Run cond = runPkm(args({"map", "moma-3a", "--grid", "50", "--quantity", "cond"}));
+    QCOMPARE(cond.exitCode, 0);
+    QVERIFY(cond.out.contains("condition number"));
+}
+
+void TestCli::mapPng()
+{
+    QTemporaryDir directory;
+    for (const char *quantity : {"det", "cond"}) {
+        const QString path = directory.filePath(QStringLiteral("map-%1.png").arg(QLatin1String(quantity)));
+        int exitCode = -1;
+        const QJsonObject root = runJson({QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
+                                          QStringLiteral("100"), QStringLiteral("--quantity"),
+                                          QLatin1String(quantity), QStringLiteral("-o"), path},
+                                         &exitCode);
+        QCOMPARE(exitCode, 0);
+        const QImage image(path);
+        QVERIFY(!image.isNull());
+        const QJsonObject grid = root.value(QStringLiteral("grid")).toObject();
+        QCOMPARE(image.width(), grid.value(QStringLiteral("columns")).toInt());
+        QCOMPARE(image.height(), grid.value(QStringLiteral("rows")).toInt());
+        QVERIFY(image.hasAlphaChannel());
+        int opaque = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x)
+                opaque += qAlpha(image.pixel(x, y)) == 255;
+        }
+        QCOMPARE(opaque, root.value(QStringLiteral("reachable_cells")).toInt()); // the rest is transparent
+        // y up: 3a's workspace is wide at the top, pointed at the bottom
+        QVERIFY(qAlpha(image.pixel(image.width() / 2, image.height() / 4)) == 255);
+        QVERIFY(qAlpha(image.pixel(1, image.height() - 2)) == 0);
+        if (QLatin1String(quantity) == QLatin1String("det")) {
+            // det J < 0 everywhere: blue, not red
+            const QRgb centre = image.pixel(image.width() / 2, image.height() / 2);
+            QVERIFY(qBlue(centre) > qRed(centre));
+            QVERIFY(root.value(QStringLiteral("colour_scale")).toObject().value(QStringLiteral("max")).toDouble() > 0);
+        }
+    }
+}
+
+void TestCli::mapCsv()
+{
+    QTemporaryDir directory;
+    const QString path = directory.filePath(QStringLiteral("map.csv"));
+    int exitCode = -1;
+    const QJsonObject root = runJson({QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
+                                      QStringLiteral("100"), QStringLiteral("-o"), path},
+                                     &exitCode);
+    QCOMPARE(exitCode, 0);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray csv = file.readAll();
+    QVERIFY(csv.endsWith('\n'));
+    const QList<QByteArray> lines = csv.chopped(1).split('\n');
+    QCOMPARE(lines.front(), QByteArray("x,y,value,margin"));
+    QCOMPARE(lines.size() - 1, root.value(QStringLiteral("reachable_cells")).toInt());
+    const QJsonObject bounds = root.value(QStringLiteral("bounds")).toObject();
+    double min = std::numeric_limits<double>::infinity(), max = -min;
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QList<QByteArray> fields = lines[i].split(',');
+        QCOMPARE(fields.size(), 4);
+        bool ok[4] = {};
+        const double x = fields[0].toDouble(&ok[0]);
+        const double y = fields[1].toDouble(&ok[1]);
+        const double value = fields[2].toDouble(&ok[2]);
+        const double margin = fields[3].toDouble(&ok[3]);
+        QVERIFY2(ok[0] && ok[1] && ok[2] && ok[3], lines[i].constData());
+        QVERIFY(x > bounds.value(QStringLiteral("x_min")).toDouble() && x < bounds.value(QStringLiteral("x_max")).toDouble());
+        QVERIFY(y > bounds.value(QStringLiteral("y_min")).toDouble() && y < bounds.value(QStringLiteral("y_max")).toDouble());
+        QVERIFY(margin >= 0 && margin <= 1);
+        min = std::min(min, value);
+        max = std::max(max, value);
+    }
+    // the summary's min and max are the map's, up to float precision
+    QVERIFY(std::abs(min - root.value(QStringLiteral("min")).toDouble()) < 1e-6 * std::abs(min));
+    QVERIFY(std::abs(max - root.value(QStringLiteral("max")).toDouble()) < 1e-6 * std::abs(max));
+    QVERIFY(max < 0);
+}
+
+void TestCli::outputFileErrors()
+{
+    QTemporaryDir directory;
+    // A directory where the file should go: exit 1, the culprit named, nothing on stdout, no
+    // temporary file left behind.
+    QVERIFY(QDir(directory.path()).mkdir(QStringLiteral("taken.png")));
+    const QString taken = directory.filePath(QStringLiteral("taken.png"));
+    for (const QStringList &arguments :
+         {QStringList{QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--grid"), QStringLiteral("20"),
+                      QStringLiteral("-o"), taken},
+          QStringList{QStringLiteral("workspace"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
+                      QStringLiteral("20"), QStringLiteral("--json"), QStringLiteral("-o"), taken}}) {
+        const Run run = runPkm(arguments);
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY(run.out.isEmpty());
+        QVERIFY2(run.err.contains(taken.toUtf8()), run.err.constData());
+        QCOMPARE(run.err.count('\n'), 1);
+    }
+    QCOMPARE(QDir(directory.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden),
+             QStringList{QStringLiteral("taken.png")});
+
+    const QString missing = directory.filePath(QStringLiteral("no/such/dir/map.csv"));
+    const Run run = runPkm({QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
+                            QStringLiteral("20"), QStringLiteral("-o"), missing});
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY(run.out.isEmpty());
+    QVERIFY(run.err.contains(missing.toUtf8()));
+    QVERIFY(!QFile::exists(missing));
+
+    // A failing command leaves an existing file as it was.
+    const QString existing = directory.filePath(QStringLiteral("existing.csv"));
+    {
+        QFile file(existing);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("keep me\n");
+    }
+    for (const QStringList &arguments :
+         {QStringList{QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--set"),
+                      QStringLiteral("l1=-4"), QStringLiteral("-o"), existing},
+          QStringList{QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--set"),
+                      QStringLiteral("p_min=100"), QStringLiteral("--set"), QStringLiteral("p_max=100.001"),
+                      QStringLiteral("--grid"), QStringLiteral("10"), QStringLiteral("-o"), existing}}) {
+        const Run failed = runPkm(arguments);
+        QVERIFY(failed.exitCode == 2 || failed.exitCode == 3);
+        QFile file(existing);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), QByteArray("keep me\n"));
+    }
+    // and a successful one replaces it
+    QCOMPARE(runPkm({QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--grid"), QStringLiteral("10"),
+                     QStringLiteral("-o"), existing})
+                 .exitCode,
+             0);
+    QFile file(existing);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.readAll().startsWith("x,y,value,margin\n"));
+}
+
+void TestCli::mapColourLimitIgnoresSpikes()
+{
+    // det J near an inverse singularity grows without bound: a few spikes must not set the
+    // colour scale, or everything else would be white.
+    std::vector<float> values;
+    for (int i = 0; i < 1000; ++i)
+        values.push_back(-1.0f - static_cast<float>(i) / 1000.0f);
+    for (int i = 0; i < 10; ++i)
+        values.push_back(-1e9f);
+    values.push_back(-std::numeric_limits<float>::infinity());
+    values.push_back(std::numeric_limits<float>::quiet_NaN());
+    const double limit = cli::mapColourLimit(values, MapQuantity::Determinant);
+    QVERIFY2(limit > 1.9 && limit <= 2.0, qPrintable(number(limit)));
+    QCOMPARE(cli::mapColourLimit(values, MapQuantity::Condition), 100.0);
+
+    MapGrid grid;
+    grid.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 1));
+    grid.columns = 2;
+    grid.rows = 1;
+    const std::vector<float> cells = {-1.0f, std::numeric_limits<float>::quiet_NaN()};
+    const QImage image = cli::mapImage(grid, cells, MapQuantity::Determinant, 1.0);
+    QCOMPARE(image.size(), QSize(2, 1));
+    QCOMPARE(qAlpha(image.pixel(1, 0)), 0);
+    QVERIFY(qBlue(image.pixel(0, 0)) > qRed(image.pixel(0, 0)));
+}
+
 // -- sweep ---------------------------------------------------------------------------------
 
 void TestCli::sweepCsv_data()
@@ -629,6 +1202,36 @@ void TestCli::errors_data()
         << QStringLiteral("--json");
     QTest::newRow("sweep invalid parameter value")
         << sweep({"--var", "k", "--from", "0.3", "--to", "-1", "--steps", "3"}) << 2 << QStringLiteral("k = -0.35");
+
+    QTest::newRow("map of a П-joint") << args({"map", "pjoint-prototype"}) << 2
+                                      << QStringLiteral("The active П-joint has no planar workspace");
+    QTest::newRow("workspace of a П-joint") << args({"workspace", "pjoint-prototype"}) << 2
+                                            << QStringLiteral("pjoint-prototype");
+    QTest::newRow("grid too small") << args({"workspace", "moma-3a", "--grid", "5"}) << 2 << QStringLiteral("--grid 5");
+    QTest::newRow("grid too large") << args({"map", "moma-3a", "--grid", "4001"}) << 2 << QStringLiteral("--grid 4001");
+    QTest::newRow("grid fractional") << args({"map", "moma-3a", "--grid", "20.5"}) << 2 << QStringLiteral("--grid");
+    QTest::newRow("grid not a number") << args({"map", "moma-3a", "--grid", "abc"}) << 2 << QStringLiteral("abc");
+    QTest::newRow("bad quantity") << args({"map", "moma-3a", "--quantity", "jacobian"}) << 2
+                                  << QStringLiteral("jacobian");
+    QTest::newRow("quantity of workspace") << args({"workspace", "moma-3a", "--quantity", "det"}) << 2
+                                           << QStringLiteral("--quantity");
+    QTest::newRow("workspace unknown extension") << args({"workspace", "moma-3a", "-o", "out.bmp"}) << 2
+                                                 << QStringLiteral("out.bmp");
+    QTest::newRow("map unknown extension") << args({"map", "moma-3a", "-o", "out.svg"}) << 2
+                                           << QStringLiteral("out.svg");
+    QTest::newRow("output without extension") << args({"map", "moma-3a", "--output", "picture"}) << 2
+                                              << QStringLiteral("picture");
+    QTest::newRow("-o without file") << args({"map", "moma-3a", "-o"}) << 2 << QStringLiteral("-o");
+    QTest::newRow("map invalid --set") << args({"map", "moma-3a", "--set", "l1=-4"}) << 2 << QStringLiteral("l1=-4");
+    QTest::newRow("workspace unknown --set") << args({"workspace", "moma-3a", "--set", "zz=1"}) << 2
+                                             << QStringLiteral("zz");
+    QTest::newRow("map bad mode") << args({"map", "moma-3a", "--set", "assembly=0.5"}) << 2
+                                  << QStringLiteral("assembly");
+    QTest::newRow("map empty") << args({"map", "moma-3a", "--set", "p_min=100", "--set", "p_max=100.001", "--grid", "10"})
+                               << 3 << QStringLiteral("moma-3a");
+    QTest::newRow("workspace empty")
+        << args({"workspace", "moma-3a", "--set", "p_min=100", "--set", "p_max=100.001", "--grid", "10"}) << 3
+        << QStringLiteral("--grid");
 }
 
 void TestCli::errors()
@@ -664,6 +1267,13 @@ void TestCli::help_data()
     QTest::newRow("show --help") << QStringList{QStringLiteral("show"), QStringLiteral("--help")}
                                  << QStringLiteral("Usage: pkm show");
     QTest::newRow("--version") << QStringList{QStringLiteral("--version")} << QStringLiteral("pkm " PKM_VERSION);
+    QTest::newRow("--help lists workspace") << QStringList{QStringLiteral("--help")}
+                                            << QStringLiteral("workspace DESIGN [--grid K]");
+    QTest::newRow("--help lists map") << QStringList{QStringLiteral("--help")}
+                                      << QStringLiteral("map    DESIGN [--grid K] [--quantity det|cond]");
+    QTest::newRow("workspace --help") << args({"workspace", "--help"}) << QStringLiteral("Usage: pkm workspace");
+    QTest::newRow("help map") << args({"help", "map"}) << QStringLiteral("Usage: pkm map");
+    QTest::newRow("map -h wins over errors") << args({"map", "--grid", "1", "-h"}) << QStringLiteral("-o FILE.csv");
 }
 
 void TestCli::help()
