@@ -18,6 +18,7 @@ Document::Document(QObject *parent)
     auto initial = designfile::load(QStringLiteral("pjoint-prototype"));
     Q_ASSERT(initial.ok());
     m_design = *initial;
+    m_modeNeighbours = m_design.mechanism->modeNeighbours();
 }
 
 Result<bool> Document::open(const QString &presetOrPath)
@@ -44,24 +45,85 @@ Result<bool> Document::setParameter(const QString &name, double displayValue, bo
     return true;
 }
 
+template <class Solve>
+Result<Pose> Document::moveTowards(const Solve &solveAt)
+{
+    m_lastMoveWasPartial = false;
+    auto solved = solveAt(1.0);
+    if (solved) {
+        applyPose(*solved);
+        return solved;
+    }
+    // Stop at the last reachable pose on the way rather than short of it: bisect the move.
+    double reachable = 0.0, unreachable = 1.0;
+    Result<Pose> best = Failure{FailureKind::Unreachable, {}, {}};
+    for (int i = 0; i < 30; ++i) {
+        const double t = 0.5 * (reachable + unreachable);
+        if (auto at = solveAt(t)) {
+            reachable = t;
+            best = at;
+        } else {
+            unreachable = t;
+        }
+    }
+    if (best) {
+        m_lastMoveWasPartial = true;
+        applyPose(*best);
+    }
+    return solved;
+}
+
 Result<Pose> Document::setVariable(int variable, double value)
 {
     const Mechanism &m = *m_design.mechanism;
     const Interval range = m.variableRange(variable);
     m_drivenVariable = variable;
-    auto solved = m.solveWith(m_design.pose, variable, std::isfinite(value) ? range.clamp(value) : value);
-    if (solved)
-        applyPose(*solved);
-    return solved;
+    if (!std::isfinite(value))
+        return m.solveWith(m_design.pose, variable, value);
+    const Pose start = m_design.pose;
+    const double from = m.variableValue(start, variable);
+    const double to = range.clamp(value);
+    return moveTowards([&](double t) { return m.solveWith(start, variable, from + t * (to - from)); });
 }
 
 Result<Pose> Document::dragHandle(int handle, const Eigen::Vector2d &target)
 {
-    m_drivenVariable = m_design.mechanism->inputCount(); // a drag moves the outputs
-    auto solved = m_design.mechanism->dragHandle(m_design.pose, handle, target);
-    if (solved)
-        applyPose(*solved);
-    return solved;
+    const Mechanism &m = *m_design.mechanism;
+    m_drivenVariable = m.inputCount(); // a drag moves the outputs
+    const Pose start = m_design.pose;
+    const Scene scene = m.scene(start);
+    if (handle < 0 || handle >= static_cast<int>(scene.handles.size()))
+        return m.dragHandle(start, handle, target);
+    const Eigen::Vector2d from = scene.joints[scene.handles[handle].joint].position.head<2>();
+    return moveTowards([&](double t) { return m.dragHandle(start, handle, from + t * (target - from)); });
+}
+
+Result<Pose> Document::moveOutputsTo(const Coordinates &outputs)
+{
+    const Mechanism &m = *m_design.mechanism;
+    m_drivenVariable = m.inputCount();
+    const Pose start = m_design.pose;
+    return moveTowards([&](double t) {
+        const Coordinates x = start.outputs + t * (outputs - start.outputs);
+        return m.solveInverse(x, &start);
+    });
+}
+
+std::vector<ModeAlternative> Document::modeAlternatives() const
+{
+    return Mechanism::solveAlternatives(m_modeNeighbours, m_design.pose);
+}
+
+Result<bool> Document::switchMode(const ModeAlternative &alternative)
+{
+    if (!alternative.mechanism || alternative.pose.inputs.size() != m_design.pose.inputs.size())
+        return Failure{FailureKind::InvalidParameter, {}, "That mode is not available at this pose."};
+    Design next = m_design;
+    next.mechanism = alternative.mechanism;
+    next.pose = alternative.pose;
+    m_undoStack.push(new ReplaceDesignCommand(this, m_design, next,
+                                              tr("Switch to %1").arg(QString::fromStdString(alternative.label))));
+    return true;
 }
 
 QString Document::limitNote() const
@@ -96,6 +158,8 @@ QString Document::limitNote() const
 
 void Document::applyDesign(const Design &design)
 {
+    if (design.mechanism != m_design.mechanism)
+        m_modeNeighbours = design.mechanism->modeNeighbours();
     m_design = design;
     emit designChanged();
 }
@@ -115,6 +179,12 @@ Pose Document::carryPose(const Mechanism &mechanism, const Pose &old)
     for (int i = 0; i < outputs.size(); ++i)
         outputs[i] = mechanism.variableRange(inputs + i).clamp(outputs[i]);
     if (auto kept = mechanism.solveInverse(outputs, &old))
+        return *kept;
+    // Out of the new workspace: keep the actuators where they are, if the design allows.
+    Coordinates actuators = old.inputs;
+    for (int i = 0; i < actuators.size(); ++i)
+        actuators[i] = mechanism.variableRange(i).clamp(actuators[i]);
+    if (auto kept = mechanism.solveDirect(actuators, &old))
         return *kept;
     return mechanism.homePose();
 }

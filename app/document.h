@@ -34,6 +34,17 @@ public:
     Result<Pose> setVariable(int variable, double value);
     /// Drags a scene handle to a point of the mechanism plane (mm).
     Result<Pose> dragHandle(int handle, const Eigen::Vector2d &target);
+    /// Moves the outputs (a platform position clicked on a map) by inverse kinematics.
+    Result<Pose> moveOutputsTo(const Coordinates &outputs);
+    /// The design's neighbours in other working/assembly modes (computed once per design).
+    const std::vector<ModeAlternative> &modeNeighbours() const { return m_modeNeighbours; }
+    /// The current pose in the other modes: what the view draws as ghosts.
+    std::vector<ModeAlternative> modeAlternatives() const;
+    /// Switches to another mode, as an undoable design change; the pose becomes the
+    /// alternative's pose.
+    Result<bool> switchMode(const ModeAlternative &alternative);
+    /// Whether a move that failed went part of the way (see applyPartialMove).
+    bool lastMoveWasPartial() const { return m_lastMoveWasPartial; }
     /// Why the pose cannot go further, when a variable sits at a limit or near a singularity;
     /// empty otherwise.
     QString limitNote() const;
@@ -48,12 +59,19 @@ signals:
 
 private:
     void applyPose(const Pose &pose);
+    /// When a move to `target` fails, goes as far towards it as the mechanism allows (by
+    /// bisection between the current pose and the target) and reports the failure all the
+    /// same; `solveAt(t)` solves the move's fraction t ∈ [0, 1].
+    template <class Solve>
+    Result<Pose> moveTowards(const Solve &solveAt);
     /// The pose to keep when the design changes: same outputs if still valid, else clamped.
     static Pose carryPose(const Mechanism &mechanism, const Pose &old);
 
     Design m_design;
     QUndoStack m_undoStack;
     int m_drivenVariable = 0; ///< the variable the user moved last (index into variableInfo())
+    std::vector<ModeAlternative> m_modeNeighbours;
+    bool m_lastMoveWasPartial = false;
 };
 
 } // namespace pkm

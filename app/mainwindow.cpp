@@ -3,6 +3,7 @@
 #include "designpanel.h"
 #include "document.h"
 #include "linkageview.h"
+#include "modebar.h"
 #include "pjoint.h"
 #include "pjointplots.h"
 #include "quantityformat.h"
@@ -48,12 +49,14 @@ MainWindow::MainWindow(QWidget *parent)
     m_view = new LinkageView(this);
     m_view->setMinimumSize(340, 300);
     m_variables = new VariablePanel(this);
+    m_modeBar = new ModeBar(this);
 
     auto *left = new QWidget(this);
     auto *leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
     leftLayout->addWidget(m_view, 1);
     leftLayout->addWidget(m_variables);
+    leftLayout->addWidget(m_modeBar);
 
     m_plots = new QStackedWidget(this);
     m_pjointPlots = new PJointPlots(this);
@@ -83,14 +86,17 @@ MainWindow::MainWindow(QWidget *parent)
 
     connect(m_variables, &VariablePanel::variableEdited, this, [this](int variable, double value) {
         auto solved = m_document->setVariable(variable, value);
-        if (!solved)
+        if (!solved) {
             showStatus(failureText(solved.failure()), true);
+            m_variables->setPose(m_document->pose()); // the slider goes back to where the pose is
+        }
     });
     connect(m_view, &LinkageView::handleDragged, this, [this](int handle, const Eigen::Vector2d &target) {
         auto solved = m_document->dragHandle(handle, target);
         if (!solved)
             showStatus(failureText(solved.failure()), true);
     });
+    connect(m_modeBar, &ModeBar::switchRequested, this, &MainWindow::switchMode);
     connect(m_designPanel, &DesignPanel::parameterEdited, this,
             [this](const QString &name, double value, bool continuous) {
                 auto changed = m_document->setParameter(name, value, continuous);
@@ -111,6 +117,7 @@ MainWindow::~MainWindow()
     // panels must not call back into it.
     disconnect(m_designPanel, nullptr, this, nullptr);
     disconnect(m_variables, nullptr, this, nullptr);
+    disconnect(m_modeBar, nullptr, this, nullptr);
     disconnect(m_view, nullptr, this, nullptr);
     disconnect(m_document, nullptr, this, nullptr);
 }
@@ -268,12 +275,45 @@ void MainWindow::onPoseChanged()
     }
     m_poseLabel->setText(summary.join(QStringLiteral("   ")));
 
+    updateModes();
     const QString note = m_document->limitNote();
     m_view->setMessage(note);
     if (!note.isEmpty())
         showStatus(note);
     else if (!m_statusIsError)
         statusBar()->clearMessage();
+}
+
+void MainWindow::updateModes()
+{
+    const MechanismPtr &mechanism = m_document->mechanism();
+    m_alternatives = m_document->modeAlternatives();
+    QStringList current;
+    const ParameterSet values = mechanism->parameters();
+    for (const ParameterInfo &info : mechanism->parameterInfo()) {
+        if (info.group == ParameterGroup::Mode && info.domain.min == -1.0 && info.domain.max == 1.0) {
+            const double v = values.at(info.name);
+            current << QStringLiteral("%1 = %2").arg(toQString(info.symbol), v > 0 ? QStringLiteral("+1")
+                                                                                    : QStringLiteral("−1"));
+        }
+    }
+    QStringList labels;
+    for (const ModeAlternative &alternative : m_alternatives)
+        labels << QString::fromStdString(alternative.label);
+    m_modeBar->setModes(current.join(QStringLiteral(", ")), labels);
+}
+
+void MainWindow::switchMode(int index)
+{
+    if (index < 0 || index >= static_cast<int>(m_alternatives.size()))
+        return;
+    // a copy: the switch replaces m_alternatives with the new pose's
+    const ModeAlternative alternative = m_alternatives[static_cast<std::size_t>(index)];
+    auto switched = m_document->switchMode(alternative);
+    if (!switched)
+        showStatus(failureText(switched.failure()), true);
+    else
+        showStatus(tr("Switched to %1.").arg(QString::fromStdString(alternative.label)));
 }
 
 void MainWindow::showStatus(const QString &message, bool error)

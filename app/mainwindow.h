@@ -2,6 +2,8 @@
 /// The main window: the linkage view, the joint-variable sliders, the design panel, live values
 /// and plots, all reading one Document and asking it for every change.
 
+#include "mechanism.h"
+
 #include <QMainWindow>
 
 class QLabel;
@@ -14,6 +16,7 @@ namespace pkm {
 class DesignPanel;
 class Document;
 class LinkageView;
+class ModeBar;
 class PJointPlots;
 class ValuesTable;
 class VariablePanel;
@@ -32,6 +35,7 @@ public:
     DesignPanel *designPanel() const { return m_designPanel; }
     ValuesTable *valuesTable() const { return m_values; }
     PJointPlots *pjointPlots() const { return m_pjointPlots; }
+    ModeBar *modeBar() const { return m_modeBar; }
     /// The last message the status bar showed (tests read it after it times out).
     QString lastStatus() const { return m_lastStatus; }
 
@@ -50,6 +54,8 @@ private:
     void onDesignChanged();
     void onPoseChanged();
     void keepMechanismInView();
+    void updateModes();
+    void switchMode(int index);
     void showStatus(const QString &message, bool error = false);
     void openFile();
     void saveFileAs();
@@ -59,6 +65,8 @@ private:
     Document *m_document = nullptr;
     LinkageView *m_view = nullptr;
     VariablePanel *m_variables = nullptr;
+    ModeBar *m_modeBar = nullptr;
+    std::vector<ModeAlternative> m_alternatives; ///< the other modes at the current pose
     DesignPanel *m_designPanel = nullptr;
     ValuesTable *m_values = nullptr;
     PJointPlots *m_pjointPlots = nullptr;

@@ -121,6 +121,7 @@ void DesignPanel::rebuild()
         rowLayout->addWidget(unitLabel);
         auto *label = new QLabel(QStringLiteral("<b>%1</b>&nbsp; %2").arg(toQString(info.symbol).toHtmlEscaped(),
                                                                       toQString(info.label).toHtmlEscaped()));
+        label->setWordWrap(true); // long labels wrap rather than push the fields out of the dock
         label->setBuddy(edit);
         label->setToolTip(edit->toolTip());
         edit->setProperty(helpProperty, edit->toolTip());

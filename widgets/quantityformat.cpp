@@ -16,9 +16,12 @@ QString unitText(const Unit &unit)
 
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale)
 {
-    const double display = unit.toDisplay(coreValue);
+    double display = unit.toDisplay(coreValue);
     if (!std::isfinite(display))
         return QStringLiteral("—");
+    // A value that rounds to zero shows as 0, never "-0.00" (a platform at x = −1e-14 mm).
+    if (std::abs(display) < 0.5 * std::pow(10.0, -std::max(0, decimals)))
+        display = 0.0;
     // No group separators: "1044.03", as the spin boxes and fields show it.
     QLocale plain = locale;
     plain.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);

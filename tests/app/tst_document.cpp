@@ -1,6 +1,7 @@
 // The document: the only writer of the design and the pose; undo/redo of design edits.
 #include "document.h"
 
+#include "moma.h"
 #include "pjoint.h"
 
 #include <QSignalSpy>
@@ -145,6 +146,94 @@ private slots:
         const double theta = -45 * units::degree;
         QVERIFY(document.dragHandle(0, B + 50 * Eigen::Vector2d(std::sin(theta), std::cos(theta))).ok());
         QVERIFY(std::abs(document.pose().outputs[0] - theta) < 1e-12);
+    }
+    // -- MOMA: the platform, the modes and the limits of the workspace ------------------------
+
+    void momaDragStopsAtTheWorkspaceEdge()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("moma-3a")).ok());
+        const Pose start = document.pose();
+        // far below the workspace: the move fails, names why, and the platform goes as far as
+        // it can — onto the edge, not left where it was
+        auto moved = document.dragHandle(0, Eigen::Vector2d(start.outputs[0], -2000.0));
+        QVERIFY(!moved.ok());
+        QVERIFY(!moved.failure().message.empty());
+        QVERIFY(document.lastMoveWasPartial());
+        const Pose edge = document.pose();
+        QVERIFY(edge.outputs[1] < start.outputs[1] - 50.0);
+        QVERIFY(std::isfinite(edge.outputs[0]) && std::isfinite(edge.outputs[1]));
+        // the pose is a real pose of the design, its sliders inside the stroke
+        auto check = document.mechanism()->solveInverse(edge.outputs);
+        QVERIFY(check.ok());
+        QVERIFY(std::abs(check->inputs[0] - edge.inputs[0]) < 1e-6);
+        // and it sits at a limit: one slider at the end of its stroke (to within the bisection)
+        const double pMax = parameter(document, "p_max");
+        QVERIFY(std::max(edge.inputs[0], edge.inputs[1]) > pMax - 1e-3);
+    }
+
+    void momaSliderBeyondReachStopsAtLastPose()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("moma-3a")).ok());
+        // p₂ = 0 with p₁ = 200: the links cannot meet; p₁ goes as far as it can
+        QVERIFY(document.setVariable(Moma::variableP2, 0.0).ok());
+        auto moved = document.setVariable(Moma::variableP1, 200.0);
+        const Pose pose = document.pose();
+        if (!moved.ok()) {
+            QVERIFY(document.lastMoveWasPartial());
+            QVERIFY(pose.inputs[0] > 100.0 && pose.inputs[0] < 200.0);
+        }
+        QVERIFY(document.mechanism()->solveDirect(pose.inputs).ok());
+    }
+
+    void momaMapClickMovesThePlatform()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("moma-3b")).ok());
+        Coordinates target(2);
+        target << 20.0, -250.0;
+        QVERIFY(document.moveOutputsTo(target).ok());
+        QCOMPARE(document.pose().outputs[0], 20.0);
+        QCOMPARE(document.pose().outputs[1], -250.0);
+    }
+
+    void momaModeSwitchIsExplicitAndUndoable()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("moma-3d")).ok());
+        const auto alternatives = document.modeAlternatives();
+        QVERIFY(!alternatives.empty());
+        const double assembly = parameter(document, "assembly");
+        // moving the sliders never changes the mode
+        for (double p = 0; p <= 200; p += 10) {
+            document.setVariable(Moma::variableP1, p);
+            QCOMPARE(parameter(document, "assembly"), assembly);
+        }
+        const int before = document.undoStack()->count();
+        const ModeAlternative alternative = alternatives.front();
+        QVERIFY(document.switchMode(alternative).ok());
+        QCOMPARE(document.undoStack()->count(), before + 1);
+        for (const auto &[name, value] : alternative.changes)
+            QCOMPARE(parameter(document, name.c_str()), value);
+        QVERIFY(document.pose().inputs.isApprox(alternative.pose.inputs));
+        document.undoStack()->undo();
+        QCOMPARE(parameter(document, "assembly"), assembly);
+    }
+
+    void momaGuideTurnKeepsThePlatform()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("moma-3a")).ok());
+        const Pose before = document.pose();
+        QVERIFY(document.setParameter(QStringLiteral("gamma1"), -3.0).ok());
+        QVERIFY(std::abs(parameter(document, "alpha1") - 267.0 * units::degree) < 1e-12);
+        QVERIFY(document.pose().outputs.isApprox(before.outputs));
+        // an empty workspace is refused and the design kept
+        auto refused = document.setParameter(QStringLiteral("l1"), 5.0);
+        QVERIFY(!refused.ok());
+        QCOMPARE(refused.failure().culprit, std::string("l1"));
+        QCOMPARE(parameter(document, "l1"), 195.0);
     }
 };
 

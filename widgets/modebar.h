@@ -1,0 +1,38 @@
+#pragma once
+/// A row under the joint sliders that names the current working/assembly modes and offers the
+/// other modes reachable at this pose as buttons. The mechanism changes mode only through a
+/// click here or on a ghost in the linkage view — never by itself.
+
+#include <QStringList>
+#include <QWidget>
+
+class QHBoxLayout;
+class QLabel;
+class QPushButton;
+
+namespace pkm {
+
+class ModeBar : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit ModeBar(QWidget *parent = nullptr);
+
+    /// `current` describes the modes the design is in ("β₁ = −1, β₂ = −1, σ = −1"); `labels`
+    /// the alternatives at this pose. Buttons are rebuilt only when the labels change.
+    void setModes(const QString &current, const QStringList &labels);
+    QStringList labels() const { return m_labels; }
+    QPushButton *button(int index) const;
+
+signals:
+    void switchRequested(int index);
+
+private:
+    QLabel *m_current = nullptr;
+    QHBoxLayout *m_buttons = nullptr;
+    QStringList m_labels;
+    QList<QPushButton *> m_buttonList;
+};
+
+} // namespace pkm
