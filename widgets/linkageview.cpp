@@ -1,5 +1,7 @@
 #include "linkageview.h"
 
+#include <QApplication>
+#include <QCursor>
 #include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -16,6 +18,15 @@ namespace {
 constexpr double fitMargin = 24.0; ///< style px between the extent and the widget's edge
 constexpr double minimumScale = 1e-3; ///< px per mm: a 100 m mechanism still fits a screen
 constexpr double maximumScale = 1e3; ///< px per mm: a micrometre is a millimetre on screen
+
+double distanceToSegment(const QPointF &p, const QPointF &a, const QPointF &b)
+{
+    const QPointF ab = b - a, ap = p - a;
+    const double squared = ab.x() * ab.x() + ab.y() * ab.y();
+    const double t = squared > 0.0 ? std::clamp((ap.x() * ab.x() + ap.y() * ab.y()) / squared, 0.0, 1.0) : 0.0;
+    const QPointF offset = ap - t * ab;
+    return std::hypot(offset.x(), offset.y());
+}
 } // namespace
 
 LinkageView::LinkageView(QWidget *parent)
@@ -45,6 +56,69 @@ void LinkageView::setMessage(const QString &message)
         return;
     m_message = message;
     update();
+}
+
+void LinkageView::setGhostScenes(const QList<Scene> &ghosts, const QStringList &labels)
+{
+    m_ghosts = ghosts;
+    m_ghostLabels = labels;
+    m_pressGhost = -1;
+    setHoverGhost(-1);
+    // The first ghosts are fitted like the first scene, unless the user has moved the view
+    // or is dragging: later ones keep the mapping so the drawing does not jump.
+    if (!m_ghostsFitted && !m_ghosts.isEmpty() && m_hasScene) {
+        m_ghostsFitted = true;
+        if (!m_userMoved && m_dragHandle < 0 && !m_panning)
+            fitToView();
+    }
+    if (underMouse() && m_dragHandle < 0 && !m_panning)
+        updateHover(mapFromGlobal(QCursor::pos()));
+    update();
+}
+
+int LinkageView::ghostAt(const QPointF &position) const
+{
+    if (m_ghosts.isEmpty() || handleAt(position) >= 0)
+        return -1;
+    int best = -1;
+    double bestDistance = hitRadius;
+    for (int i = 0; i < int(m_ghosts.size()); ++i) {
+        const Scene &ghost = m_ghosts[i];
+        std::vector<QPointF> points;
+        points.reserve(ghost.joints.size());
+        for (const SceneJoint &joint : ghost.joints)
+            points.push_back(m_mapping.toDevice(joint.position));
+        auto valid = [&points](int joint) { return joint >= 0 && joint < int(points.size()); };
+        double nearest = 1e300;
+        // What a ghost draws: its moving members and joints (not the ground it shares).
+        for (const SceneBar &bar : ghost.bars) {
+            if (bar.kind != BarKind::Ground && valid(bar.from) && valid(bar.to))
+                nearest = std::min(nearest,
+                    distanceToSegment(position, points[std::size_t(bar.from)], points[std::size_t(bar.to)]));
+        }
+        for (const SceneActuator &actuator : ghost.actuators) {
+            if (valid(actuator.from) && valid(actuator.to))
+                nearest = std::min(nearest,
+                    distanceToSegment(position, points[std::size_t(actuator.from)], points[std::size_t(actuator.to)]));
+        }
+        for (std::size_t j = 0; j < points.size(); ++j) {
+            const JointKind kind = ghost.joints[j].kind;
+            if (kind != JointKind::Ground && kind != JointKind::Point)
+                nearest = std::min(nearest, std::hypot(points[j].x() - position.x(), points[j].y() - position.y()));
+        }
+        if (nearest <= bestDistance) {
+            best = i;
+            bestDistance = nearest;
+        }
+    }
+    return best;
+}
+
+QString LinkageView::shownMessage() const
+{
+    if (m_hoverGhost >= 0 && m_dragHandle < 0)
+        return tr("Click to switch to: %1").arg(m_hoverGhost < m_ghostLabels.size() ? m_ghostLabels[m_hoverGhost] : tr("this pose"));
+    return m_message;
 }
 
 void LinkageView::setSceneStyle(const SceneStyle &style)
@@ -110,7 +184,17 @@ void LinkageView::renderTo(QPainter &painter, const QRectF &target) const
 
 void LinkageView::fitToView()
 {
-    m_mapping = fittedMapping(m_scene, QRectF(rect()), m_style);
+    // The scene's extent, and the ghosts where they are now, so they can be clicked.
+    Eigen::AlignedBox3d extent = m_scene.extent;
+    if (!extent.isEmpty()) {
+        for (const Scene &ghost : m_ghosts) {
+            for (const SceneJoint &joint : ghost.joints) {
+                if (joint.position.allFinite())
+                    extent.extend(joint.position);
+            }
+        }
+    }
+    m_mapping = ViewMapping::fit(extent, QRectF(rect()), fitMargin * m_style.pixelSize);
     m_userMoved = false;
     update();
 }
@@ -144,10 +228,17 @@ void LinkageView::paintEvent(QPaintEvent *)
     QPainter painter(this);
     const QRectF area(rect());
     ScenePainter::paintBackground(painter, area, m_mapping, m_style);
+    // Ghosts under the real scene, the hovered one over the others.
+    for (int i = 0; i < int(m_ghosts.size()); ++i) {
+        if (i != m_hoverGhost)
+            ScenePainter::paintGhost(painter, m_ghosts[i], m_mapping, m_style, false);
+    }
+    if (m_hoverGhost >= 0 && m_hoverGhost < int(m_ghosts.size()))
+        ScenePainter::paintGhost(painter, m_ghosts[m_hoverGhost], m_mapping, m_style, true);
     if (m_hasScene)
         ScenePainter::paint(painter, m_scene, m_mapping, m_style, activeHandle());
     ScenePainter::paintScaleBar(painter, area, m_mapping, m_style);
-    ScenePainter::paintMessage(painter, area, m_message, m_style);
+    ScenePainter::paintMessage(painter, area, shownMessage(), m_style);
     painter.end();
     ++m_paintCount;
     m_lastPaintMilliseconds = double(timer.nsecsElapsed()) * 1e-6;
@@ -196,6 +287,9 @@ void LinkageView::mousePressEvent(QMouseEvent *event)
     if (m_dragHandle < 0 && !m_panning
         && (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton
             || event->button() == Qt::RightButton)) {
+        // On a ghost a press may be a click: it pans only once the pointer moves off.
+        m_pressGhost = event->button() == Qt::LeftButton ? ghostAt(position) : -1;
+        m_pressPosition = position;
         m_panning = true;
         m_lastPanPosition = position;
         updateCursor();
@@ -214,6 +308,14 @@ void LinkageView::mouseMoveEvent(QMouseEvent *event)
         return;
     }
     if (m_panning) {
+        if (m_pressGhost >= 0) {
+            const QPointF moved = position - m_pressPosition;
+            if (std::hypot(moved.x(), moved.y()) < QApplication::startDragDistance()) {
+                event->accept();
+                return;
+            }
+            m_pressGhost = -1; // a drag after all: pan from the press
+        }
         const QPointF delta = position - m_lastPanPosition;
         m_lastPanPosition = position;
         if (!delta.isNull()) {
@@ -224,7 +326,7 @@ void LinkageView::mouseMoveEvent(QMouseEvent *event)
         event->accept();
         return;
     }
-    setHoverHandle(handleAt(position));
+    updateHover(position);
     QWidget::mouseMoveEvent(event);
 }
 
@@ -232,18 +334,23 @@ void LinkageView::mouseReleaseEvent(QMouseEvent *event)
 {
     if (m_dragHandle >= 0 && event->button() == Qt::LeftButton) {
         m_dragHandle = -1;
-        setHoverHandle(handleAt(event->position()));
+        updateHover(event->position());
         updateCursor();
         update();
         emit dragFinished();
         event->accept();
         return;
     }
+    const int clicked = event->button() == Qt::LeftButton ? m_pressGhost : -1;
+    if (event->button() == Qt::LeftButton)
+        m_pressGhost = -1;
     if (m_panning && !(event->buttons() & (Qt::LeftButton | Qt::MiddleButton | Qt::RightButton))) {
         m_panning = false;
-        setHoverHandle(handleAt(event->position()));
+        updateHover(event->position());
         updateCursor();
         event->accept();
+        if (clicked >= 0 && clicked < int(m_ghosts.size()))
+            emit ghostClicked(clicked);
         return;
     }
     QWidget::mouseReleaseEvent(event);
@@ -251,21 +358,23 @@ void LinkageView::mouseReleaseEvent(QMouseEvent *event)
 
 void LinkageView::mouseDoubleClickEvent(QMouseEvent *event)
 {
-    if (event->button() == Qt::LeftButton && handleAt(event->position()) < 0) {
+    if (event->button() == Qt::LeftButton && handleAt(event->position()) < 0 && ghostAt(event->position()) < 0) {
         m_panning = false;
         fitToView();
         updateCursor();
         event->accept();
         return;
     }
-    // On a handle a double-click is a press like any other.
+    // On a handle or a ghost a double-click is a press like any other.
     mousePressEvent(event);
 }
 
 void LinkageView::leaveEvent(QEvent *event)
 {
-    if (m_dragHandle < 0)
+    if (m_dragHandle < 0) {
         setHoverHandle(-1);
+        setHoverGhost(-1);
+    }
     QWidget::leaveEvent(event);
 }
 
@@ -290,14 +399,41 @@ void LinkageView::keyPressEvent(QKeyEvent *event)
     event->accept();
 }
 
+void LinkageView::updateHover(const QPointF &position)
+{
+    const int handle = handleAt(position);
+    setHoverHandle(handle);
+    setHoverGhost(handle < 0 ? ghostAt(position) : -1);
+}
+
 void LinkageView::setHoverHandle(int handle)
 {
     if (handle == m_hoverHandle)
         return;
     m_hoverHandle = handle;
-    setToolTip(handle >= 0 ? QString::fromStdString(m_scene.handles[std::size_t(handle)].hint) : QString());
+    updateToolTip();
     updateCursor();
     update();
+}
+
+void LinkageView::setHoverGhost(int ghost)
+{
+    if (ghost == m_hoverGhost)
+        return;
+    m_hoverGhost = ghost;
+    updateToolTip();
+    updateCursor();
+    update();
+}
+
+void LinkageView::updateToolTip()
+{
+    if (m_hoverHandle >= 0 && m_hoverHandle < int(m_scene.handles.size()))
+        setToolTip(QString::fromStdString(m_scene.handles[std::size_t(m_hoverHandle)].hint));
+    else if (m_hoverGhost >= 0)
+        setToolTip(shownMessage());
+    else
+        setToolTip(QString());
 }
 
 void LinkageView::updateCursor()
@@ -306,6 +442,8 @@ void LinkageView::updateCursor()
         setCursor(Qt::ClosedHandCursor);
     else if (m_hoverHandle >= 0)
         setCursor(Qt::OpenHandCursor);
+    else if (m_hoverGhost >= 0)
+        setCursor(Qt::PointingHandCursor);
     else
         unsetCursor();
 }

@@ -2,13 +2,19 @@
 /// The 2D linkage view: shows one Scene on a mm grid, zooms and pans, and turns a drag of a
 /// scene handle into handleDragged() requests. It never changes the pose itself: its owner
 /// answers handleDragged() by solving the mechanism and calling setScene() with the result.
+///
+/// Ghost scenes — the pose in the mechanism's other modes — go faded under the real one; a
+/// hovered ghost is highlighted and named, and a click on one emits ghostClicked(). Switching
+/// is the owner's business too.
 
 #include "scene.h"
 #include "scenepainter.h"
 
 #include <Eigen/Core>
 
+#include <QList>
 #include <QMetaType>
+#include <QStringList>
 #include <QWidget>
 
 // Here, not in core: core stays free of Qt (ARCHITECTURE.md).
@@ -31,6 +37,20 @@ public:
     /// One line at the bottom-left ("θ stops at its upper limit 60°"); empty hides it.
     void setMessage(const QString &message);
     QString message() const { return m_message; }
+
+    /// Ghosts drawn under the scene, faded and without labels, with what a click on each
+    /// switches to ("other assembly mode (same slider positions)"). Empty lists clear them.
+    /// Not drawn by renderTo() and renderScene(). fitToView() takes in the ghosts' joints;
+    /// the first ghosts are fitted unless the user has zoomed or panned.
+    void setGhostScenes(const QList<Scene> &ghosts, const QStringList &labels);
+    const QList<Scene> &ghostScenes() const { return m_ghosts; }
+    /// The ghost within the hit radius of `position` (widget) — of one of its members'
+    /// segments or of one of its joints — or −1. The real scene's handles take precedence.
+    int ghostAt(const QPointF &position) const;
+    /// The hovered ghost, or −1.
+    int hoveredGhost() const { return m_hoverGhost; }
+    /// The message line as drawn: the hovered ghost's "Click to switch to: …", else message().
+    QString shownMessage() const;
 
     void setSceneStyle(const SceneStyle &style);
     const SceneStyle &sceneStyle() const { return m_style; }
@@ -70,6 +90,9 @@ signals:
     /// The pointer dragging `handle` is at `targetMm` (scene plane, mm).
     void handleDragged(int handle, const Eigen::Vector2d &targetMm);
     void dragFinished();
+    /// Ghost `index` (into the list given to setGhostScenes()) was clicked: pressed and
+    /// released without a drag.
+    void ghostClicked(int index);
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -86,6 +109,10 @@ private:
     /// Scales by `factor` keeping the scene point under `anchor` (widget) where it is.
     void zoomAbout(const QPointF &anchor, double factor);
     void setHoverHandle(int handle);
+    void setHoverGhost(int ghost);
+    /// Hover state for the pointer at `position`: a handle first, else a ghost.
+    void updateHover(const QPointF &position);
+    void updateToolTip();
     void updateCursor();
 
     Scene m_scene;
@@ -99,6 +126,13 @@ private:
     int m_dragHandle = -1;
     bool m_panning = false;
     QPointF m_lastPanPosition;
+
+    QList<Scene> m_ghosts;
+    QStringList m_ghostLabels;
+    int m_hoverGhost = -1;
+    int m_pressGhost = -1; ///< the ghost a left press began on, until it becomes a drag
+    bool m_ghostsFitted = false; ///< the first ghosts have been seen
+    QPointF m_pressPosition;
 
     int m_paintCount = 0;
     double m_lastPaintMilliseconds = 0.0;

@@ -108,6 +108,16 @@ void SceneLabels::addAngleLabel(const PendingAngleLabel &label)
     m_angleLabels.push_back(label);
 }
 
+void SceneLabels::addGuideLabel(const PendingGuideLabel &label)
+{
+    m_guideLabels.push_back(label);
+}
+
+void SceneLabels::addFreeLabel(const PendingFreeLabel &label)
+{
+    m_freeLabels.push_back(label);
+}
+
 void SceneLabels::place(const SceneLabel &label)
 {
     m_labels.push_back(label);
@@ -127,13 +137,16 @@ void SceneLabels::dropDimensionedActuatorLabels()
     });
 }
 
-bool SceneLabels::alongMember(int joint, const QPointF &direction) const
+double SceneLabels::memberReach(int joint, const QPointF &direction) const
 {
+    double reach = 0.0;
     if (!valid(joint))
-        return false;
-    return std::any_of(m_rays[std::size_t(joint)].begin(), m_rays[std::size_t(joint)].end(), [&](const Ray &ray) {
-        return dot(ray.direction, direction) > std::cos(1.0 * degree) && ray.reach > 20.0 * m_px;
-    });
+        return reach;
+    for (const Ray &ray : m_rays[std::size_t(joint)]) {
+        if (dot(ray.direction, direction) > std::cos(1.0 * degree))
+            reach = std::max(reach, ray.reach);
+    }
+    return reach;
 }
 
 // -- placing -----------------------------------------------------------------------------
@@ -198,8 +211,11 @@ void SceneLabels::placeAll()
 {
     // Most constrained first: dimension text along members, angle labels near their arcs,
     // bar names (which may slide along their bar), then joint names (anywhere around).
+    for (const PendingFreeLabel &pending : m_freeLabels)
+        placeFirstFree(pending.label, pending.candidates);
     placeMemberLabels(true);
     placeAngleLabels();
+    placeGuideLabels();
     placeMemberLabels(false);
     placeJointLabels();
 }
@@ -264,9 +280,11 @@ void SceneLabels::placeAngleLabels()
         const double middle = pending.start + 0.5 * pending.sweep;
         candidates.clear();
         candidates.push_back(centreAt(middle, 0.0));
+        // Steps of 4°, or of 12 px along a large arc, so the label stays close to it.
+        const double angleStep = std::min(4.0 * degree, 12.0 * m_px / std::max(pending.radius, 1e-9));
         auto stepRound = [&](int first, int last) {
             for (int step = first; step <= last; ++step) {
-                const double delta = step * 4.0 * degree;
+                const double delta = step * angleStep;
                 candidates.push_back(centreAt(end + turn * delta, 0.0));
                 candidates.push_back(centreAt(pending.start - turn * delta, 0.0));
             }
@@ -280,6 +298,40 @@ void SceneLabels::placeAngleLabels()
         placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, m_style.angle}, candidates);
         const QPointF placed = m_labels.back().centre;
         addRay(pending.vertex, placed - v, length(placed - v));
+    }
+}
+
+void SceneLabels::placeGuideLabels()
+{
+    std::vector<QPointF> candidates;
+    for (const PendingGuideLabel &pending : m_guideLabels) {
+        const QSizeF size = textSize(pending.text);
+        const QPointF axis = pending.end - pending.start;
+        const QPointF u = unit(axis);
+        const double gap = 6.0 * m_px;
+        candidates.clear();
+        // Beside the rail on the hatched side, which the mechanism keeps clear of, from the
+        // middle outwards; then on the other side; then past its ends; then farther out.
+        for (double extra : {0.0, 14.0 * m_px}) {
+            for (double side : {1.0, -1.0}) {
+                const QPointF normal = side * pending.outer;
+                const double lift = (side > 0.0 ? pending.outerReach : pending.innerReach) + gap + extra;
+                for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9})
+                    candidates.push_back(pending.start + fraction * axis + (lift + support(normal, size)) * normal);
+            }
+        }
+        for (const QPointF &tip : {pending.end, pending.start}) {
+            const QPointF out = tip == pending.end ? u : -u;
+            candidates.push_back(tip + (gap + 10.0 * m_px + support(out, size)) * out);
+        }
+        for (double extra = 30.0 * m_px; extra <= 120.0 * m_px; extra += 15.0 * m_px) {
+            for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9}) {
+                const QPointF normal = pending.outer;
+                candidates.push_back(
+                    pending.start + fraction * axis + (pending.outerReach + extra + support(normal, size)) * normal);
+            }
+        }
+        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour}, candidates);
     }
 }
 
@@ -318,7 +370,8 @@ void SceneLabels::placeJointLabels()
             if (width > 25.0 * degree)
                 candidates.push_back(centreAt(middle, 0.0));
         }
-        for (double extra : {0.0, 8.0 * m_px, 16.0 * m_px, 26.0 * m_px}) {
+        // The far rings clear a large neighbour such as a zoomed-in carriage.
+        for (double extra : {0.0, 8.0 * m_px, 16.0 * m_px, 26.0 * m_px, 40.0 * m_px, 60.0 * m_px, 90.0 * m_px}) {
             for (int k = 0; k < 24; ++k)
                 candidates.push_back(centreAt(gaps.front().second + k * 15.0 * degree, extra));
         }

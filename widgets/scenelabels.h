@@ -56,6 +56,21 @@ struct PendingAngleLabel {
     double sweep = 0.0;
     QString text;
 };
+/// A label that goes at the first free one of some candidate centres (the first when none is).
+struct PendingFreeLabel {
+    SceneLabel label; ///< its centre is ignored
+    std::vector<QPointF> candidates;
+};
+/// A guide's name: beside the rail, clear of its hatching, upright.
+struct PendingGuideLabel {
+    QPointF start; ///< the rail's ends on its axis, device
+    QPointF end;
+    QPointF outer; ///< unit normal to the hatched side
+    double outerReach = 0.0; ///< how far the drawing reaches from the axis on the hatched side
+    double innerReach = 0.0; ///< and on the other
+    QString text;
+    QColor colour;
+};
 struct PendingMemberLabel {
     int from = 0;
     int to = 0;
@@ -81,12 +96,19 @@ public:
     void addObstacle(const detail::Quad &quad);
     void addMemberLabel(const PendingMemberLabel &label);
     void addAngleLabel(const PendingAngleLabel &label);
+    void addGuideLabel(const PendingGuideLabel &label);
+    /// Placed first of all, before the other pending labels.
+    void addFreeLabel(const PendingFreeLabel &label);
     /// A label whose place is fixed (a dimension's text on its line); it becomes an obstacle.
     void place(const SceneLabel &label);
     /// Drops the pending labels of actuators whose joints a dimension already names.
     void dropDimensionedActuatorLabels();
-    /// Whether a member drawn so far leaves `joint` along the unit device `direction`.
-    bool alongMember(int joint, const QPointF &direction) const;
+    /// How far the farthest-reaching thing drawn so far leaves `joint` along the unit device
+    /// `direction` (0: nothing does).
+    double memberReach(int joint, const QPointF &direction) const;
+
+    /// The size of a label's knock-out box.
+    QSizeF textSize(const QString &text, bool joint = false) const;
 
     // -- once all geometry is drawn -------------------------------------------------------
     /// Places the pending labels, most constrained first.
@@ -103,13 +125,13 @@ private:
 
     bool valid(int joint) const { return joint >= 0 && joint < int(m_points.size()); }
     const QPointF &point(int joint) const { return m_points[std::size_t(joint)]; }
-    QSizeF textSize(const QString &text, bool joint = false) const;
     bool isFree(const detail::Quad &box) const;
     /// Places `label` at the first free candidate centre, or the first one when none is free.
     void placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates);
     double memberHalfWidth(int from, int to, double fraction) const;
     void placeMemberLabels(bool dimensions);
     void placeAngleLabels();
+    void placeGuideLabels();
     void placeJointLabels();
 
     const Scene &m_scene;
@@ -125,6 +147,8 @@ private:
     std::vector<detail::Quad> m_obstacles; ///< what labels must not cover
     std::vector<PendingMemberLabel> m_memberLabels;
     std::vector<PendingAngleLabel> m_angleLabels;
+    std::vector<PendingGuideLabel> m_guideLabels;
+    std::vector<PendingFreeLabel> m_freeLabels;
     std::vector<SceneLabel> m_labels;
 };
 

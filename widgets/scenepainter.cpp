@@ -8,6 +8,7 @@
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPen>
+#include <QPolygonF>
 
 #include <algorithm>
 #include <cmath>
@@ -18,9 +19,10 @@
 // Qt 6) cost ten times more. So bars, the motor, the screw and rotated label boxes are all
 // thick flat-capped lines computed in device coordinates, and the grid is drawn with fillRect.
 //
-// The scene is drawn in three layers: this file draws the members (bars, joints, handles) and
-// the background, grid and scale bar; sceneprimitives.cpp the ground, actuators, dimensions
-// and angles; scenelabels.cpp places and draws all text last, clear of the geometry.
+// The scene is drawn in three layers: this file draws the members (bars, joints, handles),
+// ghosts, and the background, grid and scale bar; sceneprimitives.cpp the ground, guides and
+// carriages, actuators, dimensions and angles; scenelabels.cpp places and draws all text
+// last, clear of the geometry.
 
 namespace pkm {
 
@@ -126,7 +128,10 @@ void drawJoints(const SceneCanvas &canvas)
             break;
         case JointKind::Slider:
             painter.setBrush(Qt::white);
-            painter.drawRect(QRectF(p.x() - 1.6 * r, p.y() - r, 3.2 * r, 2.0 * r));
+            if (canvas.carriageGuide(int(i)))
+                painter.drawEllipse(p, r, r); // the pin on its carriage, drawn with the guide
+            else
+                painter.drawRect(QRectF(p.x() - 1.6 * r, p.y() - r, 3.2 * r, 2.0 * r));
             break;
         case JointKind::Point:
             painter.setBrush(canvas.style.ink);
@@ -201,18 +206,24 @@ void ScenePainter::paint(
     points.reserve(scene.joints.size());
     for (const SceneJoint &joint : scene.joints)
         points.push_back(mapping.toDevice(joint.position));
+    const std::vector<int> jointGuide = jointsOnGuides(scene);
+    const std::vector<GuideShape> guides = guideShapes(scene, points, jointGuide, mapping, style);
     SceneLabels labels(scene, points, mapping, style, painter.device());
-    const SceneCanvas canvas {painter, scene, mapping, style, points, labels};
+    const SceneCanvas canvas {painter, scene, mapping, style, points, labels, guides, jointGuide};
 
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setRenderHint(QPainter::TextAntialiasing, true);
     collectRaysAndJoints(canvas);
+    for (std::size_t g = 0; g < guides.size(); ++g)
+        drawGuide(canvas, int(g));
     for (const SceneActuator &actuator : scene.actuators)
         drawActuator(canvas, actuator);
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (scene.joints[i].kind == JointKind::Ground)
             drawGround(canvas, points[i]);
+        else if (const GuideShape *guide = canvas.carriageGuide(int(i)))
+            drawCarriage(canvas, *guide, points[i]);
     }
     drawBars(canvas);
     for (const SceneDimension &dimension : scene.dimensions)
@@ -223,6 +234,70 @@ void ScenePainter::paint(
     drawJoints(canvas);
     labels.placeAll();
     labels.draw(painter);
+    painter.restore();
+}
+
+void ScenePainter::paintGhost(
+    QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style, bool highlighted)
+{
+    if (!(mapping.scale > 0.0) || !std::isfinite(mapping.scale))
+        return;
+    std::vector<QPointF> points;
+    points.reserve(scene.joints.size());
+    for (const SceneJoint &joint : scene.joints)
+        points.push_back(mapping.toDevice(joint.position));
+    auto valid = [&points](int joint) { return joint >= 0 && joint < int(points.size()); };
+    const std::vector<int> jointGuide = jointsOnGuides(scene);
+    const std::vector<GuideShape> guides = guideShapes(scene, points, jointGuide, mapping, style);
+    const double px = style.pixelSize;
+    const QColor colour = highlighted ? style.handle : style.ghost;
+
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setOpacity(highlighted ? std::min(1.0, 2.0 * style.ghostOpacity) : style.ghostOpacity);
+    // Members (the ground is the real scene's): dashed, a little thinner than the real ones.
+    const double width = (highlighted ? 0.8 : 0.65) * style.barWidth * px;
+    QPen dashed(colour, width, Qt::CustomDashLine, Qt::FlatCap);
+    dashed.setDashPattern({2.4, 1.2}); // in pen widths
+    painter.setPen(dashed);
+    for (const SceneBar &bar : scene.bars) {
+        if (bar.kind != BarKind::Ground && valid(bar.from) && valid(bar.to))
+            painter.drawLine(points[std::size_t(bar.from)], points[std::size_t(bar.to)]);
+    }
+    for (const SceneActuator &actuator : scene.actuators) {
+        if (valid(actuator.from) && valid(actuator.to))
+            painter.drawLine(points[std::size_t(actuator.from)], points[std::size_t(actuator.to)]);
+    }
+    // Joints: hollow pivots; sliders on a guide as their carriage's outline.
+    const double r = 0.85 * style.pivotRadius * px;
+    painter.setPen(QPen(colour, 2.0 * px));
+    painter.setBrush(style.background);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const QPointF p = points[i];
+        switch (scene.joints[i].kind) {
+        case JointKind::Ground:
+        case JointKind::Point:
+            break; // fixed: the real scene shows them
+        case JointKind::Slider: {
+            const int guide = jointGuide[i];
+            if (guide >= 0) {
+                const GuideShape &shape = guides[std::size_t(guide)];
+                const QPointF l = 0.5 * shape.carriageLength * shape.u, w = shape.carriageHalfWidth * shape.outer;
+                painter.setBrush(Qt::NoBrush);
+                painter.drawPolygon(QPolygonF({p - l - w, p + l - w, p + l + w, p - l + w}));
+                painter.setBrush(style.background);
+            } else {
+                painter.drawRect(QRectF(p.x() - 1.6 * r, p.y() - r, 3.2 * r, 2.0 * r));
+            }
+            painter.drawEllipse(p, r, r);
+            break;
+        }
+        case JointKind::Revolute:
+        case JointKind::Spherical:
+            painter.drawEllipse(p, r, r);
+            break;
+        }
+    }
     painter.restore();
 }
 

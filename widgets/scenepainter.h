@@ -60,6 +60,10 @@ struct SceneStyle {
     QColor angle {0x9c, 0x1f, 0x6e}; ///< arcs and their labels
     QColor dimension {0x2b, 0x33, 0x3d};
     QColor handle {0x1e, 0x88, 0xe5};
+    QColor guideFill {0xdc, 0xe2, 0xea}; ///< light steel rail
+    QColor guideOutline {0x4e, 0x59, 0x67}; ///< rail outline, end stops, hatching, its label
+    QColor carriage {0x7b, 0x8a, 0x9e}; ///< slider block on a rail
+    QColor ghost {0x4c, 0x5e, 0x7a}; ///< desaturated blue-grey of the other modes' poses
 
     double groundWidth = 2.5; ///< ground bar pen
     double barWidth = 7.0; ///< crank, coupler, link pen
@@ -69,6 +73,7 @@ struct SceneStyle {
     double fontPixels = 16.0; ///< dimension, angle and bar labels (≈ 12 pt at 96 dpi)
     double jointFontPixels = 18.0; ///< bold joint names
     double minimumScrewWidth = 3.0;
+    double ghostOpacity = 0.35; ///< of a ghost scene; a hovered one is drawn stronger
     bool showHandles = true; ///< rings around draggable joints (off for exported drawings)
 };
 
@@ -79,6 +84,12 @@ public:
     /// none) is the hovered or dragged handle, drawn strongly highlighted.
     static void paint(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
         int activeHandle = -1);
+    /// Draws `scene` as a ghost — another pose the mechanism could take (another assembly or
+    /// working mode) — to go under the real one: faded, blue-grey, links dashed, no ground,
+    /// guides, labels, dimensions, angles or handles. `highlighted` (hovered) draws it
+    /// stronger, in the handle colour.
+    static void paintGhost(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
+        bool highlighted = false);
 
     /// Fills `area` with the background and a mm grid whose spacing (1/2/5×10ⁿ mm) keeps the
     /// lines at least `minimumGridPixels` style pixels apart.

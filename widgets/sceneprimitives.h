@@ -1,8 +1,9 @@
 #pragma once
 /// The engineering-drawing primitives ScenePainter draws a scene with: the ground symbol, the
-/// linear actuator (motor body and lead screw), dimension lines and angle arcs with their
-/// arrowheads. Each one tells the canvas's label layout what it covers, and queues its text
-/// to be placed once all geometry is known. Internal to pkm_widgets.
+/// linear actuator (motor body and lead screw), guides (rails) with their slider carriages,
+/// dimension lines and angle arcs with their arrowheads. Each one tells the canvas's label
+/// layout what it covers, and queues its text to be placed once all geometry is known.
+/// Internal to pkm_widgets.
 
 #include "scene.h"
 #include "scenelabels.h"
@@ -11,11 +12,46 @@
 #include <QColor>
 #include <QPointF>
 
+#include <algorithm>
 #include <vector>
 
 class QPainter;
 
 namespace pkm {
+
+/// A guide (rail) in device units, worked out once per paint. The rail runs past each end of
+/// the stroke by half a carriage, so a carriage at the end of its stroke meets the end stop.
+struct GuideShape {
+    QPointF start; ///< stroke start (SceneGuide::start), device
+    QPointF u {1.0, 0.0}; ///< unit direction start → end, device
+    QPointF outer {0.0, 1.0}; ///< unit normal to the hatched side, away from the mechanism
+    double stroke = 0.0; ///< stroke length, device
+    double half = 0.0; ///< half the rail's width
+    double overrun = 0.0; ///< rail past each end of the stroke
+    double stop = 0.0; ///< thickness of an end stop, along the rail
+    double stopHalf = 0.0; ///< half the end stop's extent across the rail
+    double hatch = 0.0; ///< length of the hatch strokes beyond the rail's outer edge
+    double carriageLength = 0.0;
+    double carriageHalfWidth = 0.0;
+
+    /// A point `along` the rail from the stroke start and `across` towards the outer side.
+    QPointF at(double along, double across) const { return start + along * u + across * outer; }
+    /// The rail's ends, end stops included, along the axis from the stroke start.
+    double railBegin() const { return -overrun - stop; }
+    double railEnd() const { return stroke + overrun + stop; }
+    /// How far from the axis on side `side` (+1 outer, −1 inner) the guide's drawing reaches.
+    double reach(double side) const { return side > 0.0 ? std::max(half + hatch, stopHalf) : stopHalf; }
+};
+
+/// Per joint: the guide a slider or point joint lies on (within a quarter of the rail's width
+/// of its axis, and no farther past the stroke than the rail runs), or −1. Scene units, so
+/// the answer does not depend on the zoom.
+std::vector<int> jointsOnGuides(const Scene &scene);
+/// The guides of `scene` in device units (`points`: its joints, device; `jointGuide` from
+/// jointsOnGuides()). The hatching goes on the side away from the members leaving the
+/// guide's joints (with none, away from the other joints).
+std::vector<GuideShape> guideShapes(const Scene &scene, const std::vector<QPointF> &points,
+    const std::vector<int> &jointGuide, const ViewMapping &mapping, const SceneStyle &style);
 
 /// What every drawing step needs: the painter, the scene with its joints in device units, the
 /// mapping and style, and the label layout that learns what the labels must keep off.
@@ -26,15 +62,24 @@ struct SceneCanvas {
     const SceneStyle &style;
     const std::vector<QPointF> &points; ///< joint positions, device
     SceneLabels &labels;
+    const std::vector<GuideShape> &guides; ///< scene.guides in device units
+    const std::vector<int> &jointGuide; ///< per joint: the guide it lies on, or −1
 
     double px() const { return style.pixelSize; } ///< device units per style pixel
     bool valid(int joint) const { return joint >= 0 && joint < int(points.size()); }
     const QPointF &point(int joint) const { return points[std::size_t(joint)]; }
     void stroke(const QColor &colour, double width, Qt::PenCapStyle cap = Qt::FlatCap) const;
+    /// The guide slider joint `joint` rides on, or null.
+    const GuideShape *carriageGuide(int joint) const;
 };
 
 /// The ground symbol under the pivot at device point `pivot`.
 void drawGround(const SceneCanvas &canvas, const QPointF &pivot);
+/// Guide `guide` of the scene, a ground-fixed rail: light steel fill, outline, end stops,
+/// hatching on its outer side and a dash-dot axis; queues its label beside it.
+void drawGuide(const SceneCanvas &canvas, int guide);
+/// The carriage block of a slider on `shape`, centred at device point `centre`, along the rail.
+void drawCarriage(const SceneCanvas &canvas, const GuideShape &shape, const QPointF &centre);
 /// Motor body at `actuator.from`, lead screw on to `actuator.to`.
 void drawActuator(const SceneCanvas &canvas, const SceneActuator &actuator);
 /// A dimension line with extension lines, arrowheads and its text on the line; a dimension

@@ -1,8 +1,10 @@
 // The 2D linkage view driven like a user would: a real П-joint, mouse presses, moves, wheel
-// turns, and the scene fed back through the mechanism as the document would.
+// turns, and the scene fed back through the mechanism as the document would; MOMA's guides,
+// carriages and ghosts of its other modes.
 
 #include "linkageview.h"
 #include "pjoint.h"
+#include "registry.h"
 
 #include <QApplication>
 #include <QBuffer>
@@ -14,7 +16,9 @@
 #include <QTest>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 using namespace pkm;
 
@@ -47,6 +51,47 @@ void turnWheel(QWidget *widget, const QPointF &position, int angleDelta)
     QWheelEvent wheel(position, widget->mapToGlobal(position), QPoint(), QPoint(0, angleDelta), Qt::NoButton,
         Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(widget, &wheel);
+}
+
+/// Colour distance, summed over the channels.
+int colourDistance(const QColor &a, const QColor &b)
+{
+    return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue());
+}
+
+/// The carriage's mid-tone blue-grey (its body, or its lighter band over the rail): not the
+/// light rail, not the background, not a green link, not the dark outlines.
+bool carriageTone(const QColor &c)
+{
+    const int grey = qGray(c.rgb());
+    return grey >= 100 && grey <= 200 && c.blue() > c.green() && c.blue() > c.red() + 15;
+}
+
+/// A point `along` mm from `origin` in direction `u` and `across` mm to its left.
+Eigen::Vector2d alongAcross(const Eigen::Vector2d &origin, const Eigen::Vector2d &u, double along, double across)
+{
+    return origin + along * u + across * Eigen::Vector2d(-u.y(), u.x());
+}
+
+QImage renderToImage(const Scene &scene, const QSize &size)
+{
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::magenta);
+    QPainter painter(&image);
+    LinkageView::renderScene(painter, QRectF(image.rect()), scene, SceneStyle {});
+    return image;
+}
+
+/// A 30° guide with a slider halfway along it and its reference point at its start, nothing else.
+Scene slantedGuideScene()
+{
+    Scene scene;
+    const Eigen::Vector3d start(0.0, 0.0, 0.0), end(200.0 * std::cos(std::numbers::pi / 6), 200.0 * std::sin(std::numbers::pi / 6), 0.0);
+    scene.guides.push_back({start, end, 20.0, "PO₁"});
+    scene.joints.push_back({0.5 * (start + end), "", JointKind::Slider});
+    scene.joints.push_back({start, "", JointKind::Point});
+    scene.extent = Eigen::AlignedBox3d(Eigen::Vector3d(-60.0, -60.0, 0.0), Eigen::Vector3d(240.0, 160.0, 0.0));
+    return scene;
 }
 
 int darkPixels(const QImage &image, const QPoint &centre, int halfSize)
@@ -88,8 +133,20 @@ private slots:
     void rendersIntoPdf();
     void paintIsCountedAndTimed();
 
+    void guidesAreDrawnUnderTheMechanism();
+    void slidersOnASlantedGuideAreRotatedBlocks();
+    void momaSceneRenders();
+    void ghostsAreDrawnFadedAndNotExported();
+    void ghostHoverNamesItAndClickEmits();
+    void ghostPressThatDragsPans();
+    void handlesTakePrecedenceOverGhosts();
+    void clearingGhosts();
+
 private:
     static void thetaTable();
+    /// MOMA 3a at home in a shown 900 × 800 view, with its other modes as ghosts.
+    struct MomaView;
+    static MechanismPtr moma();
     Pose poseAt(double thetaDegrees) const;
     Scene sceneAt(double thetaDegrees) const { return m_mechanism->scene(poseAt(thetaDegrees)); }
 
@@ -477,6 +534,341 @@ void TestLinkageView::paintIsCountedAndTimed()
     QVERIFY(view.lastPaintMilliseconds() > 0.0);
     // Reported, not asserted: timings belong to bench/, this only shows them in the log.
     qInfo("paint 1600x1000: fastest %.3f ms, mean %.3f ms", fastest, total / repeats);
+}
+
+MechanismPtr TestLinkageView::moma()
+{
+    const Result<MechanismPtr> mechanism = createMechanism("moma", {});
+    return mechanism.ok() ? mechanism.value() : MechanismPtr();
+}
+
+void TestLinkageView::guidesAreDrawnUnderTheMechanism()
+{
+    const Scene scene = slantedGuideScene();
+    Scene bare = scene;
+    bare.guides.clear();
+    const QImage withGuide = renderToImage(scene, QSize(1000, 800));
+    const QImage without = renderToImage(bare, QSize(1000, 800));
+    const ViewMapping mapping = LinkageView::fittedMapping(scene, QRectF(withGuide.rect()), SceneStyle {});
+    const SceneStyle style;
+
+    // On the rail, a quarter along and off its dash-dot axis: the steel fill, not background.
+    const Eigen::Vector2d start = scene.guides[0].start.head<2>(), end = scene.guides[0].end.head<2>();
+    const Eigen::Vector2d u = (end - start).normalized();
+    for (double across : {-5.0, 5.0}) {
+        const QPoint rail = mapping.toDevice(alongAcross(start, u, 50.0, across)).toPoint();
+        QVERIFY2(colourDistance(withGuide.pixelColor(rail), style.guideFill) < 30,
+            qPrintable(withGuide.pixelColor(rail).name()));
+        QVERIFY(colourDistance(without.pixelColor(rail), style.background) < 30);
+    }
+    // End stops, dark, just past both ends of the stroke and the carriage's overrun (0.9 × width).
+    for (const Eigen::Vector2d &stop : {alongAcross(start, u, -19.5, 0.0), alongAcross(end, u, 19.5, 0.0)})
+        QVERIFY(darkPixels(withGuide, mapping.toDevice(stop).toPoint(), 1) >= 3);
+    // The label names the guide somewhere beside it: some dark text pixels near the rail that
+    // the unlabelled drawing lacks.
+    Scene unlabelled = scene;
+    unlabelled.guides[0].label.clear();
+    const QImage noLabel = renderToImage(unlabelled, QSize(1000, 800));
+    QVERIFY(withGuide != noLabel);
+}
+
+void TestLinkageView::slidersOnASlantedGuideAreRotatedBlocks()
+{
+    const Scene scene = slantedGuideScene();
+    const QImage image = renderToImage(scene, QSize(1000, 800));
+    const ViewMapping mapping = LinkageView::fittedMapping(scene, QRectF(image.rect()), SceneStyle {});
+    QVERIFY(mapping.scale > 2.0); // so the block has its mm size, not a minimum in pixels
+    const SceneStyle style;
+    const Eigen::Vector2d centre = scene.joints[0].position.head<2>();
+    const Eigen::Vector2d u = (scene.guides[0].end - scene.guides[0].start).head<2>().normalized();
+    auto colourAt = [&](double along, double across) {
+        return image.pixelColor(mapping.toDevice(alongAcross(centre, u, along, across)).toPoint());
+    };
+
+    // The block is 1.8 × 20 mm long along the guide and 1.3 × 20 mm wide: its sides, off the
+    // rail's band, are carriage-coloured near its corners, which an upright block would miss
+    // (along 14, across 11 is 16.5 mm above the centre here).
+    for (double along : {-14.0, 14.0}) {
+        for (double across : {-11.0, 11.0}) {
+            QVERIFY2(colourDistance(colourAt(along, across), style.carriage) < 40,
+                qPrintable(QStringLiteral("%1, %2: %3").arg(along).arg(across).arg(colourAt(along, across).name())));
+        }
+    }
+    // Along the guide past the block: the rail; across it past the block: not the carriage.
+    QVERIFY(colourDistance(colourAt(24.0, 5.0), style.guideFill) < 30);
+    QVERIFY(colourDistance(colourAt(-24.0, -5.0), style.guideFill) < 30);
+    for (double across : {-17.0, 17.0})
+        QVERIFY(!carriageTone(colourAt(0.0, across)));
+    // An upright block of that size would cover these; the turned one does not.
+    const Eigen::Vector2d x(1.0, 0.0), y(0.0, 1.0);
+    for (const Eigen::Vector2d &corner : {Eigen::Vector2d(centre + 15.0 * x - 12.0 * y), Eigen::Vector2d(centre - 15.0 * x + 12.0 * y)})
+        QVERIFY(!carriageTone(image.pixelColor(mapping.toDevice(corner).toPoint())));
+    // The revolute pin at the centre: a white disc.
+    QCOMPARE(image.pixelColor(mapping.toDevice(centre).toPoint()), QColor(Qt::white));
+
+    // Off the guide, a slider keeps its small upright block: nothing carriage-coloured around it.
+    Scene offGuide = scene;
+    offGuide.joints[0].position += Eigen::Vector3d(-30.0, 60.0, 0.0);
+    const QImage moved = renderToImage(offGuide, QSize(1000, 800));
+    const Eigen::Vector2d away = offGuide.joints[0].position.head<2>();
+    for (double along : {-14.0, 14.0}) {
+        QVERIFY(!carriageTone(moved.pixelColor(mapping.toDevice(alongAcross(away, u, along, 11.0)).toPoint())));
+    }
+}
+
+void TestLinkageView::momaSceneRenders()
+{
+    const MechanismPtr mechanism = moma();
+    QVERIFY(mechanism);
+    const Scene scene = mechanism->scene(mechanism->homePose());
+    QCOMPARE(scene.guides.size(), std::size_t(2));
+    QVERIFY(!scene.dimensions.empty());
+    QVERIFY(!scene.angles.empty());
+    const QImage image = renderToImage(scene, QSize(1200, 900));
+    const ViewMapping mapping = LinkageView::fittedMapping(scene, QRectF(image.rect()), SceneStyle {});
+    const SceneStyle style;
+    for (const SceneGuide &guide : scene.guides) {
+        // A rail, steel-coloured, somewhere across it three quarters of the way along (the
+        // carriage, the axis or a dashed reference line may cover single points).
+        const Eigen::Vector2d start = guide.start.head<2>(), end = guide.end.head<2>();
+        const Eigen::Vector2d u = (end - start).normalized();
+        int steel = 0;
+        for (double across = -0.45 * guide.width; across <= 0.45 * guide.width; across += 0.05 * guide.width) {
+            if (colourDistance(image.pixelColor(mapping.toDevice(alongAcross(start, u, 0.75 * (end - start).norm(), across)).toPoint()),
+                    style.guideFill) < 30)
+                ++steel;
+        }
+        QVERIFY2(steel >= 8, qPrintable(QString::number(steel)));
+    }
+    // The sliders (joints 1 and 2) ride carriages: carriage-coloured pixels near them.
+    for (int joint : {1, 2}) {
+        const QPoint centre = mapping.toDevice(jointPosition(scene, joint)).toPoint();
+        int carriage = 0;
+        for (int dy = -20; dy <= 20; ++dy) {
+            for (int dx = -20; dx <= 20; ++dx) {
+                if (image.rect().contains(centre + QPoint(dx, dy)) && carriageTone(image.pixelColor(centre + QPoint(dx, dy))))
+                    ++carriage;
+            }
+        }
+        QVERIFY2(carriage > 600, qPrintable(QString::number(carriage)));
+    }
+}
+
+struct TestLinkageView::MomaView {
+    MechanismPtr mechanism;
+    Pose pose;
+    QList<Scene> ghosts;
+    QStringList labels;
+    LinkageView view;
+
+    bool setUp()
+    {
+        mechanism = moma();
+        if (!mechanism)
+            return false;
+        pose = mechanism->homePose();
+        for (const ModeAlternative &alternative : mechanism->modeAlternatives(pose)) {
+            if (!alternative.mechanism || alternative.pose.inputs.size() == 0)
+                continue;
+            ghosts.push_back(alternative.mechanism->scene(alternative.pose));
+            labels.push_back(QString::fromStdString(alternative.label));
+        }
+        view.resize(900, 800);
+        view.setScene(mechanism->scene(pose));
+        view.setGhostScenes(ghosts, labels);
+        view.show();
+        return !ghosts.isEmpty() && QTest::qWaitForWindowExposed(&view);
+    }
+
+    /// A point on ghost `index`'s first moving member, `fraction` along it, clear of the
+    /// real scene's handles; a null point when there is none.
+    QPointF onGhost(int index) const
+    {
+        const Scene &ghost = ghosts[index];
+        for (const SceneBar &bar : ghost.bars) {
+            if (bar.kind == BarKind::Ground)
+                continue;
+            for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7}) {
+                const QPointF a = view.mapping().toDevice(ghost.joints[std::size_t(bar.from)].position);
+                const QPointF b = view.mapping().toDevice(ghost.joints[std::size_t(bar.to)].position);
+                const QPointF p = a + fraction * (b - a);
+                if (view.handleAt(p) < 0 && QRectF(view.rect()).adjusted(5, 5, -5, -5).contains(p)
+                    && view.ghostAt(p) == index)
+                    return p;
+            }
+        }
+        return {};
+    }
+};
+
+void TestLinkageView::ghostsAreDrawnFadedAndNotExported()
+{
+    MomaView m;
+    QVERIFY(m.setUp());
+    QCOMPARE(m.view.ghostScenes().size(), m.ghosts.size());
+    // The first ghosts are fitted: their joints are inside the view.
+    for (const Scene &ghost : m.ghosts) {
+        for (const SceneJoint &joint : ghost.joints)
+            QVERIFY(QRectF(m.view.rect()).contains(m.view.mapping().toDevice(joint.position)));
+    }
+    const QPointF on = m.onGhost(0);
+    QVERIFY(!on.isNull());
+    const QImage shown = m.view.grab().toImage();
+    const ViewMapping mapping = m.view.mapping();
+
+    LinkageView plain;
+    plain.resize(900, 800);
+    plain.setScene(m.view.scene());
+    plain.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plain));
+    plain.fitToView();
+    QVERIFY(plain.mapping().scale >= mapping.scale);
+    // Same mapping as the view with ghosts, to compare pixels.
+    plain.setGhostScenes(m.ghosts, m.labels);
+    plain.fitToView();
+    plain.setGhostScenes({}, {});
+    QVERIFY(sameMapping(plain.mapping(), mapping));
+    const QImage bare = plain.grab().toImage();
+    // On the ghost's member: drawn (differs from the bare view), faded (not dark).
+    int differing = 0;
+    for (int dy = -3; dy <= 3; ++dy) {
+        for (int dx = -3; dx <= 3; ++dx) {
+            const QPoint p = on.toPoint() + QPoint(dx, dy);
+            if (shown.pixelColor(p) != bare.pixelColor(p)) {
+                ++differing;
+                QVERIFY(qGray(shown.pixel(p)) > 120);
+            }
+        }
+    }
+    QVERIFY(differing > 0);
+
+    // Export draws the real scene only.
+    QImage withGhosts(800, 600, QImage::Format_ARGB32_Premultiplied), withoutGhosts = withGhosts;
+    {
+        QPainter painter(&withGhosts);
+        m.view.renderTo(painter, QRectF(withGhosts.rect()));
+    }
+    {
+        QPainter painter(&withoutGhosts);
+        plain.renderTo(painter, QRectF(withoutGhosts.rect()));
+    }
+    QCOMPARE(withGhosts, withoutGhosts);
+}
+
+void TestLinkageView::ghostHoverNamesItAndClickEmits()
+{
+    MomaView m;
+    QVERIFY(m.setUp());
+    m.view.setMessage(QStringLiteral("owner's message"));
+    QSignalSpy clicked(&m.view, &LinkageView::ghostClicked);
+    QSignalSpy dragged(&m.view, &LinkageView::handleDragged);
+    const int last = int(m.ghosts.size()) - 1;
+
+    for (int index : {0, last}) {
+        const QPointF on = m.onGhost(index);
+        QVERIFY2(!on.isNull(), qPrintable(QString::number(index)));
+        const ViewMapping before = m.view.mapping();
+        const QImage unhovered = m.view.grab().toImage();
+        moveMouse(&m.view, on, Qt::NoButton);
+        QCOMPARE(m.view.hoveredGhost(), index);
+        QCOMPARE(m.view.activeHandle(), -1);
+        const QString expected = QStringLiteral("Click to switch to: ") + m.labels[index];
+        QCOMPARE(m.view.toolTip(), expected);
+        QCOMPARE(m.view.shownMessage(), expected);
+        QCOMPARE(m.view.message(), QStringLiteral("owner's message")); // not overwritten
+        QCOMPARE(m.view.cursor().shape(), Qt::PointingHandCursor);
+        QVERIFY(m.view.grab().toImage() != unhovered); // highlighted, and the message shown
+
+        QTest::mouseClick(&m.view, Qt::LeftButton, Qt::NoModifier, on.toPoint());
+        QCOMPARE(clicked.count(), 1);
+        QCOMPARE(clicked.takeFirst().at(0).toInt(), index);
+        QVERIFY(sameMapping(m.view.mapping(), before)); // a click does not pan
+        // Nothing else happens: the view keeps its scene and its ghosts.
+        QCOMPARE(m.view.ghostScenes().size(), m.ghosts.size());
+        QCOMPARE(m.view.scene().joints.size(), m.mechanism->scene(m.pose).joints.size());
+
+        // Away from everything: no ghost, the owner's message again.
+        moveMouse(&m.view, QPointF(3.0, 3.0), Qt::NoButton);
+        QCOMPARE(m.view.hoveredGhost(), -1);
+        QVERIFY(m.view.toolTip().isEmpty());
+        QCOMPARE(m.view.shownMessage(), QStringLiteral("owner's message"));
+    }
+    QCOMPARE(dragged.count(), 0);
+}
+
+void TestLinkageView::ghostPressThatDragsPans()
+{
+    MomaView m;
+    QVERIFY(m.setUp());
+    QSignalSpy clicked(&m.view, &LinkageView::ghostClicked);
+    const QPointF on = m.onGhost(0).toPoint(); // where QTest presses
+    QVERIFY(!on.isNull() && m.view.ghostAt(on) == 0);
+    const ViewMapping before = m.view.mapping();
+
+    QTest::mousePress(&m.view, Qt::LeftButton, Qt::NoModifier, on.toPoint());
+    // A jitter within the drag distance neither pans nor cancels the click…
+    moveMouse(&m.view, on + QPointF(1.0, 0.0), Qt::LeftButton);
+    QVERIFY(sameMapping(m.view.mapping(), before));
+    // …a real move pans the whole way from the press, and the release is no click.
+    moveMouse(&m.view, on + QPointF(60.0, 25.0), Qt::LeftButton);
+    QTest::mouseRelease(&m.view, Qt::LeftButton, Qt::NoModifier, (on + QPointF(60.0, 25.0)).toPoint());
+    QCOMPARE(clicked.count(), 0);
+    QVERIFY(distance(m.view.mapping().origin, before.origin + QPointF(60.0, 25.0)) < 1e-9);
+}
+
+void TestLinkageView::handlesTakePrecedenceOverGhosts()
+{
+    MomaView m;
+    QVERIFY(m.setUp());
+    QSignalSpy clicked(&m.view, &LinkageView::ghostClicked);
+    QSignalSpy dragged(&m.view, &LinkageView::handleDragged);
+    QSignalSpy finished(&m.view, &LinkageView::dragFinished);
+
+    // The other assembly mode keeps the slider positions: its Z₁ is under the real Z₁ handle.
+    const int handle = 1;
+    const QPointF z1 = m.view.handlePosition(handle);
+    const Scene &ghost = m.ghosts[0];
+    QVERIFY(distance(m.view.mapping().toDevice(ghost.joints[std::size_t(m.view.scene().handles[handle].joint)].position), z1) < 1.0);
+    QCOMPARE(m.view.ghostAt(z1), -1);
+
+    moveMouse(&m.view, z1, Qt::NoButton);
+    QCOMPARE(m.view.activeHandle(), handle);
+    QCOMPARE(m.view.hoveredGhost(), -1);
+    QCOMPARE(m.view.toolTip(), QString::fromStdString(m.view.scene().handles[handle].hint));
+
+    QTest::mousePress(&m.view, Qt::LeftButton, Qt::NoModifier, z1.toPoint());
+    moveMouse(&m.view, z1 + QPointF(0.0, 30.0), Qt::LeftButton);
+    QTest::mouseRelease(&m.view, Qt::LeftButton, Qt::NoModifier, (z1 + QPointF(0.0, 30.0)).toPoint());
+    QCOMPARE(dragged.count(), 1);
+    QCOMPARE(dragged.at(0).at(0).toInt(), handle);
+    QCOMPARE(finished.count(), 1);
+    QCOMPARE(clicked.count(), 0);
+
+    // A click on the handle without a drag is no ghost click either.
+    QTest::mouseClick(&m.view, Qt::LeftButton, Qt::NoModifier, z1.toPoint());
+    QCOMPARE(clicked.count(), 0);
+}
+
+void TestLinkageView::clearingGhosts()
+{
+    MomaView m;
+    QVERIFY(m.setUp());
+    QSignalSpy clicked(&m.view, &LinkageView::ghostClicked);
+    const QPointF on = m.onGhost(0);
+    QVERIFY(!on.isNull());
+    moveMouse(&m.view, on, Qt::NoButton);
+    QCOMPARE(m.view.hoveredGhost(), 0);
+
+    m.view.setGhostScenes({}, {});
+    QVERIFY(m.view.ghostScenes().isEmpty());
+    QCOMPARE(m.view.hoveredGhost(), -1);
+    QVERIFY(m.view.toolTip().isEmpty());
+    QCOMPARE(m.view.ghostAt(on), -1);
+    moveMouse(&m.view, on + QPointF(1.0, 0.0), Qt::NoButton);
+    QCOMPARE(m.view.hoveredGhost(), -1);
+    QTest::mouseClick(&m.view, Qt::LeftButton, Qt::NoModifier, on.toPoint());
+    QCOMPARE(clicked.count(), 0);
+    m.view.repaint();
 }
 
 QTEST_MAIN(TestLinkageView)
