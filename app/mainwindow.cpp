@@ -9,6 +9,8 @@
 #include "quantityformat.h"
 #include "valuestable.h"
 #include "variablepanel.h"
+#include "workspacemapview.h"
+#include "workspacepanel.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -61,6 +63,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_plots = new QStackedWidget(this);
     m_pjointPlots = new PJointPlots(this);
     m_plots->addWidget(m_pjointPlots);
+    m_workspacePanel = new WorkspacePanel(this);
+    m_plots->addWidget(m_workspacePanel);
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -97,6 +101,15 @@ MainWindow::MainWindow(QWidget *parent)
             showStatus(failureText(solved.failure()), true);
     });
     connect(m_modeBar, &ModeBar::switchRequested, this, &MainWindow::switchMode);
+    connect(m_view, &LinkageView::ghostClicked, this, &MainWindow::switchMode);
+    // A click on the map moves the platform there, through the same document call as a drag.
+    connect(m_workspacePanel->mapView(), &WorkspaceMapView::pointClicked, this, [this](const Eigen::Vector2d &point) {
+        Coordinates outputs(2);
+        outputs << point.x(), point.y();
+        auto moved = m_document->moveOutputsTo(outputs);
+        if (!moved)
+            showStatus(failureText(moved.failure()), true);
+    });
     connect(m_designPanel, &DesignPanel::parameterEdited, this,
             [this](const QString &name, double value, bool continuous) {
                 auto changed = m_document->setParameter(name, value, continuous);
@@ -118,6 +131,7 @@ MainWindow::~MainWindow()
     disconnect(m_designPanel, nullptr, this, nullptr);
     disconnect(m_variables, nullptr, this, nullptr);
     disconnect(m_modeBar, nullptr, this, nullptr);
+    disconnect(m_workspacePanel->mapView(), nullptr, this, nullptr);
     disconnect(m_view, nullptr, this, nullptr);
     disconnect(m_document, nullptr, this, nullptr);
 }
@@ -233,6 +247,9 @@ void MainWindow::onDesignChanged()
     if (const auto *joint = dynamic_cast<const PJoint *>(mechanism.get())) {
         m_pjointPlots->setDesign(joint->design());
         m_plots->setCurrentWidget(m_pjointPlots);
+    } else if (mechanism->planarWorkspace()) {
+        m_workspacePanel->setDesign(mechanism, design.title);
+        m_plots->setCurrentWidget(m_workspacePanel);
     }
     onPoseChanged();
     keepMechanismInView();
@@ -265,6 +282,8 @@ void MainWindow::onPoseChanged()
     m_view->setScene(mechanism->scene(pose));
     if (dynamic_cast<const PJoint *>(mechanism.get()))
         m_pjointPlots->setTheta(pose.outputs[0]);
+    else if (mechanism->planarWorkspace())
+        m_workspacePanel->setPose(pose);
 
     QStringList summary;
     const auto &variables = mechanism->variableInfo();
@@ -301,6 +320,10 @@ void MainWindow::updateModes()
     for (const ModeAlternative &alternative : m_alternatives)
         labels << QString::fromStdString(alternative.label);
     m_modeBar->setModes(current.join(QStringLiteral(", ")), labels);
+    QList<Scene> ghosts;
+    for (const ModeAlternative &alternative : m_alternatives)
+        ghosts << alternative.mechanism->scene(alternative.pose);
+    m_view->setGhostScenes(ghosts, labels);
 }
 
 void MainWindow::switchMode(int index)

@@ -20,6 +20,7 @@ class ModeBar;
 class PJointPlots;
 class ValuesTable;
 class VariablePanel;
+class WorkspacePanel;
 
 class MainWindow : public QMainWindow
 {
@@ -36,6 +37,7 @@ public:
     ValuesTable *valuesTable() const { return m_values; }
     PJointPlots *pjointPlots() const { return m_pjointPlots; }
     ModeBar *modeBar() const { return m_modeBar; }
+    WorkspacePanel *workspacePanel() const { return m_workspacePanel; }
     /// The last message the status bar showed (tests read it after it times out).
     QString lastStatus() const { return m_lastStatus; }
 
@@ -70,6 +72,7 @@ private:
     DesignPanel *m_designPanel = nullptr;
     ValuesTable *m_values = nullptr;
     PJointPlots *m_pjointPlots = nullptr;
+    WorkspacePanel *m_workspacePanel = nullptr;
     QStackedWidget *m_plots = nullptr;
     QSplitter *m_splitter = nullptr;
     QLabel *m_poseLabel = nullptr;

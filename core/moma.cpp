@@ -565,9 +565,9 @@ const ReportLayout &Moma::reportLayout() const
         add(G::Pose, "p2", "p₂", "slider 2 position", units::millimetre, 2);
         add(G::Pose, "x", "x", "platform x", units::millimetre, 2);
         add(G::Pose, "y", "y", "platform y", units::millimetre, 2);
-        add(G::Jacobian, "Jp", "J_p", "J_p = diag(2p_i − 2B_i) (18)", units::millimetre, 2, 2);
-        add(G::Jacobian, "Jx", "J_x", "J_x rows 2(P − Z_i) (20)", units::millimetre, 2, 2);
-        add(G::Jacobian, "J", "J", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)", units::none, 4, 2);
+        add(G::Jacobian, "Jp", "J_p", "J_p = diag(2p_i − 2B_i) (18)", units::millimetre, 1, 2);
+        add(G::Jacobian, "Jx", "J_x", "J_x rows 2(P − Z_i) (20)", units::millimetre, 1, 2);
+        add(G::Jacobian, "J", "J", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)", units::none, 3, 2);
         add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
         add(G::Jacobian, "det_Jp", "det J_p", "0 at an inverse singularity", units::squareMillimetre, 1);
         add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity", units::squareMillimetre, 1);

@@ -96,10 +96,22 @@ void ValuesTable::setPose(const Pose &pose)
     qsizetype widest = 0;
     for (std::size_t i = 0; i < layout.entries.size(); ++i) {
         const ReportEntry &entry = layout.entries[i];
-        QStringList parts;
-        for (int j = 0; j < entry.rows * entry.cols; ++j)
-            parts << formatQuantity(m_values[entry.offset + j], entry.unit, entry.decimals);
-        const QString text = parts.join(QStringLiteral(", "));
+        QString text;
+        if (entry.rows * entry.cols == 1) {
+            text = formatQuantity(m_values[entry.offset], entry.unit, entry.decimals);
+        } else {
+            // a matrix row by row, "[a, b; c, d] mm": the unit once, so it fits the dock
+            QStringList rows;
+            for (int r = 0; r < entry.rows; ++r) {
+                QStringList row;
+                for (int c = 0; c < entry.cols; ++c)
+                    row << formatQuantity(m_values[entry.offset + r * entry.cols + c], units::none, entry.decimals);
+                rows << row.join(QStringLiteral(", "));
+            }
+            text = QLatin1Char('[') + rows.join(QStringLiteral("; ")) + QLatin1Char(']');
+            if (!entry.unit.symbol.empty())
+                text += QLatin1Char(' ') + unitText(entry.unit);
+        }
         widest = std::max(widest, text.size());
         m_items[i]->setText(1, text);
     }

@@ -1,0 +1,47 @@
+#pragma once
+/// The right-hand panel for mechanisms with a planar workspace: the det J / κ map over the
+/// workspace, and a row to overlay another configuration's workspace for comparison — a
+/// preset of the same mechanism or the current design pinned before it is changed.
+
+#include "mechanism.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QPushButton;
+
+namespace pkm {
+
+class WorkspaceMapView;
+
+class WorkspacePanel : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit WorkspacePanel(QWidget *parent = nullptr);
+
+    WorkspaceMapView *mapView() const { return m_map; }
+    QComboBox *comparisonBox() const { return m_compare; }
+    QPushButton *pinButton() const { return m_pin; }
+
+    /// A new design (`title` names it in the comparison list).
+    void setDesign(const MechanismPtr &mechanism, const QString &title);
+    void setPose(const Pose &pose);
+
+private:
+    void fillComparisons();
+    void compareWith(int index);
+    void pinCurrent();
+
+    WorkspaceMapView *m_map = nullptr;
+    QComboBox *m_compare = nullptr;
+    QPushButton *m_pin = nullptr;
+    MechanismPtr m_mechanism;
+    QString m_title;
+    QString m_kind; ///< the mechanism kind the comparison list was filled for
+    MechanismPtr m_pinned;
+    QString m_pinnedTitle;
+};
+
+} // namespace pkm
