@@ -187,6 +187,7 @@ void MainWindow::createActions()
     edit->addAction(redo);
 
     QMenu *presets = menuBar()->addMenu(tr("&Presets"));
+    presets->setToolTipsVisible(true); // the description says where a preset comes from
     QString lastKind;
     for (const PresetInfo &preset : designfile::presets()) {
         if (!lastKind.isEmpty() && preset.kind != lastKind)
@@ -195,6 +196,8 @@ void MainWindow::createActions()
         QAction *action = presets->addAction(preset.title, this, [this, id = preset.id] { openDesign(id); });
         action->setData(preset.id);
         action->setObjectName(QStringLiteral("preset_") + preset.id);
+        if (auto design = designfile::load(preset.id))
+            action->setToolTip(design->description);
     }
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
@@ -242,6 +245,7 @@ void MainWindow::onDesignChanged()
     const MechanismPtr &mechanism = design.mechanism;
     setWindowTitle(tr("%1 — PKM Studio").arg(design.title.isEmpty() ? toQString(mechanism->kind()) : design.title));
     m_designPanel->setMechanism(mechanism);
+    m_designPanel->setNote(design.title, design.description);
     m_variables->setMechanism(mechanism);
     m_values->setMechanism(mechanism);
     if (const auto *joint = dynamic_cast<const PJoint *>(mechanism.get())) {

@@ -59,6 +59,16 @@ DesignPanel::DesignPanel(QWidget *parent)
                                             " border: 1px solid #b3261e; padding: 4px; }"));
     m_message->hide();
     layout->addWidget(m_message);
+    m_note = new QLabel(this);
+    m_note->setWordWrap(true);
+    m_note->setTextFormat(Qt::RichText);
+    m_note->setStyleSheet(QStringLiteral("QLabel { background: #eef3f8; border: 1px solid #c5d3e0; padding: 4px; }"));
+    m_note->hide();
+    connect(m_note, &QLabel::linkActivated, this, [this] {
+        m_noteExpanded = !m_noteExpanded;
+        showNote();
+    });
+    layout->addWidget(m_note);
     m_groups = new QVBoxLayout;
     layout->addLayout(m_groups);
     m_warnings = new QLabel(this);
@@ -67,6 +77,40 @@ DesignPanel::DesignPanel(QWidget *parent)
     m_warnings->hide();
     layout->addWidget(m_warnings);
     layout->addStretch(1);
+}
+
+void DesignPanel::setNote(const QString &title, const QString &note)
+{
+    m_noteTitle = title;
+    m_noteText = note;
+    m_noteExpanded = false;
+    showNote();
+}
+
+void DesignPanel::showNote()
+{
+    if (m_noteText.isEmpty()) {
+        m_note->clear();
+        m_note->hide();
+        return;
+    }
+    // The first sentence says what the design is (and whether it is interpreted); the rest
+    // opens on request, so the fields stay in sight.
+    const qsizetype end = m_noteText.indexOf(QStringLiteral(". "));
+    const bool longer = end > 0 && end + 2 < m_noteText.size();
+    QString text = m_noteExpanded || !longer ? m_noteText : m_noteText.left(end + 1);
+    text = text.toHtmlEscaped();
+    if (longer) {
+        text += QStringLiteral(" <a href=\"#toggle\">%1</a>").arg(m_noteExpanded ? tr("less") : tr("more…"));
+    }
+    m_note->setText(QStringLiteral("<b>%1</b><br>%2").arg(m_noteTitle.toHtmlEscaped(), text));
+    m_note->setToolTip(m_noteText);
+    m_note->show();
+}
+
+QString DesignPanel::note() const
+{
+    return m_noteText;
 }
 
 void DesignPanel::setMechanism(const MechanismPtr &mechanism)

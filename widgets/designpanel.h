@@ -23,6 +23,10 @@ public:
 
     /// Shows the design's values (rebuilding the fields when the kind changes) and clears marks.
     void setMechanism(const MechanismPtr &mechanism);
+    /// A note about the design shown above the fields (a preset's description: where its
+    /// numbers come from, what is interpreted); empty hides it.
+    void setNote(const QString &title, const QString &note);
+    QString note() const;
     /// Marks a field invalid with the reason; the field keeps the text the user typed.
     void markInvalid(const QString &name, const QString &message);
 
@@ -42,11 +46,16 @@ private:
     void step(const QString &name, int steps);
     void showValues();
     void setMark(QLineEdit *field, bool invalid);
+    void showNote();
 
     MechanismPtr m_mechanism;
     QVBoxLayout *m_groups = nullptr;
     QHash<QString, QLineEdit *> m_fields;
     QLabel *m_message = nullptr;
+    QLabel *m_note = nullptr;
+    QString m_noteTitle;
+    QString m_noteText;
+    bool m_noteExpanded = false;
     QLabel *m_warnings = nullptr;
 };
 

@@ -1,0 +1,242 @@
+// MOMA in the main window, driven as a person would: open 3a from the Presets menu, drag the
+// platform across the workspace, switch to 3b, turn a guide and watch the map follow, click
+// the map, switch modes only by clicking — and the CLI gives the same numbers.
+#include "mainwindow.h"
+
+#include "document.h"
+#include "linkageview.h"
+#include "modebar.h"
+#include "moma.h"
+#include "valuestable.h"
+#include "variablepanel.h"
+#include "workspacemapview.h"
+#include "workspacepanel.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+
+#include <qcustomplot.h>
+
+using namespace pkm;
+
+namespace {
+constexpr double deg = units::degree;
+
+double parameter(MainWindow &w, const char *name)
+{
+    return w.document()->mechanism()->parameters().at(name);
+}
+
+/// Press, move and release the left button in a widget (device pixels).
+void drag(QWidget *widget, QPointF from, QPointF to, int steps = 8)
+{
+    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, from.toPoint());
+    for (int i = 1; i <= steps; ++i) {
+        const QPointF at = from + (to - from) * (double(i) / steps);
+        QMouseEvent move(QEvent::MouseMove, at, widget->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QApplication::sendEvent(widget, &move);
+    }
+    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, to.toPoint());
+}
+
+QJsonObject runCli(const QStringList &arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), arguments);
+    if (!process.waitForFinished(60000) || process.exitCode() != 0)
+        return {};
+    return QJsonDocument::fromJson(process.readAllStandardOutput()).object();
+}
+} // namespace
+
+class TestMomaWindow : public QObject
+{
+    Q_OBJECT
+
+private:
+    MainWindow *m_window = nullptr;
+
+    WorkspaceMapView *map() const { return m_window->workspacePanel()->mapView(); }
+
+    /// Waits until the map shows the current design.
+    bool waitForMap()
+    {
+        QSignalSpy ready(map(), &WorkspaceMapView::mapReady);
+        if (!map()->busy() && map()->summary().reachableCells > 0)
+            return true;
+        return ready.wait(10000);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+        m_window = new MainWindow;
+        m_window->resize(1800, 1000);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void opensFromPresetMenu()
+    {
+        QAction *preset = m_window->findChild<QAction *>(QStringLiteral("preset_moma-3a"));
+        QVERIFY(preset);
+        preset->trigger();
+        QCOMPARE(m_window->document()->mechanism()->kind(), std::string_view("moma"));
+        QCOMPARE(parameter(*m_window, "gamma1"), -5 * deg);
+        QVERIFY(m_window->workspacePanel()->isVisible());
+        QVERIFY(waitForMap());
+        QVERIFY(std::abs(map()->area() - 19316.0) < 0.01 * 19316.0);
+        // 3c and 3d are interpreted, and say so where the user picks them
+        for (const char *id : {"preset_moma-3c", "preset_moma-3d"}) {
+            QAction *interpreted = m_window->findChild<QAction *>(QString::fromLatin1(id));
+            QVERIFY(interpreted);
+            QVERIFY(interpreted->text().contains(QStringLiteral("interpreted")));
+        }
+    }
+
+    void dragPlatformAcrossTheWorkspace()
+    {
+        LinkageView *view = m_window->linkageView();
+        const Document *document = m_window->document();
+        const double y0 = document->pose().outputs[1];
+        // handle 0 is the platform: drag it sideways and down, inside the workspace
+        const QPointF start = view->handlePosition(0);
+        const Eigen::Vector2d targetMm(30.0, y0 - 40.0);
+        drag(view, start, view->mapping().toDevice(targetMm));
+        const Eigen::Vector2d reached = document->pose().outputs.head<2>();
+        QVERIFY2((reached - targetMm).norm() < 2.0, qPrintable(QStringLiteral("at (%1, %2)").arg(reached.x()).arg(reached.y())));
+        // the sliders follow (inverse kinematics), the view and the map marker too
+        QCOMPARE(m_window->variablePanel()->spinBox(Moma::variableX)->value(), std::round(reached.x() * 100) / 100);
+        QVERIFY((map()->markerPosition() - reached).norm() < 1e-9);
+        QVERIFY((view->scene().joints[0].position.head<2>() - reached).norm() < 1e-9);
+        // far outside: the platform stops on the edge and the status bar says why
+        drag(view, view->handlePosition(0), view->mapping().toDevice(Eigen::Vector2d(0.0, y0 - 1000.0)));
+        QVERIFY(!m_window->lastStatus().isEmpty());
+        const Eigen::Vector2d edge = document->pose().outputs.head<2>();
+        QVERIFY(std::isfinite(edge.x()) && std::isfinite(edge.y()));
+        QVERIFY(document->mechanism()->solveInverse(document->pose().outputs).ok());
+        QVERIFY2(edge.y() < reached.y() - 20.0, qPrintable(QStringLiteral("edge at (%1, %2)").arg(edge.x()).arg(edge.y())));
+    }
+
+    void switchToThreeBChangesTheMap()
+    {
+        const double area3a = map()->area();
+        const double min3a = map()->summary().min;
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3b")));
+        QVERIFY(waitForMap());
+        QVERIFY(std::abs(map()->area() - 31259.0) < 0.01 * 31259.0);
+        QVERIFY(map()->area() > area3a * 1.3);
+        QVERIFY(map()->summary().min != min3a);
+    }
+
+    void turningAGuideMovesTheMap()
+    {
+        const double before = map()->area();
+        const int generation = map()->generation();
+        QVERIFY(m_window->document()->setParameter(QStringLiteral("gamma1"), 8.0).ok());
+        QVERIFY(waitForMap());
+        QVERIFY(map()->generation() > generation);
+        QVERIFY(std::abs(map()->area() - before) > 50.0);
+        // the map is the one of the new design: compare with the core at the same grid
+        const auto *workspace = m_window->document()->mechanism()->planarWorkspace();
+        const MapGrid grid = squareGrid(workspace->workspaceBounds(), map()->resolution());
+        std::vector<float> values(grid.cells());
+        const MapSummary expected = computeMap(*workspace, MapQuantity::Determinant, grid, values);
+        QCOMPARE(map()->summary().reachableCells, expected.reachableCells);
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(parameter(*m_window, "gamma1"), 5 * deg);
+    }
+
+    void clickOnTheMapMovesTheMechanism()
+    {
+        QVERIFY(waitForMap());
+        QCustomPlot *plot = map()->plot();
+        const Eigen::Vector2d target(-20.0, -260.0);
+        QVERIFY(!std::isnan(map()->valueAt(target)));
+        const QPoint pixel(qRound(plot->xAxis->coordToPixel(target.x())), qRound(plot->yAxis->coordToPixel(target.y())));
+        QTest::mouseClick(plot, Qt::LeftButton, Qt::NoModifier, pixel);
+        const Eigen::Vector2d at = m_window->document()->pose().outputs.head<2>();
+        // within a pixel of the target
+        const double mmPerPixel = std::abs(plot->xAxis->pixelToCoord(1) - plot->xAxis->pixelToCoord(0));
+        QVERIFY2((at - target).norm() < 2 * mmPerPixel, qPrintable(QStringLiteral("at (%1, %2)").arg(at.x()).arg(at.y())));
+    }
+
+    void modesSwitchOnlyOnAClick()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3d")));
+        const double assembly = parameter(*m_window, "assembly");
+        // sliding through the whole stroke never changes the mode
+        for (double p = 0; p <= 200; p += 5) {
+            m_window->variablePanel()->spinBox(Moma::variableP1)->setValue(p);
+            QCOMPARE(parameter(*m_window, "assembly"), assembly);
+        }
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3d")));
+        ModeBar *bar = m_window->modeBar();
+        QVERIFY(!bar->labels().isEmpty());
+        QCOMPARE(m_window->linkageView()->ghostScenes().size(), bar->labels().size());
+        const QString label = bar->labels().front();
+        const int steps = m_window->document()->undoStack()->count();
+        QTest::mouseClick(bar->button(0), Qt::LeftButton);
+        QCOMPARE(m_window->document()->undoStack()->count(), steps + 1);
+        QVERIFY(m_window->lastStatus().contains(label));
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(parameter(*m_window, "assembly"), assembly);
+        // and the same through a ghost in the view
+        QSignalSpy changed(m_window->document(), &Document::designChanged);
+        emit m_window->linkageView()->ghostClicked(0);
+        QCOMPARE(changed.count(), 1);
+        m_window->document()->undoStack()->undo();
+    }
+
+    void compareTwoConfigurations()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
+        QVERIFY(waitForMap());
+        QComboBox *box = m_window->workspacePanel()->comparisonBox();
+        const int index = box->findData(QStringLiteral("moma-3b"));
+        QVERIFY(index > 0);
+        QSignalSpy compared(map(), &WorkspaceMapView::comparisonReady);
+        box->setCurrentIndex(index);
+        emit box->activated(index);
+        QVERIFY(compared.wait(10000));
+        QVERIFY(std::abs(map()->comparisonArea() - 31259.0) < 0.01 * 31259.0);
+        // pin 3a, then turn a guide: the pinned outline stays, the map follows the design
+        QTest::mouseClick(m_window->workspacePanel()->pinButton(), Qt::LeftButton);
+        QVERIFY(compared.wait(10000));
+        QVERIFY(std::abs(map()->comparisonArea() - map()->area()) < 1.0);
+    }
+
+    void cliAgreesWithTheWindow()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
+        QVERIFY(waitForMap());
+        const QJsonObject workspace = runCli({QStringLiteral("workspace"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
+                                              QString::number(map()->resolution()), QStringLiteral("--json")});
+        QVERIFY(!workspace.isEmpty());
+        QVERIFY(std::abs(workspace.value(QStringLiteral("area")).toDouble() - map()->area()) < 1e-6 * map()->area());
+        const Pose pose = m_window->document()->pose();
+        const QJsonObject eval = runCli({QStringLiteral("eval"), QStringLiteral("moma-3a"), QStringLiteral("--json")});
+        const QJsonObject cliPose = eval.value(QStringLiteral("pose")).toObject();
+        QVERIFY(std::abs(cliPose.value(QStringLiteral("x")).toDouble() - pose.outputs[0]) < 1e-9);
+        QVERIFY(std::abs(cliPose.value(QStringLiteral("y")).toDouble() - pose.outputs[1]) < 1e-9);
+        const double det = eval.value(QStringLiteral("jacobian")).toObject().value(QStringLiteral("det_J")).toDouble();
+        QCOMPARE(m_window->valuesTable()->valueText(QStringLiteral("det_J")), QLocale().toString(det, 'f', 4));
+    }
+};
+
+QTEST_MAIN(TestMomaWindow)
+#include "tst_momawindow.moc"
