@@ -15,6 +15,23 @@ const ReportEntry *ReportLayout::find(std::string_view name) const
     return nullptr;
 }
 
+void ReportLayout::add(ReportGroup group, const char *name, const char *symbol, const char *label, Unit unit,
+                       int decimals, int rows, int cols)
+{
+    ReportEntry e;
+    e.group = group;
+    e.name = name;
+    e.symbol = symbol;
+    e.label = label;
+    e.unit = unit;
+    e.rows = rows;
+    e.cols = cols;
+    e.offset = size;
+    e.decimals = decimals;
+    size += rows * cols;
+    entries.push_back(std::move(e));
+}
+
 std::string_view singularityName(SingularityType type)
 {
     switch (type) {

@@ -86,6 +86,9 @@ struct ReportLayout {
     int size = 0; ///< number of doubles the buffer needs
 
     const ReportEntry *find(std::string_view name) const;
+    /// Appends an entry of rows × cols values after the last one.
+    void add(ReportGroup group, const char *name, const char *symbol, const char *label, Unit unit, int decimals,
+             int rows = 1, int cols = 1);
 };
 
 /// The Jacobians of a pose, from the constraint F(x, q) = 0 with inputs q and outputs x:

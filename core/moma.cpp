@@ -36,10 +36,11 @@ double projection(const MomaDesign &design, int leg, const Eigen::Vector2d &plat
 
 double discriminant(const MomaDesign &design, int leg, const Eigen::Vector2d &platform)
 {
+    // B² − C = l² − (distance of P from the guide line)², computed the second way: it does not
+    // cancel two large numbers
     const Eigen::Vector2d r = platform - design.reference[leg];
-    const double B = direction(design.alpha[leg]).dot(r);
-    const double C = r.squaredNorm() - design.length[leg] * design.length[leg];
-    return B * B - C;
+    const double perpendicular = cross(direction(design.alpha[leg]), r);
+    return design.length[leg] * design.length[leg] - perpendicular * perpendicular;
 }
 
 Eigen::Vector2d sliderJoint(const MomaDesign &design, int leg, double p)
@@ -181,10 +182,15 @@ Result<MomaDesign> applyChanges(MomaDesign d, const ParameterSet &changes, const
     take("R2y", d.reference[1].y());
     take("alpha1", d.alpha[0]);
     take("alpha2", d.alpha[1]);
+    // α_i = 270° + γ_i, brought into [0°, 360°) so every γ of its domain gives a valid α
+    auto fromGamma = [](double gamma) {
+        const double alpha = std::fmod(1.5 * pi + gamma, 2 * pi);
+        return alpha < 0 ? alpha + 2 * pi : alpha;
+    };
     if (auto it = changes.find("gamma1"); it != changes.end())
-        d.alpha[0] = 1.5 * pi + it->second;
+        d.alpha[0] = fromGamma(it->second);
     if (auto it = changes.find("gamma2"); it != changes.end())
-        d.alpha[1] = 1.5 * pi + it->second;
+        d.alpha[1] = fromGamma(it->second);
     take("l1", d.length[0]);
     take("l2", d.length[1]);
     take("p_min", d.strokeMin);
@@ -259,6 +265,15 @@ Result<MechanismPtr> Moma::create(const MomaDesign &design)
 
 Result<MechanismPtr> Moma::createFrom(const ParameterSet &parameters)
 {
+    // each given value against its own domain first, so that a bad γ is named as γ, not as α
+    for (const auto &[name, value] : parameters) {
+        for (const ParameterInfo &info : momaParameterInfo()) {
+            if (info.name == name) {
+                if (auto checked = checkDomain(info, value); !checked)
+                    return checked.failure();
+            }
+        }
+    }
     if (auto modes = checkModes(parameters); !modes)
         return modes.failure();
     auto design = applyChanges(MomaDesign{}, parameters, momaParameterInfo());
@@ -388,6 +403,23 @@ Eigen::AlignedBox2d Moma::computeBounds() const
         }
     }
     reached.extend(m_home.outputs.head<2>());
+    // Thin parts of the workspace can slip between grid points: its boundary is made of the
+    // stroke ends and the singular curves, so trace those too.
+    constexpr int edgeSamples = 512;
+    const double stroke = m_design.strokeMax - m_design.strokeMin;
+    for (int k = 0; k <= edgeSamples; ++k) {
+        const double p = m_design.strokeMin + stroke * k / edgeSamples;
+        for (const double end : {m_design.strokeMin, m_design.strokeMax}) {
+            for (const auto &[p1, p2] : {std::pair{p, end}, std::pair{end, p}}) {
+                if (auto pose = direct(p1, p2))
+                    reached.extend(pose->outputs.head<2>());
+            }
+        }
+    }
+    for (const SingularCurve &curve : singularCurves()) {
+        for (const Eigen::Vector2d &point : curve.points)
+            reached.extend(point);
+    }
     const Eigen::Vector2d pad(2.0 * grid.dx(), 2.0 * grid.dy());
     Eigen::AlignedBox2d bounds(reached.min() - pad, reached.max() + pad);
     return bounds.intersection(box);
@@ -476,7 +508,8 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
                                + formatNumber(l) + " mm from guide " + legName(leg) + "."};
         }
         p[leg] = moma::projection(d, leg, platform) + d.branch[leg] * std::sqrt(std::max(0.0, D)); // (7)
-        const double tolerance = 1e-9 * std::max(1.0, d.strokeMax - d.strokeMin);
+        // √D of a D that is zero up to rounding is ~1e-8·l: allow for it at the stroke ends
+        const double tolerance = 1e-7 * std::max({1.0, d.strokeMax - d.strokeMin, l});
         if (p[leg] < d.strokeMin - tolerance || p[leg] > d.strokeMax + tolerance) {
             std::string message = "The platform cannot reach ";
             message.append(where).append(": slider ").append(legName(leg)).append(" would have to be at p")
@@ -546,36 +579,21 @@ const ReportLayout &Moma::reportLayout() const
     static const ReportLayout layout = [] {
         using G = ReportGroup;
         ReportLayout l;
-        auto add = [&](G group, const char *name, const char *symbol, const char *label, Unit unit, int decimals,
-                       int size = 1) {
-            ReportEntry e;
-            e.group = group;
-            e.name = name;
-            e.symbol = symbol;
-            e.label = label;
-            e.unit = unit;
-            e.rows = size;
-            e.cols = size;
-            e.offset = l.size;
-            l.size += size * size;
-            e.decimals = decimals;
-            l.entries.push_back(e);
-        };
-        add(G::Pose, "p1", "p₁", "slider 1 position", units::millimetre, 2);
-        add(G::Pose, "p2", "p₂", "slider 2 position", units::millimetre, 2);
-        add(G::Pose, "x", "x", "platform x", units::millimetre, 2);
-        add(G::Pose, "y", "y", "platform y", units::millimetre, 2);
-        add(G::Jacobian, "Jp", "J_p", "J_p = diag(2p_i − 2B_i) (18)", units::millimetre, 1, 2);
-        add(G::Jacobian, "Jx", "J_x", "J_x rows 2(P − Z_i) (20)", units::millimetre, 1, 2);
-        add(G::Jacobian, "J", "J", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)", units::none, 3, 2);
-        add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
-        add(G::Jacobian, "det_Jp", "det J_p", "0 at an inverse singularity", units::squareMillimetre, 1);
-        add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity", units::squareMillimetre, 1);
-        add(G::Jacobian, "cond", "κ(J)", "condition number of J", units::none, 3);
-        add(G::Derived, "link_angle1", "ψ₁", "angle between link S₁ and guide 1 (90°: inverse singularity)", units::angle, 2);
-        add(G::Derived, "link_angle2", "ψ₂", "angle between link S₂ and guide 2 (90°: inverse singularity)", units::angle, 2);
-        add(G::Derived, "links_angle", "ψ₁₂", "angle between the links (0°, 180°: direct singularity)", units::angle, 2);
-        add(G::Derived, "margin", "m", "distance from the nearest singularity (0 … 1)", units::none, 4);
+        l.add(G::Pose, "p1", "p₁", "slider 1 position", units::millimetre, 2);
+        l.add(G::Pose, "p2", "p₂", "slider 2 position", units::millimetre, 2);
+        l.add(G::Pose, "x", "x", "platform x", units::millimetre, 2);
+        l.add(G::Pose, "y", "y", "platform y", units::millimetre, 2);
+        l.add(G::Jacobian, "Jp", "J_p", "J_p = diag(2p_i − 2B_i) (18)", units::millimetre, 1, 2, 2);
+        l.add(G::Jacobian, "Jx", "J_x", "J_x rows 2(P − Z_i) (20)", units::millimetre, 1, 2, 2);
+        l.add(G::Jacobian, "J", "J", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)", units::none, 3, 2, 2);
+        l.add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
+        l.add(G::Jacobian, "det_Jp", "det J_p", "0 at an inverse singularity", units::squareMillimetre, 1);
+        l.add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity", units::squareMillimetre, 1);
+        l.add(G::Jacobian, "cond", "κ(J)", "condition number of J", units::none, 3);
+        l.add(G::Derived, "link_angle1", "ψ₁", "angle between link S₁ and guide 1 (90°: inverse singularity)", units::angle, 2);
+        l.add(G::Derived, "link_angle2", "ψ₂", "angle between link S₂ and guide 2 (90°: inverse singularity)", units::angle, 2);
+        l.add(G::Derived, "links_angle", "ψ₁₂", "angle between the links (0°, 180°: direct singularity)", units::angle, 2);
+        l.add(G::Derived, "margin", "m", "distance from the nearest singularity (0 … 1)", units::none, 4);
         return l;
     }();
     return layout;

@@ -45,8 +45,11 @@ template <bool Condition, bool Margins>
         const double x = x0 + i * dx;
         const double exa = x - a.rx, exb = x - b.rx;
         const double Ba = a.ax * exa + a.ay * eya, Bb = b.ax * exb + b.ay * eyb;
-        const double Da = Ba * Ba - (exa * exa + eya * eya - a.lengthSquared);
-        const double Db = Bb * Bb - (exb * exb + eyb * eyb - b.lengthSquared);
+        // B² − C = l² − (distance of P from the guide line)²: the same number as (9) without
+        // the cancellation between B² and C
+        const double perpendicularA = a.ax * eya - a.ay * exa, perpendicularB = b.ax * eyb - b.ay * exb;
+        const double Da = a.lengthSquared - perpendicularA * perpendicularA;
+        const double Db = b.lengthSquared - perpendicularB * perpendicularB;
         const double sa = std::sqrt(Da > 0.0 ? Da : 0.0), sb = std::sqrt(Db > 0.0 ? Db : 0.0);
         const double pa = Ba + a.branch * sa, pb = Bb + b.branch * sb;
         const double lax = exa - pa * a.ax, lay = eya - pa * a.ay;
@@ -81,10 +84,10 @@ template <bool Condition, bool Margins>
     }
 }
 
-// The four variants, each built for AVX2 as well as the baseline; the loader picks the best the
+// The four variants, each built for AVX-512 and AVX2 as well as the baseline; the loader picks the best the
 // processor has (GCC function multi-versioning), so one binary runs everywhere.
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-#define PKM_MAP_CLONES [[gnu::target_clones("avx2", "default")]]
+#define PKM_MAP_CLONES [[gnu::target_clones("avx512f", "avx2", "default")]]
 #else
 #define PKM_MAP_CLONES
 #endif

@@ -9,6 +9,7 @@ packages=(
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libeigen3-dev libqcustomplot-dev libgl-dev
     fonts-dejavu-core locales
+    python3-numpy
 )
 
 missing=()
