@@ -96,7 +96,11 @@ void DesignPanel::showNote()
     }
     // The first sentence says what the design is (and whether it is interpreted); the rest
     // opens on request, so the fields stay in sight.
-    const qsizetype end = m_noteText.indexOf(QStringLiteral(". "));
+    // the first full stop that ends a sentence, not an abbreviation ("fig. 3a")
+    qsizetype end = m_noteText.indexOf(QStringLiteral(". "));
+    while (end > 0 && (m_noteText.left(end).endsWith(QLatin1String("fig"), Qt::CaseInsensitive)
+                       || m_noteText.left(end).endsWith(QLatin1String("eq"), Qt::CaseInsensitive)))
+        end = m_noteText.indexOf(QStringLiteral(". "), end + 2);
     const bool longer = end > 0 && end + 2 < m_noteText.size();
     QString text = m_noteExpanded || !longer ? m_noteText : m_noteText.left(end + 1);
     text = text.toHtmlEscaped();
