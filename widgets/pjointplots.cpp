@@ -1,5 +1,7 @@
 #include "pjointplots.h"
 
+#include "plotfont.h"
+
 #include "pjointcurves.h"
 
 #include <qcustomplot.h>
@@ -44,14 +46,6 @@ constexpr QRgb weakFillRgb = 0xf6e0e0, weakEdgeRgb = 0xd9a0a0;
 
 constexpr double tickPoints = 11, labelPoints = 12, titlePoints = 13, subtitlePoints = 10.5, legendPoints = 11,
                  cursorPoints = 11;
-
-QFont fontOf(const QFont &base, double points, bool bold = false)
-{
-    QFont font(base);
-    font.setPointSizeF(points);
-    font.setBold(bold);
-    return font;
-}
 
 /// Degree tick labels ("−45°") at a fixed step, for θ and for the φ, μ axes.
 class DegreeTicker : public QCPAxisTickerFixed

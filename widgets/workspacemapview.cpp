@@ -1,5 +1,6 @@
 #include "workspacemapview.h"
 
+#include "plotfont.h"
 #include "quantityformat.h"
 
 #include <qcustomplot.h>
@@ -61,14 +62,6 @@ constexpr QRgb markerRgb = 0x202020;
 
 constexpr double tickPoints = 11, labelPoints = 12, titlePoints = 13, legendPoints = 11, controlPoints = 11,
                  messagePoints = 14;
-
-QFont fontOf(const QFont &base, double points, bool bold = false)
-{
-    QFont font(base);
-    font.setPointSizeF(points);
-    font.setBold(bold);
-    return font;
-}
 
 /// "−46.3", "1.34", "1.41·10⁵": three significant digits, a real minus sign, powers of ten
 /// written out for very large and very small magnitudes.

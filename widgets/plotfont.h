@@ -1,0 +1,16 @@
+#pragma once
+/// Fonts of the plots: a base font at a size in points, for the classroom projector.
+
+#include <QFont>
+
+namespace pkm {
+
+inline QFont fontOf(const QFont &base, double points, bool bold = false)
+{
+    QFont font(base);
+    font.setPointSizeF(points);
+    font.setBold(bold);
+    return font;
+}
+
+} // namespace pkm
