@@ -293,6 +293,8 @@ std::string evalText(const PreparedDesign &prepared)
         }
     };
     addGroup(ReportGroup::Pose, "Pose");
+    for (const auto &[key, word] : mechanism.poseText(prepared.pose))
+        table.cells({key, word, "", key == "mode" ? "form / mode of the pose" : ""});
     addGroup(ReportGroup::Jacobian, "Jacobian");
     addGroup(ReportGroup::Derived, "Derived");
     table.heading("Singularity");
@@ -383,7 +385,7 @@ std::string evalJson(const Mechanism &mechanism, const Pose &pose)
     json.beginObject();
     json.key("mechanism").string(mechanism.kind());
     writeParametersJson(json, mechanism, false);
-    writeReportJson(json, layout, values, singularity);
+    writeReportJson(json, layout, values, singularity, mechanism.poseText(pose));
     json.endObject();
     return out;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -217,9 +218,14 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             const std::string name = value.substr(0, equals);
             const std::string_view number = std::string_view(value).substr(equals + 1);
             const auto parsed = parseNumber(number);
-            if (!parsed)
+            const bool word = !number.empty()
+                && std::all_of(number.begin(), number.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+            if (!parsed && !word)
                 return notANumber(context, name, number);
-            invocation.sets.push_back({value, name, *parsed});
+            if (parsed)
+                invocation.sets.push_back({value, name, *parsed, {}});
+            else
+                invocation.sets.push_back({value, name, std::nan(""), std::string(number)});
         } else if (option == "--var") {
             invocation.var = value;
         } else if (option == "--grid") {

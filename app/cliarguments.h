@@ -27,6 +27,9 @@ struct Setting {
     std::string text; ///< as typed, "theta=30", for messages
     std::string name;
     double value = 0.0;
+    /// The value when it is not a number ("X" in mode=X): a mode's name, resolved against the
+    /// design's parameters (value is NaN then).
+    std::string word;
 };
 
 struct Invocation {

@@ -2,6 +2,8 @@
 
 #include <QString>
 
+#include <algorithm>
+
 #include <map>
 #include <optional>
 
@@ -24,6 +26,8 @@ std::optional<Failure> mixedPoseSets(const Mechanism &mechanism, const std::vect
     const Setting *output = nullptr;
     for (const Setting &setting : poseSets) {
         const auto index = static_cast<std::size_t>(mechanism.variableIndex(setting.name));
+        if (mechanism.variableInfo()[index].independent)
+            continue; // an axis carrying the mechanism goes with either
         const Setting *&first = mechanism.variableInfo()[index].actuated ? input : output;
         if (!first)
             first = &setting;
@@ -89,7 +93,24 @@ Result<PreparedDesign> prepareDesign(const std::string &origin, const std::vecto
     std::map<std::string, std::string> contexts;
     for (const Setting &setting : sets) {
         const std::string context = "--set " + setting.text;
-        if (const ParameterInfo *info = findParameter(*prepared.mechanism, setting.name)) {
+        const ParameterInfo *info = findParameter(*prepared.mechanism, setting.name);
+        if (!setting.word.empty() && (info || prepared.mechanism->variableIndex(setting.name) >= 0)) {
+            const auto choice = info ? std::find_if(info->choices.begin(), info->choices.end(),
+                                           [&](const auto &c) { return c.first == setting.word; })
+                                     : std::vector<std::pair<std::string, double>>::const_iterator {};
+            if (!info || choice == info->choices.end()) {
+                std::string names;
+                if (info) {
+                    for (const auto &c : info->choices)
+                        names.append(names.empty() ? "" : " or ").append(c.first);
+                }
+                return usageFailure(setting.name,
+                    context + ": '" + setting.word + "' is not a number"
+                        + (names.empty() ? std::string(".") : " nor a value of " + setting.name + " (" + names + ")."));
+            }
+            changes[setting.name] = choice->second;
+            contexts[setting.name] = context;
+        } else if (info) {
             changes[setting.name] = info->unit.fromDisplay(setting.value);
             contexts[setting.name] = context;
         } else if (prepared.mechanism->variableIndex(setting.name) >= 0) {

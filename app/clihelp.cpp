@@ -120,11 +120,13 @@ constexpr std::string_view workspaceHelp
     = R"(Usage: pkm workspace DESIGN [--grid K] [--set NAME=VALUE]... [--json] [-o FILE.png|FILE.svg]
 
 Computes the reachable workspace of a mechanism whose output is a point of the plane (MOMA's
-platform): every cell of a grid of square cells over the workspace bounds that the design
-reaches in its current working and assembly modes, with every actuated input inside its
-range. Prints the area (mm²), the bounds of the reachable cells, the grid and the time, and
-the area of every combination of the design's ±1 mode parameters (MOMA: branch1, branch2,
-assembly); a combination that has no workspace has area 0 and a note.
+platform, the O-X glide's platform centre): every cell of a grid of square cells over the
+workspace bounds that the design reaches in its current working and assembly modes, with
+every actuated input inside its range. Prints the area (mm²), the bounds of the reachable
+cells, the grid and the time, the area of every combination of the design's ±1 mode
+parameters (MOMA: branch1, branch2, assembly; O-X glide: mode O or X) and the area of their
+union; a combination that has no workspace has area 0 and a note. For the O-X glide, whose
+planar mechanism rides the z axis, also the volume: the area extruded over the z travel.
 
   --grid K            K cells along the longer side of the workspace bounds, from 10 to
                       4000 (default 400); a finer grid follows the boundary more closely
@@ -133,7 +135,9 @@ assembly); a combination that has no workspace has area 0 and a note.
                        "x_max", "y_min", "y_max"}, "grid": {"resolution", "columns", "rows",
                        "x_min", "x_max", "y_min", "y_max"}, "cell_size", "reachable_cells",
                        "modes": [{MODE: -1|1..., "area", "reachable_cells", "current",
-                       "note"}...], "seconds"}; "area" is the design's own (current modes)
+                       "note"}...], "area_union", "seconds"}; "area" is the design's own
+                      (current modes); the O-X glide adds "area_O", "area_X", "travel",
+                      "volume" and "volume_union" (mm³)
   -o FILE.png         a picture of the workspace of the current modes: the reachable cells
                       light blue on white with a dark outline, y up, at least 400 pixels
   -o FILE.svg         its outline as SVG paths, in mm (viewBox), y up

@@ -25,7 +25,8 @@ void writeEntryJson(JsonWriter &json, const ReportEntry &entry, std::span<const 
     json.endArray();
 }
 
-void writeGroupJson(JsonWriter &json, const ReportLayout &layout, ReportGroup group, std::span<const double> values)
+void writeGroupJson(JsonWriter &json, const ReportLayout &layout, ReportGroup group, std::span<const double> values,
+    const std::vector<std::pair<std::string, std::string>> &text = {})
 {
     json.key(reportGroupKey(group));
     json.beginObject();
@@ -33,6 +34,8 @@ void writeGroupJson(JsonWriter &json, const ReportLayout &layout, ReportGroup gr
         if (entry.group == group)
             writeEntryJson(json, entry, values);
     }
+    for (const auto &[key, word] : text)
+        json.key(key).string(word);
     json.endObject();
 }
 
@@ -76,11 +79,11 @@ void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inli
     json.endObject();
 }
 
-void writeReportJson(
-    JsonWriter &json, const ReportLayout &layout, std::span<const double> values, const Singularity &singularity)
+void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<const double> values,
+    const Singularity &singularity, const std::vector<std::pair<std::string, std::string>> &poseText)
 {
     for (ReportGroup group : groupsBeforeSingularity)
-        writeGroupJson(json, layout, group, values);
+        writeGroupJson(json, layout, group, values, group == ReportGroup::Pose ? poseText : std::vector<std::pair<std::string, std::string>> {});
     json.key("singularity");
     json.beginObject();
     json.key("type").string(singularityName(singularity.type));

@@ -195,6 +195,17 @@ std::string signText(double value)
     return text;
 }
 
+/// A mode value as the user names it: its choice name ("X") where the parameter has names,
+/// else "+1" or "-1".
+std::string modeValueText(const ParameterInfo &info, double value)
+{
+    for (const auto &[name, choice] : info.choices) {
+        if (choice == value)
+            return name;
+    }
+    return signText(value);
+}
+
 /// "branch1 = -1, branch2 = -1, assembly = +1"; empty without mode parameters.
 std::string modeText(const std::vector<const ParameterInfo *> &modes, const ParameterSet &parameters)
 {
@@ -203,7 +214,8 @@ std::string modeText(const std::vector<const ParameterInfo *> &modes, const Para
         const auto it = parameters.find(info->name);
         if (it == parameters.end())
             continue;
-        text += (text.empty() ? "" : ", ") + info->name + " = " + signText(info->unit.toDisplay(it->second));
+        text.append(text.empty() ? "" : ", ").append(info->name).append(" = ");
+        text.append(modeValueText(*info, info->unit.toDisplay(it->second)));
     }
     return text;
 }
@@ -248,6 +260,71 @@ std::vector<ModeArea> modeAreas(const Mechanism &mechanism, const std::vector<co
         areas.push_back(std::move(mode));
     }
     return areas;
+}
+
+/// The union of the workspaces of every mode combination, counted on one grid over all of
+/// them: the region the mechanism reaches when it may change mode (the O-X glide's O and X).
+struct UnionArea {
+    double area = 0.0;
+    std::size_t reachableCells = 0;
+};
+
+UnionArea unionArea(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes, int resolution)
+{
+    std::vector<MechanismPtr> designs;
+    const std::size_t count = std::size_t {1} << modes.size();
+    for (std::size_t combination = 0; combination < count; ++combination) {
+        ParameterSet changes;
+        for (std::size_t i = 0; i < modes.size(); ++i) {
+            const bool plus = (combination >> (modes.size() - 1 - i)) & 1u;
+            changes[modes[i]->name] = modes[i]->unit.fromDisplay(plus ? 1.0 : -1.0);
+        }
+        if (auto changed = mechanism.withParameters(changes); changed && (*changed)->planarWorkspace())
+            designs.push_back(*changed);
+    }
+    Eigen::AlignedBox2d box;
+    for (const MechanismPtr &design : designs)
+        box.extend(design->planarWorkspace()->workspaceBounds());
+    UnionArea result;
+    if (designs.empty() || box.isEmpty())
+        return result;
+    const MapGrid grid = squareGrid(box, resolution);
+    std::vector<float> values(grid.cells());
+    std::vector<char> reached(grid.cells(), 0);
+    for (const MechanismPtr &design : designs) {
+        computeMap(*design->planarWorkspace(), MapQuantity::Determinant, grid, values);
+        for (std::size_t i = 0; i < values.size(); ++i)
+            reached[i] = static_cast<char>(reached[i] | (reachable(values[i]) ? 1 : 0));
+    }
+    result.reachableCells = static_cast<std::size_t>(std::count(reached.begin(), reached.end(), 1));
+    result.area = static_cast<double>(result.reachableCells) * grid.cellArea();
+    return result;
+}
+
+/// The travel (mm) of the axis that carries the whole mechanism, if it has one.
+std::optional<double> carriedTravel(const Mechanism &mechanism)
+{
+    const auto &variables = mechanism.variableInfo();
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        if (variables[i].independent) {
+            const Interval range = mechanism.variableRange(static_cast<int>(i));
+            return range.max - range.min;
+        }
+    }
+    return std::nullopt;
+}
+
+/// For a single mode parameter with named values (the O-X glide's mode): "area_O", "area_X".
+std::vector<std::pair<std::string, double>> namedModeAreas(
+    const std::vector<const ParameterInfo *> &modes, const std::vector<ModeArea> &areas)
+{
+    std::vector<std::pair<std::string, double>> named;
+    if (modes.size() != 1 || modes.front()->choices.empty())
+        return named;
+    for (const ModeArea &mode : areas)
+        named.emplace_back(modeValueText(*modes.front(), mode.values.front()), mode.area);
+    std::sort(named.begin(), named.end());
+    return named;
 }
 
 // -- colours and pictures ------------------------------------------------------------------
@@ -462,6 +539,8 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
     const std::vector<const ParameterInfo *> modes = modeParameters(mechanism);
     std::vector<float> buffer;
     const std::vector<ModeArea> areas = modeAreas(mechanism, modes, map.summary, context.resolution, buffer);
+    const UnionArea united = modes.empty() ? UnionArea {} : unionArea(mechanism, modes, context.resolution);
+    const auto named = namedModeAreas(modes, areas);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
     const std::string suffix = modeSuffix(mechanism);
@@ -497,12 +576,28 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
         json.endObject();
         writeGridJson(json, map.grid, context.resolution);
         json.key("reachable_cells").integer(static_cast<std::int64_t>(map.summary.reachableCells));
+        for (const auto &[name, area] : named)
+            json.key("area_" + name).number(area);
+        if (!modes.empty())
+            json.key("area_union").number(united.area);
+        // a mechanism carried by an axis (the O-X glide on z): its 3D workspace is the planar
+        // one extruded over that axis' travel
+        if (const auto travel = carriedTravel(mechanism)) {
+            json.key("travel").number(*travel);
+            json.key("volume").number(map.summary.area * *travel);
+            if (!modes.empty())
+                json.key("volume_union").number(united.area * *travel);
+        }
         json.key("modes");
         json.beginArray();
         for (const ModeArea &mode : areas) {
             json.beginObject(true);
-            for (std::size_t i = 0; i < modes.size(); ++i)
-                json.key(modes[i]->name).number(mode.values[i]);
+            for (std::size_t i = 0; i < modes.size(); ++i) {
+                if (modes[i]->choices.empty())
+                    json.key(modes[i]->name).number(mode.values[i]);
+                else
+                    json.key(modes[i]->name).string(modeValueText(*modes[i], mode.values[i]));
+            }
             json.key("area").number(mode.area);
             json.key("reachable_cells").integer(static_cast<std::int64_t>(mode.reachableCells));
             json.key("current").boolean(mode.current);
@@ -519,6 +614,10 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
         TextTable table({false, true, false});
         table.heading("\nWorkspace" + suffix);
         table.cells({"area", fixedText(map.summary.area, 1), "mm²"});
+        if (const auto travel = carriedTravel(mechanism)) {
+            table.cells({"volume", fixedText(map.summary.area * *travel, 0), "mm³"});
+            table.cells({"", "(the area extruded over the travel of " + fixedText(*travel, 1) + " mm)", ""});
+        }
         addGridRows(table, map.grid, context.resolution, box, map.summary.reachableCells);
         table.cells({"time", fixedText(seconds, 3), "s"});
         table.render(out);
@@ -536,13 +635,14 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             modeTable.cells(header);
             for (const ModeArea &mode : areas) {
                 std::vector<std::string> row;
-                for (double value : mode.values)
-                    row.push_back(signText(value));
+                for (std::size_t i = 0; i < modes.size(); ++i)
+                    row.push_back(modeValueText(*modes[i], mode.values[i]));
                 row.push_back(fixedText(mode.area, 1));
                 row.push_back(mode.current ? "current" : mode.empty ? "no workspace in this mode" : mode.note);
                 modeTable.cells(row);
             }
             modeTable.render(out);
+            out.append("Union of the modes: ").append(fixedText(united.area, 1)).append(" mm²\n");
         }
         if (const auto &path = context.invocation.output)
             out += "\nWrote " + *path + '\n';

@@ -1,5 +1,7 @@
 #include "designfile.h"
 
+#include <algorithm>
+
 #include "quantityformat.h"
 #include "registry.h"
 
@@ -71,6 +73,16 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
         const ParameterInfo *info = findParameter(**defaults, it.key());
         if (!info)
             return fileFailure(origin, QStringLiteral("%1: unknown parameter '%2'.").arg(origin, it.key()));
+        if (it.value().isString()) {
+            // a mode given by its name ("mode": "X")
+            const std::string word = it.value().toString().toStdString();
+            const auto choice = std::find_if(info->choices.begin(), info->choices.end(),
+                                             [&](const auto &c) { return c.first == word; });
+            if (choice == info->choices.end())
+                return fileFailure(origin, QStringLiteral("%1: parameter '%2' is not a number.").arg(origin, it.key()));
+            values[info->name] = choice->second;
+            continue;
+        }
         if (!it.value().isDouble())
             return fileFailure(origin, QStringLiteral("%1: parameter '%2' is not a number.").arg(origin, it.key()));
         values[info->name] = info->unit.fromDisplay(it.value().toDouble());
@@ -213,7 +225,7 @@ Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &curre
         const double value = variables[index].unit.fromDisplay(display);
         if (index < inputs) {
             q[index] = value;
-            anyInput = true;
+            anyInput = anyInput || !variables[index].independent;
         } else {
             x[index - inputs] = value;
             anyOutput = true;
@@ -223,9 +235,11 @@ Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &curre
         return Failure{FailureKind::InvalidParameter, values.front().first.toStdString(),
                        "Give either the actuated inputs or the outputs of the pose, not both."};
     }
-    if (anyInput)
+    if (anyInput || !anyOutput)
         return mechanism.solveDirect(q, &current);
-    return mechanism.solveInverse(x, &current);
+    Pose near = current; // with the independent axes (z) already moved
+    near.inputs = q;
+    return mechanism.solveInverse(x, &near);
 }
 
 } // namespace designfile

@@ -1,10 +1,11 @@
-// pkm-studio: the desktop application. Usage: pkm-studio [PRESET-ID | DESIGN.pkm.json]
+// pkm-studio: the desktop application. Usage: pkm-studio [--3d] [PRESET-ID | DESIGN.pkm.json]
 #include "document.h"
 #include "mainwindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QScreen>
+#include <QTabWidget>
 
 #include <cstdio>
 
@@ -29,6 +30,8 @@ int main(int argc, char *argv[])
     parser.addPositionalArgument(QStringLiteral("design"),
                                  QStringLiteral("Preset id (see 'pkm list') or design file to open; "
                                                 "default: pjoint-prototype."));
+    const QCommandLineOption show3d(QStringLiteral("3d"), QStringLiteral("Start with the 3D view of the linkage."));
+    parser.addOption(show3d);
     parser.process(app);
 
     pkm::MainWindow window;
@@ -39,6 +42,8 @@ int main(int argc, char *argv[])
         // Opening at start is not an edit the user should be able to undo.
         window.document()->undoStack()->clear();
     }
+    if (parser.isSet(show3d))
+        window.viewTabs()->setCurrentIndex(1);
     // First start: fill the screen (also where no window manager honours "maximized");
     // later starts restore the remembered geometry, maximized or not.
     if (!window.restoredGeometry()) {

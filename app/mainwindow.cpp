@@ -3,7 +3,10 @@
 #include "designpanel.h"
 #include "document.h"
 #include "linkageview.h"
+#include "linkageview3d.h"
 #include "modebar.h"
+#include "oxglide.h"
+#include "oxglidepanel.h"
 #include "pjoint.h"
 #include "pjointplots.h"
 #include "quantityformat.h"
@@ -26,6 +29,7 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
@@ -56,7 +60,16 @@ MainWindow::MainWindow(QWidget *parent)
     auto *left = new QWidget(this);
     auto *leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
-    leftLayout->addWidget(m_view, 1);
+    // the linkage in 2D and 3D, one tab each; the sliders below drive both
+    m_viewTabs = new QTabWidget(left);
+    m_viewTabs->setObjectName(QStringLiteral("viewTabs"));
+    m_viewTabs->setDocumentMode(true);
+    m_view3d = new View3DPanel(m_viewTabs);
+    m_viewTabs->addTab(m_view, tr("2D"));
+    m_viewTabs->addTab(m_view3d, tr("3D"));
+    m_viewTabs->setTabToolTip(1, tr("The mechanism in 3D: drag to turn it, right-drag to pan, wheel to zoom"));
+    connect(m_viewTabs, &QTabWidget::currentChanged, this, [this] { update3d(false); });
+    leftLayout->addWidget(m_viewTabs, 1);
     leftLayout->addWidget(m_variables);
     leftLayout->addWidget(m_modeBar);
 
@@ -65,6 +78,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_plots->addWidget(m_pjointPlots);
     m_workspacePanel = new WorkspacePanel(this);
     m_plots->addWidget(m_workspacePanel);
+    m_oxglidePanel = new OxGlidePanel(m_document, this);
+    m_plots->addWidget(m_oxglidePanel);
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -103,13 +118,17 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_modeBar, &ModeBar::switchRequested, this, &MainWindow::switchMode);
     connect(m_view, &LinkageView::ghostClicked, this, &MainWindow::switchMode);
     // A click on the map moves the platform there, through the same document call as a drag.
-    connect(m_workspacePanel->mapView(), &WorkspaceMapView::pointClicked, this, [this](const Eigen::Vector2d &point) {
+    const auto moveTo = [this](const Eigen::Vector2d &point) {
         Coordinates outputs(2);
         outputs << point.x(), point.y();
         auto moved = m_document->moveOutputsTo(outputs);
         if (!moved)
             showStatus(failureText(moved.failure()), true);
-    });
+    };
+    connect(m_workspacePanel->mapView(), &WorkspaceMapView::pointClicked, this, moveTo);
+    connect(m_oxglidePanel->mapPanel()->mapView(), &WorkspaceMapView::pointClicked, this, moveTo);
+    connect(m_oxglidePanel, &OxGlidePanel::pointClicked, this, moveTo);
+    connect(m_oxglidePanel, &OxGlidePanel::statusMessage, this, &MainWindow::showStatus);
     connect(m_designPanel, &DesignPanel::parameterEdited, this,
             [this](const QString &name, double value, bool continuous) {
                 auto changed = m_document->setParameter(name, value, continuous);
@@ -251,12 +270,37 @@ void MainWindow::onDesignChanged()
     if (const auto *joint = dynamic_cast<const PJoint *>(mechanism.get())) {
         m_pjointPlots->setDesign(joint->design());
         m_plots->setCurrentWidget(m_pjointPlots);
+    } else if (dynamic_cast<const OxGlide *>(mechanism.get())) {
+        m_oxglidePanel->setDesign(mechanism, design.title);
+        m_plots->setCurrentWidget(m_oxglidePanel);
     } else if (mechanism->planarWorkspace()) {
         m_workspacePanel->setDesign(mechanism, design.title);
         m_plots->setCurrentWidget(m_workspacePanel);
     }
     onPoseChanged();
     keepMechanismInView();
+    update3d(true);
+}
+
+void MainWindow::update3d(bool designChanged)
+{
+    if (m_viewTabs->currentWidget() != m_view3d) {
+        if (designChanged)
+            m_view3dExtent.setEmpty(); // refit when the 3D view is shown next
+        return;
+    }
+    const Scene3D model = m_document->mechanism()->scene3d(m_document->pose());
+    m_view3d->setScene(model);
+    // Refit for a new mechanism or one that grew out of view or shrank a lot; a pose change
+    // keeps the camera, so the model moves in a still view.
+    const bool refit = m_view3dExtent.isEmpty() || !m_view3dExtent.contains(model.extent)
+        || model.extent.diagonal().norm() < 0.5 * m_view3dExtent.diagonal().norm();
+    if (refit) {
+        if (m_view3dExtent.isEmpty())
+            m_view3d->view()->setStandardView(Camera3D::StandardView::Isometric); // a new mechanism: the view that shows depth
+        m_view3d->view()->fit();
+        m_view3dExtent = model.extent;
+    }
 }
 
 void MainWindow::keepMechanismInView()
@@ -284,8 +328,11 @@ void MainWindow::onPoseChanged()
     m_variables->setPose(pose);
     m_values->setPose(pose);
     m_view->setScene(mechanism->scene(pose));
+    update3d(false);
     if (dynamic_cast<const PJoint *>(mechanism.get()))
         m_pjointPlots->setTheta(pose.outputs[0]);
+    else if (dynamic_cast<const OxGlide *>(mechanism.get()))
+        m_oxglidePanel->setPose(pose);
     else if (mechanism->planarWorkspace())
         m_workspacePanel->setPose(pose);
 
@@ -316,8 +363,12 @@ void MainWindow::updateModes()
     for (const ParameterInfo &info : mechanism->parameterInfo()) {
         if (info.group == ParameterGroup::Mode && info.domain.min == -1.0 && info.domain.max == 1.0) {
             const double v = values.at(info.name);
-            current << QStringLiteral("%1 = %2").arg(toQString(info.symbol), v > 0 ? QStringLiteral("+1")
-                                                                                    : QStringLiteral("−1"));
+            QString text = v > 0 ? QStringLiteral("+1") : QStringLiteral("−1");
+            for (const auto &[name, choice] : info.choices) {
+                if (choice == v)
+                    text = toQString(name);
+            }
+            current << QStringLiteral("%1 = %2").arg(toQString(info.symbol), text);
         }
     }
     QStringList labels;

@@ -10,6 +10,7 @@ class QLabel;
 class QMenu;
 class QSplitter;
 class QStackedWidget;
+class QTabWidget;
 
 namespace pkm {
 
@@ -21,6 +22,8 @@ class PJointPlots;
 class ValuesTable;
 class VariablePanel;
 class WorkspacePanel;
+class OxGlidePanel;
+class View3DPanel;
 
 class MainWindow : public QMainWindow
 {
@@ -38,6 +41,10 @@ public:
     PJointPlots *pjointPlots() const { return m_pjointPlots; }
     ModeBar *modeBar() const { return m_modeBar; }
     WorkspacePanel *workspacePanel() const { return m_workspacePanel; }
+    OxGlidePanel *oxglidePanel() const { return m_oxglidePanel; }
+    View3DPanel *view3d() const { return m_view3d; }
+    /// The tabs over the linkage: "2D" and "3D".
+    QTabWidget *viewTabs() const { return m_viewTabs; }
     /// The last message the status bar showed (tests read it after it times out).
     QString lastStatus() const { return m_lastStatus; }
 
@@ -57,6 +64,8 @@ private:
     void onPoseChanged();
     void keepMechanismInView();
     void updateModes();
+    /// Gives the 3D view the current pose when it is shown; refits it for a new mechanism.
+    void update3d(bool designChanged);
     void switchMode(int index);
     void showStatus(const QString &message, bool error = false);
     void openFile();
@@ -73,6 +82,10 @@ private:
     ValuesTable *m_values = nullptr;
     PJointPlots *m_pjointPlots = nullptr;
     WorkspacePanel *m_workspacePanel = nullptr;
+    OxGlidePanel *m_oxglidePanel = nullptr;
+    View3DPanel *m_view3d = nullptr;
+    QTabWidget *m_viewTabs = nullptr;
+    Eigen::AlignedBox3d m_view3dExtent; ///< of the model last fitted in the 3D view
     QStackedWidget *m_plots = nullptr;
     QSplitter *m_splitter = nullptr;
     QLabel *m_poseLabel = nullptr;

@@ -43,6 +43,18 @@ std::string_view singularityName(SingularityType type)
     return "none";
 }
 
+Singularity classifySingularity(double inverseMargin, double directMargin, double tolerance)
+{
+    const bool inverse = inverseMargin < tolerance, direct = directMargin < tolerance;
+    Singularity s;
+    s.type = inverse && direct ? SingularityType::Combined
+           : inverse           ? SingularityType::Inverse
+           : direct            ? SingularityType::Direct
+                               : SingularityType::None;
+    s.margin = std::min(inverseMargin, directMargin);
+    return s;
+}
+
 int Mechanism::inputCount() const
 {
     int count = 0;
@@ -70,6 +82,14 @@ double Mechanism::variableValue(const Pose &pose, int variable) const
 {
     const int inputs = inputCount();
     return variable < inputs ? pose.inputs[variable] : pose.outputs[variable - inputs];
+}
+
+Scene3D Mechanism::scene3d(const Pose &pose) const
+{
+    const Scene flat = scene(pose);
+    // links as thick as a twentieth of the machine, within readable limits
+    const double size = flat.extent.isEmpty() ? 100.0 : flat.extent.sizes().head<2>().maxCoeff();
+    return extrudeScene(flat, std::clamp(size / 20.0, 4.0, 40.0));
 }
 
 Result<Pose> Mechanism::solveWith(const Pose &current, int variable, double value) const

@@ -8,6 +8,7 @@
 
 #include "result.h"
 #include "scene.h"
+#include "scene3d.h"
 #include "units.h"
 
 #include <Eigen/Core>
@@ -17,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace pkm {
@@ -48,6 +50,9 @@ struct ParameterInfo {
     bool stored = true;      ///< false: derived from the stored ones (k = b/a), still settable
     int decimals = 2;        ///< display decimals
     double displayStep = 1;  ///< spin-box step, display units
+    /// Named values of a mode parameter ({"O", +1}, {"X", -1}): files and the command line
+    /// may give the name instead of the number.
+    std::vector<std::pair<std::string, double>> choices = {};
 };
 
 struct VariableInfo {
@@ -57,6 +62,9 @@ struct VariableInfo {
     Unit unit;
     bool actuated = false; ///< true: an input (driven by an actuator); false: an output
     int decimals = 2;
+    /// An actuated axis that carries the whole mechanism (the O-X glide's z): the outputs do
+    /// not determine it, so it may be given together with them.
+    bool independent = false;
 };
 
 /// One pose: the actuated inputs and the outputs, consistent with each other.
@@ -107,6 +115,11 @@ struct Singularity {
     SingularityType type = SingularityType::None;
     double margin = 1.0; ///< dimensionless distance from the nearest singularity, 0 at it
 };
+
+/// The class of a pose from its scale-free margins from the inverse and the direct
+/// singularities (0 at them): below `tolerance` it is singular of that kind; the margin is the
+/// smaller one.
+Singularity classifySingularity(double inverseMargin, double directMargin, double tolerance);
 
 class Mechanism;
 class PlanarWorkspace;
@@ -167,6 +180,8 @@ public:
     virtual Singularity evaluate(const Pose &pose, std::span<double> values) const = 0;
     /// The Jacobians as matrices (allocates: for analysis, not for sweeps).
     virtual Jacobians jacobians(const Pose &pose) const = 0;
+    /// Pose facts that are words, not numbers ({"mode", "X"}), for reports.
+    virtual std::vector<std::pair<std::string, std::string>> poseText(const Pose &) const { return {}; }
 
     /// The designs that differ from this one only in a working/assembly mode, in order of
     /// preference (poses left empty). Costly (it builds designs): callers keep the result for
@@ -183,10 +198,11 @@ public:
 
     // -- drawing --------------------------------------------------------------------------
     virtual Scene scene(const Pose &pose) const = 0;
+    /// The solid model for the 3D view; the default extrudes scene() (flat links, pins, rails).
+    virtual Scene3D scene3d(const Pose &pose) const;
     /// Dragging scene handle `handle` to `target` (scene plane, mm): the pose that follows.
     virtual Result<Pose> dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const = 0;
 
-protected:
     /// Validates `value` against the parameter's domain; the failure names it.
     static Result<double> checkDomain(const ParameterInfo &info, double value);
 };

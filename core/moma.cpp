@@ -607,14 +607,7 @@ Singularity Moma::singularity(const Pose &pose) const
     const double inverseMargin = std::min(moma::inverseMargin(m_design, 0, pose.inputs[0], platform),
                                           moma::inverseMargin(m_design, 1, pose.inputs[1], platform));
     const double directMargin = moma::directMargin(m_design, z1, z2, platform);
-    const bool inverse = inverseMargin < singularTolerance, direct = directMargin < singularTolerance;
-    Singularity s;
-    s.type = inverse && direct ? SingularityType::Combined
-           : inverse           ? SingularityType::Inverse
-           : direct            ? SingularityType::Direct
-                               : SingularityType::None;
-    s.margin = std::min(inverseMargin, directMargin);
-    return s;
+    return classifySingularity(inverseMargin, directMargin, singularTolerance);
 }
 
 Jacobians Moma::jacobians(const Pose &pose) const

@@ -1,6 +1,7 @@
 #include "registry.h"
 
 #include "moma.h"
+#include "oxglide.h"
 #include "pjoint.h"
 
 namespace pkm {
@@ -10,6 +11,7 @@ const std::vector<MechanismKind> &mechanismKinds()
     static const std::vector<MechanismKind> kinds = {
         {"pjoint", "Active П-joint", &PJoint::createFrom},
         {"moma", "MOMA 2-axis parallel mechanism", &Moma::createFrom},
+        {"oxglide", "O-X glide hybrid mechanism", &OxGlide::createFrom},
     };
     return kinds;
 }

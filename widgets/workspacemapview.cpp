@@ -1,6 +1,7 @@
 #include "workspacemapview.h"
 
 #include "plotfont.h"
+#include "plotticker.h"
 #include "quantityformat.h"
 
 #include <qcustomplot.h>
@@ -85,16 +86,6 @@ QString significant(double value)
     return minus(locale.toString(mantissa, 'g', 3)) + QStringLiteral("·10") + (exponent < 0 ? QStringLiteral("⁻") : QString())
         + power;
 }
-
-/// Tick labels with a real minus sign ("−200"), as in the rest of the interface.
-class MinusTicker : public QCPAxisTicker
-{
-protected:
-    QString getTickLabel(double tick, const QLocale &locale, QChar formatChar, int precision) override
-    {
-        return QCPAxisTicker::getTickLabel(tick, locale, formatChar, precision).replace(QLatin1Char('-'), QChar(0x2212));
-    }
-};
 
 /// Ticks for κ on a logarithmic colour scale: powers of ten over many decades, 1-2-5 over a
 /// few, 1-1.5-2-3-4-5-6-8 over less than one (QCPAxisTickerLog falls back to linear steps there).

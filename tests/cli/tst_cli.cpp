@@ -203,6 +203,16 @@ private slots:
     void momaInverseThenDirect();
     void momaSingularPose();
 
+    void oxglideEvalJsonHasContractKeys_data();
+    void oxglideEvalJsonHasContractKeys();
+    void oxglideEvalPrototype();
+    void oxglideInverseInXForm();
+    void oxglideBadMode();
+    void oxglideInputsOfTheOtherForm();
+    void oxglideWorkspaceAreas();
+    void oxglideMapJson();
+    void oxglideList();
+
     void workspaceJson();
     void workspaceModes();
     void workspaceText();
@@ -510,6 +520,32 @@ void TestCli::momaEvalJsonHasContractKeys_data()
     add("jacobian", {"det_J", "det_Jp", "det_Jx"}, 0);
 }
 
+namespace {
+/// One contract key of an `eval --json` answer: a finite number (size 0) or a size × size
+/// array of numbers; and a singularity class that is one of the four.
+void checkContractKey(const QJsonObject &root, const QString &group, const QString &key, int size)
+{
+    const QJsonValue value = root.value(group).toObject().value(key);
+    if (size == 0) {
+        QVERIFY2(value.isDouble(), qPrintable(group + QLatin1Char('.') + key + QStringLiteral(" is missing")));
+        QVERIFY(std::isfinite(value.toDouble()));
+    } else {
+        const QJsonArray rows = value.toArray();
+        QCOMPARE(rows.size(), size);
+        for (const QJsonValue &row : rows) {
+            QCOMPARE(row.toArray().size(), size);
+            for (const QJsonValue &element : row.toArray())
+                QVERIFY(element.isDouble());
+        }
+    }
+    const QString type = root.value(QStringLiteral("singularity")).toObject().value(QStringLiteral("type")).toString();
+    QVERIFY2(QStringList({QStringLiteral("none"), QStringLiteral("inverse"), QStringLiteral("direct"),
+                          QStringLiteral("combined")})
+                 .contains(type),
+             qPrintable(type));
+}
+} // namespace
+
 void TestCli::momaEvalJsonHasContractKeys()
 {
     QFETCH(QString, group);
@@ -519,24 +555,7 @@ void TestCli::momaEvalJsonHasContractKeys()
     static const QJsonObject root = runJson(args({"eval", "moma-3a"}), &exitCode);
     QCOMPARE(exitCode, 0);
     QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("moma"));
-    const QJsonValue value = root.value(group).toObject().value(key);
-    if (size == 0) {
-        QVERIFY2(value.isDouble(), qPrintable(group + QLatin1Char('.') + key + QStringLiteral(" is missing")));
-        QVERIFY(std::isfinite(value.toDouble()));
-        return;
-    }
-    const QJsonArray rows = value.toArray();
-    QCOMPARE(rows.size(), size);
-    for (const QJsonValue &row : rows) {
-        QCOMPARE(row.toArray().size(), size);
-        for (const QJsonValue &element : row.toArray())
-            QVERIFY(element.isDouble());
-    }
-    const QString type = root.value(QStringLiteral("singularity")).toObject().value(QStringLiteral("type")).toString();
-    QVERIFY2(QStringList({QStringLiteral("none"), QStringLiteral("inverse"), QStringLiteral("direct"),
-                          QStringLiteral("combined")})
-                 .contains(type),
-             qPrintable(type));
+    checkContractKey(root, group, key, size);
 }
 
 void TestCli::momaInverseThenDirect()
@@ -610,6 +629,282 @@ void TestCli::momaSingularPose()
              QStringLiteral("inverse"));
     const QJsonValue detJ = edgeRoot.value(QStringLiteral("jacobian")).toObject().value(QStringLiteral("det_J"));
     QVERIFY(detJ.isNull() || std::abs(detJ.toDouble()) > 1e6);
+}
+
+// -- oxglide -------------------------------------------------------------------------------
+
+namespace {
+
+/// The exact area (mm²) of one form's planar workspace of the O-X glide, integrated slice by
+/// slice (DOMAIN §3): at height y, with w = √(l² − y²), the platform centre reaches
+///   O: x ∈ [s/2 + w, L − s/2 − w]        (width L − s − 2w, positive above w = (L − s)/2)
+///   X: x ∈ [|w − s/2|, L − |w − s/2|]    (width L + s − 2w below w = s/2, L − s + 2w above)
+/// and ∫ w dy = ½(y·w + l²·asin(y/l)). For the prototype (l = 80, s = 20, L = 130 mm) this is
+/// 753.33 mm² (O) and 2125.33 mm² (X).
+double oxglideArea(double l, double s, double L, bool crossed)
+{
+    const auto primitive = [l](double y) { return 0.5 * (y * std::sqrt(l * l - y * y) + l * l * std::asin(y / l)); };
+    const auto height = [l](double w) { return w < l ? std::sqrt(l * l - w * w) : 0.0; }; // where √(l² − y²) = w
+    if (!crossed) {
+        const double y0 = height((L - s) / 2);
+        return (L - s) * (l - y0) - 2 * (primitive(l) - primitive(y0));
+    }
+    const double yh = height(s / 2);
+    const double y1 = height((L + s) / 2);
+    return (L + s) * (yh - y1) - 2 * (primitive(yh) - primitive(y1)) + (L - s) * (l - yh)
+        + 2 * (primitive(l) - primitive(yh));
+}
+
+double jsonNumber(const QJsonObject &object, const char *key)
+{
+    return object.value(QLatin1String(key)).toDouble(std::numeric_limits<double>::quiet_NaN());
+}
+
+} // namespace
+
+void TestCli::oxglideEvalJsonHasContractKeys_data()
+{
+    QTest::addColumn<QString>("group");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<int>("size"); // 0: a number, 2: a 2×2 row-major nested array
+    const auto add = [](const char *group, std::initializer_list<const char *> keys, int size) {
+        for (const char *key : keys)
+            QTest::addRow("%s.%s", group, key) << QString::fromLatin1(group) << QString::fromLatin1(key) << size;
+    };
+    add("parameters", {"l", "s", "L", "a", "z_min", "z_max"}, 0);
+    add("pose", {"x_AB", "x_CD", "x", "y", "z"}, 0);
+    add("jacobian", {"J"}, 2);
+    add("jacobian", {"det_J"}, 0);
+}
+
+void TestCli::oxglideEvalJsonHasContractKeys()
+{
+    QFETCH(QString, group);
+    QFETCH(QString, key);
+    QFETCH(int, size);
+    static int exitCode = -1;
+    static const QJsonObject root = runJson(args({"eval", "oxglide-prototype"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("oxglide"));
+    checkContractKey(root, group, key, size);
+    // the form is a word
+    QCOMPARE(root.value(QStringLiteral("pose")).toObject().value(QStringLiteral("mode")).toString(), QStringLiteral("O"));
+}
+
+void TestCli::oxglideEvalPrototype()
+{
+    // The preset's pose: x_AB = 15, x_CD = 115 mm in the O form, so T = (65, √(80² − 40²)) mm,
+    // w = 40 mm; J = [1, y/w; 1, −y/w], det J = −2y/w, no singularity.
+    int exitCode = -1;
+    const QJsonObject root = runJson(args({"eval", "oxglide-prototype"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonObject parameters = root.value(QStringLiteral("parameters")).toObject();
+    QCOMPARE(jsonNumber(parameters, "l"), 80.0);
+    QCOMPARE(jsonNumber(parameters, "s"), 20.0);
+    QCOMPARE(jsonNumber(parameters, "L"), 130.0);
+    const QJsonObject pose = root.value(QStringLiteral("pose")).toObject();
+    QCOMPARE(jsonNumber(pose, "x_AB"), 15.0);
+    QCOMPARE(jsonNumber(pose, "x_CD"), 115.0);
+    QCOMPARE(jsonNumber(pose, "z"), 75.0);
+    QCOMPARE(jsonNumber(pose, "x"), 65.0);
+    const double y = std::sqrt(80.0 * 80.0 - 40.0 * 40.0);
+    QVERIFY(std::abs(jsonNumber(pose, "y") - y) < 1e-12);
+    const QJsonObject jacobian = root.value(QStringLiteral("jacobian")).toObject();
+    const QJsonArray J = jacobian.value(QStringLiteral("J")).toArray();
+    QVERIFY(std::abs(J[0].toArray()[0].toDouble() - 1.0) < 1e-12);
+    QVERIFY(std::abs(J[0].toArray()[1].toDouble() - y / 40) < 1e-12);
+    QVERIFY(std::abs(J[1].toArray()[1].toDouble() + y / 40) < 1e-12);
+    const double det = J[0].toArray()[0].toDouble() * J[1].toArray()[1].toDouble()
+        - J[0].toArray()[1].toDouble() * J[1].toArray()[0].toDouble();
+    QVERIFY(std::abs(jsonNumber(jacobian, "det_J") - det) < 1e-12);
+    QVERIFY(std::abs(det + 2 * y / 40) < 1e-12);
+    QCOMPARE(root.value(QStringLiteral("singularity")).toObject().value(QStringLiteral("type")).toString(),
+             QStringLiteral("none"));
+}
+
+void TestCli::oxglideInverseInXForm()
+{
+    // mode=X with the outputs and z together (z is an independent axis): x_AB = x − s/2 + w,
+    // x_CD = x + s/2 − w with w = √(80² − 60²) = √2800 mm.
+    int exitCode = -1;
+    const QJsonObject root = runJson(
+        args({"eval", "oxglide-prototype", "--set", "mode=X", "--set", "x=65", "--set", "y=60", "--set", "z=10"}),
+        &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(jsonNumber(root.value(QStringLiteral("parameters")).toObject(), "mode"), -1.0);
+    const QJsonObject pose = root.value(QStringLiteral("pose")).toObject();
+    QCOMPARE(pose.value(QStringLiteral("mode")).toString(), QStringLiteral("X"));
+    QCOMPARE(jsonNumber(pose, "x"), 65.0);
+    QCOMPARE(jsonNumber(pose, "y"), 60.0);
+    QCOMPARE(jsonNumber(pose, "z"), 10.0);
+    const double w = std::sqrt(2800.0);
+    const double xAB = jsonNumber(pose, "x_AB"), xCD = jsonNumber(pose, "x_CD");
+    QVERIFY(std::abs(xAB - (55 + w)) < 1e-9);
+    QVERIFY(std::abs(xCD - (75 - w)) < 1e-9);
+    // det J = +2y/w in the X form
+    QVERIFY(std::abs(jsonNumber(root.value(QStringLiteral("jacobian")).toObject(), "det_J") - 120 / w) < 1e-9);
+
+    // … and back: the inputs give the point again (the corrected "− s" direct kinematics)
+    const QJsonObject direct = runJson({QStringLiteral("eval"), QStringLiteral("oxglide-prototype"),
+                                        QStringLiteral("--set"), QStringLiteral("mode=X"), QStringLiteral("--set"),
+                                        QStringLiteral("x_AB=") + number(xAB), QStringLiteral("--set"),
+                                        QStringLiteral("x_CD=") + number(xCD)},
+                                       &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonObject back = direct.value(QStringLiteral("pose")).toObject();
+    QVERIFY(std::abs(jsonNumber(back, "x") - 65) < 1e-9);
+    QVERIFY(std::abs(jsonNumber(back, "y") - 60) < 1e-9);
+    QCOMPARE(back.value(QStringLiteral("mode")).toString(), QStringLiteral("X"));
+}
+
+void TestCli::oxglideBadMode()
+{
+    const Run run = runPkm(args({"eval", "oxglide-prototype", "--set", "mode=Q"}));
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.out.isEmpty(), run.out.constData());
+    QCOMPARE(run.err.count('\n'), 1); // one line
+    QVERIFY(run.err.startsWith("pkm: "));
+    const QString message = QString::fromUtf8(run.err);
+    QVERIFY2(message.contains(QStringLiteral("mode")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("Q")), qPrintable(message));
+    static const QRegularExpression allowed(QStringLiteral("\\bO\\b.*\\bX\\b"));
+    QVERIFY2(allowed.match(message).hasMatch(), qPrintable(message)); // names the allowed O and X
+    // a number other than ±1 is refused as well, the names and ±1 are taken
+    const Run half = runPkm(args({"eval", "oxglide-prototype", "--set", "mode=0.5"}));
+    QCOMPARE(half.exitCode, 2);
+    QVERIFY(half.out.isEmpty());
+    QVERIFY(half.err.contains("mode"));
+    for (const char *mode : {"mode=O", "mode=X", "mode=1", "mode=-1"}) {
+        const Run good = runPkm(args({"eval", "oxglide-prototype", "--set", mode, "--set", "x=65", "--set", "y=70"}));
+        QVERIFY2(good.exitCode == 0, good.err.constData());
+    }
+}
+
+void TestCli::oxglideInputsOfTheOtherForm()
+{
+    // x_CD − x_AB = 10 mm < s: slider positions of the crossed form, refused by the O design
+    // (the pairs would have passed the O↔X singularity).
+    const Run run = runPkm(args({"eval", "oxglide-prototype", "--set", "x_AB=60", "--set", "x_CD=70"}));
+    QCOMPARE(run.exitCode, 3);
+    QVERIFY2(run.out.isEmpty(), run.out.constData());
+    QCOMPARE(run.err.count('\n'), 1);
+    const QString message = QString::fromUtf8(run.err);
+    QVERIFY2(message.contains(QStringLiteral("form")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("crossed (X)")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("x_CD")), qPrintable(message));
+    const Run json = runPkm(args({"eval", "oxglide-prototype", "--set", "x_AB=60", "--set", "x_CD=70", "--json"}));
+    QCOMPARE(json.exitCode, 3);
+    QVERIFY(json.out.isEmpty());
+    // the X design takes them: y = ½√(4l² − (x_CD − x_AB − s)²) = ½√(25600 − 100)
+    int exitCode = -1;
+    const QJsonObject crossed = runJson(
+        args({"eval", "oxglide-prototype", "--set", "mode=X", "--set", "x_AB=60", "--set", "x_CD=70"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QVERIFY(std::abs(jsonNumber(crossed.value(QStringLiteral("pose")).toObject(), "y") - 0.5 * std::sqrt(25500.0))
+            < 1e-9);
+}
+
+void TestCli::oxglideWorkspaceAreas()
+{
+    const double exactO = oxglideArea(80, 20, 130, false), exactX = oxglideArea(80, 20, 130, true);
+    QVERIFY(std::abs(exactO - 753.33) < 0.01);
+    QVERIFY(std::abs(exactX - 2125.33) < 0.01);
+    for (const char *grid : {"400", "1600"}) {
+        int exitCode = -1;
+        const QJsonObject root = runJson(args({"workspace", "oxglide-prototype", "--grid", grid}), &exitCode);
+        QCOMPARE(exitCode, 0);
+        QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("oxglide"));
+        for (const char *key : {"area", "area_O", "area_X", "area_union"})
+            QVERIFY2(root.value(QLatin1String(key)).isDouble(), key);
+        const double area = jsonNumber(root, "area"), areaO = jsonNumber(root, "area_O");
+        const double areaX = jsonNumber(root, "area_X"), areaUnion = jsonNumber(root, "area_union");
+        QCOMPARE(areaO, area); // the preset works in the O form
+        // The O workspace lies inside the X one (the O slice [s/2 + w, L − s/2 − w] inside the
+        // X slice [|w − s/2|, L − |w − s/2|]), so the union is the X workspace.
+        QCOMPARE(areaUnion, areaX);
+        QVERIFY(areaX > areaO); // fig. 5: the X form is the larger
+        qInfo("--grid %s: area_O %.2f mm² (exact %.2f), area_X %.2f mm² (exact %.2f)", grid, areaO, exactO, areaX,
+              exactX);
+        const double tolerance = QByteArray(grid) == "1600" ? 0.01 : 0.03;
+        QVERIFY2(std::abs(areaO - exactO) < tolerance * exactO, qPrintable(number(areaO)));
+        QVERIFY2(std::abs(areaX - exactX) < tolerance * exactX, qPrintable(number(areaX)));
+        // one entry per form, the current one is O
+        const QJsonArray modes = root.value(QStringLiteral("modes")).toArray();
+        QCOMPARE(modes.size(), 2);
+        for (const QJsonValue &value : modes) {
+            const QJsonObject mode = value.toObject();
+            const bool crossed = mode.value(QStringLiteral("mode")).toString() == QLatin1String("X");
+            QCOMPARE(mode.value(QStringLiteral("current")).toBool(), !crossed);
+            QCOMPARE(jsonNumber(mode, "area"), crossed ? areaX : areaO);
+        }
+    }
+    // in the X form "area" is the X workspace and the union stays the same
+    int exitCode = -1;
+    const QJsonObject crossed = runJson(args({"workspace", "oxglide-prototype", "--grid", "400", "--set", "mode=X"}),
+                                        &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(jsonNumber(crossed, "area"), jsonNumber(crossed, "area_X"));
+    QCOMPARE(jsonNumber(crossed, "area_union"), jsonNumber(crossed, "area_X"));
+}
+
+void TestCli::oxglideMapJson()
+{
+    int exitCode = -1;
+    const QJsonObject root = runJson(args({"map", "oxglide-prototype"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    for (const char *key : {"grid", "bounds", "reachable_cells", "min", "max", "near_singular_cells", "seconds"})
+        QVERIFY2(root.contains(QLatin1String(key)), key);
+    const QJsonObject grid = root.value(QStringLiteral("grid")).toObject();
+    QCOMPARE(std::max(grid.value(QStringLiteral("columns")).toInt(), grid.value(QStringLiteral("rows")).toInt()), 400);
+    const QJsonObject bounds = root.value(QStringLiteral("bounds")).toObject();
+    // the O workspace: s/2 ≤ x ≤ L − s/2, √(80² − 55²) ≤ y ≤ l (to within a cell)
+    const double cell = jsonNumber(root, "cell_size");
+    QVERIFY(jsonNumber(bounds, "x_min") >= 10 - cell && jsonNumber(bounds, "x_max") <= 120 + cell);
+    QVERIFY(jsonNumber(bounds, "y_min") >= std::sqrt(6400.0 - 3025.0) - cell);
+    QVERIFY(jsonNumber(bounds, "y_max") <= 80 + cell);
+    // det J = −2y/w < 0 all over the O workspace, and |det J| grows without bound towards y = l
+    QVERIFY(jsonNumber(root, "min") <= jsonNumber(root, "max"));
+    QVERIFY2(jsonNumber(root, "max") < 0, qPrintable(number(jsonNumber(root, "max"))));
+    QVERIFY(jsonNumber(root, "min") < -10);
+    const double reachable = jsonNumber(root, "reachable_cells");
+    QVERIFY(reachable > 0);
+    QVERIFY(jsonNumber(root, "near_singular_cells") > 0); // the cells next to y = l
+    QVERIFY(jsonNumber(root, "near_singular_cells") <= reachable);
+    QVERIFY(jsonNumber(root, "seconds") >= 0);
+    const QJsonObject workspace = runJson(args({"workspace", "oxglide-prototype"}));
+    QCOMPARE(root.value(QStringLiteral("reachable_cells")), workspace.value(QStringLiteral("reachable_cells")));
+    // the condition number is at least 1
+    const QJsonObject cond
+        = runJson(args({"map", "oxglide-prototype", "--quantity", "cond", "--grid", "200"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QVERIFY(jsonNumber(cond, "min") >= 1.0 - 1e-6);
+}
+
+void TestCli::oxglideList()
+{
+    const Run text = runPkm(args({"list"}));
+    QCOMPARE(text.exitCode, 0);
+    bool found = false;
+    for (const QByteArray &line : text.out.split('\n')) {
+        if (line.startsWith("oxglide-prototype ")) {
+            found = true;
+            QVERIFY(line.contains(" oxglide "));
+        }
+    }
+    QVERIFY(found);
+    const Run json = runPkm(args({"list", "--json"}));
+    QCOMPARE(json.exitCode, 0);
+    found = false;
+    const QJsonArray presets = QJsonDocument::fromJson(json.out).object().value(QStringLiteral("presets")).toArray();
+    for (const QJsonValue &preset : presets) {
+        const QJsonObject object = preset.toObject();
+        if (object.value(QStringLiteral("id")).toString() == QLatin1String("oxglide-prototype")) {
+            found = true;
+            QCOMPARE(object.value(QStringLiteral("mechanism")).toString(), QStringLiteral("oxglide"));
+            QVERIFY(!object.value(QStringLiteral("title")).toString().isEmpty());
+        }
+    }
+    QVERIFY(found);
 }
 
 // -- workspace and map ---------------------------------------------------------------------

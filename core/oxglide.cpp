@@ -1,0 +1,586 @@
+#include "oxglide.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pkm {
+
+namespace {
+/// ∫ √(l² − y²) dy
+double halfDiscArea(double l, double y)
+{
+    const double t = std::clamp(y / l, -1.0, 1.0);
+    return 0.5 * (y * std::sqrt(std::max(0.0, l * l - y * y)) + l * l * std::asin(t));
+}
+
+/// The height below which a slice of half-width-loss `w` exceeds `limit`: y with w(y) = limit.
+double heightWhereW(double l, double limit)
+{
+    return limit < l ? std::sqrt(l * l - limit * limit) : 0.0;
+}
+
+/// Concatenation without chains of operator+ (GCC 12 warns falsely, -Wrestrict, on those).
+std::string join(std::initializer_list<std::string_view> parts)
+{
+    std::string text;
+    for (std::string_view part : parts)
+        text.append(part);
+    return text;
+}
+
+std::string mm(double value)
+{
+    return join({formatNumber(value, 2), " mm"});
+}
+
+std::string point(const Eigen::Vector2d &p)
+{
+    return join({"(", formatNumber(p.x(), 2), ", ", formatNumber(p.y(), 2), ") mm"});
+}
+} // namespace
+
+// -- closed forms --------------------------------------------------------------------------
+
+namespace oxglide {
+
+const char *formName(int form)
+{
+    return form == formX ? "X" : "O";
+}
+
+const char *formTitle(int form)
+{
+    return form == formX ? "crossed (X)" : "extended (O)";
+}
+
+DirectSolution direct(double rod, double width, double xAB, double xCD)
+{
+    DirectSolution solution;
+    const double e = xCD - xAB - width; // 0: the crossing; its sign is the form
+    const double radicand = 4.0 * rod * rod - e * e;
+    if (radicand < -1e-12 * rod * rod)
+        return solution;
+    solution.platform = {0.5 * (xAB + xCD), 0.5 * std::sqrt(std::max(0.0, radicand))};
+    solution.form = e > 0 ? formO : (e < 0 ? formX : 0);
+    solution.valid = true;
+    return solution;
+}
+
+Eigen::Vector2d inverse(double rod, double width, int form, const Eigen::Vector2d &platform)
+{
+    const double w = std::sqrt(std::max(0.0, rod * rod - platform.y() * platform.y()));
+    const double sign = form == formX ? -1.0 : 1.0;
+    return {platform.x() - 0.5 * width - sign * w, platform.x() + 0.5 * width + sign * w};
+}
+
+double exactArea(const OxGlideDesign &d, int form)
+{
+    const double l = d.rod, s = d.width, L = d.guideLength;
+    auto integralW = [&](double from, double to) { return halfDiscArea(l, to) - halfDiscArea(l, from); };
+    if (form == formO) {
+        // slice width L − s − 2w, positive above y₀
+        const double y0 = heightWhereW(l, 0.5 * (L - s));
+        return (L - s) * (l - y0) - 2.0 * integralW(y0, l);
+    }
+    // slice width L − 2|w − s/2|: below y_h (w ≥ s/2) it is L + s − 2w, positive above y₁;
+    // above y_h it is L − s + 2w
+    const double yh = heightWhereW(l, 0.5 * s);
+    const double y1 = std::min(yh, heightWhereW(l, 0.5 * (L + s)));
+    return (L + s) * (yh - y1) - 2.0 * integralW(y1, yh) + (L - s) * (l - yh) + 2.0 * integralW(yh, l);
+}
+
+} // namespace oxglide
+
+// -- design --------------------------------------------------------------------------------
+
+namespace {
+const std::vector<ParameterInfo> &oxglideParameterInfo()
+{
+    static const std::vector<ParameterInfo> infos = [] {
+        const Interval positive{0.0, 1e5};
+        const Interval coordinate{-1e5, 1e5};
+        using G = ParameterGroup;
+        std::vector<ParameterInfo> v;
+        v.push_back({"l", "l", "rod length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"s", "s", "platform width", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"L", "L", "transverse guide length (slider positions 0…L)", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"a", "a", "spacing of the transverse guides", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"z_min", "z_min", "start of the longitudinal travel", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        v.push_back({"z_max", "z_max", "end of the longitudinal travel", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        ParameterInfo mode{"mode", "form", "+1 extended (O), −1 crossed (X)", units::none, G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2};
+        mode.choices = {{"O", 1.0}, {"X", -1.0}};
+        v.push_back(mode);
+        return v;
+    }();
+    return infos;
+}
+
+ParameterSet parametersOf(const OxGlideDesign &d)
+{
+    return {{"l", d.rod},   {"s", d.width},      {"L", d.guideLength}, {"a", d.spacing},
+            {"z_min", d.zMin}, {"z_max", d.zMax}, {"mode", double(d.form)}};
+}
+
+Result<OxGlideDesign> applyChanges(OxGlideDesign d, const ParameterSet &changes)
+{
+    for (const auto &[name, value] : changes) {
+        const auto &infos = oxglideParameterInfo();
+        const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
+        if (info == infos.end())
+            return Failure{FailureKind::UnknownName, name, join({"The O-X glide has no parameter named '", name, "'."})};
+        if (auto checked = Mechanism::checkDomain(*info, value); !checked)
+            return checked.failure();
+        if (name == "mode" && value != 1.0 && value != -1.0) {
+            return Failure{FailureKind::InvalidParameter, "mode",
+                           join({"mode = ", formatNumber(value), " is invalid: it must be +1 (O, extended) or -1 (X, crossed)."})};
+        }
+    }
+    auto take = [&](const char *name, double &field) {
+        if (auto it = changes.find(name); it != changes.end())
+            field = it->second;
+    };
+    take("l", d.rod);
+    take("s", d.width);
+    take("L", d.guideLength);
+    take("a", d.spacing);
+    take("z_min", d.zMin);
+    take("z_max", d.zMax);
+    if (auto it = changes.find("mode"); it != changes.end())
+        d.form = it->second > 0 ? oxglide::formO : oxglide::formX;
+    return d;
+}
+} // namespace
+
+Result<MechanismPtr> OxGlide::create(const OxGlideDesign &d)
+{
+    const ParameterSet values = parametersOf(d);
+    for (const ParameterInfo &info : oxglideParameterInfo()) {
+        if (auto checked = checkDomain(info, values.at(info.name)); !checked)
+            return checked.failure();
+    }
+    if (d.form != oxglide::formO && d.form != oxglide::formX)
+        return Failure{FailureKind::InvalidParameter, "mode", "mode must be +1 (O, extended) or -1 (X, crossed)."};
+    if (!(d.width < 2.0 * d.rod)) {
+        return Failure{FailureKind::InvalidParameter, "s",
+                       join({"s = ", mm(d.width), " must be less than 2l = ", mm(2.0 * d.rod),
+                                 ": a platform that wide keeps the rods from ever crossing, so there is no X form."})};
+    }
+    if (!(d.guideLength > d.width)) {
+        return Failure{FailureKind::InvalidParameter, "L",
+                       join({"L = ", mm(d.guideLength), " must be more than the platform width s = ", mm(d.width),
+                                 ": with guides that short the extended (O) form has no workspace."})};
+    }
+    if (!(d.zMin < d.zMax)) {
+        return Failure{FailureKind::InvalidParameter, "z_min",
+                       join({"z_min = ", mm(d.zMin), " must be less than z_max = ", mm(d.zMax), "."})};
+    }
+    OxGlide candidate(d);
+    if (!candidate.m_home.inputs.size()) {
+        return Failure{FailureKind::Unreachable, "L",
+                       join({"The ", oxglide::formTitle(d.form), " form has no workspace with L = ", mm(d.guideLength),
+                             ", s = ", mm(d.width), " and l = ", mm(d.rod), "."})};
+    }
+    return MechanismPtr(new OxGlide(candidate));
+}
+
+Result<MechanismPtr> OxGlide::createFrom(const ParameterSet &parameters)
+{
+    auto design = applyChanges(OxGlideDesign{}, parameters);
+    if (!design)
+        return design.failure();
+    return create(*design);
+}
+
+const std::vector<ParameterInfo> &OxGlide::parameterInfo() const
+{
+    return oxglideParameterInfo();
+}
+
+ParameterSet OxGlide::parameters() const
+{
+    return parametersOf(m_design);
+}
+
+Result<MechanismPtr> OxGlide::withParameters(const ParameterSet &changes) const
+{
+    auto design = applyChanges(m_design, changes);
+    if (!design)
+        return design.failure();
+    auto made = create(*design);
+    // A check across parameters (s against l, L against s) is about what was changed.
+    if (!made && changes.size() == 1 && made.failure().culprit != changes.begin()->first) {
+        Failure f = made.failure();
+        f.culprit = changes.begin()->first;
+        return f;
+    }
+    return made;
+}
+
+Result<MechanismPtr> OxGlide::withParameter(std::string_view name, double value) const
+{
+    return withParameters({{std::string(name), value}});
+}
+
+OxGlide::OxGlide(const OxGlideDesign &design)
+    : m_design(design)
+{
+    m_bounds = formBounds(design.form);
+    // Home: the platform over the middle of the guides, at the height that is farthest from
+    // the singularities (rods at 45°) while leaving the most room sideways.
+    const double l = design.rod;
+    const double x = 0.5 * design.guideLength;
+    double best = -1.0;
+    // heights from the form's lowest slice up to l: a thin workspace near y = l is sampled too
+    const double lowest = heightWhereW(l, 0.5 * (design.guideLength - design.form * design.width));
+    constexpr int samples = 400;
+    for (int i = 1; i < samples; ++i) {
+        const double y = lowest + (l - lowest) * i / samples;
+        auto pose = inverse({x, y}, 0.5 * (design.zMin + design.zMax));
+        if (!pose)
+            continue;
+        const double w = std::sqrt(l * l - y * y);
+        const double room = std::min({pose->inputs[0], design.guideLength - pose->inputs[0], pose->inputs[1],
+                                      design.guideLength - pose->inputs[1]}) / design.guideLength;
+        const double score = std::min(std::min(y, w) / l, 4.0 * room);
+        if (score > best) {
+            best = score;
+            m_home = *pose;
+        }
+    }
+}
+
+Eigen::AlignedBox2d OxGlide::formBounds(int form) const
+{
+    const OxGlideDesign &d = m_design;
+    const double l = d.rod, s = d.width, L = d.guideLength;
+    Eigen::AlignedBox2d box;
+    if (form == oxglide::formO) {
+        // the widest slice is at the top (w = 0): x ∈ [s/2, L − s/2]
+        box.extend(Eigen::Vector2d(0.5 * s, heightWhereW(l, 0.5 * (L - s))));
+        box.extend(Eigen::Vector2d(L - 0.5 * s, l));
+    } else {
+        // the widest slice is where w = s/2: x ∈ [0, L]
+        box.extend(Eigen::Vector2d(0.0, heightWhereW(l, 0.5 * (L + s))));
+        box.extend(Eigen::Vector2d(L, l));
+    }
+    const Eigen::Vector2d pad = Eigen::Vector2d::Constant(0.02 * std::max(L, l));
+    return {box.min() - pad, box.max() + pad};
+}
+
+Eigen::AlignedBox2d OxGlide::unionBounds() const
+{
+    return formBounds(oxglide::formX);
+}
+
+// -- joint variables -----------------------------------------------------------------------
+
+const std::vector<VariableInfo> &OxGlide::variableInfo() const
+{
+    static const std::vector<VariableInfo> infos = {
+        {"x_AB", "x_AB", "slider pair AB position (actuated)", units::millimetre, true, 2},
+        {"x_CD", "x_CD", "slider pair CD position (actuated)", units::millimetre, true, 2},
+        {"z", "z", "longitudinal position (actuated serial axis)", units::millimetre, true, 2, true},
+        {"x", "x", "platform centre T, x", units::millimetre, false, 2},
+        {"y", "y", "platform centre T, y", units::millimetre, false, 2},
+    };
+    return infos;
+}
+
+Interval OxGlide::variableRange(int variable) const
+{
+    switch (variable) {
+    case variableXAB:
+    case variableXCD: return {0.0, m_design.guideLength};
+    case variableZ: return {m_design.zMin, m_design.zMax};
+    case variableX: return {m_bounds.min().x(), m_bounds.max().x()};
+    default: return {std::max(0.0, m_bounds.min().y()), m_design.rod};
+    }
+}
+
+Eigen::Vector2d OxGlide::crossingInputs(double x) const
+{
+    return {x - 0.5 * m_design.width, x + 0.5 * m_design.width};
+}
+
+// -- kinematics ----------------------------------------------------------------------------
+
+Result<Pose> OxGlide::inverse(const Eigen::Vector2d &platform, double z) const
+{
+    const OxGlideDesign &d = m_design;
+    const double l = d.rod;
+    if (platform.y() > l * (1.0 + 1e-12)) {
+        return Failure{FailureKind::Unreachable, "y",
+                       join({"The platform cannot reach ", point(platform), ": y is more than the rod length l = ", mm(l), "."})};
+    }
+    if (platform.y() < 0.0) {
+        return Failure{FailureKind::Unreachable, "y",
+                       join({"The platform cannot reach ", point(platform),
+                                 ": it would pass the rod joints' plane y = 0, where the rods lie along the guides (a "
+                                 "direct singularity)."})};
+    }
+    const Eigen::Vector2d q = oxglide::inverse(l, d.width, d.form, platform);
+    const double tolerance = 1e-9 * std::max(l, d.guideLength);
+    const char *names[2] = {"x_AB", "x_CD"};
+    for (int i = 0; i < 2; ++i) {
+        if (q[i] < -tolerance || q[i] > d.guideLength + tolerance) {
+            std::string message = "The ";
+            message.append(oxglide::formTitle(d.form)).append(" form cannot reach ").append(point(platform));
+            message.append(": slider pair ").append(i == 0 ? "AB" : "CD").append(" would have to be at ");
+            message.append(names[i]).append(" = ").append(mm(q[i])).append(", off its guides (0…");
+            message.append(formatNumber(d.guideLength, 2)).append(" mm).");
+            return Failure{FailureKind::OutOfRange, names[i], message};
+        }
+    }
+    Pose pose;
+    pose.inputs.resize(3);
+    pose.inputs << std::clamp(q[0], 0.0, d.guideLength), std::clamp(q[1], 0.0, d.guideLength), z;
+    pose.outputs.resize(2);
+    pose.outputs << platform.x(), platform.y();
+    pose.mode = d.form;
+    return pose;
+}
+
+Result<Pose> OxGlide::solveDirect(const Coordinates &inputs, const Pose *near) const
+{
+    const OxGlideDesign &d = m_design;
+    const char *names[3] = {"x_AB", "x_CD", "z"};
+    for (int i = 0; i < 3; ++i) {
+        const Interval range = variableRange(i);
+        if (!std::isfinite(inputs[i]))
+            return Failure{FailureKind::OutOfRange, names[i], join({names[i], " must be a finite number."})};
+        if (!range.contains(inputs[i])) {
+            std::string message = names[i];
+            message.append(" = ").append(mm(inputs[i])).append(i < 2 ? " is off the guides (" : " is outside the travel (");
+            message.append(formatNumber(range.min, 2)).append("…").append(formatNumber(range.max, 2)).append(" mm).");
+            return Failure{FailureKind::OutOfRange, names[i], message};
+        }
+    }
+    const double xAB = inputs[0], xCD = inputs[1];
+    const auto solution = oxglide::direct(d.rod, d.width, xAB, xCD);
+    const double e = xCD - xAB - d.width;
+    if (!solution.valid) {
+        return Failure{FailureKind::Unreachable, "x_CD",
+                       join({"The rods cannot reach the platform at x_AB = ", mm(xAB), ", x_CD = ", mm(xCD),
+                                 ": |x_CD − x_AB − s| = ", mm(std::abs(e)), " is more than 2l = ", mm(2.0 * d.rod), "."})};
+    }
+    if (solution.form != 0 && solution.form != d.form && std::abs(e) > 1e-9 * d.rod) {
+        std::string message = "x_CD − x_AB = ";
+        message.append(mm(xCD - xAB)).append(solution.form == oxglide::formX ? " is less" : " is more");
+        message.append(" than s = ").append(mm(d.width)).append(": these slider positions hold the ");
+        message.append(oxglide::formTitle(solution.form)).append(" form, and the mechanism is ");
+        message.append(oxglide::formTitle(d.form));
+        message.append(". At x_CD − x_AB = s the rods are parallel and the platform can swing (a singularity), "
+                       "so the pairs do not pass it on their own: switch the form to go on.");
+        // the pair that moved is the culprit (x_CD when both did or nothing says)
+        const bool abMoved = near && near->inputs.size() == 3 && near->inputs[0] != xAB && near->inputs[1] == xCD;
+        return Failure{FailureKind::Singular, abMoved ? "x_AB" : "x_CD", message};
+    }
+    Pose pose;
+    pose.inputs = inputs;
+    pose.outputs.resize(2);
+    pose.outputs << solution.platform.x(), solution.platform.y();
+    pose.mode = d.form;
+    return pose;
+}
+
+Result<Pose> OxGlide::solveInverse(const Coordinates &outputs, const Pose *near) const
+{
+    for (int i = 0; i < 2; ++i) {
+        if (!std::isfinite(outputs[i])) {
+            const std::string name = i == 0 ? "x" : "y";
+            return Failure{FailureKind::OutOfRange, name, name + " must be a finite number."};
+        }
+    }
+    const double z = near && near->inputs.size() == 3 ? near->inputs[2] : m_home.inputs[2];
+    return inverse(outputs.head<2>(), z);
+}
+
+// -- analysis ------------------------------------------------------------------------------
+
+namespace {
+enum Slot {
+    SlotXAB, SlotXCD, SlotZ, SlotX, SlotY,
+    SlotJq, SlotJx = SlotJq + 4, SlotJ = SlotJx + 4, SlotDetJ = SlotJ + 4, SlotDetJq, SlotDetJx, SlotCond,
+    SlotRodAngle, SlotCrossing, SlotMargin,
+    SlotCount
+};
+
+/// u₁, u₂: the rods' components along the guides (platform joint minus rod joint).
+Eigen::Vector2d rodRuns(const OxGlideDesign &d, const Pose &pose)
+{
+    const double x = pose.outputs[0];
+    return {x - 0.5 * d.width - pose.inputs[0], x + 0.5 * d.width - pose.inputs[1]};
+}
+} // namespace
+
+const ReportLayout &OxGlide::reportLayout() const
+{
+    static const ReportLayout layout = [] {
+        using G = ReportGroup;
+        ReportLayout l;
+        l.add(G::Pose, "x_AB", "x_AB", "slider pair AB position", units::millimetre, 2);
+        l.add(G::Pose, "x_CD", "x_CD", "slider pair CD position", units::millimetre, 2);
+        l.add(G::Pose, "z", "z", "longitudinal position", units::millimetre, 2);
+        l.add(G::Pose, "x", "x", "platform centre T, x", units::millimetre, 2);
+        l.add(G::Pose, "y", "y", "platform centre T, y", units::millimetre, 2);
+        l.add(G::Jacobian, "Jq", "J_q", "J_q = diag(−2u₁, −2u₂), u_i the rods' runs along the guides", units::millimetre, 1, 2, 2);
+        l.add(G::Jacobian, "Jx", "J_x", "J_x rows (2u_i, 2y)", units::millimetre, 1, 2, 2);
+        l.add(G::Jacobian, "J", "J", "q̇ = J·ẋ of the planar part, J = −J_q⁻¹·J_x", units::none, 3, 2, 2);
+        l.add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
+        l.add(G::Jacobian, "det_Jq", "det J_q", "0 at an inverse singularity", units::squareMillimetre, 1);
+        l.add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity", units::squareMillimetre, 1);
+        l.add(G::Jacobian, "cond", "κ(J)", "condition number of J", units::none, 3);
+        l.add(G::Derived, "rod_angle", "ψ", "angle between the rods and the guides (90°: the O↔X crossing)", units::angle, 2);
+        l.add(G::Derived, "crossing", "x_CD − x_AB − s", "distance from the O↔X crossing (0 there; > 0 O, < 0 X)", units::millimetre, 2);
+        l.add(G::Derived, "margin", "m", "distance from the nearest singularity (0 … 1)", units::none, 4);
+        return l;
+    }();
+    return layout;
+}
+
+Singularity OxGlide::singularity(const Pose &pose) const
+{
+    const double l = m_design.rod;
+    const double y = pose.outputs[1];
+    const double w = std::sqrt(std::max(0.0, l * l - y * y));
+    // inverse: a rod perpendicular to its guide (w = 0); direct: the rods parallel (w = 0, the
+    // crossing) or along the guides (y = 0)
+    const double inverseMargin = w / l;
+    const double directMargin = std::min(std::abs(y), w) / l;
+    return classifySingularity(inverseMargin, directMargin, singularTolerance);
+}
+
+Jacobians OxGlide::jacobians(const Pose &pose) const
+{
+    const Eigen::Vector2d u = rodRuns(m_design, pose);
+    const double y = pose.outputs[1];
+    Eigen::Matrix3d jq = Eigen::Matrix3d::Zero();
+    jq(0, 0) = -2.0 * u[0];
+    jq(1, 1) = -2.0 * u[1];
+    jq(2, 2) = 1.0; // the serial axis: z of the platform is the input z
+    Eigen::Matrix<double, 3, 2> fx = Eigen::Matrix<double, 3, 2>::Zero();
+    fx << 2.0 * u[0], 2.0 * y, 2.0 * u[1], 2.0 * y, 0.0, 0.0;
+    Jacobians j;
+    j.inputs = jq;
+    j.outputs = -fx; // J_q·q̇ = J_x·ẋ in the interface's convention
+    Eigen::Matrix<double, 3, 2> full = Eigen::Matrix<double, 3, 2>::Zero();
+    full.row(0) << 1.0, y / u[0];
+    full.row(1) << 1.0, y / u[1];
+    j.full = full;
+    return j;
+}
+
+Singularity OxGlide::evaluate(const Pose &pose, std::span<double> v) const
+{
+    const Eigen::Vector2d u = rodRuns(m_design, pose);
+    const double y = pose.outputs[1];
+    const double l = m_design.rod;
+    v[SlotXAB] = pose.inputs[0];
+    v[SlotXCD] = pose.inputs[1];
+    v[SlotZ] = pose.inputs[2];
+    v[SlotX] = pose.outputs[0];
+    v[SlotY] = y;
+    const double jq1 = -2.0 * u[0], jq2 = -2.0 * u[1];
+    const double values[12] = {jq1, 0.0, 0.0, jq2, 2.0 * u[0], 2.0 * y, 2.0 * u[1], 2.0 * y,
+                               1.0, y / u[0], 1.0, y / u[1]};
+    std::copy(values, values + 12, v.begin() + SlotJq);
+    const double detJq = jq1 * jq2, detJx = 4.0 * y * (u[0] - u[1]);
+    v[SlotDetJq] = detJq;
+    v[SlotDetJx] = detJx;
+    v[SlotDetJ] = detJx / detJq;
+    const double w = std::sqrt(std::max(0.0, l * l - y * y));
+    // J's columns (1, 1) and (y/u₁, y/u₂) = ±(y/w)(1, −1) are orthogonal: κ = max(y/w, w/y)
+    v[SlotCond] = (w > 0.0 && y > 0.0) ? std::max(y / w, w / y) : std::numeric_limits<double>::infinity();
+    v[SlotRodAngle] = std::atan2(std::abs(y), w);
+    v[SlotCrossing] = pose.inputs[1] - pose.inputs[0] - m_design.width;
+    const Singularity s = singularity(pose);
+    v[SlotMargin] = s.margin;
+    return s;
+}
+
+std::vector<std::pair<std::string, std::string>> OxGlide::poseText(const Pose &) const
+{
+    return {{"mode", oxglide::formName(m_design.form)}};
+}
+
+std::vector<ModeAlternative> OxGlide::modeNeighbours() const
+{
+    std::vector<ModeAlternative> neighbours;
+    const int other = -m_design.form;
+    const ParameterSet changes = {{"mode", double(other)}};
+    if (auto made = withParameters(changes)) {
+        neighbours.push_back({join({oxglide::formTitle(other), " form (same platform position)"}), changes, *made,
+                              false, {}});
+    }
+    return neighbours;
+}
+
+// -- maps ----------------------------------------------------------------------------------
+
+void OxGlide::fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
+                         std::span<float> margins) const
+{
+    const OxGlideDesign &d = m_design;
+    const double l = d.rod;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const std::size_t n = values.size();
+    if (!(y > 0.0) || y > l) {
+        std::fill(values.begin(), values.end(), nan);
+        std::fill(margins.begin(), margins.end(), nan);
+        return;
+    }
+    const double w = std::sqrt(l * l - y * y);
+    const double sign = d.form == oxglide::formX ? -1.0 : 1.0;
+    // the slice of reachable x at this height: both slider pairs on [0, L]
+    const double lo = std::max(0.5 * d.width + sign * w, -0.5 * d.width - sign * w);
+    const double hi = std::min(d.guideLength + 0.5 * d.width + sign * w, d.guideLength - 0.5 * d.width - sign * w);
+    const double value = quantity == MapQuantity::Determinant ? -sign * 2.0 * y / std::max(w, 1e-300)
+                                                              : (w > 0.0 ? std::max(y / w, w / y)
+                                                                         : std::numeric_limits<double>::infinity());
+    const float margin = static_cast<float>(std::min(y, w) / l);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = x0 + static_cast<double>(i) * dx;
+        const bool inside = x >= lo && x <= hi;
+        values[i] = inside ? static_cast<float>(value) : nan;
+        if (!margins.empty())
+            margins[i] = inside ? margin : nan;
+    }
+}
+
+std::vector<SingularCurve> OxGlide::singularCurves() const
+{
+    const OxGlideDesign &d = m_design;
+    std::vector<SingularCurve> curves;
+    // y = l: rods perpendicular to the guides (inverse) and parallel to each other (direct):
+    // the O↔X crossing, the top edge of both workspaces
+    const Eigen::Vector2d from(0.5 * d.width, d.rod), to(d.guideLength - 0.5 * d.width, d.rod);
+    curves.push_back({SingularCurve::Type::Inverse, "rods ⟂ guides: the O↔X crossing", {from, to}});
+    curves.push_back({SingularCurve::Type::Direct, "rods parallel: the platform can swing", {from, to}});
+    // y = 0: the rods along the guides, where the workspace reaches down that far
+    const double sign = d.form == oxglide::formX ? -1.0 : 1.0, w = d.rod;
+    const double lo = std::max(0.5 * d.width + sign * w, -0.5 * d.width - sign * w);
+    const double hi = std::min(d.guideLength + 0.5 * d.width + sign * w, d.guideLength - 0.5 * d.width - sign * w);
+    if (lo < hi)
+        curves.push_back({SingularCurve::Type::Direct, "rods along the guides", {{lo, 0.0}, {hi, 0.0}}});
+    return curves;
+}
+
+// -- drawing -------------------------------------------------------------------------------
+
+Result<Pose> OxGlide::dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const
+{
+    if (handle == 0) {
+        Coordinates outputs(2);
+        outputs << target.x(), target.y();
+        return solveInverse(outputs, &current);
+    }
+    if (handle == 1 || handle == 2) {
+        Coordinates inputs = current.inputs;
+        inputs[handle - 1] = std::clamp(target.x(), 0.0, m_design.guideLength);
+        return solveDirect(inputs, &current);
+    }
+    return Failure{FailureKind::UnknownName, {}, "No handle with that index."};
+}
+
+} // namespace pkm

@@ -1,0 +1,434 @@
+#include "linkageview3d.h"
+
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFrame>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMessageBox>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLWidget>
+#include <QSaveFile>
+#include <QStandardPaths>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+
+namespace pkm {
+
+/// The OpenGL surface: draws through its view and leaves every input event to it (ignored
+/// events go on to the parent).
+class LinkageView3D::Canvas : public QOpenGLWidget
+{
+public:
+    explicit Canvas(LinkageView3D *view)
+        : QOpenGLWidget(view)
+        , m_view(view)
+    {
+        // On this widget only: the rest of the application keeps the platform's format.
+        setFormat(Renderer3D::surfaceFormat());
+        setFocusPolicy(Qt::NoFocus);
+    }
+
+protected:
+    void initializeGL() override { m_view->initializeGl(); }
+    void paintGL() override { m_view->paintGl(); }
+
+private:
+    LinkageView3D *m_view;
+};
+
+LinkageView3D::LinkageView3D(QWidget *parent)
+    : QWidget(parent)
+{
+    setFocusPolicy(Qt::WheelFocus);
+
+    m_unavailableLabel = new QLabel(this);
+    m_unavailableLabel->setWordWrap(true);
+    m_unavailableLabel->setAlignment(Qt::AlignCenter);
+    m_unavailableLabel->setMargin(24);
+    m_unavailableLabel->setAutoFillBackground(true);
+    QPalette palette = m_unavailableLabel->palette();
+    palette.setColor(QPalette::Window, Renderer3D::backgroundColour());
+    palette.setColor(QPalette::WindowText, QColor(0x1c, 0x20, 0x26));
+    m_unavailableLabel->setPalette(palette);
+    QFont font = m_unavailableLabel->font();
+    font.setPointSizeF(font.pointSizeF() * 1.25);
+    m_unavailableLabel->setFont(font);
+    m_unavailableLabel->hide();
+
+    // Known before the first paint, so that a view that can never draw says so at once and
+    // never puts a QOpenGLWidget into a window that cannot composite it.
+    static const QString problem = Renderer3D::probeOpenGL(); // once per process: it makes a context
+
+    if (problem.isEmpty())
+        m_canvas = new Canvas(this);
+    else
+        setUnavailable(problem);
+}
+
+LinkageView3D::~LinkageView3D()
+{
+    cleanupGl();
+}
+
+QOpenGLWidget *LinkageView3D::glWidget() const
+{
+    return m_canvas;
+}
+
+void LinkageView3D::setUnavailable(const QString &reason)
+{
+    m_glFailed = true;
+    const QString headline = tr("3D view unavailable: OpenGL 3.3 could not be started.");
+    m_glStatus = headline + QLatin1Char(' ') + reason;
+    m_unavailableLabel->setText(headline + QLatin1Char('\n') + reason);
+    m_unavailableLabel->setGeometry(rect());
+    m_unavailableLabel->show();
+    m_unavailableLabel->raise();
+    if (m_canvas)
+        m_canvas->hide();
+}
+
+void LinkageView3D::requestFrame()
+{
+    if (m_canvas)
+        m_canvas->update();
+}
+
+void LinkageView3D::cleanupGl()
+{
+    if (!m_canvas || !m_renderer.isInitialized())
+        return;
+    m_canvas->makeCurrent();
+    m_renderer.cleanup();
+    m_canvas->doneCurrent();
+}
+
+void LinkageView3D::initializeGl()
+{
+    // A new context after reparenting: the old objects went with the old one.
+    connect(m_canvas->context(), &QOpenGLContext::aboutToBeDestroyed, this, &LinkageView3D::cleanupGl,
+        Qt::UniqueConnection);
+    if (!m_renderer.initialize()) {
+        setUnavailable(m_renderer.errorString());
+        return;
+    }
+    m_glFailed = false;
+    m_glStatus = m_renderer.glDescription();
+    m_unavailableLabel->hide();
+}
+
+void LinkageView3D::paintGl()
+{
+    if (!m_renderer.isInitialized())
+        return; // the label says why
+    QElapsedTimer timer;
+    timer.start();
+    syncViewport();
+    m_renderer.render(m_camera, m_canvas->size(), m_canvas->devicePixelRatioF());
+    ++m_frameCount;
+    m_lastFrameMilliseconds = double(timer.nsecsElapsed()) / 1e6;
+}
+
+void LinkageView3D::syncViewport()
+{
+    m_camera.setViewport(width(), height());
+}
+
+void LinkageView3D::setScene(const Scene3D &scene)
+{
+    m_scene = scene;
+    m_renderer.setScene(scene); // CPU only: fine without a context
+    m_camera.setClipBounds(m_renderer.drawnBounds());
+    if (!m_hasScene) {
+        m_hasScene = true;
+        fit();
+        return;
+    }
+    requestFrame();
+}
+
+void LinkageView3D::setCamera(const Camera3D &camera)
+{
+    const Projection before = m_camera.projection();
+    m_camera = camera;
+    syncViewport();
+    if (m_hasScene)
+        m_camera.setClipBounds(m_renderer.drawnBounds());
+    m_userMoved = true;
+    requestFrame();
+    emit cameraChanged();
+    if (camera.projection() != before)
+        emit projectionChanged(camera.projection());
+}
+
+void LinkageView3D::fit()
+{
+    syncViewport();
+    m_camera.fit(m_renderer.modelBounds());
+    m_camera.setClipBounds(m_renderer.drawnBounds());
+    m_userMoved = false;
+    requestFrame();
+    emit cameraChanged();
+}
+
+void LinkageView3D::setStandardView(Camera3D::StandardView view)
+{
+    m_camera.setStandardView(view);
+    fit();
+}
+
+void LinkageView3D::setProjection(Camera3D::Projection projection)
+{
+    if (projection == m_camera.projection())
+        return;
+    m_camera.setProjection(projection);
+    // A fitted view is fitted again: the two projections need different distances.
+    if (!m_userMoved && m_hasScene)
+        fit();
+    requestFrame();
+    emit projectionChanged(projection);
+}
+
+QImage LinkageView3D::renderImage(const QSize &size)
+{
+    m_imageError.clear();
+    if (size.isEmpty()) {
+        m_imageError = tr("A picture needs a size of at least one pixel.");
+        return {};
+    }
+    syncViewport();
+    if (m_canvas && m_renderer.isInitialized() && m_canvas->isValid()) {
+        m_canvas->makeCurrent();
+        QImage image = m_renderer.renderImage(m_camera, size);
+        if (image.isNull())
+            m_imageError = m_renderer.errorString();
+        m_canvas->doneCurrent();
+        return image;
+    }
+    if (m_glFailed) {
+        m_imageError = m_glStatus;
+        return {};
+    }
+    // Never shown: a context of its own.
+    QImage image = Renderer3D::renderOffscreen(m_scene, m_camera, size, &m_imageError);
+    return image;
+}
+
+void LinkageView3D::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    m_unavailableLabel->setGeometry(rect());
+    if (m_canvas)
+        m_canvas->setGeometry(rect());
+    syncViewport();
+    if (m_hasScene && !m_userMoved)
+        fit();
+}
+
+void LinkageView3D::cameraMoved()
+{
+    m_userMoved = true;
+    requestFrame();
+    emit cameraChanged();
+}
+
+void LinkageView3D::mousePressEvent(QMouseEvent *event)
+{
+    const bool shift = event->modifiers() & Qt::ShiftModifier;
+    if (event->button() == Qt::LeftButton)
+        m_drag = shift ? Drag::Pan : Drag::Orbit;
+    else if (event->button() == Qt::RightButton || event->button() == Qt::MiddleButton)
+        m_drag = Drag::Pan;
+    else
+        return QWidget::mousePressEvent(event);
+    m_lastPosition = event->position().toPoint();
+    setCursor(m_drag == Drag::Orbit ? Qt::SizeAllCursor : Qt::ClosedHandCursor);
+    event->accept();
+}
+
+void LinkageView3D::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_drag == Drag::None)
+        return QWidget::mouseMoveEvent(event);
+    const QPoint position = event->position().toPoint();
+    const QPoint delta = position - m_lastPosition;
+    m_lastPosition = position;
+    syncViewport();
+    if (m_drag == Drag::Orbit)
+        m_camera.orbit(delta.x(), delta.y());
+    else
+        m_camera.pan(delta.x(), delta.y(), height());
+    cameraMoved();
+    event->accept();
+}
+
+void LinkageView3D::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_drag == Drag::None)
+        return QWidget::mouseReleaseEvent(event);
+    if (!(event->buttons() & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton))) {
+        m_drag = Drag::None;
+        unsetCursor();
+    }
+    event->accept();
+}
+
+void LinkageView3D::mouseDoubleClickEvent(QMouseEvent *event)
+{
+    if (event->button() != Qt::LeftButton)
+        return QWidget::mouseDoubleClickEvent(event);
+    m_drag = Drag::None;
+    unsetCursor();
+    fit();
+    event->accept();
+}
+
+void LinkageView3D::wheelEvent(QWheelEvent *event)
+{
+    const double steps = event->angleDelta().y() / 120.0;
+    if (steps == 0.0)
+        return QWidget::wheelEvent(event);
+    syncViewport();
+    const QPointF cursor = event->position();
+    m_camera.zoom(steps, Eigen::Vector2d(cursor.x(), cursor.y()));
+    cameraMoved();
+    event->accept();
+}
+
+void LinkageView3D::keyPressEvent(QKeyEvent *event)
+{
+    switch (event->key()) {
+    case Qt::Key_F:
+    case Qt::Key_Home:
+        fit();
+        break;
+    case Qt::Key_1:
+        setStandardView(StandardView::Front);
+        break;
+    case Qt::Key_3:
+        setStandardView(StandardView::Side);
+        break;
+    case Qt::Key_7:
+        setStandardView(StandardView::Top);
+        break;
+    case Qt::Key_5:
+        setProjection(projection() == Projection::Perspective ? Projection::Orthographic : Projection::Perspective);
+        break;
+    default:
+        return QWidget::keyPressEvent(event);
+    }
+    event->accept();
+}
+
+// -- View3DPanel ----------------------------------------------------------------------------
+
+View3DPanel::View3DPanel(QWidget *parent)
+    : QWidget(parent)
+    , m_view(new LinkageView3D(this))
+{
+    auto *bar = new QHBoxLayout;
+    bar->setContentsMargins(6, 4, 6, 4);
+    bar->setSpacing(4);
+    auto addButton = [&](const QString &text, const QString &toolTip, const QString &name) {
+        auto *button = new QToolButton(this);
+        button->setText(text);
+        button->setToolTip(toolTip);
+        button->setObjectName(name);
+        button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        button->setAutoRaise(false);
+        bar->addWidget(button);
+        return button;
+    };
+    auto addSeparator = [&] {
+        auto *line = new QFrame(this);
+        line->setFrameShape(QFrame::VLine);
+        line->setFrameShadow(QFrame::Sunken);
+        bar->addWidget(line);
+    };
+    using View = Camera3D::StandardView;
+    QToolButton *fit = addButton(tr("Fit"), tr("Show the whole mechanism (F, or double-click)"), QStringLiteral("fit"));
+    connect(fit, &QToolButton::clicked, m_view, &LinkageView3D::fit);
+    addSeparator();
+    const struct {
+        QString text, toolTip, name;
+        View view;
+    } views[] = {
+        {tr("Front"), tr("Look at the mechanism plane, as the 2D view does (1)"), QStringLiteral("front"), View::Front},
+        {tr("Top"), tr("Look down from above (7)"), QStringLiteral("top"), View::Top},
+        {tr("Side"), tr("Look from the right (3)"), QStringLiteral("side"), View::Side},
+        {tr("Isometric"), tr("Look from the front, right and above at once"), QStringLiteral("isometric"),
+            View::Isometric},
+    };
+    for (const auto &entry : views) {
+        QToolButton *button = addButton(entry.text, entry.toolTip, entry.name);
+        const View view = entry.view;
+        connect(button, &QToolButton::clicked, m_view, [this, view] { m_view->setStandardView(view); });
+    }
+    addSeparator();
+    m_perspectiveButton = addButton(tr("Perspective"),
+        tr("Perspective when on, orthographic (true to scale) when off (5)"), QStringLiteral("perspective"));
+    m_perspectiveButton->setCheckable(true);
+    m_perspectiveButton->setChecked(m_view->projection() == Camera3D::Projection::Perspective);
+    connect(m_perspectiveButton, &QToolButton::toggled, m_view, [this](bool on) {
+        m_view->setProjection(on ? Camera3D::Projection::Perspective : Camera3D::Projection::Orthographic);
+    });
+    connect(m_view, &LinkageView3D::projectionChanged, m_perspectiveButton, [this](Camera3D::Projection projection) {
+        m_perspectiveButton->setChecked(projection == Camera3D::Projection::Perspective);
+    });
+    bar->addStretch(1);
+    QToolButton *save = addButton(
+        tr("Save picture…"), tr("Save the 3D view as a PNG picture at twice its size"), QStringLiteral("savePicture"));
+    connect(save, &QToolButton::clicked, this, &View3DPanel::savePictureAs);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addLayout(bar);
+    layout->addWidget(m_view, 1);
+    m_lastDirectory = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+}
+
+bool View3DPanel::savePicture(const QString &path, QString *error)
+{
+    auto fail = [error](const QString &message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    const QSize base = m_view->size().isEmpty() ? m_view->sizeHint() : m_view->size();
+    const QImage image = m_view->renderImage(2 * base);
+    if (image.isNull())
+        return fail(tr("The picture could not be rendered. %1").arg(m_view->imageError()));
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return fail(tr("“%1” could not be opened for writing: %2").arg(path, file.errorString()));
+    if (!image.save(&file, "PNG")) {
+        file.cancelWriting();
+        return fail(tr("The picture could not be written to “%1”.").arg(path));
+    }
+    if (!file.commit())
+        return fail(tr("“%1” could not be saved: %2").arg(path, file.errorString()));
+    return true;
+}
+
+void View3DPanel::savePictureAs()
+{
+    const QString suggested = m_lastDirectory.isEmpty() ? QStringLiteral("mechanism-3d.png")
+                                                        : m_lastDirectory + QStringLiteral("/mechanism-3d.png");
+    QString path = QFileDialog::getSaveFileName(this, tr("Save picture"), suggested, tr("PNG pictures (*.png)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path.append(QStringLiteral(".png"));
+    m_lastDirectory = QFileInfo(path).absolutePath();
+    QString error;
+    if (!savePicture(path, &error))
+        QMessageBox::warning(this, tr("Save picture"), error);
+}
+
+} // namespace pkm
