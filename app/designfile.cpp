@@ -78,8 +78,16 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
             const std::string word = it.value().toString().toStdString();
             const auto choice = std::find_if(info->choices.begin(), info->choices.end(),
                                              [&](const auto &c) { return c.first == word; });
-            if (choice == info->choices.end())
-                return fileFailure(origin, QStringLiteral("%1: parameter '%2' is not a number.").arg(origin, it.key()));
+            if (choice == info->choices.end()) {
+                QStringList names;
+                for (const auto &c : info->choices)
+                    names << QString::fromStdString(c.first);
+                return fileFailure(origin, names.isEmpty()
+                                               ? QStringLiteral("%1: parameter '%2' is not a number.").arg(origin, it.key())
+                                               : QStringLiteral("%1: parameter '%2' must be a number or one of %3, not '%4'.")
+                                                     .arg(origin, it.key(), names.join(QStringLiteral(", ")),
+                                                          it.value().toString()));
+            }
             values[info->name] = choice->second;
             continue;
         }

@@ -239,6 +239,11 @@ void DesignPanel::commit(const QString &name, bool continuous)
         if (toQString(info.name) != name)
             continue;
         double value = 0;
+        // a mode may be typed by its name ("X")
+        for (const auto &[choice, number] : info.choices) {
+            if (edit->text().trimmed().compare(toQString(choice), Qt::CaseInsensitive) == 0)
+                edit->setText(QLocale().toString(number));
+        }
         if (!parseNumber(edit->text(), unitText(info.unit), &value)) {
             markInvalid(name, tr("%1 (%2): '%3' is not a number.").arg(name, toQString(info.label), edit->text()));
             return;

@@ -80,6 +80,28 @@ private slots:
         QTest::newRow("text value") << QByteArray(head + R"("parameters": {"a": "long"}})") << "'a' is not a number";
         QTest::newRow("invalid value") << QByteArray(head + R"("parameters": {"a": -1}})") << "a (crank";
         QTest::newRow("pose out of range") << QByteArray(head + R"("pose": {"theta": 80}})") << "θ = 80";
+        const QByteArray glide = R"({"format": "pkm-studio-design", "version": 1, "mechanism": "oxglide", )";
+        QTest::newRow("unknown form") << QByteArray(glide + R"("parameters": {"mode": "Q"}})")
+                                      << "'mode' must be a number or one of O, X, not 'Q'";
+        QTest::newRow("form number") << QByteArray(glide + R"("parameters": {"mode": 0}})") << "mode = 0 is invalid";
+    }
+
+    void modeByName()
+    {
+        // a mode parameter may be given by its name; z goes with the outputs
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("crossed.pkm.json"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "pkm-studio-design", "version": 1, "mechanism": "oxglide",
+                      "parameters": {"mode": "X"}, "pose": {"x": 65, "y": 40, "z": 30}})");
+        file.close();
+        auto loaded = designfile::load(path);
+        QVERIFY2(loaded.ok(), loaded ? "" : loaded.failure().message.c_str());
+        QCOMPARE(loaded->mechanism->parameters().at("mode"), -1.0);
+        QCOMPARE(loaded->pose.outputs[1], 40.0);
+        QCOMPARE(loaded->pose.inputs[2], 30.0);
+        QVERIFY(loaded->pose.inputs[0] > loaded->pose.inputs[1]); // crossed
     }
     void badFiles()
     {

@@ -162,6 +162,8 @@ void TestView3D::matchesReferencePicture_data()
     QTest::newRow("pjoint-front-orthographic") << QStringLiteral("pjoint") << View::Front << Projection::Orthographic;
     QTest::newRow("moma-isometric") << QStringLiteral("moma") << View::Isometric << Projection::Perspective;
     QTest::newRow("moma-top-orthographic") << QStringLiteral("moma") << View::Top << Projection::Orthographic;
+    QTest::newRow("oxglide-isometric") << QStringLiteral("oxglide") << View::Isometric << Projection::Perspective;
+    QTest::newRow("oxglide-front-orthographic") << QStringLiteral("oxglide") << View::Front << Projection::Orthographic;
 }
 
 void TestView3D::matchesReferencePicture()
@@ -342,6 +344,7 @@ void TestView3D::frameTime_data()
     QTest::addColumn<QString>("kind");
     QTest::newRow("pjoint") << QStringLiteral("pjoint");
     QTest::newRow("moma") << QStringLiteral("moma");
+    QTest::newRow("oxglide") << QStringLiteral("oxglide");
 }
 
 void TestView3D::frameTime()
