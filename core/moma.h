@@ -90,6 +90,8 @@ public:
     const PlanarWorkspace *planarWorkspace() const override { return this; }
 
     Scene scene(const Pose &pose) const override;
+    /// The solid model (core/models3d.cpp).
+    Scene3D scene3d(const Pose &pose) const override;
     /// Handle 0 (P) solves the inverse problem; handles 1 and 2 (Z₁, Z₂) move a slider along
     /// its guide and solve the direct problem.
     Result<Pose> dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const override;

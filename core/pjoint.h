@@ -103,6 +103,8 @@ public:
     Jacobians jacobians(const Pose &pose) const override;
 
     Scene scene(const Pose &pose) const override;
+    /// The solid model (core/models3d.cpp).
+    Scene3D scene3d(const Pose &pose) const override;
     Result<Pose> dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const override;
 
     /// Singularity class at θ (DOMAIN §1, (9–11)): J_θ = 0 direct, J_d = 0 inverse, both combined.

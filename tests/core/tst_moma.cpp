@@ -345,6 +345,42 @@ class TestMoma : public QObject
     Q_OBJECT
 
 private slots:
+    void solidModelFollowsThePose()
+    {
+        // guides, carriages on them at p_i, two links in neighbouring layers, the platform at P;
+        // every part inside an extent that does not change with the pose
+        auto made = Moma::create(MomaDesign {});
+        QVERIFY(made.ok());
+        const auto &m = static_cast<const Moma &>(**made);
+        const Eigen::AlignedBox3d extent = m.scene3d(m.homePose()).extent;
+        int poses = 0;
+        for (double p1 = 0; p1 <= 200; p1 += 25) {
+            for (double p2 = 0; p2 <= 200; p2 += 25) {
+                Coordinates q(2);
+                q << p1, p2;
+                auto pose = m.solveDirect(q);
+                if (!pose)
+                    continue;
+                ++poses;
+                const Scene3D model = m.scene3d(*pose);
+                QVERIFY(model.extent.isApprox(extent));
+                int guides = 0, links = 0;
+                for (const Solid &solid : model.solids) {
+                    QVERIFY2(extent.contains(solidBounds(solid)), solid.label.c_str());
+                    guides += solid.role == PartRole::Guide ? 1 : 0;
+                    links += solid.role == PartRole::Link ? 1 : 0;
+                    if (solid.label == "carriage Z1")
+                        QVERIFY((0.5 * (solid.from + solid.to)).head<2>().isApprox(moma::sliderJoint(m.design(), 0, p1)));
+                    if (solid.label == "platform")
+                        QVERIFY((solid.from.head<2>() - pose->outputs.head<2>()).norm() < 1e-9);
+                }
+                QCOMPARE(guides, 2);
+                QCOMPARE(links, 2);
+            }
+        }
+        QVERIFY(poses > 20);
+    }
+
     // -- the closed forms ---------------------------------------------------------------------
 
     void closedForms_data() { addPresetRows(); }

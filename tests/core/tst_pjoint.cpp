@@ -79,6 +79,47 @@ class TestPJoint : public QObject
     Q_OBJECT
 
 private slots:
+    void solidModelFollowsTheActuator()
+    {
+        // fig. 2: two parallel parallelograms (six bars), the motor between them and its screw,
+        // whose visible extension is d minus the body: it follows the actuator
+        auto joint = make(design(170, 0.4));
+        double previousScrew = 0, previousD = 0;
+        const Scene3D first = joint->scene3d(joint->homePose());
+        for (double thetaDeg = -60; thetaDeg <= 60; thetaDeg += 15) {
+            const Pose pose = *joint->solveInverse(Coordinates::Constant(1, thetaDeg * deg));
+            const Scene3D model = joint->scene3d(pose);
+            int bars = 0, motors = 0;
+            double screw = -1;
+            for (const Solid &solid : model.solids) {
+                bars += solid.role == PartRole::Link ? 1 : 0;
+                motors += solid.role == PartRole::Actuator ? 1 : 0;
+                if (solid.label == "lead screw")
+                    screw = (solid.to - solid.from).norm();
+                // every part inside the extent, which does not change with the pose
+                const Eigen::AlignedBox3d bounds = solidBounds(solid);
+                QVERIFY2(model.extent.contains(bounds), solid.label.c_str());
+            }
+            QVERIFY(model.extent.isApprox(first.extent));
+            QCOMPARE(bars, 6);
+            QCOMPARE(motors, 1);
+            const double d = pose.inputs[0];
+            QVERIFY(std::abs(screw - (d - joint->design().motorLength)) < 1e-9);
+            if (thetaDeg > -60)
+                QVERIFY(std::abs((screw - previousScrew) - (d - previousD)) < 1e-9);
+            previousScrew = screw;
+            previousD = d;
+            // the two parallelograms lie in parallel planes either side of the motor
+            std::vector<double> planes;
+            for (const Solid &solid : model.solids) {
+                if (solid.role == PartRole::Link)
+                    planes.push_back(solid.from.z());
+            }
+            QVERIFY(*std::min_element(planes.begin(), planes.end()) < -0.5 * joint->design().motorWidth);
+            QVERIFY(*std::max_element(planes.begin(), planes.end()) > 0.5 * joint->design().motorWidth);
+        }
+    }
+
     void prototypeStroke()
     {
         // Section 4.2: a = 170 mm, k = 0.4, θ = ±60° → d_max ≈ 231.4, d_min ≈ 116.2, stroke ≈ 115.2 mm.
