@@ -3,6 +3,7 @@
 #include "cliarguments.h"
 #include "clidesign.h"
 #include "clihelp.h"
+#include "clirender.h"
 #include "clireport.h"
 #include "clisweep.h"
 #include "cliworkspace.h"
@@ -10,6 +11,10 @@
 #include "registry.h"
 #include "texttable.h"
 
+#include <QBuffer>
+#include <QByteArray>
+#include <QImage>
+#include <QSaveFile>
 #include <QString>
 
 #include <algorithm>
@@ -375,6 +380,48 @@ int printOutput(std::FILE *out, std::FILE *err, std::string_view text)
     return finishOutput(out, err, std::fwrite(text.data(), 1, text.size(), out) == text.size());
 }
 
+std::optional<std::string> saveFile(const std::string &path, const std::function<bool(const ChunkWriter &)> &produce)
+{
+    QSaveFile file(QString::fromStdString(path));
+    const auto failure = [&](const QString &why) {
+        std::string reason = why.toStdString();
+        while (!reason.empty() && (reason.back() == '.' || reason.back() == ' '))
+            reason.pop_back();
+        return std::optional<std::string>(
+            "Cannot write '" + path + "': " + (reason.empty() ? "unknown error" : reason) + ".");
+    };
+    if (!file.open(QIODevice::WriteOnly))
+        return failure(file.errorString());
+    const bool written = produce([&](std::string_view chunk) {
+        return file.write(chunk.data(), static_cast<qint64>(chunk.size())) == static_cast<qint64>(chunk.size());
+    });
+    if (!written) {
+        const QString why = file.errorString();
+        file.cancelWriting();
+        return failure(why);
+    }
+    if (!file.commit())
+        return failure(file.errorString());
+    return std::nullopt;
+}
+
+std::optional<std::string> saveBytes(const std::string &path, const QByteArray &bytes)
+{
+    return saveFile(path, [&](const ChunkWriter &write) {
+        return write(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    });
+}
+
+std::optional<std::string> savePng(const std::string &path, const QImage &image)
+{
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    if (image.isNull() || !image.save(&buffer, "PNG"))
+        return "Cannot write '" + path + "': the PNG picture could not be encoded.";
+    return saveBytes(path, bytes);
+}
+
 std::string evalJson(const Mechanism &mechanism, const Pose &pose)
 {
     const ReportLayout &layout = mechanism.reportLayout();
@@ -414,6 +461,8 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
     const auto prepared = prepareDesign(*invocation.design, invocation.sets);
     if (!prepared)
         return fail(err, prepared.failure());
+    if (invocation.command == Command::Render)
+        return runRenderCommand(*prepared, invocation, out, err); // it prints the note where it draws
     if (!prepared->note.empty())
         printError(err, "note: " + prepared->note);
 

@@ -18,8 +18,13 @@
 #include <QStringList>
 
 #include <cstdio>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
+
+class QByteArray;
+class QImage;
 
 namespace pkm {
 
@@ -56,6 +61,19 @@ std::string kindTitle(std::string_view kind);
 void printError(std::FILE *err, const std::string &message);
 /// Writes `text` to `out`: CliSuccess, or CliOutputError with a message on `err`.
 int printOutput(std::FILE *out, std::FILE *err, std::string_view text);
+
+// -- output files: written completely or not at all -----------------------------------------
+
+/// Hands one chunk of a file to saveFile(): false when it could not be written.
+using ChunkWriter = std::function<bool(std::string_view)>;
+/// Writes `path` atomically: the chunks `produce` gives its ChunkWriter go to a temporary file
+/// (QSaveFile) that replaces `path` only once all of them were written and `produce` returned
+/// true; otherwise `path` is left as it was. The failure is one sentence naming the file.
+std::optional<std::string> saveFile(const std::string &path, const std::function<bool(const ChunkWriter &)> &produce);
+/// saveFile() with the whole content at once.
+std::optional<std::string> saveBytes(const std::string &path, const QByteArray &bytes);
+/// `image` encoded as PNG (with its text keys, e.g. "Title"), saved by saveBytes().
+std::optional<std::string> savePng(const std::string &path, const QImage &image);
 } // namespace cli
 
 } // namespace pkm

@@ -5,7 +5,10 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 namespace pkm::cli {
 
@@ -20,16 +23,18 @@ enum OptionFlag : unsigned {
     OptionGrid = 1u << 5,
     OptionQuantity = 1u << 6,
     OptionOutput = 1u << 7, ///< -o FILE
+    OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption
 };
 
 struct CommandSpec {
     Command command;
     std::string_view name;
     unsigned options;
-    std::array<std::string_view, 2> outputTypes {}; ///< the extensions -o takes
+    std::array<std::string_view, 3> outputTypes {}; ///< the extensions -o takes (empty: unused)
+    bool needsOutput = false; ///< -o FILE is required
 };
 
-constexpr std::array<CommandSpec, 6> commandSpecs = {{
+constexpr std::array<CommandSpec, 7> commandSpecs = {{
     {Command::List, "list", OptionJson},
     {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
     {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet},
@@ -38,6 +43,7 @@ constexpr std::array<CommandSpec, 6> commandSpecs = {{
         {"png", "svg"}},
     {Command::Map, "map", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput,
         {"png", "csv"}},
+    {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture, {"png", "svg", "pdf"}, true},
 }};
 
 const CommandSpec *findCommand(std::string_view name)
@@ -66,6 +72,9 @@ unsigned optionFlag(std::string_view option)
         return OptionQuantity;
     if (option == "-o" || option == "--output")
         return OptionOutput;
+    if (option == "--view" || option == "--size" || option == "--camera" || option == "--orthographic"
+        || option == "--no-caption")
+        return OptionPicture;
     return 0;
 }
 
@@ -97,6 +106,41 @@ Failure notANumber(const std::string &context, const std::string &culprit, std::
 bool isHelp(const std::string &argument)
 {
     return argument == "-h" || argument == "--help";
+}
+
+/// "a .png, .svg or .pdf file"
+std::string fileTypes(const std::array<std::string_view, 3> &types)
+{
+    std::vector<std::string_view> used;
+    for (std::string_view type : types) {
+        if (!type.empty())
+            used.push_back(type);
+    }
+    std::string text("a ");
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        if (i > 0)
+            text.append(i + 1 == used.size() ? " or " : ", ");
+        text.append(".").append(used[i]);
+    }
+    return text.append(" file");
+}
+
+/// "1600x1200" (also "1600X1200", "1600×1200"): whole numbers, or nothing.
+std::optional<std::pair<double, double>> parseSize(std::string_view text)
+{
+    std::size_t at = text.find_first_of("xX");
+    std::size_t separator = 1;
+    if (const std::size_t times = text.find("×"); times != std::string_view::npos && times < at) {
+        at = times;
+        separator = std::string_view("×").size();
+    }
+    if (at == std::string_view::npos)
+        return std::nullopt;
+    const auto width = parseNumber(text.substr(0, at));
+    const auto height = parseNumber(text.substr(at + separator));
+    if (!width || !height)
+        return std::nullopt;
+    return std::pair {*width, *height};
 }
 
 } // namespace
@@ -201,6 +245,15 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             (flag == OptionJson ? invocation.json : invocation.csv) = true;
             continue;
         }
+        if (option == "--orthographic" || option == "--no-caption") {
+            if (inlineValue)
+                return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
+            if (option == "--orthographic")
+                invocation.orthographic = true;
+            else
+                invocation.caption = false;
+            continue;
+        }
         // The remaining options take a value, which may look like a negative number.
         std::string value;
         if (inlineValue) {
@@ -245,12 +298,43 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
         } else if (flag == OptionOutput) {
             const std::string extension = fileExtension(value);
             const auto &types = command.outputTypes;
-            if (value.empty() || std::find(types.begin(), types.end(), extension) == types.end()) {
+            if (value.empty() || extension.empty() || std::find(types.begin(), types.end(), extension) == types.end()) {
                 return usageFailure(value,
-                    option + " " + value + ": " + quotedCommand + " writes a ." + std::string(types[0]) + " or ."
-                        + std::string(types[1]) + " file, so the name must end in one of these" + seeHelp + ".");
+                    option + " " + value + ": " + quotedCommand + " writes " + fileTypes(types)
+                        + ", so the name must end in one of these" + seeHelp + ".");
             }
             invocation.output = value;
+        } else if (option == "--view") {
+            if (value != "2d" && value != "3d") {
+                return usageFailure("--view",
+                    context + ": the view must be '2d' (the drawing of the mechanism plane) or '3d' (the solid model)"
+                        + seeHelp + ".");
+            }
+            invocation.view = value;
+        } else if (option == "--camera") {
+            if (value != "front" && value != "top" && value != "side" && value != "iso") {
+                return usageFailure(
+                    "--camera", context + ": the camera must be 'front', 'top', 'side' or 'iso'" + seeHelp + ".");
+            }
+            invocation.camera = value;
+        } else if (option == "--size") {
+            const auto size = parseSize(value);
+            const auto valid = [](double side) {
+                return side >= minPictureSide && side <= maxPictureSide && side == std::floor(side);
+            };
+            if (!size || !valid(size->first) || !valid(size->second)) {
+                std::string message(context);
+                message.append(": the size must be WIDTHxHEIGHT in pixels, whole numbers from ")
+                    .append(std::to_string(minPictureSide))
+                    .append(" to ")
+                    .append(std::to_string(maxPictureSide))
+                    .append(", e.g. 1600x1200")
+                    .append(seeHelp)
+                    .append(".");
+                return usageFailure("--size", message);
+            }
+            invocation.width = static_cast<int>(size->first);
+            invocation.height = static_cast<int>(size->second);
         } else if (option == "--steps") {
             const auto number = parseNumber(value);
             // 10^9 rows are ~300 GB of CSV: far beyond any use.
@@ -272,6 +356,15 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
     if ((command.options & OptionDesign) && !invocation.design) {
         return usageFailure("DESIGN",
             quotedCommand + " needs a DESIGN: a preset id (see 'pkm list') or a .pkm.json file" + seeHelp + ".");
+    }
+    if (command.needsOutput && !invocation.output) {
+        return usageFailure("-o", quotedCommand + " needs -o FILE, " + fileTypes(command.outputTypes) + seeHelp + ".");
+    }
+    if (invocation.view.value_or("2d") != "3d") {
+        if (invocation.camera)
+            return usageFailure("--camera", "--camera " + *invocation.camera + " needs --view 3d" + seeHelp + ".");
+        if (invocation.orthographic)
+            return usageFailure("--orthographic", "--orthographic needs --view 3d" + seeHelp + ".");
     }
     if (invocation.json && invocation.csv)
         return usageFailure("--csv", "--csv and --json exclude each other: give one.");

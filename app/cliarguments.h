@@ -12,15 +12,21 @@
 
 namespace pkm::cli {
 
-enum class Command { List, Show, Eval, Sweep, Workspace, Map };
+enum class Command { List, Show, Eval, Sweep, Workspace, Map, Render };
 
-/// "list", "show", "eval", "sweep", "workspace", "map".
+/// "list", "show", "eval", "sweep", "workspace", "map", "render".
 std::string_view commandName(Command command);
 
 /// --grid K of workspace and map: K cells along the longer side of the workspace.
 inline constexpr int defaultGrid = 400;
 inline constexpr int minGrid = 10;
 inline constexpr int maxGrid = 4000; ///< 16 million cells, 128 MB of map and margins
+
+/// --size WxH of render: pixels per side.
+inline constexpr int defaultPictureWidth = 1600;
+inline constexpr int defaultPictureHeight = 1200;
+inline constexpr int minPictureSide = 16;
+inline constexpr int maxPictureSide = 8000;
 
 /// One --set NAME=VALUE.
 struct Setting {
@@ -46,7 +52,13 @@ struct Invocation {
     std::optional<std::int64_t> steps;
     std::optional<int> grid; ///< --grid K (workspace, map): cells along the longer side
     std::optional<std::string> quantity; ///< --quantity det|cond (map)
-    std::optional<std::string> output; ///< -o FILE (workspace, map), its extension checked
+    std::optional<std::string> output; ///< -o FILE (workspace, map, render), its extension checked
+    std::optional<std::string> view; ///< --view 2d|3d (render)
+    std::optional<std::string> camera; ///< --camera front|top|side|iso (render, 3d only)
+    bool orthographic = false; ///< --orthographic (render, 3d only)
+    bool caption = true; ///< false with --no-caption (render)
+    int width = defaultPictureWidth; ///< --size WxH (render), pixels
+    int height = defaultPictureHeight;
 };
 
 /// The lower-case extension of `path` without the dot ("png"), empty without one.
@@ -54,7 +66,9 @@ std::string fileExtension(std::string_view path);
 
 /// Parses `arguments` (without the program name). A command that needs a DESIGN has one,
 /// sweep has all of --var, --from, --to and --steps, --grid is a whole number from 10 to 4000,
-/// --quantity is det or cond, and -o names a file of a type the command writes.
+/// --quantity is det or cond, -o names a file of a type the command writes (render needs one),
+/// --view is 2d or 3d, --camera one of front, top, side, iso and only with --view 3d (as
+/// --orthographic), and --size is WxH with whole numbers from 16 to 8000.
 Result<Invocation> parseArguments(const std::vector<std::string> &arguments);
 
 /// A mistake on the command line: exit status 2.

@@ -22,6 +22,10 @@ Commands:
                                            of every assembly/working mode
   map    DESIGN [--grid K] [--quantity det|cond] [--set N=V]... [--json]
          [-o FILE.png|.csv]                singularity map over the workspace
+  render DESIGN [--set N=V]... [--view 2d|3d] [--size WxH] [--camera front|top|side|iso]
+         [--orthographic] [--no-caption] -o FILE.png|.svg|.pdf
+                                           a picture of the mechanism in a pose: the
+                                           2D drawing or the 3D model
 
 DESIGN is a preset id (see 'pkm list') or a design file (*.pkm.json).
 --set NAME=VALUE (repeatable) changes a design parameter or sets a pose variable;
@@ -41,7 +45,8 @@ Exit status:
   1  the output could not be written
   2  usage error: bad command line, unknown name, not a number, invalid parameter
      value, unreadable or damaged design file
-  3  no solution: a pose out of range, unreachable or singular, an empty workspace
+  3  no solution: a pose out of range, unreachable or singular, an empty workspace,
+     no OpenGL for a 3D picture
 On an error pkm prints one sentence naming the culprit on stderr and nothing on stdout.
 )";
 
@@ -180,6 +185,48 @@ The file is written completely or not at all (a temporary file renamed at the en
 anything is printed. A map without a reachable cell exits with status 3.
 )";
 
+constexpr std::string_view renderHelp = R"(Usage: pkm render DESIGN [--set NAME=VALUE]... [--view 2d|3d] [--size WxH]
+                  [--camera front|top|side|iso] [--orthographic] [--no-caption]
+                  -o FILE.png|FILE.svg|FILE.pdf
+
+Draws the mechanism in a pose — the design's stored pose, or the one the --set values
+give — and writes the picture to FILE. The drawing is fitted to the range of motion, so
+pictures of several poses of one design line up. A caption at the bottom-left names the
+design and the pose (every pose variable in its display unit); a scale bar sits at the
+bottom-right.
+
+  --set NAME=VALUE    applied first, as in 'pkm eval' (theta=30, d=200, mode=X)
+  --view 2d           the drawing of the mechanism plane, as in PKM Studio's 2D view:
+                      light background, mm grid, links, joints, actuators, guides,
+                      angles and dimensions (the default)
+  --view 3d           the solid model, as in PKM Studio's 3D view, rendered with OpenGL
+  --size WxH          the picture in pixels, whole numbers from 16 to 8000 per side
+                      (default 1600x1200); SVG and PDF keep its proportions
+  --camera VIEW       3D only: front (the 2D view's direction), top, side or iso
+                      (isometric, the default), fitted to the model
+  --orthographic      3D only: parallel projection (default: perspective)
+  --no-caption        no caption line
+  -o FILE.png         a raster picture of WxH pixels
+  -o FILE.svg         2D: vector drawing with a WxH viewBox (text as SVG text);
+                      3D: the WxH picture embedded in an SVG
+  -o FILE.pdf         one page with the picture's proportions, 297 mm along the
+                      longer side (A4's length): 2D as vectors, 3D the WxH picture
+                      (-o FILE and --output FILE are the same)
+
+Prints one line: Wrote FILE, with the size and the view. The file is written completely
+or not at all (a temporary file renamed at the end); on an error nothing is written and
+an existing FILE is left as it was. A pose that cannot be solved exits with status 3, as
+in 'pkm eval'.
+
+No display is needed. 2D pictures are drawn on Qt's offscreen platform (unless
+QT_QPA_PLATFORM says otherwise). 3D pictures need OpenGL 3.3: with a display (DISPLAY or
+WAYLAND_DISPLAY) it is used; without one, or when it offers no OpenGL, pkm runs the same
+command again under 'xvfb-run' (Debian package xvfb, with Mesa's libgl1-mesa-dri), a
+virtual X server, which adds a few tenths of a second. When OpenGL cannot be had at all pkm says why
+and exits with status 3. Qt's own diagnostics are kept off stderr; PKM_QT_MESSAGES=1
+shows them.
+)";
+
 } // namespace
 
 std::string_view helpText(std::optional<Command> command)
@@ -199,6 +246,8 @@ std::string_view helpText(std::optional<Command> command)
         return workspaceHelp;
     case Command::Map:
         return mapHelp;
+    case Command::Render:
+        return renderHelp;
     }
     return mainHelp;
 }

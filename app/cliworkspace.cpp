@@ -7,10 +7,8 @@
 #include "registry.h"
 #include "texttable.h"
 
-#include <QBuffer>
 #include <QByteArray>
 #include <QRgb>
-#include <QSaveFile>
 #include <QString>
 
 #include <algorithm>
@@ -355,51 +353,9 @@ constexpr QRgb workspaceLine = qRgb(31, 78, 121);
 
 // -- files ---------------------------------------------------------------------------------
 
-/// Writes `path` atomically: the chunks from `produce` go to a temporary file that replaces
-/// `path` only once all of them were written. The failure names the file.
-template<typename Producer> std::optional<std::string> saveFile(const std::string &path, Producer &&produce)
-{
-    QSaveFile file(QString::fromStdString(path));
-    const auto failure = [&](const QString &why) {
-        std::string reason = why.toStdString();
-        while (!reason.empty() && (reason.back() == '.' || reason.back() == ' '))
-            reason.pop_back();
-        return std::optional<std::string>(
-            "Cannot write '" + path + "': " + (reason.empty() ? "unknown error" : reason) + ".");
-    };
-    if (!file.open(QIODevice::WriteOnly))
-        return failure(file.errorString());
-    const bool written = produce([&](std::string_view chunk) {
-        return file.write(chunk.data(), static_cast<qint64>(chunk.size())) == static_cast<qint64>(chunk.size());
-    });
-    if (!written) {
-        const QString why = file.errorString();
-        file.cancelWriting();
-        return failure(why);
-    }
-    if (!file.commit())
-        return failure(file.errorString());
-    return std::nullopt;
-}
-
-std::optional<std::string> saveBytes(const std::string &path, const QByteArray &bytes)
-{
-    return saveFile(path, [&](auto &&write) { return write(std::string_view(bytes.constData(), bytes.size())); });
-}
-
-std::optional<std::string> savePng(const std::string &path, const QImage &image)
-{
-    QByteArray bytes;
-    QBuffer buffer(&bytes);
-    buffer.open(QIODevice::WriteOnly);
-    if (image.isNull() || !image.save(&buffer, "PNG"))
-        return "Cannot write '" + path + "': the PNG picture could not be encoded.";
-    return saveBytes(path, bytes);
-}
-
 std::optional<std::string> saveMapCsv(const std::string &path, const ComputedMap &map)
 {
-    return saveFile(path, [&](auto &&write) {
+    return saveFile(path, [&](const ChunkWriter &write) {
         constexpr std::size_t flushBytes = std::size_t {1} << 20;
         std::string text = "x,y,value,margin\n";
         text.reserve(flushBytes + 256);

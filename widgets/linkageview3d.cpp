@@ -73,6 +73,12 @@ LinkageView3D::LinkageView3D(QWidget *parent)
 LinkageView3D::~LinkageView3D()
 {
     cleanupGl();
+    // The GL widget goes now, while this object is whole: deleting it destroys its context,
+    // whose aboutToBeDestroyed would otherwise reach cleanupGl() from ~QWidget, on a view that
+    // is no longer a LinkageView3D.
+    Canvas *canvas = m_canvas;
+    m_canvas = nullptr;
+    delete canvas;
 }
 
 QOpenGLWidget *LinkageView3D::glWidget() const

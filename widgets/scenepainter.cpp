@@ -352,6 +352,18 @@ void ScenePainter::paintBackground(QPainter &painter, const QRectF &area, const 
     painter.restore();
 }
 
+void ScenePainter::paintKnockout(QPainter &painter, const QRectF &box, const SceneStyle &style)
+{
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    QColor knockout = style.background;
+    knockout.setAlpha(215);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(knockout);
+    painter.drawRoundedRect(box, 4.0 * style.pixelSize, 4.0 * style.pixelSize);
+    painter.restore();
+}
+
 void ScenePainter::paintScaleBar(
     QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style)
 {
@@ -370,14 +382,9 @@ void ScenePainter::paintScaleBar(
 
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
-    QColor knockout = style.background;
-    knockout.setAlpha(215);
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(knockout);
     const double pad = 6.0 * px;
-    painter.drawRoundedRect(
-        QRectF(QPointF(left.x() - pad, textBox.top() - pad), QPointF(right.x() + pad, right.y() + pad)), 4.0 * px,
-        4.0 * px);
+    paintKnockout(painter, QRectF(QPointF(left.x() - pad, textBox.top() - pad), QPointF(right.x() + pad, right.y() + pad)),
+                  style);
     QPen pen(style.ink, 2.0 * px, Qt::SolidLine, Qt::FlatCap);
     painter.setPen(pen);
     painter.drawLine(left, right);

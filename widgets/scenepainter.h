@@ -95,6 +95,9 @@ public:
     /// lines at least `minimumGridPixels` style pixels apart.
     static void paintBackground(QPainter &painter, const QRectF &area, const ViewMapping &mapping,
         const SceneStyle &style, double minimumGridPixels = 40.0);
+    /// The translucent rounded box in the background colour that keeps text readable over
+    /// the drawing (under the scale bar, a caption).
+    static void paintKnockout(QPainter &painter, const QRectF &box, const SceneStyle &style);
     /// A scale bar ("50 mm") in the bottom-right corner of `area`.
     static void paintScaleBar(
         QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style);

@@ -5,6 +5,7 @@
 #include "cli.h"
 #include "cliworkspace.h"
 #include "numberformat.h"
+#include "scenepainter.h"
 
 #include <QImage>
 #include <QJsonArray>
@@ -81,6 +82,70 @@ QStringList args(std::initializer_list<const char *> arguments)
 QString number(double value)
 {
     return QString::number(value, 'g', 17);
+}
+
+/// The environment of a machine without a display: no DISPLAY, no WAYLAND_DISPLAY.
+QProcessEnvironment withoutDisplay()
+{
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("DISPLAY"));
+    environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    return environment;
+}
+
+/// The colours of a picture with the number of pixels of each.
+QHash<QRgb, qsizetype> colourCounts(const QImage &image)
+{
+    QHash<QRgb, qsizetype> counts;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < rgb.height(); ++y) {
+        const QRgb *line = reinterpret_cast<const QRgb *>(rgb.constScanLine(y));
+        for (int x = 0; x < rgb.width(); ++x)
+            ++counts[line[x] | 0xff000000u];
+    }
+    return counts;
+}
+
+/// The most frequent colour of a picture.
+QRgb dominantColour(const QImage &image)
+{
+    const QHash<QRgb, qsizetype> counts = colourCounts(image);
+    QRgb best = 0;
+    qsizetype most = -1;
+    for (auto it = counts.begin(); it != counts.end(); ++it) {
+        if (it.value() > most) {
+            most = it.value();
+            best = it.key();
+        }
+    }
+    return best;
+}
+
+/// Pixels farther than `tolerance` (per channel) from `colour`.
+qsizetype pixelsUnlike(const QImage &image, QRgb colour, int tolerance = 24)
+{
+    qsizetype count = 0;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < rgb.height(); ++y) {
+        const QRgb *line = reinterpret_cast<const QRgb *>(rgb.constScanLine(y));
+        for (int x = 0; x < rgb.width(); ++x) {
+            const QRgb p = line[x];
+            count += std::abs(qRed(p) - qRed(colour)) > tolerance || std::abs(qGreen(p) - qGreen(colour)) > tolerance
+                || std::abs(qBlue(p) - qBlue(colour)) > tolerance;
+        }
+    }
+    return count;
+}
+
+QByteArray fileBytes(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+QStringList directoryEntries(const QTemporaryDir &directory)
+{
+    return QDir(directory.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden);
 }
 
 /// Runs runCli() in this process, capturing what it writes.
@@ -226,6 +291,17 @@ private slots:
     void mapCsv();
     void outputFileErrors();
     void mapColourLimitIgnoresSpikes();
+
+    void render2dPng_data();
+    void render2dPng();
+    void render2dCaptionAndPose();
+    void render2dSvgAndPdf();
+    void render3dWithoutDisplay();
+    void render3dVectorFiles();
+    void render3dWithoutXvfb();
+    void renderErrors_data();
+    void renderErrors();
+    void renderInProcessNeedsGui();
 
     void sweepCsv_data();
     void sweepCsv();
@@ -1320,6 +1396,352 @@ void TestCli::mapColourLimitIgnoresSpikes()
     QVERIFY(qBlue(image.pixel(0, 0)) > qRed(image.pixel(0, 0)));
 }
 
+// -- render --------------------------------------------------------------------------------
+
+void TestCli::render2dPng_data()
+{
+    QTest::addColumn<QString>("design");
+    QTest::addColumn<QString>("captionStart");
+    QTest::newRow("pjoint-prototype") << QStringLiteral("pjoint-prototype")
+                                      << QStringLiteral("pjoint-prototype — d = ");
+    QTest::newRow("moma-3a") << QStringLiteral("moma-3a") << QStringLiteral("moma-3a — p₁ = ");
+    QTest::newRow("oxglide-prototype") << QStringLiteral("oxglide-prototype")
+                                       << QStringLiteral("oxglide-prototype — x_AB = ");
+}
+
+void TestCli::render2dPng()
+{
+    QFETCH(QString, design);
+    QFETCH(QString, captionStart);
+    QTemporaryDir directory;
+    const QString path = directory.filePath(design + QStringLiteral(".png"));
+    {
+        QFile old(path); // an older file is replaced, atomically
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("not a picture");
+    }
+    const Run run = runPkm({QStringLiteral("render"), design, QStringLiteral("-o"), path});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    QCOMPARE(QString::fromUtf8(run.out), QStringLiteral("Wrote %1 (1600 × 1200 pixels, 2D view)\n").arg(path));
+    QCOMPARE(directoryEntries(directory), QStringList{design + QStringLiteral(".png")}); // no temporary left
+
+    QVERIFY(fileBytes(path).startsWith("\x89PNG\r\n\x1a\n"));
+    const QImage image(path, "PNG");
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), QSize(1600, 1200));
+    // the light background of the 2D view, its grid at the corners, the mechanism drawn on it
+    const SceneStyle style;
+    const QList<QRgb> backgrounds{style.background.rgb(), style.gridMinor.rgb(), style.gridMajor.rgb()};
+    QCOMPARE(dominantColour(image), style.background.rgb());
+    for (const QPoint corner : {QPoint(0, 0), QPoint(1599, 0), QPoint(0, 1199), QPoint(1599, 1199)})
+        QVERIFY2(backgrounds.contains(image.pixel(corner) | 0xff000000u), qPrintable(QString::number(image.pixel(corner), 16)));
+    QVERIFY(colourCounts(image).size() > 50); // not uniform: links, joints, text, antialiasing
+    const qsizetype drawn = pixelsUnlike(image, style.background.rgb());
+    QVERIFY2(drawn > 20000 && drawn < 1600 * 1200 / 2, qPrintable(QString::number(drawn)));
+    // the caption names the design and the pose; the PNG's title is the caption
+    QVERIFY2(image.text(QStringLiteral("Title")).startsWith(captionStart), qPrintable(image.text(QStringLiteral("Title"))));
+}
+
+void TestCli::render2dCaptionAndPose()
+{
+    QTemporaryDir directory;
+    const auto render = [&](const QString &name, QStringList extra) {
+        const QString path = directory.filePath(name);
+        QStringList arguments{QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("--size"),
+                              QStringLiteral("800x600"), QStringLiteral("-o"), path};
+        arguments += extra;
+        const Run run = runPkm(arguments);
+        if (run.exitCode != 0)
+            qWarning("%s", run.err.constData());
+        return run.exitCode == 0 ? QImage(path) : QImage();
+    };
+    const QImage plus = render(QStringLiteral("plus.png"), args({"--set", "theta=30"}));
+    const QImage minus = render(QStringLiteral("minus.png"), args({"--set", "theta=-30"}));
+    const QImage bare = render(QStringLiteral("bare.png"), args({"--set", "theta=30", "--no-caption"}));
+    for (const QImage *image : {&plus, &minus, &bare})
+        QCOMPARE(image->size(), QSize(800, 600));
+    QVERIFY(plus != minus);
+    QCOMPARE(plus.text(QStringLiteral("Title")), QStringLiteral("pjoint-prototype — d = 212.33 mm, θ = 30.00°"));
+    QVERIFY(minus.text(QStringLiteral("Title")).endsWith(QStringLiteral("θ = -30.00°")));
+    // The caption sits in the bottom-left corner and moves nothing else.
+    QVERIFY(plus.copy(0, 0, 800, 520) == bare.copy(0, 0, 800, 520));
+    QVERIFY(plus.copy(0, 540, 400, 60) != bare.copy(0, 540, 400, 60));
+    QVERIFY(plus.copy(600, 0, 200, 600) == bare.copy(600, 0, 200, 600)); // the scale bar's side
+}
+
+void TestCli::render2dSvgAndPdf()
+{
+    QTemporaryDir directory;
+    const QString svgPath = directory.filePath(QStringLiteral("moma.svg"));
+    const Run svg = runPkm(args({"render", "moma-3a", "--set", "x=20", "--set", "y=-250"}) << QStringLiteral("-o") << svgPath);
+    QCOMPARE(svg.exitCode, 0);
+    QVERIFY(svg.err.isEmpty());
+    QCOMPARE(QString::fromUtf8(svg.out), QStringLiteral("Wrote %1 (1600 × 1200, vector, 2D view)\n").arg(svgPath));
+    const QByteArray xml = fileBytes(svgPath);
+    QVERIFY(xml.startsWith("<?xml"));
+    QVERIFY(xml.contains("<svg"));
+    QXmlStreamReader reader(xml);
+    int paths = 0, texts = 0;
+    QString viewBox;
+    while (!reader.atEnd()) {
+        if (reader.readNext() != QXmlStreamReader::StartElement)
+            continue;
+        if (reader.name() == QLatin1String("svg"))
+            viewBox = reader.attributes().value(QLatin1String("viewBox")).toString();
+        paths += reader.name() == QLatin1String("path") || reader.name() == QLatin1String("polyline");
+        texts += reader.name() == QLatin1String("text");
+    }
+    QVERIFY2(!reader.hasError(), qPrintable(reader.errorString()));
+    QCOMPARE(viewBox.simplified(), QStringLiteral("0 0 1600 1200"));
+    QVERIFY2(paths > 10, qPrintable(QString::number(paths))); // vectors, not an embedded picture
+    QVERIFY(!xml.contains("<image"));
+    QVERIFY(texts > 5); // labels, scale bar, caption
+    QVERIFY(xml.contains("moma-3a — p₁ = "));
+
+    const QString pdfPath = directory.filePath(QStringLiteral("pjoint.pdf"));
+    const Run pdf = runPkm(args({"render", "pjoint-prototype", "--set", "theta=45", "--output"}) << pdfPath);
+    QCOMPARE(pdf.exitCode, 0);
+    QVERIFY(pdf.err.isEmpty());
+    QCOMPARE(QString::fromUtf8(pdf.out),
+             QStringLiteral("Wrote %1 (297.0 × 222.8 mm page, vector, 2D view)\n").arg(pdfPath));
+    const QByteArray document = fileBytes(pdfPath);
+    QVERIFY(document.startsWith("%PDF"));
+    QVERIFY(document.trimmed().endsWith("%%EOF"));
+    // one landscape page with the picture's proportions, 297 mm (842 pt) wide, no embedded picture
+    QCOMPARE(document.count("/Type /Page\n") + document.count("/Type /Page\r") + document.count("/Type /Page "), 1);
+    QVERIFY2(document.contains("/MediaBox [0 0 842"), document.mid(document.indexOf("MediaBox"), 40).constData());
+    QVERIFY(!document.contains("/Subtype /Image"));
+    QVERIFY(document.size() > 5000);
+    QCOMPARE(directoryEntries(directory), (QStringList{QStringLiteral("moma.svg"), QStringLiteral("pjoint.pdf")}));
+}
+
+void TestCli::render3dWithoutDisplay()
+{
+    // The "done when": on a machine without a display, `pkm render PRESET --view 3d -o
+    // x.png` writes a clean picture (pkm runs itself under xvfb-run).
+    QTemporaryDir directory;
+    const QProcessEnvironment environment = withoutDisplay();
+    const QString xvfbRun = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
+    if (xvfbRun.isEmpty()) {
+        const Run run = runPkm(args({"render", "pjoint-prototype", "--view", "3d", "-o"})
+                                   << directory.filePath(QStringLiteral("x.png")),
+                               environment);
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY(run.err.contains("xvfb-run is missing"));
+        QVERIFY(directoryEntries(directory).isEmpty());
+        QSKIP("xvfb-run is not installed (Debian package xvfb): only its error was checked");
+    }
+    const auto render = [&](const QString &name, const QStringList &extra, QByteArray *out = nullptr) {
+        const QString path = directory.filePath(name);
+        QStringList arguments{QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("--view"),
+                              QStringLiteral("3d"), QStringLiteral("--size"), QStringLiteral("800x600"),
+                              QStringLiteral("-o"), path};
+        arguments += extra;
+        const Run run = runPkm(arguments, environment);
+        if (run.exitCode != 0 || !run.err.isEmpty())
+            qWarning("exit %d: %s", run.exitCode, run.err.constData());
+        if (out)
+            *out = run.out;
+        return run.exitCode == 0 && run.err.isEmpty() ? QImage(path, "PNG") : QImage();
+    };
+    QByteArray out;
+    const QImage iso = render(QStringLiteral("iso.png"), args({"--set", "theta=30"}), &out);
+    QCOMPARE(QString::fromUtf8(out),
+             QStringLiteral("Wrote %1 (800 × 600 pixels, 3D isometric view, perspective)\n")
+                 .arg(directory.filePath(QStringLiteral("iso.png"))));
+    const QImage other = render(QStringLiteral("other.png"), args({"--set", "theta=-30"}));
+    const QImage front = render(QStringLiteral("front.png"), args({"--set", "theta=30", "--camera", "front"}));
+    const QImage flat = render(QStringLiteral("flat.png"),
+                               args({"--set", "theta=30", "--camera", "front", "--orthographic", "--no-caption"}));
+    const QRgb background = SceneStyle().background.rgb();
+    for (const QImage *image : {&iso, &other, &front, &flat}) {
+        QVERIFY(!image->isNull());
+        QCOMPARE(image->size(), QSize(800, 600));
+        QCOMPARE(image->pixel(0, 0) | 0xff000000u, background); // the 3D view's light background
+        QCOMPARE(dominantColour(*image), background);
+        QVERIFY(colourCounts(*image).size() > 100); // shaded solids, not a blank frame
+        const qsizetype drawn = pixelsUnlike(*image, background);
+        QVERIFY2(drawn > 800 * 600 / 50, qPrintable(QString::number(drawn))); // the model is in the picture
+    }
+    QVERIFY(iso.text(QStringLiteral("Title")).endsWith(QStringLiteral("θ = 30.00°")));
+    // another pose, another camera, another projection: other pictures
+    // (above the caption, which names the pose too)
+    QVERIFY(iso.copy(0, 0, 800, 500) != other.copy(0, 0, 800, 500));
+    QVERIFY(iso.copy(0, 0, 800, 500) != front.copy(0, 0, 800, 500));
+    QVERIFY(front.copy(0, 0, 800, 500) != flat.copy(0, 0, 800, 500));
+    // the 3D model is green (links) and grey (base): the picture is in colour
+    bool green = false;
+    for (int y = 0; y < iso.height() && !green; ++y) {
+        for (int x = 0; x < iso.width() && !green; ++x) {
+            const QRgb p = iso.pixel(x, y);
+            green = qGreen(p) > qRed(p) + 40 && qGreen(p) > qBlue(p) + 20;
+        }
+    }
+    QVERIFY(green);
+    // Xvfb is gone and nothing but the pictures is left
+    QCOMPARE(directoryEntries(directory).size(), 4);
+}
+
+void TestCli::render3dVectorFiles()
+{
+    // SVG and PDF of the 3D view hold the rendered picture.
+    QTemporaryDir directory;
+    if (QStandardPaths::findExecutable(QStringLiteral("xvfb-run")).isEmpty())
+        QSKIP("xvfb-run is not installed (Debian package xvfb)");
+    const QString svgPath = directory.filePath(QStringLiteral("o.svg"));
+    const Run svg = runPkm(args({"render", "oxglide-prototype", "--view", "3d", "--camera", "top", "--size", "400x300",
+                                 "-o"})
+                               << svgPath,
+                           withoutDisplay());
+    QCOMPARE(svg.exitCode, 0);
+    QVERIFY(svg.out.contains("400 × 300-pixel picture embedded, 3D top view, perspective"));
+    const QByteArray xml = fileBytes(svgPath);
+    QVERIFY(xml.startsWith("<?xml"));
+    QVERIFY(xml.contains("<image"));
+    QVERIFY(xml.contains("data:image/png;base64,"));
+
+    const QString pdfPath = directory.filePath(QStringLiteral("o.pdf"));
+    const Run pdf = runPkm(args({"render", "oxglide-prototype", "--view", "3d", "--size", "300x400", "-o"}) << pdfPath,
+                           withoutDisplay());
+    QCOMPARE(pdf.exitCode, 0);
+    QVERIFY(pdf.out.contains("(222.8 × 297.0 mm page, a 300 × 400-pixel picture"));
+    const QByteArray document = fileBytes(pdfPath);
+    QVERIFY(document.startsWith("%PDF"));
+    QVERIFY(document.contains("/Subtype /Image"));
+    QVERIFY2(document.contains("/MediaBox [0 0 631"), document.mid(document.indexOf("MediaBox"), 40).constData());
+
+    // A note about the pose is printed once, not again by the run under Xvfb.
+    const Run note = runPkm(args({"render", "pjoint-prototype", "--view", "3d", "--set", "theta_min=10", "--size",
+                                  "200x200", "-o"})
+                                << directory.filePath(QStringLiteral("note.png")),
+                            withoutDisplay());
+    QCOMPARE(note.exitCode, 0);
+    QCOMPARE(note.err.count('\n'), 1);
+    QVERIFY2(note.err.startsWith("pkm: note: ") && note.err.contains("home pose"), note.err.constData());
+    QVERIFY(QImage(directory.filePath(QStringLiteral("note.png"))).size() == QSize(200, 200));
+}
+
+void TestCli::render3dWithoutXvfb()
+{
+    // No display and no xvfb-run on the PATH: one sentence that says what to install, exit 3,
+    // no file.
+    QTemporaryDir directory;
+    QProcessEnvironment environment = withoutDisplay();
+    environment.insert(QStringLiteral("PATH"), directory.filePath(QStringLiteral("empty")));
+    const QString path = directory.filePath(QStringLiteral("x.png"));
+    const Run run = runPkm(args({"render", "moma-3a", "--view", "3d", "-o"}) << path, environment);
+    QCOMPARE(run.exitCode, 3);
+    QVERIFY(run.out.isEmpty());
+    QCOMPARE(QString::fromUtf8(run.err),
+             QStringLiteral("pkm: 3D pictures need OpenGL: there is no display and xvfb-run is missing (install the "
+                            "Debian package xvfb).\n"));
+    QVERIFY(directoryEntries(directory).isEmpty());
+
+    // Told to stay on a platform without OpenGL (as under Xvfb, which pkm never leaves): the
+    // reason from the OpenGL probe.
+    environment = withoutDisplay();
+    environment.insert(QStringLiteral("PKM_RENDER_UNDER_XVFB"), QStringLiteral("1"));
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    const Run probe = runPkm(args({"render", "moma-3a", "--view", "3d", "-o"}) << path, environment);
+    QCOMPARE(probe.exitCode, 3);
+    QCOMPARE(probe.err.count('\n'), 1);
+    QVERIFY2(probe.err.startsWith("pkm: 3D pictures need OpenGL 3.3: ") && probe.err.contains("offscreen"),
+             probe.err.constData());
+    QVERIFY(directoryEntries(directory).isEmpty());
+}
+
+void TestCli::renderErrors_data()
+{
+    QTest::addColumn<QStringList>("arguments"); // OUT: the output file
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("culprit");
+    QTest::newRow("bad --view") << args({"render", "pjoint-prototype", "--view", "4d", "-o", "OUT.png"}) << 2
+                                << QStringLiteral("--view 4d");
+    QTest::newRow("--size too small") << args({"render", "pjoint-prototype", "--size", "10x10", "-o", "OUT.png"}) << 2
+                                      << QStringLiteral("--size 10x10");
+    QTest::newRow("--size too large") << args({"render", "moma-3a", "--size", "8001x600", "-o", "OUT.png"}) << 2
+                                      << QStringLiteral("--size 8001x600");
+    QTest::newRow("--size not WxH") << args({"render", "moma-3a", "--size", "800", "-o", "OUT.svg"}) << 2
+                                    << QStringLiteral("--size 800");
+    QTest::newRow("--size fractional") << args({"render", "moma-3a", "--size", "800x600.5", "-o", "OUT.png"}) << 2
+                                       << QStringLiteral("--size 800x600.5");
+    QTest::newRow("unknown extension") << args({"render", "moma-3a", "-o", "OUT.bmp"}) << 2 << QStringLiteral(".bmp");
+    QTest::newRow("no extension") << args({"render", "moma-3a", "-o", "OUT"}) << 2 << QStringLiteral(".png, .svg or .pdf");
+    QTest::newRow("missing -o") << args({"render", "moma-3a"}) << 2 << QStringLiteral("-o FILE");
+    QTest::newRow("missing -o in 3d") << args({"render", "moma-3a", "--view", "3d"}) << 2 << QStringLiteral("-o FILE");
+    QTest::newRow("bad --camera") << args({"render", "moma-3a", "--view", "3d", "--camera", "diagonal", "-o", "OUT.png"})
+                                  << 2 << QStringLiteral("--camera diagonal");
+    QTest::newRow("--camera in 2d") << args({"render", "moma-3a", "--camera", "top", "-o", "OUT.png"}) << 2
+                                    << QStringLiteral("--view 3d");
+    QTest::newRow("--orthographic in 2d") << args({"render", "moma-3a", "--orthographic", "-o", "OUT.png"}) << 2
+                                          << QStringLiteral("--orthographic");
+    QTest::newRow("unknown --set") << args({"render", "moma-3a", "--set", "zz=1", "-o", "OUT.png"}) << 2
+                                   << QStringLiteral("zz");
+    QTest::newRow("unreachable --set") << args({"render", "pjoint-prototype", "--set", "theta=75", "-o", "OUT.png"})
+                                       << 3 << QStringLiteral("theta=75");
+    QTest::newRow("unreachable --set, svg") << args({"render", "moma-3a", "--set", "x=0", "--set", "y=100", "-o", "OUT.svg"})
+                                            << 3 << QStringLiteral("--set");
+    QTest::newRow("unreachable --set, 3d") << args({"render", "pjoint-prototype", "--view", "3d", "--set", "theta=-75",
+                                                    "-o", "OUT.png"})
+                                           << 3 << QStringLiteral("theta=-75");
+    QTest::newRow("unknown design, 3d") << args({"render", "no-such-design", "--view", "3d", "-o", "OUT.pdf"}) << 2
+                                        << QStringLiteral("no-such-design");
+    QTest::newRow("folder missing") << args({"render", "moma-3a", "-o", "OUT/missing/x.png"}) << 1
+                                    << QStringLiteral("missing/x.png");
+}
+
+void TestCli::renderErrors()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(QString, culprit);
+    QTemporaryDir directory;
+    const QString base = directory.filePath(QStringLiteral("picture"));
+    QString output;
+    for (QString &argument : arguments) {
+        if (argument.startsWith(QLatin1String("OUT"))) {
+            argument.replace(0, 3, base);
+            output = argument;
+        }
+    }
+    // An existing file at the path stays as it was.
+    const QByteArray old("an older file that must survive");
+    if (!output.isEmpty() && !output.contains(QLatin1String("missing"))) {
+        QFile file(output);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(old);
+    }
+    const QStringList before = directoryEntries(directory);
+    // without a display, so that a 3D command line that fails fails before Xvfb is started
+    const Run run = runPkm(arguments, withoutDisplay());
+    QCOMPARE(run.exitCode, exitCode);
+    QVERIFY2(run.out.isEmpty(), run.out.constData());
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY(run.err.endsWith(".\n"));
+    QVERIFY(run.err.startsWith("pkm: "));
+    QVERIFY2(QString::fromUtf8(run.err).contains(culprit), run.err.constData());
+    QCOMPARE(directoryEntries(directory), before); // nothing created, no temporary left
+    if (!before.isEmpty())
+        QCOMPARE(fileBytes(output), old);
+}
+
+void TestCli::renderInProcessNeedsGui()
+{
+    // runCli() in a QCoreApplication (this test) cannot draw: a clear failure, no file.
+    QTemporaryDir directory;
+    const QString path = directory.filePath(QStringLiteral("x.png"));
+    const Run flat = runInProcess({QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("-o"), path});
+    QCOMPARE(flat.exitCode, int(CliOutputError));
+    QVERIFY(flat.out.isEmpty());
+    QVERIFY2(flat.err.contains("QGuiApplication"), flat.err.constData());
+    const Run solid = runInProcess({QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("--view"),
+                                    QStringLiteral("3d"), QStringLiteral("-o"), path});
+    QCOMPARE(solid.exitCode, int(CliNoSolution));
+    QCOMPARE(solid.err.count('\n'), 1);
+    QVERIFY(directoryEntries(directory).isEmpty());
+}
+
 // -- sweep ---------------------------------------------------------------------------------
 
 void TestCli::sweepCsv_data()
@@ -1569,6 +1991,11 @@ void TestCli::help_data()
     QTest::newRow("workspace --help") << args({"workspace", "--help"}) << QStringLiteral("Usage: pkm workspace");
     QTest::newRow("help map") << args({"help", "map"}) << QStringLiteral("Usage: pkm map");
     QTest::newRow("map -h wins over errors") << args({"map", "--grid", "1", "-h"}) << QStringLiteral("-o FILE.csv");
+    QTest::newRow("--help lists render") << QStringList{QStringLiteral("--help")}
+                                         << QStringLiteral("render DESIGN [--set N=V]... [--view 2d|3d]");
+    QTest::newRow("render --help") << args({"render", "--help"}) << QStringLiteral("Usage: pkm render DESIGN");
+    QTest::newRow("help render") << args({"help", "render"}) << QStringLiteral("--camera VIEW");
+    QTest::newRow("render -h wins over errors") << args({"render", "--view", "5d", "-h"}) << QStringLiteral("xvfb-run");
 }
 
 void TestCli::help()
