@@ -7,6 +7,7 @@
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QInputDialog>
 #include <QMessageBox>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -401,13 +402,22 @@ View3DPanel::View3DPanel(QWidget *parent)
 
 bool View3DPanel::savePicture(const QString &path, QString *error)
 {
+    const QSize base = m_view->size().isEmpty() ? m_view->sizeHint() : m_view->size();
+    return savePicture(path, 2 * base, error);
+}
+
+bool View3DPanel::savePicture(const QString &path, const QSize &size, QString *error)
+{
     auto fail = [error](const QString &message) {
         if (error)
             *error = message;
         return false;
     };
-    const QSize base = m_view->size().isEmpty() ? m_view->sizeHint() : m_view->size();
-    const QImage image = m_view->renderImage(2 * base);
+    if (size.width() < 16 || size.height() < 16 || size.width() > 8000 || size.height() > 8000)
+        return fail(tr("%1 × %2 pixels is not a picture size: each side must be from 16 to 8000.")
+                        .arg(size.width())
+                        .arg(size.height()));
+    const QImage image = m_view->renderImage(size);
     if (image.isNull())
         return fail(tr("The picture could not be rendered. %1").arg(m_view->imageError()));
     QSaveFile file(path);
@@ -432,8 +442,19 @@ void View3DPanel::savePictureAs()
     if (QFileInfo(path).suffix().isEmpty())
         path.append(QStringLiteral(".png"));
     m_lastDirectory = QFileInfo(path).absolutePath();
+    // the size: twice the view (sharp on a projector), or a common screen or print size
+    const QSize base = m_view->size().isEmpty() ? m_view->sizeHint() : m_view->size();
+    const QList<QSize> sizes = {2 * base, QSize(1920, 1080), QSize(3840, 2160), QSize(4000, 3000)};
+    QStringList items;
+    for (const QSize &size : sizes)
+        items << tr("%1 × %2 pixels").arg(size.width()).arg(size.height());
+    items[0] = tr("%1 (twice the view)").arg(items[0]);
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(this, tr("Save picture"), tr("Picture size:"), items, 0, false, &ok);
+    if (!ok)
+        return;
     QString error;
-    if (!savePicture(path, &error))
+    if (!savePicture(path, sizes[items.indexOf(chosen)], &error))
         QMessageBox::warning(this, tr("Save picture"), error);
 }
 

@@ -135,6 +135,8 @@ public:
     /// Writes the view at twice its size as a PNG to `path`, atomically (QSaveFile). False,
     /// with `error`, when it cannot be rendered or written.
     bool savePicture(const QString &path, QString *error = nullptr);
+    /// The same at `size` pixels (any size from 16 to 8000 per side).
+    bool savePicture(const QString &path, const QSize &size, QString *error = nullptr);
 
 public slots:
     /// Asks for a PNG file name and saves the picture; a failure is shown in a message box.

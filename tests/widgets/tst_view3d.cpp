@@ -337,6 +337,13 @@ void TestView3D::savePictureWritesPng()
     const QString unwritable = directory.filePath(QStringLiteral("missing/moma.png"));
     QVERIFY(!panel.savePicture(unwritable, &error));
     QVERIFY(error.contains(unwritable));
+    // any size: a 4K picture, and a size that is no picture refused with the reason
+    const QString large = directory.filePath(QStringLiteral("moma-4k.png"));
+    QVERIFY2(panel.savePicture(large, QSize(3840, 2160), &error), qPrintable(error));
+    QCOMPARE(QImage(large).size(), QSize(3840, 2160));
+    QVERIFY(!panel.savePicture(directory.filePath(QStringLiteral("tiny.png")), QSize(4, 4), &error));
+    QVERIFY(error.contains(QStringLiteral("16 to 8000")));
+    QVERIFY(!QFile::exists(directory.filePath(QStringLiteral("tiny.png"))));
 }
 
 void TestView3D::frameTime_data()
