@@ -296,10 +296,12 @@ std::string evalText(const PreparedDesign &prepared)
             table.cells(
                 {entry.symbol, text, std::string(entry.unit.symbol), label(entry.label, entry.symbol, entry.name)});
         }
+        for (const ReportText &word : mechanism.reportText(prepared.pose)) {
+            if (word.group == group)
+                table.cells({word.name, word.text, "", word.label});
+        }
     };
     addGroup(ReportGroup::Pose, "Pose");
-    for (const auto &[key, word] : mechanism.poseText(prepared.pose))
-        table.cells({key, word, "", key == "mode" ? "form / mode of the pose" : ""});
     addGroup(ReportGroup::Jacobian, "Jacobian");
     addGroup(ReportGroup::Derived, "Derived");
     table.heading("Singularity");
@@ -432,7 +434,7 @@ std::string evalJson(const Mechanism &mechanism, const Pose &pose)
     json.beginObject();
     json.key("mechanism").string(mechanism.kind());
     writeParametersJson(json, mechanism, false);
-    writeReportJson(json, layout, values, singularity, mechanism.poseText(pose));
+    writeReportJson(json, layout, values, singularity, mechanism.reportText(pose));
     json.endObject();
     return out;
 }

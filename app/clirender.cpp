@@ -320,8 +320,10 @@ QString renderCaption(const PreparedDesign &prepared)
         pose.append(pose.empty() ? "" : ", ").append(info.symbol).append(" = ");
         pose.append(valueWithUnit(value, info.decimals, info.unit.symbol));
     }
-    for (const auto &[key, word] : mechanism.poseText(prepared.pose))
-        pose.append(pose.empty() ? "" : ", ").append(key).append(" ").append(word);
+    for (const ReportText &word : mechanism.reportText(prepared.pose)) {
+        if (word.group == ReportGroup::Pose)
+            pose.append(pose.empty() ? "" : ", ").append(word.name).append(" ").append(word.text);
+    }
     const QString name = QFileInfo(QString::fromStdString(prepared.origin)).fileName();
     return pose.empty() ? name : name + QStringLiteral(" — ") + QString::fromStdString(pose);
 }

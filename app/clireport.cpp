@@ -26,7 +26,7 @@ void writeEntryJson(JsonWriter &json, const ReportEntry &entry, std::span<const 
 }
 
 void writeGroupJson(JsonWriter &json, const ReportLayout &layout, ReportGroup group, std::span<const double> values,
-    const std::vector<std::pair<std::string, std::string>> &text = {})
+    const std::vector<ReportText> &text)
 {
     json.key(reportGroupKey(group));
     json.beginObject();
@@ -34,8 +34,10 @@ void writeGroupJson(JsonWriter &json, const ReportLayout &layout, ReportGroup gr
         if (entry.group == group)
             writeEntryJson(json, entry, values);
     }
-    for (const auto &[key, word] : text)
-        json.key(key).string(word);
+    for (const ReportText &word : text) {
+        if (word.group == group)
+            json.key(word.name).string(word.text);
+    }
     json.endObject();
 }
 
@@ -80,10 +82,10 @@ void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inli
 }
 
 void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<const double> values,
-    const Singularity &singularity, const std::vector<std::pair<std::string, std::string>> &poseText)
+    const Singularity &singularity, const std::vector<ReportText> &text)
 {
     for (ReportGroup group : groupsBeforeSingularity)
-        writeGroupJson(json, layout, group, values, group == ReportGroup::Pose ? poseText : std::vector<std::pair<std::string, std::string>> {});
+        writeGroupJson(json, layout, group, values, text);
     json.key("singularity");
     json.beginObject();
     json.key("type").string(singularityName(singularity.type));
@@ -97,7 +99,7 @@ void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<con
     json.endArray();
     json.endObject();
     for (ReportGroup group : groupsAfterSingularity)
-        writeGroupJson(json, layout, group, values);
+        writeGroupJson(json, layout, group, values, text);
 }
 
 } // namespace pkm::cli

@@ -31,8 +31,8 @@ void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inli
 
 /// "pose", "jacobian", "singularity", "derived" into the open object. Quantities that are not
 /// finite at this pose are null and listed in singularity.undefined, so a script learns why.
-/// `poseText` adds the pose's words (the O-X glide's "mode": "X") to "pose".
+/// `text` adds the words of the report (the O-X glide's "mode": "X") to their groups.
 void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<const double> values,
-    const Singularity &singularity, const std::vector<std::pair<std::string, std::string>> &poseText = {});
+    const Singularity &singularity, const std::vector<ReportText> &text = {});
 
 } // namespace pkm::cli

@@ -89,6 +89,14 @@ struct ReportEntry {
     int decimals = 3;
 };
 
+/// A reported quantity that is a word ("mode": "X").
+struct ReportText {
+    ReportGroup group = ReportGroup::Pose;
+    std::string name;  ///< JSON key
+    std::string text;
+    std::string label; ///< English description
+};
+
 struct ReportLayout {
     std::vector<ReportEntry> entries;
     int size = 0; ///< number of doubles the buffer needs
@@ -180,8 +188,9 @@ public:
     virtual Singularity evaluate(const Pose &pose, std::span<double> values) const = 0;
     /// The Jacobians as matrices (allocates: for analysis, not for sweeps).
     virtual Jacobians jacobians(const Pose &pose) const = 0;
-    /// Pose facts that are words, not numbers ({"mode", "X"}), for reports.
-    virtual std::vector<std::pair<std::string, std::string>> poseText(const Pose &) const { return {}; }
+    /// Facts of a pose that are words, not numbers (the O-X glide's form "X", a four-bar's
+    /// Grashof class), for reports, in the group they belong to.
+    virtual std::vector<ReportText> reportText(const Pose &) const { return {}; }
 
     /// The designs that differ from this one only in a working/assembly mode, in order of
     /// preference (poses left empty). Costly (it builds designs): callers keep the result for

@@ -499,9 +499,9 @@ Singularity OxGlide::evaluate(const Pose &pose, std::span<double> v) const
     return s;
 }
 
-std::vector<std::pair<std::string, std::string>> OxGlide::poseText(const Pose &) const
+std::vector<ReportText> OxGlide::reportText(const Pose &) const
 {
-    return {{"mode", oxglide::formName(m_design.form)}};
+    return {{ReportGroup::Pose, "mode", oxglide::formName(m_design.form), "form of the pose: O extended, X crossed"}};
 }
 
 std::vector<ModeAlternative> OxGlide::modeNeighbours() const

@@ -93,7 +93,7 @@ public:
     const ReportLayout &reportLayout() const override;
     Singularity evaluate(const Pose &pose, std::span<double> values) const override;
     Jacobians jacobians(const Pose &pose) const override;
-    std::vector<std::pair<std::string, std::string>> poseText(const Pose &pose) const override;
+    std::vector<ReportText> reportText(const Pose &pose) const override;
     /// The other form at the same platform position.
     std::vector<ModeAlternative> modeNeighbours() const override;
     const PlanarWorkspace *planarWorkspace() const override { return this; }

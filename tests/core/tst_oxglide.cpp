@@ -1550,7 +1550,7 @@ private slots:
         QVERIFY(info != m->parameterInfo().end());
         QCOMPARE(info->group, ParameterGroup::Mode);
         QCOMPARE(info->choices.size(), std::size_t(2));
-        QCOMPARE(m->poseText(m->homePose()).front().second, std::string("X"));
+        QCOMPARE(m->reportText(m->homePose()).front().text, std::string("X"));
     }
 };
 
