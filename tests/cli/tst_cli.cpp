@@ -90,6 +90,10 @@ QProcessEnvironment withoutDisplay()
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.remove(QStringLiteral("DISPLAY"));
     environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    // A 3D picture loads Mesa's OpenGL driver, whose allocations an Asan build's LeakSanitizer
+    // reports after the driver is unloaded at exit: not the project's leaks (ignored elsewhere).
+    QString sanitizer = environment.value(QStringLiteral("ASAN_OPTIONS"));
+    environment.insert(QStringLiteral("ASAN_OPTIONS"), sanitizer.append(QStringLiteral(":detect_leaks=0")));
     return environment;
 }
 
