@@ -144,7 +144,10 @@ planar mechanism rides the z axis, also the volume: the area extruded over the z
                       (current modes); the O-X glide adds "area_O", "area_X", "travel",
                       "volume" and "volume_union" (mm³)
   -o FILE.png         a picture of the workspace of the current modes: the reachable cells
-                      light blue on white with a dark outline, y up, at least 400 pixels
+                      light blue on white with a dark outline, y up, at least 400 pixels;
+                      for a mechanism with named modes (the O-X glide's O and X) every
+                      mode's workspace over each other, larger ones first, the design's own
+                      darker, their union outlined (the document's fig. 5)
   -o FILE.svg         its outline as SVG paths, in mm (viewBox), y up
                       (-o FILE and --output FILE are the same)
 

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -260,43 +261,56 @@ std::vector<ModeArea> modeAreas(const Mechanism &mechanism, const std::vector<co
     return areas;
 }
 
-/// The union of the workspaces of every mode combination, counted on one grid over all of
-/// them: the region the mechanism reaches when it may change mode (the O-X glide's O and X).
-struct UnionArea {
-    double area = 0.0;
-    std::size_t reachableCells = 0;
+/// The workspaces of every mode combination on one grid over all of them: the union is the
+/// region the mechanism reaches when it may change mode (the O-X glide's O and X), and the
+/// regions drawn over each other are the O-X glide document's fig. 5.
+struct ModeRegions {
+    MapGrid grid;
+    std::vector<std::vector<char>> reached; ///< per combination with a workspace, per cell
+    std::vector<bool> current;              ///< whether that combination is the design's own
+    std::size_t unionCells = 0;
+    double unionArea = 0.0;
 };
 
-UnionArea unionArea(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes, int resolution)
+ModeRegions modeRegions(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes, int resolution)
 {
     std::vector<MechanismPtr> designs;
+    ModeRegions regions;
+    const ParameterSet parameters = mechanism.parameters();
     const std::size_t count = std::size_t {1} << modes.size();
     for (std::size_t combination = 0; combination < count; ++combination) {
         ParameterSet changes;
+        bool isCurrent = true;
         for (std::size_t i = 0; i < modes.size(); ++i) {
             const bool plus = (combination >> (modes.size() - 1 - i)) & 1u;
             changes[modes[i]->name] = modes[i]->unit.fromDisplay(plus ? 1.0 : -1.0);
+            isCurrent = isCurrent && parameters.at(modes[i]->name) == changes[modes[i]->name];
         }
-        if (auto changed = mechanism.withParameters(changes); changed && (*changed)->planarWorkspace())
+        if (auto changed = mechanism.withParameters(changes); changed && (*changed)->planarWorkspace()) {
             designs.push_back(*changed);
+            regions.current.push_back(isCurrent);
+        }
     }
     Eigen::AlignedBox2d box;
     for (const MechanismPtr &design : designs)
         box.extend(design->planarWorkspace()->workspaceBounds());
-    UnionArea result;
     if (designs.empty() || box.isEmpty())
-        return result;
-    const MapGrid grid = squareGrid(box, resolution);
-    std::vector<float> values(grid.cells());
-    std::vector<char> reached(grid.cells(), 0);
+        return regions;
+    regions.grid = squareGrid(box, resolution);
+    std::vector<float> values(regions.grid.cells());
+    std::vector<char> any(regions.grid.cells(), 0);
     for (const MechanismPtr &design : designs) {
-        computeMap(*design->planarWorkspace(), MapQuantity::Determinant, grid, values);
-        for (std::size_t i = 0; i < values.size(); ++i)
-            reached[i] = static_cast<char>(reached[i] | (reachable(values[i]) ? 1 : 0));
+        computeMap(*design->planarWorkspace(), MapQuantity::Determinant, regions.grid, values);
+        std::vector<char> reached(values.size(), 0);
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            reached[i] = reachable(values[i]) ? 1 : 0;
+            any[i] = static_cast<char>(any[i] | reached[i]);
+        }
+        regions.reached.push_back(std::move(reached));
     }
-    result.reachableCells = static_cast<std::size_t>(std::count(reached.begin(), reached.end(), 1));
-    result.area = static_cast<double>(result.reachableCells) * grid.cellArea();
-    return result;
+    regions.unionCells = static_cast<std::size_t>(std::count(any.begin(), any.end(), 1));
+    regions.unionArea = static_cast<double>(regions.unionCells) * regions.grid.cellArea();
+    return regions;
 }
 
 /// The travel (mm) of the axis that carries the whole mechanism, if it has one.
@@ -350,6 +364,7 @@ constexpr std::array<Colour, 5> sequential
 
 constexpr QRgb workspaceFill = qRgb(166, 206, 227);
 constexpr QRgb workspaceLine = qRgb(31, 78, 121);
+constexpr QRgb currentModeFill = qRgb(43, 92, 143); ///< the design's own mode among the others
 
 // -- files ---------------------------------------------------------------------------------
 
@@ -495,7 +510,7 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
     const std::vector<const ParameterInfo *> modes = modeParameters(mechanism);
     std::vector<float> buffer;
     const std::vector<ModeArea> areas = modeAreas(mechanism, modes, map.summary, context.resolution, buffer);
-    const UnionArea united = modes.empty() ? UnionArea {} : unionArea(mechanism, modes, context.resolution);
+    const ModeRegions united = modes.empty() ? ModeRegions {} : modeRegions(mechanism, modes, context.resolution);
     const auto named = namedModeAreas(modes, areas);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
@@ -506,6 +521,21 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             const std::string title
                 = "Workspace of " + context.prepared.origin + suffix + ": " + fixedText(map.summary.area, 1) + " mm²";
             failure = saveBytes(*path, QByteArray::fromStdString(workspaceSvg(map.grid, map.values, title)));
+        } else if (!named.empty() && united.reached.size() > 1) {
+            // the modes over each other, larger ones first so that every one shows, the design's
+            // own darker (fig. 5 of the O-X glide)
+            std::vector<std::size_t> order(united.reached.size());
+            std::iota(order.begin(), order.end(), std::size_t {0});
+            const auto cells = [&](std::size_t i) { return std::count(united.reached[i].begin(), united.reached[i].end(), 1); };
+            std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells(a) > cells(b); });
+            std::vector<std::pair<const std::vector<char> *, QRgb>> layers;
+            for (const std::size_t i : order)
+                layers.emplace_back(&united.reached[i], united.current[i] ? currentModeFill : workspaceFill);
+            QImage image = regionsImage(united.grid, layers);
+            image.setText(QStringLiteral("Title"),
+                QString::fromStdString("Workspaces of the modes of " + context.prepared.origin + suffix
+                    + " (the design's own darker), their union outlined"));
+            failure = savePng(*path, image);
         } else {
             QImage image = workspaceImage(map.grid, map.values);
             image.setText(
@@ -535,14 +565,14 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
         for (const auto &[name, area] : named)
             json.key("area_" + name).number(area);
         if (!modes.empty())
-            json.key("area_union").number(united.area);
+            json.key("area_union").number(united.unionArea);
         // a mechanism carried by an axis (the O-X glide on z): its 3D workspace is the planar
         // one extruded over that axis' travel
         if (const auto travel = carriedTravel(mechanism)) {
             json.key("travel").number(*travel);
             json.key("volume").number(map.summary.area * *travel);
             if (!modes.empty())
-                json.key("volume_union").number(united.area * *travel);
+                json.key("volume_union").number(united.unionArea * *travel);
         }
         json.key("modes");
         json.beginArray();
@@ -598,7 +628,7 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
                 modeTable.cells(row);
             }
             modeTable.render(out);
-            out.append("Union of the modes: ").append(fixedText(united.area, 1)).append(" mm²\n");
+            out.append("Union of the modes: ").append(fixedText(united.unionArea, 1)).append(" mm²\n");
         }
         if (const auto &path = context.invocation.output)
             out += "\nWrote " + *path + '\n';
@@ -695,9 +725,9 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
 
 } // namespace
 
-QImage workspaceImage(const MapGrid &grid, std::span<const float> values)
+QImage regionsImage(const MapGrid &grid, const std::vector<std::pair<const std::vector<char> *, QRgb>> &layers)
 {
-    if (grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells())
+    if (grid.columns <= 0 || grid.rows <= 0 || layers.empty())
         return {};
     const int longer = std::max(grid.columns, grid.rows);
     const int scale = std::max(1, (minPicturePixels + longer - 1) / longer);
@@ -705,29 +735,47 @@ QImage workspaceImage(const MapGrid &grid, std::span<const float> values)
     const int width = grid.columns * scale, height = grid.rows * scale;
     QImage image(width, height, QImage::Format_RGB32);
     image.fill(Qt::white);
-    const auto at = [&](int c, int r) {
+    const auto index = [&](int c, int r) {
+        return static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns) + static_cast<std::size_t>(c);
+    };
+    const auto inUnion = [&](int c, int r) {
         if (c < 0 || r < 0 || c >= grid.columns || r >= grid.rows)
             return false;
-        return reachable(
-            values[static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns) + static_cast<std::size_t>(c)]);
+        return std::any_of(layers.begin(), layers.end(), [&](const auto &layer) { return (*layer.first)[index(c, r)] != 0; });
     };
     for (int r = 0; r < grid.rows; ++r) {
         for (int c = 0; c < grid.columns; ++c) {
-            if (!at(c, r))
+            QRgb fill = 0;
+            for (const auto &[reached, colour] : layers) {
+                if ((*reached)[index(c, r)])
+                    fill = colour;
+            }
+            if (!fill)
                 continue;
-            const bool left = !at(c - 1, r), right = !at(c + 1, r), below = !at(c, r - 1), above = !at(c, r + 1);
+            const bool left = !inUnion(c - 1, r), right = !inUnion(c + 1, r), below = !inUnion(c, r - 1),
+                       above = !inUnion(c, r + 1);
             const int top = (grid.rows - 1 - r) * scale; // row 0 is the bottom row: y up
             for (int iy = 0; iy < scale; ++iy) {
                 QRgb *line = reinterpret_cast<QRgb *>(image.scanLine(top + iy));
                 for (int ix = 0; ix < scale; ++ix) {
                     const bool edge = (left && ix < thickness) || (right && ix >= scale - thickness)
                         || (above && iy < thickness) || (below && iy >= scale - thickness);
-                    line[c * scale + ix] = edge ? workspaceLine : workspaceFill;
+                    line[c * scale + ix] = edge ? workspaceLine : fill;
                 }
             }
         }
     }
     return image;
+}
+
+QImage workspaceImage(const MapGrid &grid, std::span<const float> values)
+{
+    if (grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells())
+        return {};
+    std::vector<char> reached(grid.cells());
+    for (std::size_t i = 0; i < reached.size(); ++i)
+        reached[i] = reachable(values[i]) ? 1 : 0;
+    return regionsImage(grid, {{&reached, workspaceFill}});
 }
 
 double mapColourLimit(std::span<const float> values, MapQuantity quantity)

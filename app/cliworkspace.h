@@ -32,6 +32,10 @@ int runWorkspaceCommand(const PreparedDesign &prepared, const Invocation &invoca
 /// not NaN) light blue on white with a darker outline, y up, at least 400 pixels along the
 /// longer side (a whole number of pixels per cell).
 QImage workspaceImage(const MapGrid &grid, std::span<const float> values);
+/// Regions on one grid (a flag per cell) painted over each other, later layers over earlier
+/// ones, with the boundary of their union: the workspaces of a design's modes (fig. 5 of the
+/// O-X glide), as `pkm workspace -o FILE.png` draws them for a mechanism with named modes.
+QImage regionsImage(const MapGrid &grid, const std::vector<std::pair<const std::vector<char> *, QRgb>> &layers);
 
 /// The picture of `pkm map -o FILE.png`: one pixel per cell, y up, unreachable cells
 /// transparent. Determinant: a diverging blue–white–red scale over [−limit, limit];

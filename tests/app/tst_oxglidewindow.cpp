@@ -17,10 +17,12 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QProcess>
+#include <QImage>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
@@ -113,6 +115,25 @@ private slots:
         QVERIFY(std::abs(cli.value(QStringLiteral("area_O")).toDouble() - oxglide::exactArea(d, oxglide::formO)) < 0.01 * 753.0);
         QVERIFY(std::abs(cli.value(QStringLiteral("area_X")).toDouble() - oxglide::exactArea(d, oxglide::formX)) < 0.01 * 2125.0);
         QCOMPARE(cli.value(QStringLiteral("area_union")).toDouble(), cli.value(QStringLiteral("area_X")).toDouble());
+        // and its picture is fig. 5: the O region (the design's own, darker) inside the X region
+        QTemporaryDir directory;
+        const QString path = directory.filePath(QStringLiteral("fig5.png"));
+        QProcess process;
+        process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), {QStringLiteral("workspace"), QStringLiteral("oxglide-prototype"),
+                                                              QStringLiteral("--grid"), QStringLiteral("800"), QStringLiteral("-o"), path});
+        QVERIFY(process.waitForFinished(60000) && process.exitCode() == 0);
+        const QImage picture(path);
+        QVERIFY(!picture.isNull());
+        qsizetype dark = 0, light = 0;
+        for (int y = 0; y < picture.height(); ++y) {
+            for (int x = 0; x < picture.width(); ++x) {
+                const QRgb pixel = picture.pixel(x, y) & 0xffffff;
+                dark += pixel == 0x2b5c8f ? 1 : 0;
+                light += pixel == 0xa6cee3 ? 1 : 0;
+            }
+        }
+        const double ratio = double(dark) / double(dark + light); // ≈ area_O / area_X
+        QVERIFY2(std::abs(ratio - 753.3 / 2125.3) < 0.03, qPrintable(QString::number(ratio)));
     }
 
     void dragsThePlatform()
