@@ -277,6 +277,10 @@ void MainWindow::onDesignChanged()
         m_workspacePanel->setDesign(mechanism, design.title);
         m_plots->setCurrentWidget(m_workspacePanel);
     }
+    // A mechanism without plots of its own (the four-bar, for now) gives the linkage the room
+    // rather than showing another mechanism's plots.
+    const bool hasPlots = dynamic_cast<const PJoint *>(mechanism.get()) || mechanism->planarWorkspace();
+    m_plots->setVisible(hasPlots);
     onPoseChanged();
     keepMechanismInView();
     update3d(true);

@@ -147,6 +147,29 @@ Result<MechanismPtr> Mechanism::withParameters(const ParameterSet &changes) cons
     return current;
 }
 
+Result<MechanismPtr> Mechanism::blameChange(Result<MechanismPtr> made, const ParameterSet &changes)
+{
+    if (!made && changes.size() == 1 && made.failure().culprit != changes.begin()->first) {
+        Failure f = made.failure();
+        f.culprit = changes.begin()->first;
+        return f;
+    }
+    return made;
+}
+
+std::string joinText(std::initializer_list<std::string_view> parts)
+{
+    std::string text;
+    for (std::string_view part : parts)
+        text.append(part);
+    return text;
+}
+
+std::string formatMillimetres(double value)
+{
+    return joinText({formatNumber(value, 2), " mm"});
+}
+
 Result<double> Mechanism::checkDomain(const ParameterInfo &info, double value)
 {
     const Interval &d = info.domain;

@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -214,9 +215,16 @@ public:
 
     /// Validates `value` against the parameter's domain; the failure names it.
     static Result<double> checkDomain(const ParameterInfo &info, double value);
+    /// A design made from `changes`: when a single change fails a check across parameters (a
+    /// stroke order, a loop that cannot close), the failure names that change.
+    static Result<MechanismPtr> blameChange(Result<MechanismPtr> made, const ParameterSet &changes);
 };
 
 /// Formats a number for messages with up to `decimals` decimals, trailing zeros removed.
 std::string formatNumber(double value, int decimals = 3);
+/// A length for messages: "12.5 mm" (two decimals at most).
+std::string formatMillimetres(double value);
+/// Concatenates message parts (GCC 12 warns falsely, -Wrestrict, on chains of operator+).
+std::string joinText(std::initializer_list<std::string_view> parts);
 
 } // namespace pkm

@@ -297,14 +297,7 @@ Result<MechanismPtr> Moma::withParameters(const ParameterSet &changes) const
     auto design = applyChanges(m_design, changes, parameterInfo());
     if (!design)
         return design.failure();
-    auto made = create(*design);
-    // A check across parameters (stroke order, empty workspace) is about what was changed.
-    if (!made && changes.size() == 1 && made.failure().culprit != changes.begin()->first) {
-        Failure f = made.failure();
-        f.culprit = changes.begin()->first;
-        return f;
-    }
-    return made;
+    return blameChange(create(*design), changes);
 }
 
 Result<MechanismPtr> Moma::withParameter(std::string_view name, double value) const

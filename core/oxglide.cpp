@@ -20,23 +20,14 @@ double heightWhereW(double l, double limit)
     return limit < l ? std::sqrt(l * l - limit * limit) : 0.0;
 }
 
-/// Concatenation without chains of operator+ (GCC 12 warns falsely, -Wrestrict, on those).
-std::string join(std::initializer_list<std::string_view> parts)
-{
-    std::string text;
-    for (std::string_view part : parts)
-        text.append(part);
-    return text;
-}
-
 std::string mm(double value)
 {
-    return join({formatNumber(value, 2), " mm"});
+    return formatMillimetres(value);
 }
 
 std::string point(const Eigen::Vector2d &p)
 {
-    return join({"(", formatNumber(p.x(), 2), ", ", formatNumber(p.y(), 2), ") mm"});
+    return joinText({"(", formatNumber(p.x(), 2), ", ", formatNumber(p.y(), 2), ") mm"});
 }
 } // namespace
 
@@ -128,12 +119,12 @@ Result<OxGlideDesign> applyChanges(OxGlideDesign d, const ParameterSet &changes)
         const auto &infos = oxglideParameterInfo();
         const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
         if (info == infos.end())
-            return Failure{FailureKind::UnknownName, name, join({"The O-X glide has no parameter named '", name, "'."})};
+            return Failure{FailureKind::UnknownName, name, joinText({"The O-X glide has no parameter named '", name, "'."})};
         if (auto checked = Mechanism::checkDomain(*info, value); !checked)
             return checked.failure();
         if (name == "mode" && value != 1.0 && value != -1.0) {
             return Failure{FailureKind::InvalidParameter, "mode",
-                           join({"mode = ", formatNumber(value), " is invalid: it must be +1 (O, extended) or -1 (X, crossed)."})};
+                           joinText({"mode = ", formatNumber(value), " is invalid: it must be +1 (O, extended) or -1 (X, crossed)."})};
         }
     }
     auto take = [&](const char *name, double &field) {
@@ -163,22 +154,22 @@ Result<MechanismPtr> OxGlide::create(const OxGlideDesign &d)
         return Failure{FailureKind::InvalidParameter, "mode", "mode must be +1 (O, extended) or -1 (X, crossed)."};
     if (!(d.width < 2.0 * d.rod)) {
         return Failure{FailureKind::InvalidParameter, "s",
-                       join({"s = ", mm(d.width), " must be less than 2l = ", mm(2.0 * d.rod),
+                       joinText({"s = ", mm(d.width), " must be less than 2l = ", mm(2.0 * d.rod),
                                  ": a platform that wide keeps the rods from ever crossing, so there is no X form."})};
     }
     if (!(d.guideLength > d.width)) {
         return Failure{FailureKind::InvalidParameter, "L",
-                       join({"L = ", mm(d.guideLength), " must be more than the platform width s = ", mm(d.width),
+                       joinText({"L = ", mm(d.guideLength), " must be more than the platform width s = ", mm(d.width),
                                  ": with guides that short the extended (O) form has no workspace."})};
     }
     if (!(d.zMin < d.zMax)) {
         return Failure{FailureKind::InvalidParameter, "z_min",
-                       join({"z_min = ", mm(d.zMin), " must be less than z_max = ", mm(d.zMax), "."})};
+                       joinText({"z_min = ", mm(d.zMin), " must be less than z_max = ", mm(d.zMax), "."})};
     }
     OxGlide candidate(d);
     if (!candidate.m_home.inputs.size()) {
         return Failure{FailureKind::Unreachable, "L",
-                       join({"The ", oxglide::formTitle(d.form), " form has no workspace with L = ", mm(d.guideLength),
+                       joinText({"The ", oxglide::formTitle(d.form), " form has no workspace with L = ", mm(d.guideLength),
                              ", s = ", mm(d.width), " and l = ", mm(d.rod), "."})};
     }
     return MechanismPtr(new OxGlide(candidate));
@@ -207,14 +198,7 @@ Result<MechanismPtr> OxGlide::withParameters(const ParameterSet &changes) const
     auto design = applyChanges(m_design, changes);
     if (!design)
         return design.failure();
-    auto made = create(*design);
-    // A check across parameters (s against l, L against s) is about what was changed.
-    if (!made && changes.size() == 1 && made.failure().culprit != changes.begin()->first) {
-        Failure f = made.failure();
-        f.culprit = changes.begin()->first;
-        return f;
-    }
-    return made;
+    return blameChange(create(*design), changes);
 }
 
 Result<MechanismPtr> OxGlide::withParameter(std::string_view name, double value) const
@@ -311,11 +295,11 @@ Result<Pose> OxGlide::inverse(const Eigen::Vector2d &platform, double z) const
     const double l = d.rod;
     if (platform.y() > l * (1.0 + 1e-12)) {
         return Failure{FailureKind::Unreachable, "y",
-                       join({"The platform cannot reach ", point(platform), ": y is more than the rod length l = ", mm(l), "."})};
+                       joinText({"The platform cannot reach ", point(platform), ": y is more than the rod length l = ", mm(l), "."})};
     }
     if (platform.y() < 0.0) {
         return Failure{FailureKind::Unreachable, "y",
-                       join({"The platform cannot reach ", point(platform),
+                       joinText({"The platform cannot reach ", point(platform),
                                  ": it would pass the rod joints' plane y = 0, where the rods lie along the guides (a "
                                  "direct singularity)."})};
     }
@@ -348,7 +332,7 @@ Result<Pose> OxGlide::solveDirect(const Coordinates &inputs, const Pose *near) c
     for (int i = 0; i < 3; ++i) {
         const Interval range = variableRange(i);
         if (!std::isfinite(inputs[i]))
-            return Failure{FailureKind::OutOfRange, names[i], join({names[i], " must be a finite number."})};
+            return Failure{FailureKind::OutOfRange, names[i], joinText({names[i], " must be a finite number."})};
         if (!range.contains(inputs[i])) {
             std::string message = names[i];
             message.append(" = ").append(mm(inputs[i])).append(i < 2 ? " is off the guides (" : " is outside the travel (");
@@ -361,7 +345,7 @@ Result<Pose> OxGlide::solveDirect(const Coordinates &inputs, const Pose *near) c
     const double e = xCD - xAB - d.width;
     if (!solution.valid) {
         return Failure{FailureKind::Unreachable, "x_CD",
-                       join({"The rods cannot reach the platform at x_AB = ", mm(xAB), ", x_CD = ", mm(xCD),
+                       joinText({"The rods cannot reach the platform at x_AB = ", mm(xAB), ", x_CD = ", mm(xCD),
                                  ": |x_CD − x_AB − s| = ", mm(std::abs(e)), " is more than 2l = ", mm(2.0 * d.rod), "."})};
     }
     if (solution.form != 0 && solution.form != d.form && std::abs(e) > 1e-9 * d.rod) {
@@ -510,7 +494,7 @@ std::vector<ModeAlternative> OxGlide::modeNeighbours() const
     const int other = -m_design.form;
     const ParameterSet changes = {{"mode", double(other)}};
     if (auto made = withParameters(changes)) {
-        neighbours.push_back({join({oxglide::formTitle(other), " form (same platform position)"}), changes, *made,
+        neighbours.push_back({joinText({oxglide::formTitle(other), " form (same platform position)"}), changes, *made,
                               false, {}});
     }
     return neighbours;

@@ -1,5 +1,6 @@
 #include "registry.h"
 
+#include "fourbar.h"
 #include "moma.h"
 #include "oxglide.h"
 #include "pjoint.h"
@@ -12,6 +13,7 @@ const std::vector<MechanismKind> &mechanismKinds()
         {"pjoint", "Active П-joint", &PJoint::createFrom},
         {"moma", "MOMA 2-axis parallel mechanism", &Moma::createFrom},
         {"oxglide", "O-X glide hybrid mechanism", &OxGlide::createFrom},
+        {"fourbar", "Planar four-bar linkage", &FourBar::createFrom},
     };
     return kinds;
 }

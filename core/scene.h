@@ -72,6 +72,14 @@ struct SceneHandle {
     std::string hint; ///< what dragging does ("drag to set θ")
 };
 
+/// A polyline in the mechanism plane (a coupler curve, a trajectory), drawn thin; `closed`
+/// joins the last point to the first.
+struct ScenePolyline {
+    std::vector<Eigen::Vector3d> points;
+    bool closed = false;
+    std::string label;
+};
+
 struct Scene {
     std::vector<SceneJoint> joints;
     std::vector<SceneBar> bars;
@@ -80,6 +88,7 @@ struct Scene {
     std::vector<SceneAngle> angles;
     std::vector<SceneDimension> dimensions;
     std::vector<SceneHandle> handles;
+    std::vector<ScenePolyline> polylines;
     /// Box holding the mechanism over its whole range of motion, so "fit" does not jump.
     Eigen::AlignedBox3d extent;
 };

@@ -215,6 +215,22 @@ void ScenePainter::paint(
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setRenderHint(QPainter::TextAntialiasing, true);
     collectRaysAndJoints(canvas);
+    // paths (a coupler curve) lie under the mechanism, thin
+    for (const ScenePolyline &polyline : scene.polylines) {
+        QPolygonF line;
+        for (const Eigen::Vector3d &p : polyline.points) {
+            if (p.allFinite())
+                line << mapping.toDevice(p);
+        }
+        if (line.size() < 2)
+            continue;
+        painter.setPen(QPen(style.path, 1.6 * style.pixelSize, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter.setBrush(Qt::NoBrush);
+        if (polyline.closed)
+            painter.drawPolygon(line);
+        else
+            painter.drawPolyline(line);
+    }
     for (std::size_t g = 0; g < guides.size(); ++g)
         drawGuide(canvas, int(g));
     for (const SceneActuator &actuator : scene.actuators)

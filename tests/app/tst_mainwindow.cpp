@@ -1,6 +1,7 @@
 // The main window driven as a person would: spin boxes, sliders, the design panel, dragging in
 // the view, undo. Checks that d, the view, the values and the plot cursors follow.
 #include "mainwindow.h"
+#include "workspacepanel.h"
 
 #include "designpanel.h"
 #include "document.h"
@@ -292,6 +293,21 @@ private slots:
         QCOMPARE(joint(*m_window).design().a, 170.0);
         QVERIFY(!m_window->openDesign(QStringLiteral("no-such-preset")));
         QVERIFY(m_window->lastStatus().contains(QStringLiteral("no-such-preset")));
+    }
+
+    void plotsBelongToTheMechanism()
+    {
+        // a mechanism without plots of its own shows none, never the previous mechanism's
+        QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));
+        QVERIFY(m_window->pjointPlots()->isVisible());
+        QVERIFY(m_window->openDesign(QStringLiteral("fourbar-example")));
+        QVERIFY(!m_window->pjointPlots()->isVisible());
+        QVERIFY(!m_window->workspacePanel()->isVisible());
+        QVERIFY(m_window->linkageView()->isVisible());
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
+        QVERIFY(m_window->workspacePanel()->isVisible());
+        QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));
+        QVERIFY(m_window->pjointPlots()->isVisible());
     }
 };
 

@@ -282,6 +282,11 @@ private slots:
     void oxglideMapJson();
     void oxglideList();
 
+    void fourbarEvalJsonHasContractKeys_data();
+    void fourbarEvalJsonHasContractKeys();
+    void fourbarAlphaBeyondLimit();
+    void fourbarSweepFullTurn();
+
     void workspaceJson();
     void workspaceModes();
     void workspaceText();
@@ -2149,6 +2154,95 @@ void TestCli::notFiniteIsNullAndMatricesNest()
     const QJsonObject singularity = root.value(QStringLiteral("singularity")).toObject();
     QCOMPARE(singularity.value(QStringLiteral("type")).toString(), QStringLiteral("direct"));
     QCOMPARE(singularity.value(QStringLiteral("undefined")).toArray(), QJsonArray{QStringLiteral("ratio")});
+}
+
+// -- fourbar --------------------------------------------------------------------------------
+
+void TestCli::fourbarEvalJsonHasContractKeys_data()
+{
+    QTest::addColumn<QString>("group");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<int>("size"); // 0: a number
+    const auto add = [](const char *group, std::initializer_list<const char *> keys) {
+        for (const char *key : keys)
+            QTest::addRow("%s.%s", group, key) << QString::fromLatin1(group) << QString::fromLatin1(key) << 0;
+    };
+    add("parameters", {"AB", "BC", "CD", "AD", "omega1"});
+    add("pose", {"alpha", "gamma", "delta", "delta1", "beta"});
+    add("derived", {"omega3", "epsilon3", "i31"});
+}
+
+void TestCli::fourbarEvalJsonHasContractKeys()
+{
+    QFETCH(QString, group);
+    QFETCH(QString, key);
+    QFETCH(int, size);
+    static int exitCode = -1;
+    static const QJsonObject root = runJson(args({"eval", "fourbar-example"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("fourbar"));
+    checkContractKey(root, group, key, size);
+    // the Grashof class is a word; the example is a crank-rocker at α = 60° (degrees in JSON)
+    const QJsonObject derived = root.value(QStringLiteral("derived")).toObject();
+    QCOMPARE(derived.value(QStringLiteral("grashof")).toString(), QStringLiteral("crank-rocker"));
+    const QJsonObject pose = root.value(QStringLiteral("pose")).toObject();
+    QCOMPARE(jsonNumber(pose, "alpha"), 60.0);
+    // the angles close the quadrilateral: α + β + γ + δ = 360°
+    const double sum = jsonNumber(pose, "alpha") + jsonNumber(pose, "beta") + jsonNumber(pose, "gamma")
+        + jsonNumber(pose, "delta");
+    QVERIFY2(std::abs(sum - 360.0) < 1e-9, qPrintable(QString::number(sum, 'g', 17)));
+    // ω₃ = i₃₁·ω₁ with ω₁ = 10 rad/s
+    QVERIFY(std::abs(jsonNumber(derived, "omega3") - 10.0 * jsonNumber(derived, "i31")) < 1e-12);
+    QCOMPARE(jsonNumber(root.value(QStringLiteral("parameters")).toObject(), "omega1"), 10.0);
+}
+
+void TestCli::fourbarAlphaBeyondLimit()
+{
+    // AB = 100 mm makes the example a triple-rocker: α is limited to ±acos(−0.6714…) = ±132.19°.
+    const double limit = std::acos((100.0 * 100 + 140.0 * 140 - 220.0 * 220) / (2 * 100.0 * 140)) / degree;
+    int exitCode = -1;
+    const QJsonObject inside = runJson({QStringLiteral("eval"), QStringLiteral("fourbar-example"), QStringLiteral("--set"),
+                                        QStringLiteral("AB=100"), QStringLiteral("--set"),
+                                        QStringLiteral("alpha=") + number(limit - 1.0)},
+                                       &exitCode);
+    QCOMPARE(exitCode, 0);
+    QCOMPARE(inside.value(QStringLiteral("derived")).toObject().value(QStringLiteral("grashof")).toString(),
+             QStringLiteral("triple-rocker"));
+    const Run run = runPkm(args({"eval", "fourbar-example", "--set", "AB=100", "--set", "alpha=150"}));
+    QCOMPARE(run.exitCode, 3);
+    QVERIFY2(run.out.isEmpty(), run.out.constData());
+    QCOMPARE(run.err.count('\n'), 1); // one line
+    const QString message = QString::fromUtf8(run.err);
+    QVERIFY2(message.contains(QStringLiteral("alpha")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("150")), qPrintable(message));
+    QVERIFY2(message.contains(QString::fromStdString(formatNumber(limit, 3))), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("BC + CD")), qPrintable(message));
+    const Run json = runPkm(args({"eval", "fourbar-example", "--set", "AB=100", "--set", "alpha=150", "--json"}));
+    QCOMPARE(json.exitCode, 3);
+    QVERIFY(json.out.isEmpty());
+}
+
+void TestCli::fourbarSweepFullTurn()
+{
+    const Run run = runPkm(args({"sweep", "fourbar-example", "--var", "alpha", "--from", "0", "--to", "360", "--steps",
+                                 "37", "--csv"}));
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    const QList<QByteArray> lines = run.out.chopped(1).split('\n');
+    QCOMPARE(lines.size(), 38);
+    const QList<QByteArray> header = lines.front().split(',');
+    for (const char *column : {"alpha", "delta", "gamma", "delta1", "beta", "omega3", "epsilon3", "i31"})
+        QVERIFY2(header.contains(column), column);
+    const auto alpha = header.indexOf("alpha"), delta = header.indexOf("delta");
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QList<QByteArray> fields = lines[i].split(',');
+        QCOMPARE(fields.size(), header.size());
+        QVERIFY(std::abs(fields[alpha].toDouble() - 10.0 * double(i - 1)) < 1e-9);
+        // the rocker swings between its limits 34.05° and 81.79°
+        QVERIFY(fields[delta].toDouble() > 34.0 && fields[delta].toDouble() < 81.8);
+    }
+    // a full turn brings the rocker back
+    QCOMPARE(lines[1].split(',')[delta].toDouble(), lines.back().split(',')[delta].toDouble());
 }
 
 QTEST_GUILESS_MAIN(TestCli)
