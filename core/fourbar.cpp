@@ -1,5 +1,7 @@
 #include "fourbar.h"
 
+#include "mobility.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -461,6 +463,13 @@ double FourBar::wrapDelta(double delta) const
     return nearestTurn(delta, 0.5 * (m_deltaRange.min + m_deltaRange.max));
 }
 
+std::string FourBar::rangeLimitReason(int variable, bool upper) const
+{
+    if (variable != variableAlpha || m_fullTurn)
+        return {};
+    return limitReason(upper ? m_alphaRange.max : m_alphaRange.min);
+}
+
 std::string FourBar::limitReason(double limit) const
 {
     const FourBarDesign &d = m_design;
@@ -754,6 +763,18 @@ std::vector<ModeAlternative> FourBar::modeNeighbours() const
     if (auto made = withParameters(changes))
         neighbours.push_back({joinText({fourbar::branchName(other), " branch (same crank angle)"}), changes, *made, true, {}});
     return neighbours;
+}
+
+KinematicChain FourBar::kinematicChain(const Pose &pose) const
+{
+    KinematicChain chain;
+    chain.links = {"ground AD", "crank AB", "coupler BC", "rocker CD"};
+    chain.pairs = {mobility::planarRevolute("A", 0, 1, Eigen::Vector2d(0.0, 0.0), true),
+        mobility::planarRevolute("B", 1, 2, crankJoint(m_design, pose.inputs[0])),
+        mobility::planarRevolute("C", 2, 3, rockerJoint(m_design, pose.outputs[0])),
+        mobility::planarRevolute("D", 3, 0, Eigen::Vector2d(m_design.ground, 0.0))};
+    chain.description = "planar four-bar: ground AD, crank AB (driven at A), coupler BC, rocker CD";
+    return chain;
 }
 
 // -- drawing -------------------------------------------------------------------------------

@@ -142,6 +142,8 @@ public:
     const std::vector<VariableInfo> &variableInfo() const override;
     Interval variableRange(int variable) const override;
     Pose homePose() const override { return m_home; }
+    /// The dead point that limits α when the crank does not turn fully.
+    std::string rangeLimitReason(int variable, bool upper) const override;
     /// α → δ in the design's branch; α outside variableRange(α) is refused with the reason.
     Result<Pose> solveDirect(const Coordinates &inputs, const Pose *near = nullptr) const override;
     /// δ → α: of the crank angles in the design's branch, the one nearest `near` (or home).
@@ -154,6 +156,8 @@ public:
     std::vector<ReportText> reportText(const Pose &pose) const override;
     /// The other branch at the same α.
     std::vector<ModeAlternative> modeNeighbours() const override;
+    /// Ground AD, crank AB, coupler BC, rocker CD; revolute pairs A (actuated), B, C, D.
+    KinematicChain kinematicChain(const Pose &pose) const override;
 
     Scene scene(const Pose &pose) const override;
     /// Handle 0 (B) turns the crank (direct kinematics); handle 1 (C) swings the rocker

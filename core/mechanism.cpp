@@ -6,6 +6,23 @@
 
 namespace pkm {
 
+std::string_view parameterGroupKey(ParameterGroup group)
+{
+    switch (group) {
+    case ParameterGroup::Geometry:
+        return "geometry";
+    case ParameterGroup::Range:
+        return "range";
+    case ParameterGroup::Actuator:
+        return "actuator";
+    case ParameterGroup::Drawing:
+        return "drawing";
+    case ParameterGroup::Mode:
+        return "mode";
+    }
+    return "geometry";
+}
+
 const ReportEntry *ReportLayout::find(std::string_view name) const
 {
     for (const ReportEntry &entry : entries) {

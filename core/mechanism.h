@@ -6,6 +6,7 @@
 ///
 /// Units: core units (mm, rad, N, N·m, s); ParameterInfo/VariableInfo carry the display unit.
 
+#include "kinematicchain.h"
 #include "result.h"
 #include "scene.h"
 #include "scene3d.h"
@@ -38,6 +39,8 @@ struct Interval {
 };
 
 enum class ParameterGroup { Geometry, Range, Actuator, Drawing, Mode };
+/// The group's key in files and reports: "geometry", "range", "actuator", "drawing", "mode".
+std::string_view parameterGroupKey(ParameterGroup group);
 
 struct ParameterInfo {
     std::string name;        ///< key in files, CLI and JSON ("a", "theta_min")
@@ -171,6 +174,15 @@ public:
     /// Allowed interval of variable i (index into variableInfo()), core units.
     virtual Interval variableRange(int variable) const = 0;
     virtual Pose homePose() const = 0;
+    /// Why variable `variable` cannot go past its upper (or lower) limit when the limit is not
+    /// simply the design's range (an assembly limit, a dead point): a clause for "α stops at its
+    /// upper limit 109.08°: …"; empty for a design range.
+    virtual std::string rangeLimitReason(int variable, bool upper) const
+    {
+        (void)variable;
+        (void)upper;
+        return {};
+    }
 
     /// Direct kinematics: outputs from inputs. `near` picks the assembly mode to stay in.
     virtual Result<Pose> solveDirect(const Coordinates &inputs, const Pose *near = nullptr) const = 0;
@@ -205,6 +217,9 @@ public:
                                                           const Pose &pose);
     /// Workspace and singularity maps, for mechanisms whose outputs are a point of the plane.
     virtual const PlanarWorkspace *planarWorkspace() const { return nullptr; }
+    /// The links and kinematic pairs with their axes at `pose`, for the mobility analysis
+    /// (mobility.h). Every mechanism describes its real joints, actuators included.
+    virtual KinematicChain kinematicChain(const Pose &pose) const = 0;
 
     // -- drawing --------------------------------------------------------------------------
     virtual Scene scene(const Pose &pose) const = 0;

@@ -1,5 +1,7 @@
 #include "moma.h"
 
+#include "mobility.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -682,6 +684,23 @@ std::vector<ModeAlternative> Moma::modeNeighbours() const
         add(label, {{name, branch}, {"assembly", assembly}}, false);
     }
     return neighbours;
+}
+
+KinematicChain Moma::kinematicChain(const Pose &pose) const
+{
+    const std::array<Eigen::Vector2d, 2> z
+        = {moma::sliderJoint(m_design, 0, pose.inputs[0]), moma::sliderJoint(m_design, 1, pose.inputs[1])};
+    KinematicChain chain;
+    chain.links = {"ground", "slider K₁", "slider K₂", "link S₁", "link S₂"};
+    for (int leg = 0; leg < 2; ++leg) {
+        chain.pairs.push_back(mobility::planarPrismatic(joinText({"guide PO", leg == 0 ? "₁" : "₂"}), 0, 1 + leg,
+            z[std::size_t(leg)], moma::direction(m_design.alpha[std::size_t(leg)]), true));
+        chain.pairs.push_back(
+            mobility::planarRevolute(joinText({"Z", leg == 0 ? "₁" : "₂"}), 1 + leg, 3 + leg, z[std::size_t(leg)]));
+    }
+    chain.pairs.push_back(mobility::planarRevolute("P", 3, 4, pose.outputs.head<2>()));
+    chain.description = "MOMA: two sliders on powered guides, two links meeting at the platform joint P";
+    return chain;
 }
 
 // -- drawing -------------------------------------------------------------------------------

@@ -87,6 +87,9 @@ public:
     Singularity evaluate(const Pose &pose, std::span<double> values) const override;
     Jacobians jacobians(const Pose &pose) const override;
     std::vector<ModeAlternative> modeNeighbours() const override;
+    /// Ground, sliders K₁ and K₂, links S₁ and S₂: prismatic pairs on the guides PO₁, PO₂
+    /// (actuated), revolute pairs Z₁, Z₂ at the sliders and P between the two links.
+    KinematicChain kinematicChain(const Pose &pose) const override;
     const PlanarWorkspace *planarWorkspace() const override { return this; }
 
     Scene scene(const Pose &pose) const override;
@@ -104,6 +107,10 @@ public:
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
     std::vector<SingularCurve> singularCurves() const override;
+    std::string singularityMeaning(SingularCurve::Type type) const override
+    {
+        return type == SingularCurve::Type::Inverse ? "link ⟂ guide" : "links collinear";
+    }
 
     static constexpr int variableP1 = 0;
     static constexpr int variableP2 = 1;

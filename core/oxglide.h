@@ -96,6 +96,12 @@ public:
     std::vector<ReportText> reportText(const Pose &pose) const override;
     /// The other form at the same platform position.
     std::vector<ModeAlternative> modeNeighbours() const override;
+    /// The hybrid as built, in the frame of scene3d(): ground, the longitudinal carriage
+    /// (actuated prismatic z), the slider pairs AB and CD (actuated prismatic x on the
+    /// carriage), four rods hinged to them (revolute, axis z, in the rod planes z + (k − 1.5)·a
+    /// for the guides D, A, B, C) and the platform on four spherical joints. Spatial: the
+    /// rank, not a formula, gives its mobility (mobility.h).
+    KinematicChain kinematicChain(const Pose &pose) const override;
     const PlanarWorkspace *planarWorkspace() const override { return this; }
 
     Scene scene(const Pose &pose) const override;
@@ -114,6 +120,10 @@ public:
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
     std::vector<SingularCurve> singularCurves() const override;
+    std::string singularityMeaning(SingularCurve::Type type) const override
+    {
+        return type == SingularCurve::Type::Inverse ? "rods ⟂ guides" : "rods along the guides";
+    }
     /// A box holding the workspaces of both forms (the X form's holds the O form's).
     Eigen::AlignedBox2d unionBounds() const;
 

@@ -4,6 +4,8 @@
 
 #include "oxglide.h"
 
+#include "mobility.h"
+
 #include <array>
 #include <cmath>
 
@@ -142,6 +144,41 @@ Scene3D OxGlide::scene3d(const Pose &pose) const
     model.extent = Eigen::AlignedBox3d(Eigen::Vector3d(-frameGap - a, bottom - 1.4 * a, d.zMin - 2.5 * c),
                                        Eigen::Vector3d(L + frameGap + a, l + thickness + 0.5 * a, d.zMax + 2.5 * c));
     return model;
+}
+
+KinematicChain OxGlide::kinematicChain(const Pose &pose) const
+{
+    const OxGlideDesign &d = m_design;
+    const double xAB = pose.inputs[0], xCD = pose.inputs[1], z = pose.inputs[2];
+    const double x = pose.outputs[0], y = pose.outputs[1];
+    auto depth = [&](int k) { return z + (k - 1.5) * d.spacing; }; // as scene3d()
+    enum { Ground, Carriage, PairAB, PairCD, Rods, Platform = Rods + 4 };
+    const Eigen::Vector3d ux = Eigen::Vector3d::UnitX(), uz = Eigen::Vector3d::UnitZ();
+    KinematicChain chain;
+    chain.links = {"ground", "carriage", "slider pair AB", "slider pair CD"};
+    for (int k = 0; k < 4; ++k)
+        chain.links.push_back(joinText({"rod ", guideNames[std::size_t(k)]}));
+    chain.links.push_back("platform");
+    chain.pairs.push_back(
+        mobility::makePair(PairType::Prismatic, "z", Ground, Carriage, Eigen::Vector3d(0.0, 0.0, z), uz, true));
+    chain.pairs.push_back(mobility::makePair(
+        PairType::Prismatic, "x_AB", Carriage, PairAB, Eigen::Vector3d(xAB, 0.0, depth(guideA)), ux, true));
+    chain.pairs.push_back(mobility::makePair(
+        PairType::Prismatic, "x_CD", Carriage, PairCD, Eigen::Vector3d(xCD, 0.0, depth(guideD)), ux, true));
+    for (int k = 0; k < 4; ++k) {
+        const bool cd = k == guideC || k == guideD;
+        const std::string name = guideNames[std::size_t(k)];
+        const Eigen::Vector3d slider(cd ? xCD : xAB, 0.0, depth(k)),
+            platform(cd ? x + 0.5 * d.width : x - 0.5 * d.width, y, depth(k));
+        chain.pairs.push_back(mobility::makePair(PairType::Revolute, name, cd ? PairCD : PairAB, Rods + k, slider, uz));
+        chain.pairs.push_back(
+            mobility::makePair(PairType::Spherical, joinText({name, "′"}), Rods + k, Platform, platform));
+    }
+    chain.planar = false;
+    chain.description
+        = "O-X glide: carriage on the longitudinal guides, slider pairs AB and CD, four rods (revolute at the "
+          "sliders, spherical at the platform), platform";
+    return chain;
 }
 
 } // namespace pkm

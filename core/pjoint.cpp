@@ -1,5 +1,7 @@
 #include "pjoint.h"
 
+#include "mobility.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -479,6 +481,24 @@ Jacobians PJoint::jacobians(const Pose &pose) const
     j.outputs = Eigen::MatrixXd::Constant(1, 1, pjoint::jacobianTheta(m_design, theta));
     j.full = Eigen::MatrixXd::Constant(1, 1, pjoint::jacobian(m_design, theta));
     return j;
+}
+
+KinematicChain PJoint::kinematicChain(const Pose &pose) const
+{
+    const double theta = pose.outputs[0];
+    const Eigen::Vector2d crank = m_design.a * Eigen::Vector2d(std::sin(theta), std::cos(theta));
+    const Eigen::Vector2d o(0.0, 0.0), b(m_design.b, 0.0), a = b + crank, c = o + crank;
+    enum { Ground, CrankBA, CrankOC, Coupler, Motor, Screw };
+    KinematicChain chain;
+    chain.links = {"ground OB", "crank BA", "crank OC", "coupler CA", "motor body", "screw"};
+    chain.pairs = {mobility::planarRevolute("O", Ground, CrankOC, o), mobility::planarRevolute("B", Ground, CrankBA, b),
+        mobility::planarRevolute("C", CrankOC, Coupler, c), mobility::planarRevolute("A", CrankBA, Coupler, a),
+        mobility::planarRevolute("O (motor)", Ground, Motor, o),
+        mobility::planarRevolute("A (screw)", CrankBA, Screw, a),
+        mobility::planarPrismatic("d", Motor, Screw, o, a - o, true)};
+    chain.description
+        = "active П-joint: hinged parallelogram OBAC with the telescopic diagonal OA (motor body and screw)";
+    return chain;
 }
 
 // -- drawing -----------------------------------------------------------------------------

@@ -101,6 +101,10 @@ public:
     Singularity evaluate(const Pose &pose, std::span<double> values) const override;
     /// 1×1: J_q = J_d, J_x = J_θ, J = J_d⁻¹·J_θ (9–11).
     Jacobians jacobians(const Pose &pose) const override;
+    /// The parallelogram O, B, A, C (ground OB, cranks OC and BA, coupler CA) and the
+    /// telescopic diagonal as two links, the motor body hinged at O and the screw hinged to the
+    /// crank at A, joined by an actuated prismatic pair along OA: 5 moving links, 7 pairs.
+    KinematicChain kinematicChain(const Pose &pose) const override;
 
     Scene scene(const Pose &pose) const override;
     /// The solid model (core/models3d.cpp).

@@ -60,6 +60,8 @@ public:
                             std::span<float> margins) const = 0;
     /// The singular curves inside the workspace, for drawing over a map.
     virtual std::vector<SingularCurve> singularCurves() const = 0;
+    /// What a singular curve of `type` means for this mechanism, for a legend: "link ⟂ guide".
+    virtual std::string singularityMeaning(SingularCurve::Type type) const = 0;
 };
 
 /// Below this margin a cell counts as near-singular (≈ 3° from the singular pose).

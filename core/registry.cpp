@@ -1,5 +1,6 @@
 #include "registry.h"
 
+#include "fivebar.h"
 #include "fourbar.h"
 #include "moma.h"
 #include "oxglide.h"
@@ -14,6 +15,7 @@ const std::vector<MechanismKind> &mechanismKinds()
         {"moma", "MOMA 2-axis parallel mechanism", &Moma::createFrom},
         {"oxglide", "O-X glide hybrid mechanism", &OxGlide::createFrom},
         {"fourbar", "Planar four-bar linkage", &FourBar::createFrom},
+        {"fivebar", "Planar five-bar linkage", &FiveBar::createFrom},
     };
     return kinds;
 }
