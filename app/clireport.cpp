@@ -1,7 +1,12 @@
 #include "clireport.h"
 
+#include "mobility.h"
+
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
+#include <string>
 
 namespace pkm::cli {
 
@@ -100,6 +105,86 @@ void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<con
     json.endObject();
     for (ReportGroup group : groupsAfterSingularity)
         writeGroupJson(json, layout, group, values, text);
+}
+
+void writeMobilityJson(JsonWriter &json, const Mechanism &mechanism, const Pose &pose)
+{
+    const KinematicChain chain = mechanism.kinematicChain(pose);
+    const MobilityReport r = analyseMobility(chain);
+    const auto integer = [&](const char *key, std::optional<int> value) {
+        json.key(key);
+        if (r.valid && value)
+            json.integer(*value);
+        else
+            json.null();
+    };
+    const auto flag = [&](const char *key, bool value) {
+        json.key(key);
+        if (r.valid)
+            json.boolean(value);
+        else
+            json.null();
+    };
+    json.key("mobility");
+    json.beginObject();
+    integer("moving_links", r.movingLinks);
+    json.key("pairs");
+    json.beginObject(true);
+    for (int c = 5; c >= 1; --c)
+        integer(c == 5 ? "P5" : c == 4 ? "P4" : c == 3 ? "P3" : c == 2 ? "P2" : "P1", r.pairsByClass[std::size_t(c)]);
+    json.endObject();
+    integer("loops", r.loops);
+    integer("freedoms", r.freedoms);
+    integer("chebyshev", r.chebyshev);
+    integer("somov_malyshev", r.somovMalyshev);
+    integer("rank", r.rank);
+    integer("numerical", r.numerical);
+    integer("finite", r.mobility);
+    flag("singular", r.singular);
+    integer("redundant_constraints", r.redundantConstraints);
+    integer("planar_redundant_constraints", r.planarRedundantConstraints);
+    integer("idle_freedoms", r.idleFreedoms);
+    integer("actuators", r.actuators);
+    integer("locked_freedoms", r.lockedMobility);
+    flag("fully_actuated", r.fullyActuated);
+    flag("chebyshev_fails", r.chebyshevFails);
+    flag("somov_malyshev_fails", r.somovMalyshevFails);
+    flag("formula_fails", r.formulaFails);
+    json.key("chain").string(chain.description);
+    json.key("verdict").string(r.verdict);
+    json.endObject();
+}
+
+void addMobilityRows(TextTable &table, const Mechanism &mechanism, const Pose &pose)
+{
+    const KinematicChain chain = mechanism.kinematicChain(pose);
+    const MobilityReport r = analyseMobility(chain);
+    table.heading("Mobility");
+    if (!chain.description.empty())
+        table.text(chain.description);
+    if (r.valid) {
+        const auto row = [&](const char *symbol, int value, const char *label) {
+            table.cells({symbol, std::to_string(value), "", label});
+        };
+        row("n", r.movingLinks, "moving links");
+        static constexpr std::array<const char *, 6> classes = {"", "P₁", "P₂", "P₃", "P₄", "P₅"};
+        static constexpr std::array<const char *, 6> labels
+            = {"", "pairs of class 1 (5 freedoms: point contact)", "pairs of class 2 (4 freedoms: line contact)",
+                "pairs of class 3 (3 freedoms: spherical)", "pairs of class 4 (2 freedoms: cylindrical, planar cam)",
+                "pairs of class 5 (1 freedom: revolute, prismatic, screw)"};
+        for (std::size_t c = 5; c >= 1; --c)
+            row(classes[c], r.pairsByClass[c], labels[c]);
+        row("L", r.loops, "independent loops");
+        if (r.chebyshev)
+            row("W", *r.chebyshev, "Chebyshev: W = 3n − 2P₅ − P₄");
+        row("W", r.somovMalyshev, "Somov–Malyshev: W = 6n − 5P₅ − 4P₄ − 3P₃ − 2P₂ − P₁");
+        row("M", r.numerical, "numerical: freedoms − rank of the constraint Jacobian at this pose");
+        if (r.singular)
+            row("M", r.mobility, "finite mobility, at the regular poses next to this singular one");
+        row("q", r.redundantConstraints, "redundant loop equations (overconstraints): 6L − rank");
+        row("A", r.actuators, "actuated freedoms");
+    }
+    table.text(r.verdict);
 }
 
 } // namespace pkm::cli

@@ -4,6 +4,7 @@
 
 #include "jsonwriter.h"
 #include "mechanism.h"
+#include "texttable.h"
 
 #include <array>
 #include <span>
@@ -34,5 +35,16 @@ void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inli
 /// `text` adds the words of the report (the O-X glide's "mode": "X") to their groups.
 void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<const double> values,
     const Singularity &singularity, const std::vector<ReportText> &text = {});
+
+/// "mobility": the chain of the mechanism at `pose` counted by Chebyshev's and
+/// Somov–Malyshev's formulas and ranked (core/mobility.h): moving_links, pairs {P5…P1}, loops,
+/// freedoms, chebyshev (null unless planar), somov_malyshev, rank, numerical (F − rank at the
+/// pose), finite (near the pose), singular, redundant_constraints, planar_redundant_constraints,
+/// idle_freedoms, actuators, locked_freedoms, fully_actuated, chebyshev_fails,
+/// somov_malyshev_fails, formula_fails, chain, verdict. Numbers are null when the mechanism
+/// describes no chain (the verdict says so).
+void writeMobilityJson(JsonWriter &json, const Mechanism &mechanism, const Pose &pose);
+/// The same as rows of eval's text report, under the heading "Mobility".
+void addMobilityRows(TextTable &table, const Mechanism &mechanism, const Pose &pose);
 
 } // namespace pkm::cli

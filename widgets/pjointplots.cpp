@@ -1,6 +1,7 @@
 #include "pjointplots.h"
 
 #include "plotfont.h"
+#include "plotstyle.h"
 
 #include "pjointcurves.h"
 
@@ -36,16 +37,14 @@ static_assert(PJointPlots::PlotCount == pjointcurves::quantityCount, "one quanti
 constexpr double weakTransmission = 5.0; ///< °
 constexpr std::array<QRgb, familyK.size()> familyRgb {0x5e9c76, 0x8e6fb0, 0xc08a3e, 0x8c8c8c, 0xb0b0b0};
 
-constexpr QRgb designRgb = 0x1f5fa8;
-constexpr QRgb cursorRgb = 0xd0312d;
-constexpr QRgb gridRgb = 0xe2e2e2;
-constexpr QRgb axisRgb = 0x303030;
 constexpr QRgb steepFillRgb = 0xfcdcb4, steepEdgeRgb = 0xe8a04c;
 constexpr QRgb recommendedFillRgb = 0xeaf5e7;
 constexpr QRgb weakFillRgb = 0xf6e0e0, weakEdgeRgb = 0xd9a0a0;
 
-constexpr double tickPoints = 11, labelPoints = 12, titlePoints = 13, subtitlePoints = 10.5, legendPoints = 11,
-                 cursorPoints = 11;
+using plotstyle::axisRgb, plotstyle::cursorRgb, plotstyle::designRgb, plotstyle::gridRgb;
+using plotstyle::labelPoints, plotstyle::legendPoints, plotstyle::subtitlePoints, plotstyle::tickPoints,
+    plotstyle::titlePoints;
+constexpr double cursorPoints = 11;
 
 /// Degree tick labels ("−45°") at a fixed step, for θ and for the φ, μ axes.
 class DegreeTicker : public QCPAxisTickerFixed
@@ -161,58 +160,14 @@ void PJointPlots::createPanel(int index)
     auto *plot = new QCustomPlot;
     p.plot = plot;
     plot->installEventFilter(this);
-    plot->setBackground(Qt::white);
     plot->setMinimumSize(260, 220);
-
     // Layers, bottom to top: background, bands, grid, family, main (this design), axes,
-    // legend, overlay, cursor. The cursor has its own buffer so a slider move redraws it alone;
-    // everything below shares one (the overlay, buffered by default for QCP's selection rect,
-    // which this read-only view never shows), so a paint composites two pixmaps, not three.
-    plot->addLayer(QStringLiteral("bands"), plot->layer(QStringLiteral("grid")), QCustomPlot::limBelow);
+    // legend, overlay, cursor (plotstyle.h).
+    const plotstyle::Header header = plotstyle::apply(plot, font());
+    p.title = header.title;
+    p.subtitle = header.subtitle;
+    p.cursorLayer = header.cursorLayer;
     plot->addLayer(QStringLiteral("family"), plot->layer(QStringLiteral("main")), QCustomPlot::limBelow);
-    plot->layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmLogical);
-    plot->addLayer(QStringLiteral("cursor"), plot->layer(QStringLiteral("overlay")), QCustomPlot::limAbove);
-    p.cursorLayer = plot->layer(QStringLiteral("cursor"));
-    p.cursorLayer->setMode(QCPLayer::lmBuffered);
-
-    // Title, subtitle and legend above the axis rect, so the legend never covers a curve.
-    QCPLayoutGrid *grid = plot->plotLayout();
-    for (int row = 0; row < 3; ++row)
-        grid->insertRow(0);
-    p.title = new QCPTextElement(plot, QString(), fontOf(font(), titlePoints, true));
-    p.subtitle = new QCPTextElement(plot, QString(), fontOf(font(), subtitlePoints));
-    p.subtitle->setTextColor(QColor(0x505050));
-    grid->addElement(0, 0, p.title);
-    grid->addElement(1, 0, p.subtitle);
-    plot->axisRect()->insetLayout()->take(plot->legend);
-    grid->addElement(2, 0, plot->legend);
-    for (int row = 0; row < 3; ++row)
-        grid->setRowStretchFactor(row, 0.001);
-    grid->setRowSpacing(2);
-    plot->legend->setVisible(true);
-    plot->legend->setFont(fontOf(font(), legendPoints));
-    plot->legend->setBorderPen(Qt::NoPen);
-    plot->legend->setIconSize(30, 14);
-    plot->legend->setColumnSpacing(18);
-    plot->legend->setRowSpacing(1);
-    plot->legend->setMargins(QMargins(8, 2, 8, 2));
-
-    for (QCPAxis *axis : {plot->xAxis, plot->yAxis, plot->xAxis2, plot->yAxis2}) {
-        const QPen pen(QColor(axisRgb), 1.2);
-        axis->setBasePen(pen);
-        axis->setTickPen(pen);
-        axis->setSubTickPen(QPen(QColor(axisRgb), 1.0));
-        axis->setTickLabelFont(fontOf(font(), tickPoints));
-        axis->setLabelFont(fontOf(font(), labelPoints));
-        axis->grid()->setPen(QPen(QColor(gridRgb), 1.0));
-        axis->grid()->setZeroLinePen(Qt::NoPen);
-    }
-    for (QCPAxis *axis : {plot->xAxis2, plot->yAxis2}) { // a closed frame, no second scale
-        axis->setVisible(true);
-        axis->setTicks(false);
-        axis->setTickLabels(false);
-    }
-    plot->xAxis->setSubTicks(false);
     setDegreeTicks(plot->xAxis, 30.0); // steps set in recompute()
     if (q.unit.symbol == units::angle.symbol)
         setDegreeTicks(plot->yAxis, 30.0);

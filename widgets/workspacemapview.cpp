@@ -1,5 +1,7 @@
 #include "workspacemapview.h"
 
+#include <QCoreApplication>
+
 #include "plotfont.h"
 #include "plotticker.h"
 #include "quantityformat.h"
@@ -38,6 +40,7 @@ struct WorkspaceMapResult {
     QVector<QCPCurveData> outline;             ///< closed polylines separated by NaN points
     QVector<QCPCurveData> inverse, direct;     ///< singular curves, separated by NaN points
     int inverseCount = 0, directCount = 0;
+    std::string inverseMeaning, directMeaning; ///< for the legend
 };
 
 struct WorkspaceMapView::Job {
@@ -265,6 +268,8 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         result->summary.cancelled = true;
         return result;
     }
+    result->inverseMeaning = workspace->singularityMeaning(SingularCurve::Type::Inverse);
+    result->directMeaning = workspace->singularityMeaning(SingularCurve::Type::Direct);
     for (const SingularCurve &curve : workspace->singularCurves()) {
         if (curve.type == SingularCurve::Type::Inverse) {
             appendPolyline(result->inverse, curve.points);
@@ -696,6 +701,8 @@ void WorkspaceMapView::applyMap(WorkspaceMapResult &result)
     m_inverse->data()->set(result.inverse, true);
     m_direct->data()->set(result.direct, true);
     m_curveCounts = {result.inverseCount, result.directCount};
+    m_singularityMeanings = {QCoreApplication::translate("core", result.inverseMeaning.c_str()),
+                             QCoreApplication::translate("core", result.directMeaning.c_str())};
     for (QCPItemTracer *item : {m_poseCircle, m_poseCross})
         item->setVisible(m_hasPose);
 
@@ -777,8 +784,13 @@ void WorkspaceMapView::updateLegend()
 {
     m_outline->setName(tr("workspace boundary"));
     const QString none = tr(": none");
-    m_inverse->setName(tr("inverse singularity (link ⟂ guide)") + (m_curveCounts[0] || m_mapBounds.isEmpty() ? QString() : none));
-    m_direct->setName(tr("direct singularity (links collinear)") + (m_curveCounts[1] || m_mapBounds.isEmpty() ? QString() : none));
+    const auto name = [](const QString &kind, const QString &meaning) {
+        return meaning.isEmpty() ? kind : tr("%1 (%2)").arg(kind, meaning);
+    };
+    m_inverse->setName(name(tr("inverse singularity"), m_singularityMeanings[0])
+                       + (m_curveCounts[0] || m_mapBounds.isEmpty() ? QString() : none));
+    m_direct->setName(name(tr("direct singularity"), m_singularityMeanings[1])
+                      + (m_curveCounts[1] || m_mapBounds.isEmpty() ? QString() : none));
     if (m_comparisonArea > 0.0) {
         QString text = tr("%1: boundary, %2").arg(m_comparisonLabel, formatQuantity(m_comparisonArea, units::squareMillimetre, 0));
         if (m_summary.area > 0.0) {

@@ -160,6 +160,7 @@ private:
     std::vector<float> m_values; ///< as computed, row-major from the bottom row
     double m_colourLimit = 0.0;  ///< det J: ±limit; κ: 1…limit
     std::array<int, 2> m_curveCounts {}; ///< inverse, direct
+    std::array<QString, 2> m_singularityMeanings; ///< "link ⟂ guide", "links collinear"
     double m_comparisonArea = 0.0;
     Eigen::AlignedBox2d m_mapBounds;        ///< grid bounds of the map, mm (empty: none)
     Eigen::AlignedBox2d m_comparisonBounds; ///< of the comparison's grid, mm (empty: none)

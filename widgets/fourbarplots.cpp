@@ -1,0 +1,615 @@
+#include "fourbarplots.h"
+
+#include "plotfont.h"
+#include "plotstyle.h"
+#include "plotticker.h"
+
+#include <qcustomplot.h>
+
+#include <QEvent>
+#include <QLocale>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pkm {
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr int alphaSamples = 360; ///< α samples over the input range (1° for a full turn)
+constexpr int sweepSamples = 300; ///< AB samples of the sweep
+
+constexpr QRgb limitRgb = 0x2e7d32;
+constexpr QRgb poorFillRgb = 0xf6dcdc, poorEdgeRgb = 0xd9a0a0;
+
+using plotstyle::axisRgb, plotstyle::cursorRgb, plotstyle::designRgb, plotstyle::gridRgb;
+using plotstyle::labelPoints, plotstyle::legendPoints, plotstyle::subtitlePoints, plotstyle::tickPoints,
+    plotstyle::titlePoints;
+constexpr double cursorPoints = 11;
+
+QString minus(QString text)
+{
+    return text.replace(QLatin1Char('-'), QChar(0x2212));
+}
+
+QString number(double value, int decimals)
+{
+    return minus(QLocale().toString(value, 'f', decimals));
+}
+
+/// Degree tick labels ("−45°") at a fixed step.
+class DegreeTicker : public QCPAxisTickerFixed
+{
+protected:
+    QString getTickLabel(double tick, const QLocale &locale, QChar, int) override
+    {
+        return minus(locale.toString(qRound(tick))) + QChar(0x00B0);
+    }
+};
+
+void setDegreeTicks(QCPAxis *axis)
+{
+    auto ticker = QSharedPointer<DegreeTicker>::create();
+    ticker->setTickStep(30.0);
+    ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
+    axis->setTicker(ticker);
+}
+
+void setDegreeStep(QCPAxis *axis, double step)
+{
+    qSharedPointerCast<QCPAxisTickerFixed>(axis->ticker())->setTickStep(step);
+}
+
+/// A tick step (°) giving at most `maxTicks` intervals over `span`.
+double angleStep(double span, double maxTicks)
+{
+    for (double step : {1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 60.0})
+        if (span / step <= maxTicks)
+            return step;
+    return 90.0;
+}
+
+/// The value range of `values` (NaN skipped), robust against the blow-up of a rate at a dead
+/// point: the 15 %…85 % spread widened by half of itself each side (a sine's whole swing),
+/// never past the data, then padded by 8 %. `fallback` when nothing is finite.
+QCPRange robustRange(const QVector<QCPGraphData> &data, QCPRange fallback)
+{
+    std::vector<double> values;
+    values.reserve(std::size_t(data.size()));
+    for (const QCPGraphData &d : data)
+        if (std::isfinite(d.value))
+            values.push_back(d.value);
+    if (values.empty())
+        return fallback;
+    std::sort(values.begin(), values.end());
+    auto quantile = [&](double q) { return values[std::size_t(std::lround(q * double(values.size() - 1)))]; };
+    const double q15 = quantile(0.15), q85 = quantile(0.85);
+    const double spread = q85 - q15;
+    double lo = std::max(values.front(), q15 - 0.5 * spread);
+    double hi = std::min(values.back(), q85 + 0.5 * spread);
+    if (hi - lo < 1e-9 * std::max(1.0, std::abs(hi))) {
+        const double half = std::max(1.0, std::abs(hi) * 0.1);
+        return {lo - half, hi + half};
+    }
+    const double pad = 0.08 * (hi - lo);
+    return {lo - pad, hi + pad};
+}
+
+/// The data's [min, max], padded by 8 % (NaN skipped).
+QCPRange paddedRange(const QVector<QCPGraphData> &data, QCPRange fallback)
+{
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const QCPGraphData &d : data) {
+        if (std::isfinite(d.value)) {
+            lo = std::min(lo, d.value);
+            hi = std::max(hi, d.value);
+        }
+    }
+    if (!(lo <= hi))
+        return fallback;
+    const double pad = std::max(0.08 * (hi - lo), 1.0);
+    return {lo - pad, hi + pad};
+}
+
+/// δ of the rocker joint C, in (−π, π]: C = D + CD·(−cos δ, sin δ).
+double deltaOf(const FourBarDesign &design, const Eigen::Vector2d &c)
+{
+    return pi - std::atan2(c.y(), c.x() - design.ground);
+}
+
+double nearestTurn(double angle, double reference)
+{
+    return angle + 2.0 * pi * std::round((reference - angle) / (2.0 * pi));
+}
+
+} // namespace
+
+FourBarPlots::FourBarPlots(QWidget *parent)
+    : QWidget(parent)
+    , m_tabs(new QTabWidget(this))
+{
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_tabs);
+    m_tabs->setFont(fontOf(font(), labelPoints));
+    m_tabs->setObjectName(QStringLiteral("fourbarPlotTabs"));
+
+    for (int i = 0; i < PlotCount; ++i)
+        createPanel(i);
+    auto page = [](std::initializer_list<QWidget *> plots) {
+        auto *widget = new QWidget;
+        auto *column = new QVBoxLayout(widget);
+        column->setContentsMargins(4, 4, 4, 4);
+        column->setSpacing(6);
+        for (QWidget *plot : plots)
+            column->addWidget(plot);
+        return widget;
+    };
+    m_tabs->addTab(page({m_panels[DeltaPlot].plot}), tr("δ(α) — fig. 4"));
+    m_tabs->addTab(page({m_panels[Omega3Plot].plot, m_panels[Epsilon3Plot].plot}), tr("ω₃, ε₃ — fig. 6"));
+    m_tabs->addTab(page({m_panels[GammaPlot].plot}), tr("γ(α)"));
+    m_tabs->addTab(page({m_panels[SweepPlot].plot}), tr("δ vs AB — fig. 5"));
+    m_tabs->setTabToolTip(0, tr("The rocker angle δ over the crank's range (click to set α)"));
+    m_tabs->setTabToolTip(1, tr("The rocker's angular velocity and acceleration at constant ω₁ (click to set α)"));
+    m_tabs->setTabToolTip(2, tr("The transmission angle at C; shaded where the crank drives the rocker poorly"));
+    m_tabs->setTabToolTip(3, tr("δ at the current α as the crank length AB changes, the other links fixed"));
+}
+
+FourBarPlots::~FourBarPlots() = default;
+
+void FourBarPlots::createPanel(int index)
+{
+    Panel &p = m_panels[index];
+    auto *plot = new QCustomPlot;
+    p.plot = plot;
+    plot->setObjectName(QStringLiteral("fourbarPlot%1").arg(index));
+    plot->installEventFilter(this);
+    plot->setMinimumSize(300, 200);
+    const plotstyle::Header header = plotstyle::apply(plot, font());
+    p.title = header.title;
+    p.subtitle = header.subtitle;
+    p.cursorLayer = header.cursorLayer;
+    plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    plot->legend->setWrap(2);
+    const bool hasLegend = index == GammaPlot || index == SweepPlot;
+    plot->legend->setVisible(hasLegend);
+    if (!hasLegend) { // no empty row: the legend goes (its destructor tells the plot)
+        QCPLayoutGrid *grid = plot->plotLayout();
+        grid->remove(plot->legend);
+        grid->simplify();
+    }
+    if (index == Omega3Plot || index == Epsilon3Plot)
+        plot->yAxis->grid()->setZeroLinePen(QPen(QColor(0xb0b0b0), 1.0));
+    // room for the last α label (QCustomPlot drops a tick label that would stick out)
+    plot->axisRect()->setMinimumMargins(QMargins(0, 0, 22, 0));
+    if (index == SweepPlot) {
+        plot->xAxis->setTicker(QSharedPointer<MinusTicker>::create());
+        plot->xAxis->ticker()->setTickCount(7);
+    } else {
+        setDegreeTicks(plot->xAxis);
+    }
+    if (index == Omega3Plot || index == Epsilon3Plot) {
+        plot->yAxis->setTicker(QSharedPointer<MinusTicker>::create());
+        plot->yAxis->ticker()->setTickCount(6);
+    } else {
+        setDegreeTicks(plot->yAxis);
+    }
+
+    p.curve = plot->addGraph();
+    p.curve->setPen(QPen(QColor(designRgb), 2.5));
+    p.curve->setSelectable(QCP::stNone);
+
+    if (index == GammaPlot) {
+        for (QCPItemRect *&band : m_poorBands) {
+            band = new QCPItemRect(plot);
+            band->setLayer(QStringLiteral("bands"));
+            for (QCPItemPosition *corner : {band->topLeft, band->bottomRight}) {
+                corner->setTypeX(QCPItemPosition::ptAxisRectRatio);
+                corner->setTypeY(QCPItemPosition::ptPlotCoords);
+            }
+            band->setBrush(QColor(poorFillRgb));
+            band->setPen(Qt::NoPen);
+            band->setSelectable(false);
+        }
+        m_poorSwatch = new QCPBars(plot->xAxis, plot->yAxis);
+        m_poorSwatch->setBrush(QColor(poorFillRgb));
+        m_poorSwatch->setPen(QPen(QColor(poorEdgeRgb), 1.0));
+        m_poorSwatch->setSelectable(QCP::stNone);
+    }
+    if (index == SweepPlot) {
+        m_largestCrankLine = plot->addGraph();
+        m_largestCrankLine->setPen(QPen(QColor(limitRgb), 2.0, Qt::DashLine));
+        m_largestCrankLine->setSelectable(QCP::stNone);
+    }
+
+    // Cursor: a vertical line at α (AB on the sweep), a marker on the curve, its value beside it.
+    const QColor red(cursorRgb);
+    p.cursorLine = new QCPItemStraightLine(plot);
+    p.cursorLine->setPen(QPen(red, 1.5));
+    p.cursorMarker = new QCPItemTracer(plot);
+    p.cursorMarker->setStyle(QCPItemTracer::tsCircle);
+    p.cursorMarker->setSize(11);
+    p.cursorMarker->setPen(QPen(red, 2.0));
+    p.cursorMarker->setBrush(Qt::white);
+    p.cursorLabel = new QCPItemText(plot);
+    p.cursorLabel->setFont(fontOf(font(), cursorPoints, true));
+    p.cursorLabel->setColor(QColor(0x202020));
+    p.cursorLabel->setBrush(QColor(255, 255, 255, 235));
+    p.cursorLabel->setPen(QPen(red, 1.0));
+    p.cursorLabel->setPadding(QMargins(6, 3, 6, 3));
+    p.cursorLabel->position->setParentAnchor(p.cursorMarker->position);
+    p.cursorLabel->position->setType(QCPItemPosition::ptAbsolute);
+    for (QCPAbstractItem *item :
+        std::initializer_list<QCPAbstractItem *> {p.cursorLine, p.cursorMarker, p.cursorLabel}) {
+        item->setLayer(p.cursorLayer);
+        item->setSelectable(false);
+    }
+
+    if (index != SweepPlot) { // a click or a drag on an α plot sets α
+        auto request = [this, plot](QMouseEvent *event) {
+            if (!m_mechanism || !plot->axisRect()->rect().contains(event->position().toPoint()))
+                return;
+            const QCPRange range = plot->xAxis->range();
+            const double x = std::clamp(plot->xAxis->pixelToCoord(event->position().x()), range.lower, range.upper);
+            emit alphaRequested(x * units::degree);
+        };
+        connect(plot, &QCustomPlot::mousePress, this, [this, request](QMouseEvent *event) {
+            if (event->button() != Qt::LeftButton)
+                return;
+            m_pressed = true;
+            request(event);
+        });
+        connect(plot, &QCustomPlot::mouseMove, this, [this, request](QMouseEvent *event) {
+            if (m_pressed && (event->buttons() & Qt::LeftButton))
+                request(event);
+        });
+        connect(plot, &QCustomPlot::mouseRelease, this, [this](QMouseEvent *) { m_pressed = false; });
+        plot->setCursor(Qt::CrossCursor);
+        plot->setToolTip(tr("Click or drag to set the crank angle α"));
+    }
+}
+
+double FourBarPlots::largestCrank(const FourBarDesign &design, double alpha)
+{
+    // |BD|² = AB² + AD² − 2·AB·AD·cos α = (BC + CD)²: the positive root in AB
+    const double reach = design.coupler + design.rocker;
+    const double sinPart = design.ground * std::sin(alpha);
+    const double discriminant = reach * reach - sinPart * sinPart;
+    if (discriminant < 0.0)
+        return nan;
+    const double root = design.ground * std::cos(alpha) + std::sqrt(discriminant);
+    return root > 0.0 ? root : nan;
+}
+
+void FourBarPlots::setDesign(const MechanismPtr &mechanism, const Pose &pose)
+{
+    const auto *fourbar = dynamic_cast<const FourBar *>(mechanism.get());
+    if (!fourbar)
+        return;
+    m_mechanism = mechanism;
+    m_design = fourbar->design();
+    recomputeCurves();
+    m_sweepAlpha = nan; // the links changed: the sweep too
+    const bool fits = pose.inputs.size() == 1 && pose.outputs.size() == 1;
+    setPose(fits ? pose : fourbar->homePose());
+    retitle();
+    for (int i = 0; i < PlotCount; ++i) {
+        m_panels[i].needsReplot = true;
+        refresh(i);
+    }
+}
+
+void FourBarPlots::setPose(const Pose &pose)
+{
+    if (!m_mechanism || pose.inputs.size() != 1 || pose.outputs.size() != 1)
+        return;
+    m_pose = pose;
+    const bool sweepMoved = !(std::abs(pose.inputs[0] - m_sweepAlpha) < 1e-12);
+    if (sweepMoved) {
+        recomputeSweep();
+        retitle();
+        m_panels[SweepPlot].needsReplot = true;
+    }
+    for (int i = 0; i < PlotCount; ++i) {
+        placeCursor(i);
+        m_panels[i].needsCursorReplot = true;
+        refresh(i);
+    }
+}
+
+double FourBarPlots::valueAt(int index, double alpha, double delta) const
+{
+    switch (index) {
+    case DeltaPlot:
+        return delta / units::degree;
+    case Omega3Plot:
+        return fourbar::motion(m_design, alpha, delta, m_design.omega1).omega3;
+    case Epsilon3Plot:
+        return fourbar::motion(m_design, alpha, delta, m_design.omega1).epsilon3;
+    case GammaPlot:
+        return fourbar::angles(m_design, alpha, delta).gamma / units::degree;
+    default:
+        return nan;
+    }
+}
+
+void FourBarPlots::recomputeCurves()
+{
+    const Interval range = m_mechanism->variableRange(FourBar::variableAlpha);
+    const double from = range.min / units::degree, to = range.max / units::degree;
+    std::array<QVector<QCPGraphData>, PlotCount> data;
+    double previousDelta = nan;
+    for (int i = 0; i <= alphaSamples; ++i) {
+        const double key = from + (to - from) * i / alphaSamples; // exact whole degrees for a full turn
+        const double alpha = key * units::degree;
+        Coordinates inputs(1);
+        inputs << alpha;
+        const auto solved = m_mechanism->solveDirect(inputs);
+        const double delta = solved ? solved->outputs[0] : nan;
+        // an output that turns fully wraps at 360°: break the line there rather than cross the plot
+        if (std::isfinite(delta) && std::isfinite(previousDelta) && std::abs(delta - previousDelta) > pi)
+            data[DeltaPlot].append(QCPGraphData((key + (from + (to - from) * (i - 1) / alphaSamples)) / 2, nan));
+        previousDelta = delta;
+        for (int plot = DeltaPlot; plot <= GammaPlot; ++plot) {
+            double value = std::isfinite(delta) ? valueAt(plot, alpha, delta) : nan;
+            if (!std::isfinite(value))
+                value = nan; // a dead point: a gap, never an infinite axis
+            data[std::size_t(plot)].append(QCPGraphData(key, value));
+        }
+    }
+    for (int plot = DeltaPlot; plot <= GammaPlot; ++plot) {
+        Panel &p = m_panels[plot];
+        const double slack = 1e-9 * std::max(1.0, to - from); // the end ticks stay on the axis
+        p.plot->xAxis->setRange(from - slack, to + slack);
+        QCPRange values;
+        switch (plot) {
+        case DeltaPlot:
+            values = paddedRange(data[std::size_t(plot)], QCPRange(0, 180));
+            break;
+        case GammaPlot:
+            values = m_design.branch == fourbar::crossed ? QCPRange(-180, 0) : QCPRange(0, 180);
+            break;
+        default:
+            values = robustRange(data[std::size_t(plot)], QCPRange(-1, 1));
+            break;
+        }
+        p.plot->yAxis->setRange(values);
+        // a rate near a dead point (~1e48 at it) leaves the plot steeply: drawn clipped to a few
+        // heights beyond the axis, so the line stays numerically sane
+        for (QCPGraphData &point : data[std::size_t(plot)])
+            point.value
+                = std::clamp(point.value, values.lower - 4.0 * values.size(), values.upper + 4.0 * values.size());
+        if (plot == DeltaPlot || plot == GammaPlot)
+            setDegreeStep(p.plot->yAxis, plot == GammaPlot ? 30.0 : angleStep(values.size(), 7));
+        p.curve->data()->set(data[std::size_t(plot)], true);
+        const double width = std::max(200, p.plot->axisRect()->width());
+        setDegreeStep(p.plot->xAxis, angleStep(to - from, std::max(3.0, width / 60.0)));
+    }
+    // γ: the poor bands on the branch's side, |γ| < 40° and |γ| > 140°
+    const double sign = m_design.branch == fourbar::crossed ? -1.0 : 1.0;
+    const double poor = FourBar::poorTransmission;
+    const std::array<std::pair<double, double>, 2> bands = {std::pair {0.0, poor}, std::pair {180.0 - poor, 180.0}};
+    for (std::size_t b = 0; b < bands.size(); ++b) {
+        m_poorBands[b]->topLeft->setCoords(0.0, sign * (sign > 0 ? bands[b].second : bands[b].first));
+        m_poorBands[b]->bottomRight->setCoords(1.0, sign * (sign > 0 ? bands[b].first : bands[b].second));
+    }
+}
+
+void FourBarPlots::recomputeSweep()
+{
+    Panel &p = m_panels[SweepPlot];
+    const double alpha = m_pose.inputs[0];
+    const double delta = m_pose.outputs[0];
+    m_sweepAlpha = alpha;
+    m_largestCrank = largestCrank(m_design, alpha);
+    const double top = std::isfinite(m_largestCrank) ? m_largestCrank : 2.0 * m_design.crank;
+    const double from = 0.01 * top, to = 1.15 * top;
+    // samples, plus the exact largest crank and the current one (the curve passes the pose)
+    std::vector<double> lengths;
+    lengths.reserve(sweepSamples + 3);
+    for (int i = 0; i <= sweepSamples; ++i)
+        lengths.push_back(from + (to - from) * i / sweepSamples);
+    if (std::isfinite(m_largestCrank))
+        lengths.push_back(m_largestCrank);
+    lengths.push_back(m_design.crank);
+    std::sort(lengths.begin(), lengths.end());
+
+    QVector<QCPGraphData> data;
+    data.reserve(qsizetype(lengths.size()));
+    double previous = nan, atCurrent = nan;
+    FourBarDesign d = m_design;
+    for (const double length : lengths) {
+        d.crank = length;
+        const fourbar::Position position = fourbar::position(d, alpha);
+        double value = nan;
+        if (position.valid) {
+            const double raw = deltaOf(d, position.C);
+            value = std::isfinite(previous) ? nearestTurn(raw, previous) : raw;
+            previous = value;
+        }
+        if (length == m_design.crank)
+            atCurrent = value;
+        data.append(QCPGraphData(length, value));
+    }
+    // the same turn as the pose's δ
+    const double shift = std::isfinite(atCurrent) ? nearestTurn(atCurrent, delta) - atCurrent : 0.0;
+    for (QCPGraphData &point : data)
+        point.value = (point.value + shift) / units::degree;
+    p.curve->data()->set(data, true);
+    p.plot->xAxis->setRange(0.0, to);
+    const QCPRange values = paddedRange(data, QCPRange(0, 180));
+    p.plot->yAxis->setRange(values);
+    setDegreeStep(p.plot->yAxis, angleStep(values.size(), 7));
+    QVector<QCPGraphData> line;
+    if (std::isfinite(m_largestCrank))
+        line = {QCPGraphData(m_largestCrank, values.lower - values.size()),
+            QCPGraphData(m_largestCrank, values.upper + values.size())};
+    m_largestCrankLine->data()->set(line, true);
+}
+
+void FourBarPlots::retitle()
+{
+    if (!m_mechanism)
+        return;
+    const FourBarDesign &d = m_design;
+    const QLocale locale;
+    const QString links = tr("AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 branch")
+                              .arg(locale.toString(d.crank, 'g', 6), locale.toString(d.coupler, 'g', 6),
+                                  locale.toString(d.rocker, 'g', 6), locale.toString(d.ground, 'g', 6),
+                                  d.branch == fourbar::crossed ? tr("crossed") : tr("open"));
+    const QString omega = number(d.omega1, 2);
+    const QString alpha = number(m_sweepAlpha / units::degree, 1);
+    const std::array<QString, PlotCount> titles {
+        tr("Fig. 4 — rocker angle δ(α)"),
+        tr("Fig. 6 — rocker angular velocity ω₃ = dδ/dt"),
+        tr("Fig. 6 — rocker angular acceleration ε₃ = d²δ/dt²"),
+        tr("Transmission angle γ(α), (5)"),
+        tr("Fig. 5 — rocker angle δ against the crank length AB"),
+    };
+    const std::array<QString, PlotCount> subtitles {
+        links,
+        tr("ω₁ = %1 rad/s constant; exact (the document's (8) has the opposite sign)").arg(omega),
+        tr("ω₁ = %1 rad/s constant; exact (not the document's (14))").arg(omega),
+        links,
+        tr("at α = %1°; BC, CD, AD fixed").arg(alpha),
+    };
+    const std::array<QString, PlotCount> yLabels {
+        tr("δ (°)"), tr("ω₃ (rad/s)"), tr("ε₃ (rad/s²)"), tr("γ (°)"), tr("δ (°)")};
+    for (int i = 0; i < PlotCount; ++i) {
+        Panel &p = m_panels[i];
+        p.title->setText(titles[std::size_t(i)]);
+        p.subtitle->setText(subtitles[std::size_t(i)]);
+        p.plot->xAxis->setLabel(i == SweepPlot ? tr("crank length AB (mm)") : tr("crank angle α (°)"));
+        p.plot->yAxis->setLabel(yLabels[std::size_t(i)]);
+    }
+    m_panels[GammaPlot].curve->setName(tr("γ(α)"));
+    m_poorSwatch->setName(tr("poor transmission: |γ| < %1° or > %2°")
+                              .arg(FourBar::poorTransmission)
+                              .arg(180.0 - FourBar::poorTransmission));
+    m_panels[SweepPlot].curve->setName(tr("δ at α = %1°").arg(alpha));
+    if (std::isfinite(m_largestCrank)) {
+        m_largestCrankLine->setName(
+            tr("largest AB that assembles: %1 mm").arg(locale.toString(m_largestCrank, 'f', 1)));
+        m_largestCrankLine->addToLegend();
+    } else {
+        m_largestCrankLine->removeFromLegend();
+    }
+}
+
+void FourBarPlots::placeCursor(int index)
+{
+    Panel &p = m_panels[index];
+    const double alpha = m_pose.inputs[0], delta = m_pose.outputs[0];
+    const bool sweep = index == SweepPlot;
+    const double x = sweep ? m_design.crank : alpha / units::degree;
+    const double value = sweep ? delta / units::degree : valueAt(index, alpha, delta);
+    p.cursorValue = value;
+    p.cursorLine->point1->setCoords(x, 0.0);
+    p.cursorLine->point2->setCoords(x, 1.0);
+
+    // The marker sits on the curve; off the y range it waits at the edge with an arrow.
+    const QCPRange xRange = p.plot->xAxis->range();
+    const QCPRange yRange = p.plot->yAxis->range();
+    const bool finite = std::isfinite(value);
+    const double shown = finite ? std::clamp(value, yRange.lower, yRange.upper) : yRange.upper;
+    p.cursorMarker->position->setCoords(x, shown);
+    p.cursorMarker->setVisible(finite && yRange.contains(value));
+
+    QString text;
+    switch (index) {
+    case DeltaPlot:
+        text = tr("δ = %1°").arg(number(value, 1));
+        break;
+    case Omega3Plot:
+        text = tr("ω₃ = %1 rad/s").arg(number(value, 2));
+        break;
+    case Epsilon3Plot:
+        text = tr("ε₃ = %1 rad/s²").arg(number(value, 1));
+        break;
+    case GammaPlot:
+        text = tr("γ = %1°").arg(number(value, 1));
+        break;
+    default:
+        text = tr("AB = %1 mm, δ = %2°").arg(QLocale().toString(x, 'f', 1), number(value, 1));
+        break;
+    }
+    const bool rate = index == Omega3Plot || index == Epsilon3Plot;
+    const double gamma = fourbar::angles(m_design, alpha, delta).gamma;
+    if (rate && (!finite || std::abs(std::sin(gamma)) < 1e-6)) {
+        // at a dead point the crank cannot drive the rocker: the rate is unbounded
+        const QString symbol = index == Omega3Plot ? tr("ω₃") : tr("ε₃");
+        text = tr("%1 → %2∞: dead point").arg(symbol, value < 0 ? QString(QChar(0x2212)) : QString());
+    } else if (!finite) {
+        text = tr("no pose");
+    } else if (value > yRange.upper) {
+        text += QStringLiteral(" ↑");
+    } else if (value < yRange.lower) {
+        text += QStringLiteral(" ↓");
+    }
+    p.cursorLabel->setText(text);
+    const bool right = x > xRange.center();
+    const bool upper = shown > yRange.center();
+    p.cursorLabel->setPositionAlignment(
+        (right ? Qt::AlignRight : Qt::AlignLeft) | (upper ? Qt::AlignTop : Qt::AlignBottom));
+    p.cursorLabel->position->setCoords(right ? -12.0 : 12.0, upper ? 12.0 : -12.0);
+}
+
+void FourBarPlots::refresh(int index)
+{
+    Panel &p = m_panels[index];
+    if (!p.plot->isVisible())
+        return; // on a hidden tab: the Show event brings it up to date
+    if (p.needsReplot)
+        p.plot->replot(QCustomPlot::rpQueuedReplot);
+    else if (p.needsCursorReplot)
+        p.cursorLayer->replot();
+    p.needsReplot = false;
+    p.needsCursorReplot = false;
+}
+
+bool FourBarPlots::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::Show || event->type() == QEvent::Resize) {
+        for (int i = 0; i < PlotCount; ++i) {
+            Panel &p = m_panels[i];
+            if (p.plot != watched)
+                continue;
+            if (event->type() == QEvent::Resize && i != SweepPlot) {
+                const double span = p.plot->xAxis->range().size();
+                const double width = std::max(200, p.plot->width() - 110);
+                setDegreeStep(p.plot->xAxis, angleStep(span, std::max(3.0, width / 60.0)));
+            }
+            p.needsReplot = true;
+            refresh(i);
+            break;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+QCustomPlot *FourBarPlots::plot(int index) const
+{
+    return index >= 0 && index < PlotCount ? m_panels[std::size_t(index)].plot : nullptr;
+}
+
+QCPGraph *FourBarPlots::curve(int index) const
+{
+    return index >= 0 && index < PlotCount ? m_panels[std::size_t(index)].curve : nullptr;
+}
+
+double FourBarPlots::cursorValue(int index) const
+{
+    return index >= 0 && index < PlotCount ? m_panels[std::size_t(index)].cursorValue : nan;
+}
+
+double FourBarPlots::cursorAlpha() const
+{
+    return m_panels[DeltaPlot].cursorLine->point1->key();
+}
+
+} // namespace pkm

@@ -1,0 +1,59 @@
+#include "plotstyle.h"
+
+#include "plotfont.h"
+
+namespace pkm::plotstyle {
+
+Header apply(QCustomPlot *plot, const QFont &base)
+{
+    Header header;
+    plot->setBackground(Qt::white);
+    plot->addLayer(QStringLiteral("bands"), plot->layer(QStringLiteral("grid")), QCustomPlot::limBelow);
+    // The overlay (buffered by default for QCP's selection rect, which these read-only plots
+    // never show) shares the main buffer; the cursor has its own.
+    plot->layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmLogical);
+    plot->addLayer(QStringLiteral("cursor"), plot->layer(QStringLiteral("overlay")), QCustomPlot::limAbove);
+    header.cursorLayer = plot->layer(QStringLiteral("cursor"));
+    header.cursorLayer->setMode(QCPLayer::lmBuffered);
+
+    QCPLayoutGrid *grid = plot->plotLayout();
+    for (int row = 0; row < 3; ++row)
+        grid->insertRow(0);
+    header.title = new QCPTextElement(plot, QString(), fontOf(base, titlePoints, true));
+    header.subtitle = new QCPTextElement(plot, QString(), fontOf(base, subtitlePoints));
+    header.subtitle->setTextColor(QColor(0x505050));
+    grid->addElement(0, 0, header.title);
+    grid->addElement(1, 0, header.subtitle);
+    plot->axisRect()->insetLayout()->take(plot->legend);
+    grid->addElement(2, 0, plot->legend);
+    for (int row = 0; row < 3; ++row)
+        grid->setRowStretchFactor(row, 0.001);
+    grid->setRowSpacing(2);
+    plot->legend->setVisible(true);
+    plot->legend->setFont(fontOf(base, legendPoints));
+    plot->legend->setBorderPen(Qt::NoPen);
+    plot->legend->setIconSize(30, 14);
+    plot->legend->setColumnSpacing(18);
+    plot->legend->setRowSpacing(1);
+    plot->legend->setMargins(QMargins(8, 2, 8, 2));
+
+    for (QCPAxis *axis : {plot->xAxis, plot->yAxis, plot->xAxis2, plot->yAxis2}) {
+        const QPen pen(QColor(axisRgb), 1.2);
+        axis->setBasePen(pen);
+        axis->setTickPen(pen);
+        axis->setSubTickPen(QPen(QColor(axisRgb), 1.0));
+        axis->setTickLabelFont(fontOf(base, tickPoints));
+        axis->setLabelFont(fontOf(base, labelPoints));
+        axis->grid()->setPen(QPen(QColor(gridRgb), 1.0));
+        axis->grid()->setZeroLinePen(Qt::NoPen);
+    }
+    for (QCPAxis *axis : {plot->xAxis2, plot->yAxis2}) { // a closed frame, no second scale
+        axis->setVisible(true);
+        axis->setTicks(false);
+        axis->setTickLabels(false);
+    }
+    plot->xAxis->setSubTicks(false);
+    return header;
+}
+
+} // namespace pkm::plotstyle

@@ -1,0 +1,30 @@
+#pragma once
+/// The house style of the curve plots (the П-joint's and the four-bar's): white, projector-size
+/// fonts, a closed frame, the title, subtitle and legend in rows above the axis rect (so the
+/// legend never covers a curve), and a buffered "cursor" layer on top so that moving the pose
+/// cursor redraws it alone.
+
+#include <qcustomplot.h>
+
+#include <QFont>
+
+namespace pkm::plotstyle {
+
+inline constexpr QRgb designRgb = 0x1f5fa8; ///< the design's curve
+inline constexpr QRgb cursorRgb = 0xd0312d; ///< the current pose
+inline constexpr QRgb gridRgb = 0xe2e2e2;
+inline constexpr QRgb axisRgb = 0x303030;
+inline constexpr double tickPoints = 11, labelPoints = 12, titlePoints = 13, subtitlePoints = 10.5,
+                        legendPoints = 11;
+
+struct Header {
+    QCPTextElement *title = nullptr;
+    QCPTextElement *subtitle = nullptr;
+    QCPLayer *cursorLayer = nullptr;
+};
+
+/// Styles `plot` with fonts derived from `base` and adds a "bands" layer below the grid and the
+/// buffered "cursor" layer; the legend is visible, in the row under the subtitle.
+Header apply(QCustomPlot *plot, const QFont &base);
+
+} // namespace pkm::plotstyle
