@@ -2,9 +2,11 @@
 
 #include "cliarguments.h"
 #include "clidesign.h"
+#include "clidxf.h"
 #include "clihelp.h"
 #include "clirender.h"
 #include "clireport.h"
+#include "clisheet.h"
 #include "clisweep.h"
 #include "cliworkspace.h"
 #include "jsonwriter.h"
@@ -49,22 +51,6 @@ namespace {
 
 // -- names ---------------------------------------------------------------------------------
 
-std::string_view parameterGroupKey(ParameterGroup group)
-{
-    switch (group) {
-    case ParameterGroup::Geometry:
-        return "geometry";
-    case ParameterGroup::Range:
-        return "range";
-    case ParameterGroup::Actuator:
-        return "actuator";
-    case ParameterGroup::Drawing:
-        return "drawing";
-    case ParameterGroup::Mode:
-        return "mode";
-    }
-    return "geometry";
-}
 
 constexpr std::array<ParameterGroup, 5> parameterGroups = {ParameterGroup::Geometry, ParameterGroup::Range,
     ParameterGroup::Actuator, ParameterGroup::Drawing, ParameterGroup::Mode};
@@ -313,6 +299,7 @@ std::string evalText(const PreparedDesign &prepared)
             names += (names.empty() ? "" : ", ") + name;
         table.text("not finite at this pose: " + names);
     }
+    addMobilityRows(table, mechanism, prepared.pose);
     const std::vector<std::string> warnings = mechanism.designWarnings();
     if (!warnings.empty()) {
         table.heading("Warnings");
@@ -435,6 +422,7 @@ std::string evalJson(const Mechanism &mechanism, const Pose &pose)
     json.key("mechanism").string(mechanism.kind());
     writeParametersJson(json, mechanism, false);
     writeReportJson(json, layout, values, singularity, mechanism.reportText(pose));
+    writeMobilityJson(json, mechanism, pose);
     json.endObject();
     return out;
 }
@@ -448,6 +436,8 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
     args.reserve(static_cast<std::size_t>(arguments.size()));
     for (const QString &argument : arguments)
         args.push_back(argument.toStdString());
+    if (isDxfCommand(args))
+        return runDxfCommand(args, out, err); // its own options (clidxf.h)
 
     const auto parsed = parseArguments(args);
     if (!parsed)
@@ -476,6 +466,8 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
     }
     if (invocation.command == Command::Workspace || invocation.command == Command::Map)
         return runWorkspaceCommand(*prepared, invocation, out, err);
+    if (invocation.command == Command::Sheet)
+        return runSheetCommand(*prepared, invocation, out, err);
     return runSweep(*prepared, invocation, out, err);
 }
 

@@ -23,18 +23,18 @@ enum OptionFlag : unsigned {
     OptionGrid = 1u << 5,
     OptionQuantity = 1u << 6,
     OptionOutput = 1u << 7, ///< -o FILE
-    OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption
+    OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption, --one-way
 };
 
 struct CommandSpec {
     Command command;
     std::string_view name;
     unsigned options;
-    std::array<std::string_view, 3> outputTypes {}; ///< the extensions -o takes (empty: unused)
+    std::array<std::string_view, 4> outputTypes {}; ///< the extensions -o takes (empty: unused)
     bool needsOutput = false; ///< -o FILE is required
 };
 
-constexpr std::array<CommandSpec, 7> commandSpecs = {{
+constexpr std::array<CommandSpec, 8> commandSpecs = {{
     {Command::List, "list", OptionJson},
     {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
     {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet},
@@ -43,7 +43,9 @@ constexpr std::array<CommandSpec, 7> commandSpecs = {{
         {"png", "svg"}},
     {Command::Map, "map", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput,
         {"png", "csv"}},
-    {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture, {"png", "svg", "pdf"}, true},
+    {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture | OptionSweep,
+        {"png", "svg", "pdf", "gif"}, true},
+    {Command::Sheet, "sheet", OptionDesign | OptionSet | OptionOutput, {"pdf", "json", "csv"}, true},
 }};
 
 const CommandSpec *findCommand(std::string_view name)
@@ -73,7 +75,7 @@ unsigned optionFlag(std::string_view option)
     if (option == "-o" || option == "--output")
         return OptionOutput;
     if (option == "--view" || option == "--size" || option == "--camera" || option == "--orthographic"
-        || option == "--no-caption")
+        || option == "--no-caption" || option == "--one-way")
         return OptionPicture;
     return 0;
 }
@@ -109,7 +111,7 @@ bool isHelp(const std::string &argument)
 }
 
 /// "a .png, .svg or .pdf file"
-std::string fileTypes(const std::array<std::string_view, 3> &types)
+std::string fileTypes(const std::array<std::string_view, 4> &types)
 {
     std::vector<std::string_view> used;
     for (std::string_view type : types) {
@@ -245,11 +247,13 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             (flag == OptionJson ? invocation.json : invocation.csv) = true;
             continue;
         }
-        if (option == "--orthographic" || option == "--no-caption") {
+        if (option == "--orthographic" || option == "--no-caption" || option == "--one-way") {
             if (inlineValue)
                 return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
             if (option == "--orthographic")
                 invocation.orthographic = true;
+            else if (option == "--one-way")
+                invocation.oneWay = true;
             else
                 invocation.caption = false;
             continue;
@@ -335,6 +339,7 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             }
             invocation.width = static_cast<int>(size->first);
             invocation.height = static_cast<int>(size->second);
+            invocation.sizeGiven = true;
         } else if (option == "--steps") {
             const auto number = parseNumber(value);
             // 10^9 rows are ~300 GB of CSV: far beyond any use.
@@ -368,7 +373,34 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
     }
     if (invocation.json && invocation.csv)
         return usageFailure("--csv", "--csv and --json exclude each other: give one.");
-    if (command.options & OptionSweep) {
+    const bool animation = invocation.command == Command::Render && invocation.output
+        && fileExtension(*invocation.output) == "gif";
+    if (invocation.command == Command::Render && !animation) {
+        const std::optional<std::string> &sweepOption = invocation.var ? std::optional<std::string>("--var")
+            : invocation.from                                          ? std::optional<std::string>("--from")
+            : invocation.to                                            ? std::optional<std::string>("--to")
+            : invocation.steps ? std::optional<std::string>("--steps")
+            : invocation.oneWay ? std::optional<std::string>("--one-way")
+                                : std::nullopt;
+        if (sweepOption) {
+            return usageFailure(*sweepOption,
+                *sweepOption + " makes an animation: it needs -o FILE.gif" + seeHelp + ".");
+        }
+    }
+    if (animation) {
+        if (!invocation.sizeGiven) {
+            invocation.width = defaultAnimationWidth;
+            invocation.height = defaultAnimationHeight;
+        }
+        if (invocation.view.value_or("2d") != "2d")
+            return usageFailure("--view", "An animated GIF is drawn from the 2D view: leave out --view 3d.");
+        if (invocation.steps && (*invocation.steps < minAnimationSteps || *invocation.steps > maxAnimationSteps)) {
+            return usageFailure("--steps",
+                "--steps " + std::to_string(*invocation.steps) + ": an animation has "
+                    + std::to_string(minAnimationSteps) + " to " + std::to_string(maxAnimationSteps) + " frames.");
+        }
+    }
+    if ((command.options & OptionSweep) && (invocation.command != Command::Render || animation)) {
         const auto missing = [&](const char *option, const char *what) {
             return usageFailure(option, quotedCommand + " needs " + option + " " + what + seeHelp + ".");
         };
@@ -379,7 +411,7 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
         if (!invocation.to)
             return missing("--to", "B (the last value)");
         if (!invocation.steps)
-            return missing("--steps", "K (the number of rows)");
+            return missing("--steps", animation ? "K (the number of frames)" : "K (the number of rows)");
     }
     return invocation;
 }

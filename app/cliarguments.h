@@ -12,9 +12,9 @@
 
 namespace pkm::cli {
 
-enum class Command { List, Show, Eval, Sweep, Workspace, Map, Render };
+enum class Command { List, Show, Eval, Sweep, Workspace, Map, Render, Sheet };
 
-/// "list", "show", "eval", "sweep", "workspace", "map", "render".
+/// "list", "show", "eval", "sweep", "workspace", "map", "render", "sheet".
 std::string_view commandName(Command command);
 
 /// --grid K of workspace and map: K cells along the longer side of the workspace.
@@ -27,6 +27,11 @@ inline constexpr int defaultPictureWidth = 1600;
 inline constexpr int defaultPictureHeight = 1200;
 inline constexpr int minPictureSide = 16;
 inline constexpr int maxPictureSide = 8000;
+/// render -o FILE.gif: the frames of the animation (--steps), and its default size.
+inline constexpr int minAnimationSteps = 2;
+inline constexpr int maxAnimationSteps = 1000;
+inline constexpr int defaultAnimationWidth = 960;
+inline constexpr int defaultAnimationHeight = 720;
 
 /// One --set NAME=VALUE.
 struct Setting {
@@ -52,13 +57,15 @@ struct Invocation {
     std::optional<std::int64_t> steps;
     std::optional<int> grid; ///< --grid K (workspace, map): cells along the longer side
     std::optional<std::string> quantity; ///< --quantity det|cond (map)
-    std::optional<std::string> output; ///< -o FILE (workspace, map, render), its extension checked
+    std::optional<std::string> output; ///< -o FILE (workspace, map, render, sheet), its extension checked
     std::optional<std::string> view; ///< --view 2d|3d (render)
     std::optional<std::string> camera; ///< --camera front|top|side|iso (render, 3d only)
     bool orthographic = false; ///< --orthographic (render, 3d only)
     bool caption = true; ///< false with --no-caption (render)
+    bool oneWay = false; ///< --one-way (render -o FILE.gif): no way back to the start
     int width = defaultPictureWidth; ///< --size WxH (render), pixels
     int height = defaultPictureHeight;
+    bool sizeGiven = false; ///< --size was given (an animation's default size is smaller)
 };
 
 /// The lower-case extension of `path` without the dot ("png"), empty without one.

@@ -1,4 +1,5 @@
 #include "clihelp.h"
+#include "clidxf.h"
 
 namespace pkm::cli {
 
@@ -26,6 +27,16 @@ Commands:
          [--orthographic] [--no-caption] -o FILE.png|.svg|.pdf
                                            a picture of the mechanism in a pose: the
                                            2D drawing or the 3D model
+  render DESIGN --var NAME --from A --to B --steps K [--one-way] -o FILE.gif
+                                           an animated GIF of the 2D drawing as NAME
+                                           moves from A to B
+  sheet  DESIGN [--set N=V]... -o FILE.pdf|.json|.csv
+                                           the parameter sheet for building the
+                                           prototype: parameters, dimensions, key
+                                           poses, checks, plots, dimensioned drawing
+  dxf    DESIGN [--set N=V]... -o FILE.dxf
+                                           the linkage drawing for CAD: AutoCAD R12
+                                           DXF in mm, one layer per role
 
 DESIGN is a preset id (see 'pkm list') or a design file (*.pkm.json).
 --set NAME=VALUE (repeatable) changes a design parameter or sets a pose variable;
@@ -151,6 +162,13 @@ planar mechanism rides the z axis, also the volume: the area extruded over the z
   -o FILE.svg         its outline as SVG paths, in mm (viewBox), y up
                       (-o FILE and --output FILE are the same)
 
+An animation for slides and lectures: -o FILE.gif with --var NAME (a pose variable,
+e.g. theta, alpha, x), --from A and --to B (display units) and --steps K (2 to 1000
+frames) draws the 2D picture at K evenly spaced values, each pose solved from the one
+before so the mechanism stays in its mode, 50 ms per frame, looping; it plays back to A
+unless --one-way (for a crank that turns fully). Default size 960x720. A value without
+a pose stops it with status 3, naming the frame.
+
 The file is written completely or not at all (a temporary file renamed at the end), before
 anything is printed. An empty workspace (no reachable cell) exits with status 3.
 )";
@@ -191,6 +209,8 @@ anything is printed. A map without a reachable cell exits with status 3.
 constexpr std::string_view renderHelp = R"(Usage: pkm render DESIGN [--set NAME=VALUE]... [--view 2d|3d] [--size WxH]
                   [--camera front|top|side|iso] [--orthographic] [--no-caption]
                   -o FILE.png|FILE.svg|FILE.pdf
+       pkm render DESIGN [--set NAME=VALUE]... --var NAME --from A --to B --steps K
+                  [--one-way] [--size WxH] [--no-caption] -o FILE.gif
 
 Draws the mechanism in a pose — the design's stored pose, or the one the --set values
 give — and writes the picture to FILE. The drawing is fitted to the range of motion, so
@@ -230,7 +250,102 @@ and exits with status 3. Qt's own diagnostics are kept off stderr; PKM_QT_MESSAG
 shows them.
 )";
 
+constexpr std::string_view dxfHelp = R"(Usage: pkm dxf DESIGN [--set NAME=VALUE]... -o FILE.dxf
+
+Writes the linkage drawing of the design in a pose — the design's stored pose, or the one
+the --set values give — as a DXF file for CAD programs: AutoCAD R12 (AC1009) ASCII DXF,
+the oldest common version, which CAD programs generally import. The drawing is what the 2D view
+shows, as CAD geometry in mm, y up, in the mechanism's own frame: a joint at (x, y) in
+'pkm eval' is a pin circle at (x, y) in the file, and every link's centre line is exactly as
+long as the link.
+
+Layers (AutoCAD colour index):
+  GROUND (8)       the frame: ground links, the ground symbol under each ground pivot
+  LINKS (5)        each link as a LINE from joint to joint and its outline
+  ACTUATORS (30)   motor body, screw and axis of each linear actuator
+  GUIDES (4)       rails: axis, edges, end stops, hatching on the ground side
+  JOINTS (250)     pin circles, slider carriages, marked points
+  DIMENSIONS (3)   dimension lines with extension lines, arrowheads and the measured
+                   length ("a = 170.00", mm, 2 decimals); angle arcs with their values
+  TEXT (7)         names of joints, links and guides; a caption with the design and pose
+  PATHS (1)        coupler curves and trajectories, as polylines
+
+  --set NAME=VALUE    applied first, as in 'pkm eval' (theta=30, d=200, mode=X)
+  -o FILE.dxf         the file to write (-o FILE and --output FILE are the same)
+
+Text is ASCII: Greek, Cyrillic and subscripts are written as AutoCAD's \U+XXXX escapes
+(θ is \U+03B8), the degree sign as %%d. Prints one line: Wrote FILE, with the number of
+entities and the drawing's size. The file is written completely or not at all (a temporary
+file renamed at the end); on an error nothing is written and an existing FILE is left as it
+was. A pose that cannot be solved exits with status 3, as in 'pkm eval'.
+)";
+
+constexpr std::string_view sheetHelp = R"(Usage: pkm sheet DESIGN [--set NAME=VALUE]... -o FILE.pdf|FILE.json|FILE.csv
+
+Writes the parameter sheet of the design in a pose — the design's stored pose, or the one
+the --set values give — for the workshop that builds the prototype. Its sections:
+
+  parameters   every design parameter with its value, unit and key
+  dimensions   the links between joint centres and the guides (lengths in mm), and the
+               mechanism's derived dimensions (the П-joint: d_min, d_max, stroke, the
+               recommended range, the free screw length, motor steps, speed and torque;
+               the four-bar: its Grashof class)
+  ranges       every pose variable: input or output, value in this pose, min, max, travel
+  key_poses    a table of poses (the П-joint: θ_min, θ = 0, θ_max and the recommended
+               range with d, φ, μ, J, T, θ̇, Δθ; the four-bar: the crank at 0°, 90°, 180°,
+               270° and the least transmission angle; any mechanism: home, this pose and
+               each input at the ends of its range)
+  checks       PASS/FAIL against stated criteria (the П-joint's actuator check: motor
+               body, torque, speed and resolution over the range, singular poses; the
+               four-bar's transmission angle >= 40°; the strokes the workspace uses and
+               the singular curves inside it), with INFO lines
+  workspace    mechanisms whose output is a point of the plane: the area as 'pkm
+               workspace' computes it (grid 400; the O-X glide's areas also exact: area_O,
+               area_X), per mode, its bounds, and the pictures of 'pkm workspace -o' and
+               'pkm map -o'
+  singular     the singular curves inside the workspace, each with one of its poses
+  plots        the П-joint's d, μ, J, T, θ̇ and Δθ over θ (the document's figs. 8–17);
+               the four-bar's δ, μ, ω₃, ε₃ over α; the outputs of any one-input mechanism
+  drawing      the mechanism with its dimensions at a standard scale (1:2, 1:5 …) on A4
+  warnings     the design warnings
+
+  --set NAME=VALUE    applied first, as in 'pkm eval' (theta=30, a=180, mode=X)
+  -o FILE.pdf         A4 portrait pages: a title block, the sections with aligned tables,
+                      the plots as vectors, the drawing with its title block; text is
+                      real text, every page numbered
+  -o FILE.json        the same content by key: {"sheet", "design", "title", "description",
+                      "mechanism", "mechanism_title", "date", "version", "pose",
+                      "sections": {KEY: {"title", "intro", "values": {KEY: {"symbol",
+                      "label", "value", "unit", "decimals", "group"}}, "tables": {KEY:
+                      {"title", "label_title", "columns": [{"key", "title", "unit"}],
+                      "rows": [{"key", "label", "values": {COLUMN: VALUE}}], "note"}},
+                      "checks": {KEY: {"title", "criterion", "value", "limit", "unit",
+                      "result": PASS|FAIL|INFO, "detail"}}, "figures": [{"key", "kind",
+                      "title", "caption"}], "notes": [...]}}}
+  -o FILE.csv         the same values, one per line under the header
+                      section,table,row,column,value,unit: the title block as
+                      sheet,,KEY,value,TEXT; a value as SECTION,values,KEY,value,NUMBER,UNIT;
+                      a table cell as SECTION,TABLE,ROW,COLUMN,VALUE,UNIT; a check as
+                      SECTION,checks,KEY,value|limit|result,VALUE,UNIT; figures and notes as
+                      SECTION,figures,KEY,title,TEXT and SECTION,notes,N,text,TEXT
+                      (-o FILE and --output FILE are the same)
+
+Numbers are in display units (mm, °, N, N·m, s): in JSON and CSV with up to 15
+significant digits and '.' whatever the locale, as in 'pkm eval --json'; the PDF prints
+each with its parameter's decimals. A value that is not finite is null in JSON and an
+empty field in CSV. The date is today's, or that of SOURCE_DATE_EPOCH when it is set.
+
+Prints one line: Wrote FILE. The file is written completely or not at all (a temporary
+file renamed at the end); on an error nothing is written and an existing FILE is left as
+it was. No display is needed: the PDF is drawn on Qt's offscreen platform.
+)";
+
 } // namespace
+
+std::string_view dxfHelpText()
+{
+    return dxfHelp;
+}
 
 std::string_view helpText(std::optional<Command> command)
 {
@@ -251,6 +366,8 @@ std::string_view helpText(std::optional<Command> command)
         return mapHelp;
     case Command::Render:
         return renderHelp;
+    case Command::Sheet:
+        return sheetHelp;
     }
     return mainHelp;
 }

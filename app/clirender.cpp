@@ -1,5 +1,7 @@
 #include "clirender.h"
 
+#include "animation.h"
+
 #include "camera3d.h"
 #include "cli.h"
 #include "linkageview.h"
@@ -311,20 +313,24 @@ int rerunUnderXvfb(const XvfbRerun &rerun, const QString &noGl, std::FILE *out, 
 
 QString renderCaption(const PreparedDesign &prepared)
 {
-    const Mechanism &mechanism = *prepared.mechanism;
+    return poseCaption(*prepared.mechanism, prepared.pose,
+                       QFileInfo(QString::fromStdString(prepared.origin)).fileName());
+}
+
+QString poseCaption(const Mechanism &mechanism, const Pose &at, const QString &name)
+{
     std::string pose;
     const auto &variables = mechanism.variableInfo();
     for (std::size_t i = 0; i < variables.size(); ++i) {
         const VariableInfo &info = variables[i];
-        const double value = info.unit.toDisplay(mechanism.variableValue(prepared.pose, static_cast<int>(i)));
+        const double value = info.unit.toDisplay(mechanism.variableValue(at, static_cast<int>(i)));
         pose.append(pose.empty() ? "" : ", ").append(info.symbol).append(" = ");
         pose.append(valueWithUnit(value, info.decimals, info.unit.symbol));
     }
-    for (const ReportText &word : mechanism.reportText(prepared.pose)) {
+    for (const ReportText &word : mechanism.reportText(at)) {
         if (word.group == ReportGroup::Pose)
             pose.append(pose.empty() ? "" : ", ").append(word.name).append(" ").append(word.text);
     }
-    const QString name = QFileInfo(QString::fromStdString(prepared.origin)).fileName();
     return pose.empty() ? name : name + QStringLiteral(" — ") + QString::fromStdString(pose);
 }
 
@@ -378,6 +384,54 @@ void paintScenePicture(
 
 // -- the command ---------------------------------------------------------------------------
 
+namespace {
+/// `pkm render … --var N --from A --to B --steps K -o FILE.gif`: the 2D picture of every step.
+int runAnimation(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
+{
+    const Mechanism &mechanism = *prepared.mechanism;
+    const std::string &name = *invocation.var;
+    const int variable = mechanism.variableIndex(name);
+    if (variable < 0) {
+        printError(err, joinText({"--var ", name, ": an animation moves a pose variable of the ",
+                                  std::string(mechanism.kind()), " (see 'pkm show ", prepared.origin, "')."}));
+        return CliUsageError;
+    }
+    if (!prepared.note.empty())
+        printError(err, "note: " + prepared.note);
+    const Unit &unit = mechanism.variableInfo()[variable].unit;
+    AnimationSettings settings;
+    settings.variable = variable;
+    settings.from = unit.fromDisplay(*invocation.from);
+    settings.to = unit.fromDisplay(*invocation.to);
+    settings.frames = static_cast<int>(*invocation.steps);
+    settings.bounce = !invocation.oneWay;
+    settings.size = QSize(invocation.width, invocation.height);
+    settings.caption = invocation.caption;
+    settings.name = QFileInfo(QString::fromStdString(prepared.origin)).fileName();
+    auto gif = renderAnimation(mechanism, prepared.pose, settings);
+    if (!gif) {
+        printError(err, "--var " + name + ": " + gif.failure().message);
+        return cliExitCode(gif.failure());
+    }
+    if (const auto failure = saveBytes(*invocation.output, *gif)) {
+        printError(err, *failure);
+        return CliOutputError;
+    }
+    const int frames = settings.bounce && settings.frames > 2 ? 2 * settings.frames - 2 : settings.frames;
+    std::string line("Wrote ");
+    line.append(*invocation.output)
+        .append(" (animated GIF, ")
+        .append(std::to_string(frames))
+        .append(" frames of ")
+        .append(std::to_string(invocation.width))
+        .append(" × ")
+        .append(std::to_string(invocation.height))
+        .append(" pixels, ")
+        .append(settings.bounce ? "forth and back)\n" : "one way)\n");
+    return printOutput(out, err, line);
+}
+} // namespace
+
 void enableXvfbRerun(const QString &program, const QStringList &arguments)
 {
     xvfbRerun() = XvfbRerun {program, arguments};
@@ -386,14 +440,14 @@ void enableXvfbRerun(const QString &program, const QStringList &arguments)
 RenderSetup prepareRenderPlatform(const std::vector<std::string> &arguments)
 {
     RenderSetup setup;
-    if (arguments.empty() || arguments.front() != "render")
+    if (arguments.empty() || (arguments.front() != "render" && arguments.front() != "sheet"))
         return setup;
     const auto parsed = parseArguments(arguments);
-    if (!parsed || parsed->help || parsed->command != Command::Render)
+    if (!parsed || parsed->help || (parsed->command != Command::Render && parsed->command != Command::Sheet))
         return setup; // the usage error or the help, from a QCoreApplication
     setup.quietQt = true;
     const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM").trimmed();
-    if (parsed->view.value_or("2d") != "3d") {
+    if (parsed->command == Command::Sheet || parsed->view.value_or("2d") != "3d") {
         // A picture needs fonts and QPainter, never a display: the same pixels everywhere.
         if (platform.isEmpty())
             qputenv("QT_QPA_PLATFORM", "offscreen");
@@ -442,6 +496,8 @@ int runRenderCommand(const PreparedDesign &prepared, const Invocation &invocatio
 
     const std::string &path = *invocation.output;
     const std::string extension = fileExtension(path);
+    if (extension == "gif")
+        return runAnimation(prepared, invocation, out, err);
     const QString caption = invocation.caption ? renderCaption(prepared) : QString();
     const QString title = renderCaption(prepared);
 

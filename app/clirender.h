@@ -48,7 +48,8 @@ struct RenderSetup {
 };
 
 /// Looks at the command line (without the program name) and the environment: for `pkm
-/// render` (not its help, not a command line parseArguments() refuses) it decides the Qt
+/// render` and `pkm sheet` (not their help, not a command line parseArguments() refuses; the
+/// sheet draws its PDF as a 2D picture) it decides the Qt
 /// platform and sets QT_QPA_PLATFORM — offscreen for 2D unless the user chose a platform;
 /// for 3D the user's or the desktop's platform when there is a display that may offer
 /// OpenGL (with Xvfb as the fallback), else none: the command then validates the design in a
@@ -66,6 +67,8 @@ inline constexpr const char *underXvfbVariable = "PKM_RENDER_UNDER_XVFB";
 /// The caption of a picture: "pjoint-prototype — θ = 30.00°, d = 187.13 mm" (the design's
 /// file name for a design file), every pose variable in display units and the pose's words.
 QString renderCaption(const PreparedDesign &prepared);
+/// The same for any pose: "NAME — θ = 30.00°, d = 187.13 mm".
+QString poseCaption(const Mechanism &mechanism, const Pose &pose, const QString &name);
 
 /// Draws the 2D picture into `area` of any paint device: background and grid, the scene fitted
 /// above a band for the scale bar and the caption (none when empty), no handle rings.

@@ -127,6 +127,10 @@ struct ComputedMap {
     std::vector<float> margins;
 };
 
+} // namespace
+
+// -- shared with the parameter sheet (cliworkspace.h) ------------------------------------
+
 /// The map of `workspace` over squareGrid(its bounds, resolution); `values` is reused.
 MapSummary computeInto(const PlanarWorkspace &workspace, MapQuantity quantity, int resolution,
     std::vector<float> &values, std::vector<float> *margins)
@@ -177,15 +181,7 @@ std::vector<const ParameterInfo *> modeParameters(const Mechanism &mechanism)
     return modes;
 }
 
-struct ModeArea {
-    std::vector<double> values; ///< of the mode parameters, display units
-    double area = 0.0;
-    std::size_t reachableCells = 0;
-    bool current = false;
-    std::string note; ///< why the combination has no workspace
-    bool empty = false; ///< the note says the workspace is empty
-};
-
+namespace {
 /// "+1", "-1"
 std::string signText(double value)
 {
@@ -193,6 +189,7 @@ std::string signText(double value)
     text += numberText(value);
     return text;
 }
+} // namespace
 
 /// A mode value as the user names it: its choice name ("X") where the parameter has names,
 /// else "+1" or "-1".
@@ -261,16 +258,6 @@ std::vector<ModeArea> modeAreas(const Mechanism &mechanism, const std::vector<co
     return areas;
 }
 
-/// The workspaces of every mode combination on one grid over all of them: the union is the
-/// region the mechanism reaches when it may change mode (the O-X glide's O and X), and the
-/// regions drawn over each other are the O-X glide document's fig. 5.
-struct ModeRegions {
-    MapGrid grid;
-    std::vector<std::vector<char>> reached; ///< per combination with a workspace, per cell
-    std::vector<bool> current;              ///< whether that combination is the design's own
-    std::size_t unionCells = 0;
-    double unionArea = 0.0;
-};
 
 ModeRegions modeRegions(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes, int resolution)
 {
@@ -338,6 +325,8 @@ std::vector<std::pair<std::string, double>> namedModeAreas(
     std::sort(named.begin(), named.end());
     return named;
 }
+
+namespace {
 
 // -- colours and pictures ------------------------------------------------------------------
 
@@ -522,16 +511,7 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
                 = "Workspace of " + context.prepared.origin + suffix + ": " + fixedText(map.summary.area, 1) + " mm²";
             failure = saveBytes(*path, QByteArray::fromStdString(workspaceSvg(map.grid, map.values, title)));
         } else if (!named.empty() && united.reached.size() > 1) {
-            // the modes over each other, larger ones first so that every one shows, the design's
-            // own darker (fig. 5 of the O-X glide)
-            std::vector<std::size_t> order(united.reached.size());
-            std::iota(order.begin(), order.end(), std::size_t {0});
-            const auto cells = [&](std::size_t i) { return std::count(united.reached[i].begin(), united.reached[i].end(), 1); };
-            std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells(a) > cells(b); });
-            std::vector<std::pair<const std::vector<char> *, QRgb>> layers;
-            for (const std::size_t i : order)
-                layers.emplace_back(&united.reached[i], united.current[i] ? currentModeFill : workspaceFill);
-            QImage image = regionsImage(united.grid, layers);
+            QImage image = modeRegionsImage(united);
             image.setText(QStringLiteral("Title"),
                 QString::fromStdString("Workspaces of the modes of " + context.prepared.origin + suffix
                     + " (the design's own darker), their union outlined"));
@@ -766,6 +746,20 @@ QImage regionsImage(const MapGrid &grid, const std::vector<std::pair<const std::
         }
     }
     return image;
+}
+
+QImage modeRegionsImage(const ModeRegions &regions)
+{
+    // the modes over each other, larger ones first so that every one shows, the design's own
+    // darker (fig. 5 of the O-X glide)
+    std::vector<std::size_t> order(regions.reached.size());
+    std::iota(order.begin(), order.end(), std::size_t {0});
+    const auto cells = [&](std::size_t i) { return std::count(regions.reached[i].begin(), regions.reached[i].end(), 1); };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells(a) > cells(b); });
+    std::vector<std::pair<const std::vector<char> *, QRgb>> layers;
+    for (const std::size_t i : order)
+        layers.emplace_back(&regions.reached[i], regions.current[i] ? currentModeFill : workspaceFill);
+    return regionsImage(regions.grid, layers);
 }
 
 QImage workspaceImage(const MapGrid &grid, std::span<const float> values)

@@ -1,6 +1,7 @@
 #include "designfile.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "quantityformat.h"
 #include "registry.h"
@@ -59,6 +60,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     }
     if (version < 1)
         return fileFailure(origin, QStringLiteral("%1 has no valid format version.").arg(origin));
+    // Older versions are read by the same code: see formatVersion for what each one changed.
 
     const QString kindId = root.value(QStringLiteral("mechanism")).toString();
     if (!findMechanismKind(kindId.toStdString()))
@@ -117,7 +119,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
         pose.append({it.key(), it.value().toDouble()});
     }
     if (!pose.isEmpty()) {
-        auto solved = solveDisplayVariables(*design.mechanism, design.pose, pose);
+        auto solved = solveSavedPose(*design.mechanism, design.pose, pose);
         if (!solved) {
             Failure f = solved.failure();
             f.message = origin.toStdString() + ": " + f.message;
@@ -128,10 +130,67 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     return design;
 }
 
+namespace {
+/// Below this (relative) a saved output differs from its inputs' by round-off only.
+constexpr double exactPoseTolerance = 1e-12;
+} // namespace
+
+Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const QList<QPair<QString, double>> &values)
+{
+    const auto &variables = mechanism.variableInfo();
+    const int inputs = mechanism.inputCount();
+    std::vector<bool> given(variables.size(), false);
+    for (const auto &value : values) {
+        const int index = mechanism.variableIndex(value.first.toStdString());
+        if (index >= 0)
+            given[index] = true;
+    }
+    const bool allInputs = std::all_of(given.begin(), given.begin() + inputs, [](bool g) { return g; });
+    const bool anyOutput = std::any_of(given.begin() + inputs, given.end(), [](bool g) { return g; });
+    if (!allInputs || !anyOutput)
+        return solveDisplayVariables(mechanism, home, values);
+
+    // Every variable given (as version 2 writes them): the inputs decide, the outputs must agree.
+    QList<QPair<QString, double>> inputValues;
+    for (const auto &value : values) {
+        if (mechanism.variableIndex(value.first.toStdString()) < inputs)
+            inputValues.append(value);
+    }
+    auto solved = solveDisplayVariables(mechanism, home, inputValues);
+    if (!solved)
+        return solved;
+    Pose pose = *solved;
+    for (const auto &[name, display] : values) {
+        const int index = mechanism.variableIndex(name.toStdString());
+        if (index < inputs)
+            continue;
+        const VariableInfo &info = variables[index];
+        const double fromInputs = info.unit.toDisplay(mechanism.variableValue(*solved, index));
+        if (std::abs(fromInputs - display) > savedPoseTolerance * std::max(1.0, std::abs(display))) {
+            return Failure{FailureKind::InvalidParameter, info.name,
+                           QStringLiteral("the pose's %1 = %2 %4 does not agree with its inputs, which give %3 %4.")
+                               .arg(toQString(info.name))
+                               .arg(display, 0, 'g', 10)
+                               .arg(fromInputs, 0, 'g', 10)
+                               .arg(toQString(info.unit.symbol))
+                               .toStdString()};
+        }
+        // Agreeing to round-off: keep the file's value, so that save → open is exact.
+        if (std::abs(fromInputs - display) <= exactPoseTolerance * std::max(1.0, std::abs(display)))
+            pose.outputs[index - inputs] = info.unit.fromDisplay(display);
+    }
+    return pose;
+}
+
+bool isPresetId(const QString &presetOrPath)
+{
+    return !presetOrPath.contains(QLatin1Char('/')) && !presetOrPath.endsWith(QLatin1String(".json"));
+}
+
 Result<Design> load(const QString &presetOrPath)
 {
     QString path = presetOrPath;
-    if (!presetOrPath.contains(QLatin1Char('/')) && !presetOrPath.endsWith(QLatin1String(".json"))) {
+    if (isPresetId(presetOrPath)) {
         path = presetPath(presetOrPath);
         if (!QFile::exists(path)) {
             return fileFailure(presetOrPath,
@@ -165,14 +224,13 @@ QByteArray serialize(const Design &design)
     }
     root.insert(QStringLiteral("parameters"), parameters);
 
-    // The outputs fix the pose (inverse kinematics is unique where direct is not).
+    // Every joint variable: the inputs fix the pose (direct kinematics is unique once the
+    // design's modes are given), the outputs are there for the reader and are checked on load.
     QJsonObject pose;
     const auto &variables = design.mechanism->variableInfo();
     for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
-        if (!variables[i].actuated) {
-            pose.insert(toQString(variables[i].name),
-                        variables[i].unit.toDisplay(design.mechanism->variableValue(design.pose, i)));
-        }
+        pose.insert(toQString(variables[i].name),
+                    variables[i].unit.toDisplay(design.mechanism->variableValue(design.pose, i)));
     }
     root.insert(QStringLiteral("pose"), pose);
     return QJsonDocument(root).toJson(QJsonDocument::Indented);

@@ -144,6 +144,10 @@ QString Document::limitNote() const
             continue;
         const QString symbol = toQString(info.symbol);
         const QString limit = formatQuantity(atMax ? range.max : range.min, info.unit, info.decimals);
+        if (const std::string reason = m.rangeLimitReason(i, atMax); !reason.empty()) {
+            return atMax ? tr("%1 stops at its upper limit %2: %3.").arg(symbol, limit, QString::fromStdString(reason))
+                         : tr("%1 stops at its lower limit %2: %3.").arg(symbol, limit, QString::fromStdString(reason));
+        }
         return atMax ? tr("%1 stops at its upper limit %2 (design range).").arg(symbol, limit)
                      : tr("%1 stops at its lower limit %2 (design range).").arg(symbol, limit);
     }

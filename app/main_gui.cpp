@@ -1,4 +1,5 @@
 // pkm-studio: the desktop application. Usage: pkm-studio [--3d] [PRESET-ID | DESIGN.pkm.json]
+#include "designsession.h"
 #include "document.h"
 #include "mainwindow.h"
 
@@ -6,6 +7,7 @@
 #include <QCommandLineParser>
 #include <QScreen>
 #include <QTabWidget>
+#include <QTimer>
 
 #include <cstdio>
 
@@ -41,6 +43,7 @@ int main(int argc, char *argv[])
     } else {
         // Opening at start is not an edit the user should be able to undo.
         window.document()->undoStack()->clear();
+        window.session()->markClean();
     }
     if (parser.isSet(show3d))
         window.viewTabs()->setCurrentIndex(1);
@@ -53,5 +56,7 @@ int main(int argc, char *argv[])
     } else {
         window.show();
     }
+    // After the window is up, so that the question has a parent to sit on.
+    QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
     return app.exec();
 }

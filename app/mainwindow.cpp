@@ -1,29 +1,44 @@
 #include "mainwindow.h"
 
+#include "animationdialog.h"
+#include "backgroundtask.h"
 #include "designpanel.h"
+#include "designsession.h"
 #include "document.h"
+#include "dxfwriter.h"
+#include "fourbar.h"
+#include "fourbarpanel.h"
 #include "linkageview.h"
 #include "linkageview3d.h"
+#include "mobilitypanel.h"
 #include "modebar.h"
 #include "oxglide.h"
 #include "oxglidepanel.h"
+#include "pictureexport.h"
 #include "pjoint.h"
 #include "pjointplots.h"
 #include "quantityformat.h"
+#include "sheet.h"
 #include "valuestable.h"
 #include "variablepanel.h"
+#include "viewpicture.h"
 #include "workspacemapview.h"
 #include "workspacepanel.h"
+
+#include <qcustomplot.h>
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QFileDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSaveFile>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -49,6 +64,10 @@ constexpr int settingsVersion = 1;
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
     , m_document(new Document(this))
+    , m_session(new DesignSession(m_document, this))
+    , m_question([this](const QString &title, const QString &text, QMessageBox::StandardButtons buttons) {
+        return QMessageBox::question(this, title, text, buttons);
+    })
 {
     setWindowIcon(QIcon(QStringLiteral(":/icons/pkm-studio.svg")));
 
@@ -80,6 +99,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_plots->addWidget(m_workspacePanel);
     m_oxglidePanel = new OxGlidePanel(m_document, this);
     m_plots->addWidget(m_oxglidePanel);
+    m_fourbarPanel = new FourBarPanel(m_document, this);
+    m_plots->addWidget(m_fourbarPanel);
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -101,6 +122,8 @@ MainWindow::MainWindow(QWidget *parent)
     statusBar()->addPermanentWidget(m_singularityLabel);
 
     connect(m_document, &Document::designChanged, this, &MainWindow::onDesignChanged);
+    connect(m_session, &DesignSession::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_session, &DesignSession::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::poseChanged, this, &MainWindow::onPoseChanged);
 
     connect(m_variables, &VariablePanel::variableEdited, this, [this](int variable, double value) {
@@ -129,6 +152,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_oxglidePanel->mapPanel()->mapView(), &WorkspaceMapView::pointClicked, this, moveTo);
     connect(m_oxglidePanel, &OxGlidePanel::pointClicked, this, moveTo);
     connect(m_oxglidePanel, &OxGlidePanel::statusMessage, this, &MainWindow::showStatus);
+    connect(m_fourbarPanel, &FourBarPanel::statusMessage, this, &MainWindow::showStatus);
     connect(m_designPanel, &DesignPanel::parameterEdited, this,
             [this](const QString &name, double value, bool continuous) {
                 auto changed = m_document->setParameter(name, value, continuous);
@@ -140,6 +164,10 @@ MainWindow::MainWindow(QWidget *parent)
 
     onDesignChanged();
     restoreLayout();
+    // Every plot and map (all made above, none later): a right click offers Save picture…,
+    // named after the plot's title when saved.
+    for (QCustomPlot *plot : findChildren<QCustomPlot *>())
+        enablePictureExport(plot);
 }
 
 MainWindow::~MainWindow()
@@ -150,9 +178,11 @@ MainWindow::~MainWindow()
     disconnect(m_designPanel, nullptr, this, nullptr);
     disconnect(m_variables, nullptr, this, nullptr);
     disconnect(m_modeBar, nullptr, this, nullptr);
+    disconnect(m_fourbarPanel, nullptr, this, nullptr);
     disconnect(m_workspacePanel->mapView(), nullptr, this, nullptr);
     disconnect(m_view, nullptr, this, nullptr);
     disconnect(m_document, nullptr, this, nullptr);
+    disconnect(m_session, nullptr, this, nullptr); // the undo stack's end is no change of title
 }
 
 void MainWindow::createDocks()
@@ -176,6 +206,20 @@ void MainWindow::createDocks()
     valuesDock->setWidget(m_values);
     addDockWidget(Qt::LeftDockWidgetArea, valuesDock);
     splitDockWidget(designDock, valuesDock, Qt::Vertical);
+    // Mobility (issue 6): a tab behind the values, so it takes no room until asked for.
+    m_mobility = new MobilityPanel(this);
+    m_mobility->setMinimumWidth(330);
+    auto *mobilityDock = new QDockWidget(tr("Mobility"), this);
+    mobilityDock->setObjectName(QStringLiteral("mobilityDock"));
+    mobilityDock->setWidget(m_mobility);
+    addDockWidget(Qt::LeftDockWidgetArea, mobilityDock);
+    tabifyDockWidget(valuesDock, mobilityDock);
+    // The values in front; a tab raised before the window is shown does not stick. A restored
+    // layout keeps the tab it had.
+    QTimer::singleShot(0, this, [this, valuesDock] {
+        if (!m_restoredGeometry)
+            valuesDock->raise();
+    });
     // Small minimum sizes keep the window usable on a 1366×768 laptop; on a larger screen the
     // docks start wider (once the window has its size, unless a saved layout is restored).
     QTimer::singleShot(0, this, [this, designDock, valuesDock] {
@@ -191,8 +235,24 @@ void MainWindow::createActions()
     QMenu *file = menuBar()->addMenu(tr("&File"));
     QAction *open = file->addAction(tr("&Open Design…"), this, &MainWindow::openFile);
     open->setShortcut(QKeySequence::Open);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    updateRecentMenu();
+    connect(m_session, &DesignSession::recentFilesChanged, this, &MainWindow::updateRecentMenu);
+    QAction *save = file->addAction(tr("&Save Design"), this, &MainWindow::saveFile);
+    save->setShortcut(QKeySequence::Save);
+    save->setObjectName(QStringLiteral("saveAction"));
     QAction *saveAs = file->addAction(tr("Save Design &As…"), this, &MainWindow::saveFileAs);
     saveAs->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    file->addAction(tr("Export &Animation (GIF)…"), this, &MainWindow::exportAnimationDialog)
+        ->setObjectName(QStringLiteral("exportAnimationAction"));
+    file->addAction(tr("Export &Drawing (DXF)…"), this, &MainWindow::exportDrawing)
+        ->setObjectName(QStringLiteral("exportDxfAction"));
+    file->addAction(tr("Export &Parameter Sheet…"), this, &MainWindow::exportParameterSheet)
+        ->setObjectName(QStringLiteral("exportSheetAction"));
+    file->addAction(tr("Save 2D &View Picture…"), this, &MainWindow::saveViewPicture)
+        ->setObjectName(QStringLiteral("saveViewPictureAction"));
     file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -212,7 +272,7 @@ void MainWindow::createActions()
         if (!lastKind.isEmpty() && preset.kind != lastKind)
             presets->addSeparator();
         lastKind = preset.kind;
-        QAction *action = presets->addAction(preset.title, this, [this, id = preset.id] { openDesign(id); });
+        QAction *action = presets->addAction(preset.title, this, [this, id = preset.id] { openFromMenu(id); });
         action->setData(preset.id);
         action->setObjectName(QStringLiteral("preset_") + preset.id);
         if (auto design = designfile::load(preset.id))
@@ -237,6 +297,7 @@ void MainWindow::createActions()
     toolbar->setObjectName(QStringLiteral("mainToolBar"));
     toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     toolbar->addAction(open);
+    toolbar->addAction(save);
     toolbar->addSeparator();
     toolbar->addAction(undo);
     toolbar->addAction(redo);
@@ -248,7 +309,7 @@ void MainWindow::createActions()
 
 bool MainWindow::openDesign(const QString &presetOrPath)
 {
-    auto opened = m_document->open(presetOrPath);
+    auto opened = m_session->open(presetOrPath);
     if (!opened) {
         showStatus(failureText(opened.failure()), true);
         return false;
@@ -262,24 +323,29 @@ void MainWindow::onDesignChanged()
     m_statusIsError = false; // a design change that arrives is a success: the error is over
     const Design &design = m_document->design();
     const MechanismPtr &mechanism = design.mechanism;
-    setWindowTitle(tr("%1 — PKM Studio").arg(design.title.isEmpty() ? toQString(mechanism->kind()) : design.title));
+    updateTitle();
     m_designPanel->setMechanism(mechanism);
     m_designPanel->setNote(design.title, design.description);
     m_variables->setMechanism(mechanism);
     m_values->setMechanism(mechanism);
+    m_mobility->setMechanism(mechanism);
     if (const auto *joint = dynamic_cast<const PJoint *>(mechanism.get())) {
         m_pjointPlots->setDesign(joint->design());
         m_plots->setCurrentWidget(m_pjointPlots);
     } else if (dynamic_cast<const OxGlide *>(mechanism.get())) {
         m_oxglidePanel->setDesign(mechanism, design.title);
         m_plots->setCurrentWidget(m_oxglidePanel);
+    } else if (dynamic_cast<const FourBar *>(mechanism.get())) {
+        m_fourbarPanel->setDesign(mechanism);
+        m_plots->setCurrentWidget(m_fourbarPanel);
     } else if (mechanism->planarWorkspace()) {
         m_workspacePanel->setDesign(mechanism, design.title);
         m_plots->setCurrentWidget(m_workspacePanel);
     }
-    // A mechanism without plots of its own (the four-bar, for now) gives the linkage the room
-    // rather than showing another mechanism's plots.
-    const bool hasPlots = dynamic_cast<const PJoint *>(mechanism.get()) || mechanism->planarWorkspace();
+    // A mechanism without plots of its own gives the linkage the room rather than showing
+    // another mechanism's plots.
+    const bool hasPlots = dynamic_cast<const PJoint *>(mechanism.get()) || dynamic_cast<const FourBar *>(mechanism.get())
+        || mechanism->planarWorkspace();
     m_plots->setVisible(hasPlots);
     onPoseChanged();
     keepMechanismInView();
@@ -331,12 +397,15 @@ void MainWindow::onPoseChanged()
     const Pose &pose = m_document->pose();
     m_variables->setPose(pose);
     m_values->setPose(pose);
+    m_mobility->setPose(pose);
     m_view->setScene(mechanism->scene(pose));
     update3d(false);
     if (dynamic_cast<const PJoint *>(mechanism.get()))
         m_pjointPlots->setTheta(pose.outputs[0]);
     else if (dynamic_cast<const OxGlide *>(mechanism.get()))
         m_oxglidePanel->setPose(pose);
+    else if (dynamic_cast<const FourBar *>(mechanism.get()))
+        m_fourbarPanel->setPose(pose);
     else if (mechanism->planarWorkspace())
         m_workspacePanel->setPose(pose);
 
@@ -409,27 +478,137 @@ void MainWindow::showStatus(const QString &message, bool error)
 
 void MainWindow::openFile()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Design"), QString(),
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Design"), QFileInfo(m_session->filePath()).path(),
                                                       tr("PKM Studio designs (*.pkm.json);;All files (*)"));
     if (!path.isEmpty())
         openDesign(path);
 }
 
-void MainWindow::saveFileAs()
+void MainWindow::openFromMenu(const QString &presetOrPath)
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Design As"), QString(),
+    if (maybeSave())
+        openDesign(presetOrPath);
+}
+
+bool MainWindow::saveFile()
+{
+    if (m_session->filePath().isEmpty())
+        return saveFileAs();
+    auto saved = m_session->save();
+    if (!saved) {
+        QMessageBox::warning(this, tr("Save Design"), failureText(saved.failure()));
+        return false;
+    }
+    showStatus(tr("Saved %1").arg(m_session->filePath()));
+    return true;
+}
+
+bool MainWindow::saveFileAs()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Design As"), m_session->filePath(),
                                                 tr("PKM Studio designs (*.pkm.json)"));
     if (path.isEmpty())
-        return;
+        return false;
     if (!path.endsWith(QLatin1String(".json")))
         path += QStringLiteral(".pkm.json");
-    Design design = m_document->design();
-    design.id.clear(); // a saved copy is the user's design, not the preset
-    auto saved = designfile::save(design, path);
-    if (!saved)
+    auto saved = m_session->saveAs(path);
+    if (!saved) {
         QMessageBox::warning(this, tr("Save Design"), failureText(saved.failure()));
-    else
-        showStatus(tr("Saved %1").arg(path));
+        return false;
+    }
+    showStatus(tr("Saved %1").arg(path));
+    return true;
+}
+
+void MainWindow::exportAnimationDialog()
+{
+    AnimationDialog dialog(*m_document->mechanism(), 0, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const QString base = m_session->filePath().isEmpty() ? QFileInfo(m_document->design().id).fileName()
+                                                         : QFileInfo(m_session->filePath()).completeBaseName();
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Animation"),
+                                                base.isEmpty() ? QString() : base + QStringLiteral(".gif"),
+                                                tr("Animated GIF (*.gif)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QLatin1String(".gif"), Qt::CaseInsensitive))
+        path += QStringLiteral(".gif");
+    exportAnimationTo(path, dialog.settings());
+}
+
+void MainWindow::exportAnimationTo(const QString &path, AnimationSettings settings)
+{
+    settings.name = m_session->displayName();
+    exportAnimation(this, m_document->mechanism(), m_document->pose(), settings, path,
+                    [this](const QString &message, bool error) { showStatus(message, error); });
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_session->isModified())
+        return true;
+    const auto answer = m_question(tr("Unsaved Changes"),
+                                   tr("The design “%1” has changes that are not saved. Save them?")
+                                       .arg(m_session->displayName()),
+                                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveFile();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::offerRecovery()
+{
+    for (const DesignSession::Recovery &recovery : DesignSession::pendingRecoveries()) {
+        const QString name = recovery.originalPath.isEmpty() ? recovery.title : recovery.originalPath;
+        const auto answer =
+            m_question(tr("Recover Design"),
+                       tr("PKM Studio closed unexpectedly while “%1” had unsaved changes (autosaved %2). "
+                          "Recover them?")
+                           .arg(name, QLocale().toString(recovery.saved, QLocale::ShortFormat)),
+                       QMessageBox::Yes | QMessageBox::No);
+        if (answer != QMessageBox::Yes) {
+            DesignSession::discardRecovery(recovery);
+            continue;
+        }
+        auto recovered = m_session->recover(recovery);
+        if (!recovered) {
+            showStatus(failureText(recovered.failure()), true);
+            continue;
+        }
+        m_view->fitToView();
+        showStatus(tr("Recovered “%1”: save it to keep the changes.").arg(name));
+        return; // one document at a time; older autosaves stay for the next start
+    }
+}
+
+void MainWindow::updateTitle()
+{
+    // "[*]" is where Qt shows the unsaved-changes mark.
+    setWindowTitle(tr("%1[*] — PKM Studio").arg(m_session->displayName()));
+    setWindowModified(m_session->isModified());
+}
+
+void MainWindow::updateRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = m_session->recentFiles();
+    for (const QString &path : files) {
+        QAction *action = m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
+            if (!QFileInfo::exists(path)) {
+                showStatus(tr("%1 no longer exists; removed from the recent files.").arg(path), true);
+                m_session->removeRecentFile(path);
+                return;
+            }
+            openFromMenu(path);
+        });
+        action->setToolTip(path);
+        action->setData(path);
+    }
+    m_recentMenu->setToolTipsVisible(true);
+    m_recentMenu->setEnabled(!files.isEmpty());
 }
 
 void MainWindow::about()
@@ -453,12 +632,90 @@ void MainWindow::restoreLayout()
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
     QSettings settings;
     settings.setValue(QStringLiteral("layout/version"), settingsVersion);
     settings.setValue(QStringLiteral("layout/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("layout/state"), saveState(settingsVersion));
     settings.setValue(QStringLiteral("layout/splitter"), m_splitter->saveState());
     event->accept();
+}
+
+void MainWindow::exportDrawing()
+{
+    // The linkage drawing of the current design and pose, the same file as `pkm dxf`.
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Drawing (DXF)"), QString(),
+                                                tr("DXF drawings (*.dxf);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".dxf");
+    const Design &design = m_document->design();
+    const QString title = design.title.isEmpty() ? toQString(m_document->mechanism()->kind()) : design.title;
+    dxf::DrawingOptions options;
+    options.caption = (title + QStringLiteral(" — ") + m_poseLabel->text().simplified()).toStdString();
+    const dxf::Drawing drawing = dxf::sceneDrawing(m_document->mechanism()->scene(m_document->pose()), options);
+    QSaveFile file(path); // the file is replaced only once it is complete
+    const auto size = static_cast<qint64>(drawing.dxf.size());
+    if (!file.open(QIODevice::WriteOnly) || file.write(drawing.dxf.data(), size) != size || !file.commit()) {
+        const QString message = tr("Cannot write the drawing to %1: %2.").arg(QDir::toNativeSeparators(path), file.errorString());
+        showStatus(message, true);
+        QMessageBox::warning(this, tr("Export Drawing (DXF)"), message);
+        return;
+    }
+    showStatus(tr("Wrote the drawing to %1 (DXF R12, mm).").arg(QDir::toNativeSeparators(path)));
+}
+
+void MainWindow::exportParameterSheet()
+{
+    // The parameter sheet of the current design and pose, the same file as `pkm sheet`.
+    QString filter;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Parameter Sheet"), QString(),
+        tr("PDF parameter sheets (*.pdf);;JSON (*.json);;CSV (*.csv)"), &filter);
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += filter.contains(QLatin1String("*.json")) ? QStringLiteral(".json")
+            : filter.contains(QLatin1String("*.csv"))    ? QStringLiteral(".csv")
+                                                         : QStringLiteral(".pdf");
+    const Design &design = m_document->design();
+    sheet::Source source;
+    source.design = !design.id.isEmpty() ? design.id.toStdString()
+        : !m_session->filePath().isEmpty() ? QFileInfo(m_session->filePath()).fileName().toStdString()
+                                           : design.title.toStdString();
+    source.title = design.title;
+    source.description = design.description;
+    // A planar workspace and its maps take a second or two: off the GUI thread.
+    runInBackground(
+        this, tr("Export Parameter Sheet"), tr("Computing the parameter sheet…"),
+        [mechanism = m_document->mechanism(), pose = m_document->pose(), source,
+         path](const std::atomic<bool> &) -> TaskFailure {
+            const sheet::Sheet built = sheet::build(*mechanism, pose, source);
+            if (const std::optional<std::string> failure = sheet::save(built, path.toStdString()))
+                return QString::fromStdString(*failure);
+            return std::nullopt;
+        },
+        [this, path](const TaskFailure &failure, bool) {
+            if (failure) {
+                showStatus(*failure, true);
+                QMessageBox::warning(this, tr("Export Parameter Sheet"), *failure);
+                return;
+            }
+            showStatus(tr("Wrote the parameter sheet to %1.").arg(QDir::toNativeSeparators(path)));
+        });
+}
+
+void MainWindow::saveViewPicture()
+{
+    // The 2D picture of the current design and pose, the same drawing as `pkm render`.
+    const QString path = viewpicture::savePictureAs(this, *m_document->mechanism(), m_document->pose(),
+        m_session->displayName(), viewpicture::suggestedName(m_session->filePath(), m_document->design().id),
+        m_view->size(), m_view->sceneStyle());
+    if (!path.isEmpty())
+        showStatus(tr("Wrote the 2D view to %1.").arg(QDir::toNativeSeparators(path)));
 }
 
 } // namespace pkm

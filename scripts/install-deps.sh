@@ -7,10 +7,12 @@ packages=(
     g++ cmake ninja-build ccache pkg-config
     qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-svg-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
-    libeigen3-dev libqcustomplot-dev libgl-dev libqt6opengl6-dev libgl1-mesa-dri
+    libeigen3-dev libqcustomplot-dev libgl-dev libqt6opengl6-dev libgl1-mesa-dri libgif-dev
     xvfb xauth
     fonts-dejavu-core locales
     python3-numpy
+    python3-ezdxf
+    poppler-utils
 )
 
 missing=()

@@ -2,8 +2,12 @@
 // with a message naming the file.
 #include "designfile.h"
 
+#include <cmath>
+
 #include <QDir>
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -63,6 +67,75 @@ private slots:
         QCOMPARE(loaded->mechanism->parameters(), design->mechanism->parameters());
         QVERIFY(std::abs(loaded->pose.outputs[0] - design->pose.outputs[0]) < 1e-15);
         QCOMPARE(designfile::serialize(*loaded), designfile::serialize(*design));
+    }
+
+    void versionTwoSavesEveryVariable()
+    {
+        // The O-X glide's z is an input the outputs do not determine: version 1 lost it.
+        auto design = designfile::load(QStringLiteral("oxglide-prototype"));
+        QVERIFY(design.ok());
+        auto moved = designfile::solveDisplayVariables(*design->mechanism, design->pose,
+                                                       {{QStringLiteral("x_AB"), 20.0}, {QStringLiteral("x_CD"), 100.0},
+                                                        {QStringLiteral("z"), 123.0}});
+        QVERIFY2(moved.ok(), moved ? "" : moved.failure().message.c_str());
+        design->pose = *moved;
+        const QJsonObject root = QJsonDocument::fromJson(designfile::serialize(*design)).object();
+        QCOMPARE(root.value(QStringLiteral("version")).toInt(), designfile::formatVersion);
+        QCOMPARE(designfile::formatVersion, 2);
+        const QJsonObject pose = root.value(QStringLiteral("pose")).toObject();
+        for (const char *name : {"x_AB", "x_CD", "z", "x", "y"})
+            QVERIFY2(pose.contains(QLatin1String(name)), name);
+        auto loaded = designfile::parse(designfile::serialize(*design), QStringLiteral("memory"));
+        QVERIFY2(loaded.ok(), loaded ? "" : loaded.failure().message.c_str());
+        QCOMPARE(loaded->pose.inputs[2], 123.0);
+        QVERIFY((loaded->pose.inputs - design->pose.inputs).norm() < 1e-12);
+        QVERIFY((loaded->pose.outputs - design->pose.outputs).norm() < 1e-12);
+        QCOMPARE(designfile::serialize(*loaded), designfile::serialize(*design));
+    }
+
+    void crankRockerKeepsItsCrankAngle()
+    {
+        // A crank-rocker passes each rocker angle twice per turn: the inputs say which.
+        auto design = designfile::load(QStringLiteral("fourbar-example"));
+        QVERIFY(design.ok());
+        for (double alpha : {60.0, 300.0}) {
+            auto posed = designfile::solveDisplayVariables(*design->mechanism, design->pose,
+                                                           {{QStringLiteral("alpha"), alpha}});
+            QVERIFY(posed.ok());
+            design->pose = *posed;
+            auto loaded = designfile::parse(designfile::serialize(*design), QStringLiteral("memory"));
+            QVERIFY2(loaded.ok(), loaded ? "" : loaded.failure().message.c_str());
+            QVERIFY(std::abs(loaded->pose.inputs[0] - posed->inputs[0]) < 1e-12);
+        }
+    }
+
+    void versionOneFilesAreUpgraded()
+    {
+        // As PKM Studio 0.1 wrote them: the outputs only.
+        const QByteArray v1 = R"({"format": "pkm-studio-design", "version": 1, "title": "old",
+            "mechanism": "oxglide", "parameters": {"l": 80, "s": 20, "L": 130, "a": 15, "z_min": 0,
+            "z_max": 150, "mode": 1}, "pose": {"x": 60, "y": 65}})";
+        auto loaded = designfile::parse(v1, QStringLiteral("old.pkm.json"));
+        QVERIFY2(loaded.ok(), loaded ? "" : loaded.failure().message.c_str());
+        QCOMPARE(loaded->pose.outputs[0], 60.0);
+        QCOMPARE(loaded->pose.outputs[1], 65.0);
+        const QJsonObject saved = QJsonDocument::fromJson(designfile::serialize(*loaded)).object();
+        QCOMPARE(saved.value(QStringLiteral("version")).toInt(), 2);
+        QCOMPARE(saved.value(QStringLiteral("pose")).toObject().size(), 5);
+    }
+
+    void inconsistentPoseIsRefused()
+    {
+        auto design = designfile::load(QStringLiteral("pjoint-prototype"));
+        QJsonObject root = QJsonDocument::fromJson(designfile::serialize(*design)).object();
+        QJsonObject pose = root.value(QStringLiteral("pose")).toObject();
+        pose.insert(QStringLiteral("theta"), pose.value(QStringLiteral("theta")).toDouble() + 5.0);
+        root.insert(QStringLiteral("pose"), pose);
+        auto loaded = designfile::parse(QJsonDocument(root).toJson(), QStringLiteral("edited.pkm.json"));
+        QVERIFY(!loaded.ok());
+        const QString message = QString::fromStdString(loaded.failure().message);
+        QVERIFY2(message.contains(QStringLiteral("edited.pkm.json")) && message.contains(QStringLiteral("theta")),
+                 qPrintable(message));
     }
 
     void badFiles_data()
@@ -155,6 +228,7 @@ private slots:
         QVERIFY(reader.open(QIODevice::ReadOnly));
         auto changed = designfile::setDisplayParameter(design->mechanism, QStringLiteral("a"), 200);
         design->mechanism = *changed;
+        design->pose = design->mechanism->homePose();
         QVERIFY(designfile::save(*design, path).ok());
         QVERIFY(::stat(QFile::encodeName(path).constData(), &replaced) == 0);
         QVERIFY(replaced.st_ino != before_.st_ino);

@@ -254,6 +254,7 @@ public:
     {
         return {Eigen::MatrixXd::Identity(2, 2), Eigen::MatrixXd::Identity(2, 2), Eigen::MatrixXd::Identity(2, 2)};
     }
+    KinematicChain kinematicChain(const Pose &) const override { return {}; } // none: the report says so
     Scene scene(const Pose &) const override { return {}; }
     Result<Pose> dragHandle(const Pose &current, int, const Eigen::Vector2d &) const override { return current; }
 };
@@ -302,6 +303,10 @@ private slots:
     void fourbarEvalJsonHasContractKeys();
     void fourbarAlphaBeyondLimit();
     void fourbarSweepFullTurn();
+
+    void evalMobility_data();
+    void evalMobility();
+    void evalMobilityText();
 
     void workspaceJson();
     void workspaceModes();
@@ -393,9 +398,9 @@ void TestCli::evalJsonTopLevel()
     int exitCode = -1;
     const QJsonObject root = evalJson({}, &exitCode);
     QCOMPARE(exitCode, 0);
-    QCOMPARE(root.keys().size(), 6);
+    QCOMPARE(root.keys().size(), 7);
     QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("pjoint"));
-    for (const char *key : {"parameters", "pose", "jacobian", "singularity", "derived"})
+    for (const char *key : {"parameters", "pose", "jacobian", "singularity", "derived", "mobility"})
         QVERIFY2(root.value(QLatin1String(key)).isObject(), key);
     const QJsonObject singularity = root.value(QStringLiteral("singularity")).toObject();
     QCOMPARE(singularity.value(QStringLiteral("type")).toString(), QStringLiteral("none"));
@@ -1668,7 +1673,7 @@ void TestCli::renderErrors_data()
     QTest::newRow("--size fractional") << args({"render", "moma-3a", "--size", "800x600.5", "-o", "OUT.png"}) << 2
                                        << QStringLiteral("--size 800x600.5");
     QTest::newRow("unknown extension") << args({"render", "moma-3a", "-o", "OUT.bmp"}) << 2 << QStringLiteral(".bmp");
-    QTest::newRow("no extension") << args({"render", "moma-3a", "-o", "OUT"}) << 2 << QStringLiteral(".png, .svg or .pdf");
+    QTest::newRow("no extension") << args({"render", "moma-3a", "-o", "OUT"}) << 2 << QStringLiteral(".png, .svg, .pdf or .gif");
     QTest::newRow("missing -o") << args({"render", "moma-3a"}) << 2 << QStringLiteral("-o FILE");
     QTest::newRow("missing -o in 3d") << args({"render", "moma-3a", "--view", "3d"}) << 2 << QStringLiteral("-o FILE");
     QTest::newRow("bad --camera") << args({"render", "moma-3a", "--view", "3d", "--camera", "diagonal", "-o", "OUT.png"})
@@ -2146,6 +2151,11 @@ void TestCli::notFiniteIsNullAndMatricesNest()
     const QJsonObject singularity = root.value(QStringLiteral("singularity")).toObject();
     QCOMPARE(singularity.value(QStringLiteral("type")).toString(), QStringLiteral("direct"));
     QCOMPARE(singularity.value(QStringLiteral("undefined")).toArray(), QJsonArray{QStringLiteral("ratio")});
+    // no kinematic chain: the mobility's numbers are null and the verdict says why
+    const QJsonObject mobility = root.value(QStringLiteral("mobility")).toObject();
+    QVERIFY(mobility.value(QStringLiteral("numerical")).isNull());
+    QVERIFY(mobility.value(QStringLiteral("formula_fails")).isNull());
+    QVERIFY(mobility.value(QStringLiteral("verdict")).toString().contains(QStringLiteral("no kinematic chain")));
 }
 
 // -- fourbar --------------------------------------------------------------------------------
@@ -2235,6 +2245,76 @@ void TestCli::fourbarSweepFullTurn()
     }
     // a full turn brings the rocker back
     QCOMPARE(lines[1].split(',')[delta].toDouble(), lines.back().split(',')[delta].toDouble());
+}
+
+// -- eval: mobility ---------------------------------------------------------------------------
+
+void TestCli::evalMobility_data()
+{
+    QTest::addColumn<QString>("preset");
+    QTest::addColumn<int>("chebyshev"); // −100: null (a spatial chain)
+    QTest::addColumn<int>("somovMalyshev");
+    QTest::addColumn<int>("numerical");
+    QTest::addColumn<int>("actuators");
+    QTest::addColumn<bool>("fullyActuated");
+    QTest::newRow("fourbar-example") << QStringLiteral("fourbar-example") << 1 << -2 << 1 << 1 << true;
+    QTest::newRow("pjoint-prototype") << QStringLiteral("pjoint-prototype") << 1 << -5 << 1 << 1 << true;
+    QTest::newRow("moma-3a") << QStringLiteral("moma-3a") << 2 << -1 << 2 << 2 << true;
+    QTest::newRow("moma-3d") << QStringLiteral("moma-3d") << 2 << -1 << 2 << 2 << true;
+    // spatial, as built: the platform swings in its plane besides z, x_AB, x_CD (mobility.h)
+    QTest::newRow("oxglide-prototype") << QStringLiteral("oxglide-prototype") << -100 << 1 << 4 << 3 << false;
+}
+
+/// eval --json has "mobility": the formulas, the rank, and the verdict; the other keys stay.
+void TestCli::evalMobility()
+{
+    QFETCH(QString, preset);
+    QFETCH(int, chebyshev);
+    QFETCH(int, somovMalyshev);
+    QFETCH(int, numerical);
+    QFETCH(int, actuators);
+    QFETCH(bool, fullyActuated);
+    int exitCode = -1;
+    const QJsonObject root = runJson({QStringLiteral("eval"), preset}, &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonObject m = root.value(QStringLiteral("mobility")).toObject();
+    if (chebyshev == -100)
+        QVERIFY(m.value(QStringLiteral("chebyshev")).isNull());
+    else
+        QCOMPARE(m.value(QStringLiteral("chebyshev")).toInt(-100), chebyshev);
+    QCOMPARE(m.value(QStringLiteral("somov_malyshev")).toInt(-100), somovMalyshev);
+    QCOMPARE(m.value(QStringLiteral("numerical")).toInt(-100), numerical);
+    QCOMPARE(m.value(QStringLiteral("finite")).toInt(-100), numerical);
+    QCOMPARE(m.value(QStringLiteral("singular")).toBool(true), false);
+    QCOMPARE(m.value(QStringLiteral("actuators")).toInt(-100), actuators);
+    QCOMPARE(m.value(QStringLiteral("fully_actuated")).toBool(!fullyActuated), fullyActuated);
+    // Somov–Malyshev fails for all of them: planar loops, or the O-X glide's redundant ones
+    QCOMPARE(m.value(QStringLiteral("somov_malyshev_fails")).toBool(false), true);
+    QCOMPARE(m.value(QStringLiteral("formula_fails")).toBool(false), true);
+    QCOMPARE(m.value(QStringLiteral("chebyshev_fails")).toBool(true), false);
+    QCOMPARE(m.value(QStringLiteral("redundant_constraints")).toInt(-100), numerical - somovMalyshev);
+    const QJsonObject pairs = m.value(QStringLiteral("pairs")).toObject();
+    QCOMPARE(pairs.keys().size(), 5);
+    int counted = 0;
+    for (const QString &key : pairs.keys())
+        counted += pairs.value(key).toInt();
+    QVERIFY(counted >= 4);
+    QVERIFY(m.value(QStringLiteral("moving_links")).toInt() >= 3);
+    QVERIFY(m.value(QStringLiteral("loops")).toInt() >= 1);
+    QVERIFY(!m.value(QStringLiteral("chain")).toString().isEmpty());
+    QVERIFY(m.value(QStringLiteral("verdict")).toString().endsWith(QLatin1Char('.')));
+}
+
+void TestCli::evalMobilityText()
+{
+    const Run run = runPkm(args({"eval", "fourbar-example"}));
+    QCOMPARE(run.exitCode, 0);
+    const QString out = QString::fromUtf8(run.out);
+    const QStringList lines = out.split(QLatin1Char('\n'));
+    QVERIFY(lines.contains(QStringLiteral("Mobility")));
+    QVERIFY(out.contains(QStringLiteral("Chebyshev: W = 3n − 2P₅ − P₄")));
+    QVERIFY(out.contains(QStringLiteral("Somov–Malyshev's W = −2 is wrong")));
+    QVERIFY(out.contains(QStringLiteral("pairs of class 5 (1 freedom: revolute, prismatic, screw)")));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -1,0 +1,47 @@
+#pragma once
+/// Animations of a sweep: one pose variable moved evenly from one value to another, each pose
+/// drawn as the 2D picture `pkm render` makes, for an animated GIF (gifwriter.h). Shared by
+/// `pkm render … -o FILE.gif` and the GUI's File → Export Animation.
+
+#include "mechanism.h"
+
+#include <QImage>
+#include <QList>
+#include <QSize>
+#include <QString>
+
+#include <atomic>
+#include <vector>
+
+namespace pkm {
+
+struct AnimationSettings {
+    int variable = 0;    ///< index into variableInfo()
+    double from = 0.0;   ///< core units
+    double to = 0.0;
+    int frames = 60;     ///< poses from `from` to `to`, both included (≥ 2)
+    bool bounce = true;  ///< play back to the start, so that a loop has no jump
+    QSize size {960, 720};
+    int frameMilliseconds = 50;
+    bool caption = true; ///< the pose under each frame
+    QString name;        ///< the design's name in the caption
+};
+
+inline constexpr int minAnimationFrames = 2;
+inline constexpr int maxAnimationFrames = 1000;
+
+/// The poses of the sweep, each solved from the one before (so the mechanism stays in its
+/// mode), starting from `start`. The failure names the first value without a pose.
+Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose &start,
+                                         const AnimationSettings &settings);
+
+/// The frames of the poses (bounced if asked); thread-safe (QImage and QPainter only). Stops
+/// early, returning no frames, once `*cancel` becomes true.
+QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose> &poses,
+                              const AnimationSettings &settings, const std::atomic<bool> *cancel = nullptr);
+
+/// Poses, frames and GIF in one: the GIF's bytes, or the failure.
+Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start, const AnimationSettings &settings,
+                                   const std::atomic<bool> *cancel = nullptr);
+
+} // namespace pkm

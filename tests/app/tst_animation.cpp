@@ -1,0 +1,207 @@
+// Animated GIFs of a sweep: the poses follow the swept variable, the frames are drawn, the GIF
+// decodes (with an independent reader, Qt's) to the right number of frames, size and timing,
+// and the GUI writes one without blocking.
+#include "animation.h"
+#include "cli.h"
+#include "document.h"
+#include "gifwriter.h"
+#include "mainwindow.h"
+#include "registry.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QFile>
+#include <QImageReader>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cstdio>
+
+using namespace pkm;
+
+namespace {
+struct Decoded {
+    int frames = 0;
+    QSize size;
+    int loops = 0;
+    int delay = 0;
+    QList<QImage> images;
+};
+
+Decoded decode(const QByteArray &gif)
+{
+    QBuffer buffer;
+    buffer.setData(gif);
+    buffer.open(QIODevice::ReadOnly);
+    QImageReader reader(&buffer, "gif");
+    Decoded decoded;
+    decoded.size = reader.size();
+    decoded.loops = reader.loopCount();
+    QImage image;
+    while (reader.read(&image)) {
+        decoded.delay = reader.nextImageDelay();
+        decoded.images.append(image);
+        ++decoded.frames;
+    }
+    return decoded;
+}
+
+MechanismPtr prototype()
+{
+    return createMechanism("pjoint", {}).value();
+}
+} // namespace
+
+class TestAnimation : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void encodesFramesThatDecode()
+    {
+        QList<QImage> frames;
+        for (int i = 0; i < 5; ++i) {
+            QImage frame(64, 48, QImage::Format_RGB32);
+            frame.fill(QColor::fromHsv(i * 60, 200, 220));
+            frames.append(frame);
+        }
+        GifOptions options;
+        options.frameMilliseconds = 120;
+        QString error;
+        const QByteArray gif = encodeGif(frames, options, &error);
+        QVERIFY2(!gif.isEmpty(), qPrintable(error));
+        QVERIFY(gif.startsWith("GIF89a"));
+        const Decoded decoded = decode(gif);
+        QCOMPARE(decoded.frames, 5);
+        QCOMPARE(decoded.size, QSize(64, 48));
+        QCOMPARE(decoded.delay, 120);
+        QCOMPARE(decoded.loops, -1); // forever
+        // Flat colours survive the palette (giflib keeps 5 bits per primary).
+        for (int i = 0; i < 5; ++i) {
+            const QColor expected = frames[i].pixelColor(10, 10);
+            const QColor got = decoded.images[i].pixelColor(10, 10);
+            QVERIFY2(std::abs(expected.red() - got.red()) <= 8 && std::abs(expected.green() - got.green()) <= 8
+                         && std::abs(expected.blue() - got.blue()) <= 8,
+                     qPrintable(QStringLiteral("frame %1: %2 → %3").arg(i).arg(expected.name(), got.name())));
+        }
+    }
+
+    void refusesBadFrames()
+    {
+        QString error;
+        QVERIFY(encodeGif({}, {}, &error).isEmpty());
+        QVERIFY(!error.isEmpty());
+        QImage a(10, 10, QImage::Format_RGB32), b(12, 10, QImage::Format_RGB32);
+        a.fill(Qt::white);
+        b.fill(Qt::white);
+        QVERIFY(encodeGif({a, b}, {}, &error).isEmpty());
+        QVERIFY(error.contains(QStringLiteral("same size")));
+    }
+
+    void posesFollowTheVariable()
+    {
+        const MechanismPtr mechanism = prototype();
+        AnimationSettings settings;
+        settings.variable = mechanism->variableIndex("theta");
+        settings.from = -0.5;
+        settings.to = 0.5;
+        settings.frames = 11;
+        auto poses = animationPoses(*mechanism, mechanism->homePose(), settings);
+        QVERIFY(poses.ok());
+        QCOMPARE(int(poses->size()), 11);
+        for (int i = 0; i < 11; ++i)
+            QVERIFY(std::abs(mechanism->variableValue((*poses)[i], settings.variable) - (-0.5 + 0.1 * i)) < 1e-12);
+        // Bounced: forth and back without repeating the ends.
+        settings.size = QSize(160, 120);
+        const QList<QImage> frames = animationFrames(*mechanism, *poses, settings);
+        QCOMPARE(frames.size(), 11 + 9);
+        QCOMPARE(frames.first().size(), QSize(160, 120));
+        QVERIFY(frames[1] != frames[2]); // the linkage moved
+        QCOMPARE(frames[9], frames[11]); // the way back passes the same poses
+    }
+
+    void unreachableFrameIsNamed()
+    {
+        const MechanismPtr mechanism = prototype();
+        AnimationSettings settings;
+        settings.variable = mechanism->variableIndex("theta");
+        settings.from = 0.0;
+        settings.to = 2.0; // past θ_max = 60°
+        settings.frames = 5;
+        auto poses = animationPoses(*mechanism, mechanism->homePose(), settings);
+        QVERIFY(!poses.ok());
+        const QString message = QString::fromStdString(poses.failure().message);
+        QVERIFY2(message.startsWith(QStringLiteral("Frame ")) && message.contains(QStringLiteral("theta")),
+                 qPrintable(message));
+        settings.frames = 1;
+        QVERIFY(!animationPoses(*mechanism, mechanism->homePose(), settings).ok());
+    }
+
+    void commandLineWritesAGif()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("crank.gif"));
+        const auto run = [](const QStringList &arguments) {
+            std::FILE *out = std::tmpfile();
+            std::FILE *err = std::tmpfile();
+            const int status = runCli(arguments, out, err);
+            std::fclose(out);
+            std::fclose(err);
+            return status;
+        };
+        QCOMPARE(run({QStringLiteral("render"), QStringLiteral("fourbar-example"), QStringLiteral("--var"),
+                      QStringLiteral("alpha"), QStringLiteral("--from"), QStringLiteral("0"), QStringLiteral("--to"),
+                      QStringLiteral("90"), QStringLiteral("--steps"), QStringLiteral("5"), QStringLiteral("--size"),
+                      QStringLiteral("200x150"), QStringLiteral("-o"), path}),
+                 0);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const Decoded decoded = decode(file.readAll());
+        QCOMPARE(decoded.frames, 5 + 3);
+        QCOMPARE(decoded.size, QSize(200, 150));
+
+        // --var without a GIF, a pose past the limit, a parameter: refused, nothing written.
+        const QString other = dir.filePath(QStringLiteral("other.gif"));
+        QCOMPARE(run({QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("--var"),
+                      QStringLiteral("theta"), QStringLiteral("-o"), dir.filePath(QStringLiteral("x.png"))}),
+                 2);
+        QCOMPARE(run({QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("--var"),
+                      QStringLiteral("theta"), QStringLiteral("--from"), QStringLiteral("0"), QStringLiteral("--to"),
+                      QStringLiteral("90"), QStringLiteral("--steps"), QStringLiteral("4"), QStringLiteral("-o"), other}),
+                 3);
+        QCOMPARE(run({QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("--var"),
+                      QStringLiteral("a"), QStringLiteral("--from"), QStringLiteral("100"), QStringLiteral("--to"),
+                      QStringLiteral("200"), QStringLiteral("--steps"), QStringLiteral("4"), QStringLiteral("-o"), other}),
+                 2);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{QStringLiteral("crank.gif")});
+    }
+
+    void guiExportWritesAGif()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("sweep.gif"));
+        MainWindow window;
+        QVERIFY(window.openDesign(QStringLiteral("fourbar-example")));
+        AnimationSettings settings;
+        settings.variable = 0; // α
+        settings.from = 0.0;
+        settings.to = 6.283185307179586;
+        settings.frames = 24;
+        settings.size = QSize(320, 240);
+        window.exportAnimationTo(path, settings);
+        QVERIFY(!QFile::exists(path)); // drawn off the GUI thread: not there yet
+        QTRY_VERIFY2_WITH_TIMEOUT(window.lastStatus().startsWith(QStringLiteral("Wrote")), qPrintable(window.lastStatus()),
+                                  60000);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const Decoded decoded = decode(file.readAll());
+        QCOMPARE(decoded.frames, 24 + 22);
+        QCOMPARE(decoded.size, QSize(320, 240));
+    }
+};
+
+QTEST_MAIN(TestAnimation)
+#include "tst_animation.moc"
