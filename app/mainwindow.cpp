@@ -50,6 +50,8 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <utility>
+
 namespace pkm {
 
 namespace {
@@ -258,10 +260,23 @@ void MainWindow::createActions()
     quit->setShortcut(QKeySequence::Quit);
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    // The menu names the step ("Undo Change a"); the toolbar keeps a short, steady label and
+    // names the step in its tooltip, so a long design title does not widen it.
     QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
     QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcut(QKeySequence::Redo);
+    QAction *undoButton = new QAction(tr("Undo"), this);
+    QAction *redoButton = new QAction(tr("Redo"), this);
+    for (auto [button, full] : {std::pair{undoButton, undo}, std::pair{redoButton, redo}}) {
+        connect(button, &QAction::triggered, full, &QAction::trigger);
+        const auto follow = [button, full] {
+            button->setEnabled(full->isEnabled());
+            button->setToolTip(full->text().remove(QLatin1Char('&')));
+        };
+        connect(full, &QAction::changed, button, follow);
+        follow();
+    }
     edit->addAction(undo);
     edit->addAction(redo);
 
@@ -299,8 +314,8 @@ void MainWindow::createActions()
     toolbar->addAction(open);
     toolbar->addAction(save);
     toolbar->addSeparator();
-    toolbar->addAction(undo);
-    toolbar->addAction(redo);
+    toolbar->addAction(undoButton);
+    toolbar->addAction(redoButton);
     toolbar->addSeparator();
     toolbar->addAction(fit);
     toolbar->addAction(zoomIn);

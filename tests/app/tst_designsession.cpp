@@ -16,6 +16,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolBar>
 
 #include <memory>
 
@@ -74,6 +75,16 @@ private slots:
             QVERIFY(window.document()->setParameter(QStringLiteral("a"), 190.0).ok());
             QVERIFY(window.session()->isModified());
             QVERIFY(window.isWindowModified());
+            // The toolbar keeps a short label and names the step in its tooltip.
+            auto *toolbar = window.findChild<QToolBar *>(QStringLiteral("mainToolBar"));
+            QVERIFY(toolbar);
+            QAction *undoButton = nullptr;
+            for (QAction *action : toolbar->actions()) {
+                if (action->text() == QStringLiteral("Undo"))
+                    undoButton = action;
+            }
+            QVERIFY(undoButton && undoButton->isEnabled());
+            QVERIFY2(undoButton->toolTip().startsWith(QStringLiteral("Undo ")), qPrintable(undoButton->toolTip()));
             QVERIFY(window.session()->saveAs(path).ok());
             QVERIFY(!window.session()->isModified());
             QCOMPARE(window.session()->filePath(), QFileInfo(path).absoluteFilePath());
