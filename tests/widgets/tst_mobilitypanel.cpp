@@ -13,7 +13,6 @@
 
 #include <QComboBox>
 #include <QDir>
-#include <QElapsedTimer>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
@@ -354,24 +353,16 @@ private slots:
         }
         QVERIFY(poses.size() > 20);
 
-        // one analysis, timed, for the comparison below
-        QElapsedTimer one;
-        one.start();
-        const MobilityReport alone = analyseMobility(m->kinematicChain(poses.front()));
-        const qint64 analysisNs = one.nsecsElapsed();
-        QCOMPARE(alone.mobility, 4);
+        QCOMPARE(analyseMobility(m->kinematicChain(poses.front())).mobility, 4);
 
         QSignalSpy shown(&panel, &MobilityPanel::analysisShown);
         panel.setMechanism(m);
-        QElapsedTimer burst;
-        burst.start();
         for (const Pose &p : poses)
             panel.setPose(p);
-        const qint64 burstNs = burst.nsecsElapsed();
+        // Nothing was analysed on this thread: every result comes back through the event loop,
+        // which has not run yet. (How fast is a benchmark's business, not a test's.)
         QVERIFY(panel.isBusy());
-        // the whole burst took less than analysing a few of its poses would
-        QVERIFY2(burstNs < 4 * analysisNs,
-            qPrintable(QStringLiteral("burst %1 ms, one analysis %2 ms").arg(burstNs / 1e6).arg(analysisNs / 1e6)));
+        QCOMPARE(shown.count(), 0);
         QTRY_VERIFY(!panel.isBusy());
         QVERIFY(shown.count() >= 1);
         QVERIFY(shown.count() < int(poses.size())); // coalesced
