@@ -30,7 +30,6 @@ constexpr QRgb poorFillRgb = 0xf6dcdc, poorEdgeRgb = 0xd9a0a0;
 using plotstyle::axisRgb, plotstyle::cursorRgb, plotstyle::designRgb, plotstyle::gridRgb;
 using plotstyle::labelPoints, plotstyle::legendPoints, plotstyle::subtitlePoints, plotstyle::tickPoints,
     plotstyle::titlePoints;
-constexpr double cursorPoints = 11;
 
 QString minus(QString text)
 {
@@ -228,27 +227,10 @@ void FourBarPlots::createPanel(int index)
     }
 
     // Cursor: a vertical line at α (AB on the sweep), a marker on the curve, its value beside it.
-    const QColor red(cursorRgb);
-    p.cursorLine = new QCPItemStraightLine(plot);
-    p.cursorLine->setPen(QPen(red, 1.5));
-    p.cursorMarker = new QCPItemTracer(plot);
-    p.cursorMarker->setStyle(QCPItemTracer::tsCircle);
-    p.cursorMarker->setSize(11);
-    p.cursorMarker->setPen(QPen(red, 2.0));
-    p.cursorMarker->setBrush(Qt::white);
-    p.cursorLabel = new QCPItemText(plot);
-    p.cursorLabel->setFont(fontOf(font(), cursorPoints, true));
-    p.cursorLabel->setColor(QColor(0x202020));
-    p.cursorLabel->setBrush(QColor(255, 255, 255, 235));
-    p.cursorLabel->setPen(QPen(red, 1.0));
-    p.cursorLabel->setPadding(QMargins(6, 3, 6, 3));
-    p.cursorLabel->position->setParentAnchor(p.cursorMarker->position);
-    p.cursorLabel->position->setType(QCPItemPosition::ptAbsolute);
-    for (QCPAbstractItem *item :
-        std::initializer_list<QCPAbstractItem *> {p.cursorLine, p.cursorMarker, p.cursorLabel}) {
-        item->setLayer(p.cursorLayer);
-        item->setSelectable(false);
-    }
+    const plotstyle::Cursor cursor = plotstyle::addCursor(plot, font(), header.cursorLayer);
+    p.cursorLine = cursor.line;
+    p.cursorMarker = cursor.marker;
+    p.cursorLabel = cursor.label;
 
     if (index != SweepPlot) { // a click or a drag on an α plot sets α
         auto request = [this, plot](QMouseEvent *event) {

@@ -44,7 +44,6 @@ constexpr QRgb weakFillRgb = 0xf6e0e0, weakEdgeRgb = 0xd9a0a0;
 using plotstyle::axisRgb, plotstyle::cursorRgb, plotstyle::designRgb, plotstyle::gridRgb;
 using plotstyle::labelPoints, plotstyle::legendPoints, plotstyle::subtitlePoints, plotstyle::tickPoints,
     plotstyle::titlePoints;
-constexpr double cursorPoints = 11;
 
 /// Degree tick labels ("−45°") at a fixed step, for θ and for the φ, μ axes.
 class DegreeTicker : public QCPAxisTickerFixed
@@ -209,27 +208,10 @@ void PJointPlots::createPanel(int index)
     }
 
     // Cursor: a vertical line at θ, a marker on this design's curve, its value beside it.
-    const QColor red(cursorRgb);
-    p.cursorLine = new QCPItemStraightLine(plot);
-    p.cursorLine->setPen(QPen(red, 1.5));
-    p.cursorMarker = new QCPItemTracer(plot);
-    p.cursorMarker->setStyle(QCPItemTracer::tsCircle);
-    p.cursorMarker->setSize(11);
-    p.cursorMarker->setPen(QPen(red, 2.0));
-    p.cursorMarker->setBrush(Qt::white);
-    p.cursorLabel = new QCPItemText(plot);
-    p.cursorLabel->setFont(fontOf(font(), cursorPoints, true));
-    p.cursorLabel->setColor(QColor(0x202020));
-    p.cursorLabel->setBrush(QColor(255, 255, 255, 235));
-    p.cursorLabel->setPen(QPen(red, 1.0));
-    p.cursorLabel->setPadding(QMargins(6, 3, 6, 3));
-    p.cursorLabel->position->setParentAnchor(p.cursorMarker->position);
-    p.cursorLabel->position->setType(QCPItemPosition::ptAbsolute); // pixel offsets from the marker
-    for (QCPAbstractItem *item :
-        std::initializer_list<QCPAbstractItem *> {p.cursorLine, p.cursorMarker, p.cursorLabel}) {
-        item->setLayer(p.cursorLayer);
-        item->setSelectable(false);
-    }
+    const plotstyle::Cursor cursor = plotstyle::addCursor(plot, font(), header.cursorLayer);
+    p.cursorLine = cursor.line;
+    p.cursorMarker = cursor.marker;
+    p.cursorLabel = cursor.label;
 }
 
 void PJointPlots::setDesign(const PJointDesign &design)

@@ -56,4 +56,30 @@ Header apply(QCustomPlot *plot, const QFont &base)
     return header;
 }
 
+Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer)
+{
+    const QColor red(cursorRgb);
+    Cursor cursor;
+    cursor.line = new QCPItemStraightLine(plot);
+    cursor.line->setPen(QPen(red, 1.5));
+    cursor.marker = new QCPItemTracer(plot);
+    cursor.marker->setStyle(QCPItemTracer::tsCircle);
+    cursor.marker->setSize(11);
+    cursor.marker->setPen(QPen(red, 2.0));
+    cursor.marker->setBrush(Qt::white);
+    cursor.label = new QCPItemText(plot);
+    cursor.label->setFont(fontOf(base, cursorPoints, true));
+    cursor.label->setColor(QColor(0x202020));
+    cursor.label->setBrush(QColor(255, 255, 255, 235));
+    cursor.label->setPen(QPen(red, 1.0));
+    cursor.label->setPadding(QMargins(6, 3, 6, 3));
+    cursor.label->position->setParentAnchor(cursor.marker->position);
+    cursor.label->position->setType(QCPItemPosition::ptAbsolute); // pixel offsets from the marker
+    for (QCPAbstractItem *item : std::initializer_list<QCPAbstractItem *>{cursor.line, cursor.marker, cursor.label}) {
+        item->setLayer(layer);
+        item->setSelectable(false);
+    }
+    return cursor;
+}
+
 } // namespace pkm::plotstyle

@@ -15,13 +15,22 @@ inline constexpr QRgb cursorRgb = 0xd0312d; ///< the current pose
 inline constexpr QRgb gridRgb = 0xe2e2e2;
 inline constexpr QRgb axisRgb = 0x303030;
 inline constexpr double tickPoints = 11, labelPoints = 12, titlePoints = 13, subtitlePoints = 10.5,
-                        legendPoints = 11;
+                        legendPoints = 11, cursorPoints = 11;
 
 struct Header {
     QCPTextElement *title = nullptr;
     QCPTextElement *subtitle = nullptr;
     QCPLayer *cursorLayer = nullptr;
 };
+
+/// The pose cursor: a vertical line, a marker on the curve and its value beside the marker,
+/// on the cursor layer.
+struct Cursor {
+    QCPItemStraightLine *line = nullptr;
+    QCPItemTracer *marker = nullptr;
+    QCPItemText *label = nullptr;
+};
+Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer);
 
 /// Styles `plot` with fonts derived from `base` and adds a "bands" layer below the grid and the
 /// buffered "cursor" layer; the legend is visible, in the row under the subtitle.
