@@ -2,26 +2,45 @@
 
 #include "clirender.h"
 #include "gifwriter.h"
+#include "quantityformat.h"
 #include "scenepainter.h"
+#include "text.h"
 
+#include <QCoreApplication>
 #include <QPainter>
 
 #include <algorithm>
 
 namespace pkm {
 
+namespace {
+/// A message for the GUI's status bar and the CLI's stderr (English there: no catalogue).
+std::string message(const QString &text)
+{
+    return text.toStdString();
+}
+
+/// A number in a sentence: the locale's decimal point in the GUI, '.' in the CLI.
+QString numberText(double value, int decimals)
+{
+    return toQString(text::number(value, decimals));
+}
+} // namespace
+
 Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose &start,
                                          const AnimationSettings &settings)
 {
     const auto &variables = mechanism.variableInfo();
     if (settings.variable < 0 || settings.variable >= static_cast<int>(variables.size()))
-        return Failure{FailureKind::UnknownName, {}, "The animation needs a pose variable of the mechanism."};
+        return Failure{FailureKind::UnknownName, {},
+                       message(QCoreApplication::translate("pkm::Animation",
+                                                           "The animation needs a pose variable of the mechanism."))};
     const VariableInfo &info = variables[settings.variable];
     if (settings.frames < minAnimationFrames || settings.frames > maxAnimationFrames) {
         return Failure{FailureKind::InvalidParameter, "frames",
-                       joinText({"An animation has ", std::to_string(minAnimationFrames), " to ",
-                                 std::to_string(maxAnimationFrames), " frames, not ",
-                                 std::to_string(settings.frames), "."})};
+                       message(QCoreApplication::translate("pkm::Animation", "An animation has %1 to %2 frames, not %3.")
+                                   .arg(numberText(minAnimationFrames, 0), numberText(maxAnimationFrames, 0),
+                                        numberText(settings.frames, 0)))};
     }
     std::vector<Pose> poses;
     poses.reserve(settings.frames);
@@ -32,10 +51,12 @@ Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose 
         auto solved = mechanism.solveWith(near, settings.variable, value);
         if (!solved) {
             Failure failure = solved.failure();
-            failure.message = joinText({"Frame ", std::to_string(i + 1), " (", info.name, " = ",
-                                        formatNumber(info.unit.toDisplay(value), info.decimals),
-                                        info.unit.symbol == "°" || info.unit.symbol.empty() ? "" : " ",
-                                        info.unit.symbol, "): ", failure.message});
+            const QString unit = toQString(text::label(info.unit.symbol));
+            const QString shown = numberText(info.unit.toDisplay(value), info.decimals)
+                + (unit.isEmpty() || unit.startsWith(QChar(0x00B0)) ? QString() : QStringLiteral(" ")) + unit;
+            failure.message = message(QCoreApplication::translate("pkm::Animation", "Frame %1 (%2 = %3): %4")
+                                          .arg(numberText(i + 1, 0), toQString(info.name), shown,
+                                               toQString(failure.message)));
             return failure;
         }
         near = *solved;
@@ -81,7 +102,8 @@ Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start
         return poses.failure();
     const QList<QImage> frames = animationFrames(mechanism, *poses, settings, cancel);
     if (frames.isEmpty())
-        return Failure{FailureKind::InvalidParameter, {}, "The animation was cancelled."};
+        return Failure{FailureKind::InvalidParameter, {},
+                       message(QCoreApplication::translate("pkm::Animation", "The animation was cancelled."))};
     QString error;
     GifOptions options;
     options.frameMilliseconds = settings.frameMilliseconds;

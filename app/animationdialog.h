@@ -10,7 +10,9 @@
 
 class QCheckBox;
 class QComboBox;
+class QDialogButtonBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QSpinBox;
 
 namespace pkm {
@@ -31,10 +33,20 @@ public:
     QDoubleSpinBox *toBox() const { return m_to; }
     QSpinBox *framesBox() const { return m_frames; }
 
+protected:
+    /// A new language: labels, lists and units again, the choices kept.
+    void changeEvent(QEvent *event) override;
+
 private:
+    void retranslate();
     void selectVariable(int variable);
+    /// The unit after the range's values, in the current language.
+    void showRangeUnit();
+    void setRowLabel(QWidget *field, const QString &text);
 
     const Mechanism &m_mechanism;
+    QFormLayout *m_form = nullptr;
+    QDialogButtonBox *m_buttons = nullptr;
     QComboBox *m_variable = nullptr;
     QDoubleSpinBox *m_from = nullptr;
     QDoubleSpinBox *m_to = nullptr;

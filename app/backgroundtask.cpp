@@ -1,5 +1,6 @@
 #include "backgroundtask.h"
 
+#include <QCoreApplication>
 #include <QFutureWatcher>
 #include <QPointer>
 #include <QProgressDialog>
@@ -14,7 +15,7 @@ void runInBackground(QWidget *parent, const QString &title, const QString &label
                      std::function<void(const TaskFailure &failure, bool cancelled)> done)
 {
     auto cancel = std::make_shared<std::atomic<bool>>(false);
-    QPointer<QProgressDialog> progress = new QProgressDialog(label, QObject::tr("Cancel"), 0, 0, parent);
+    QPointer<QProgressDialog> progress = new QProgressDialog(label, QCoreApplication::translate("pkm::BackgroundTask", "Cancel"), 0, 0, parent);
     progress->setWindowTitle(title);
     progress->setMinimumDuration(500);
     progress->setAttribute(Qt::WA_DeleteOnClose);

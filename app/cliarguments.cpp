@@ -24,6 +24,7 @@ enum OptionFlag : unsigned {
     OptionQuantity = 1u << 6,
     OptionOutput = 1u << 7, ///< -o FILE
     OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption, --one-way
+    OptionLanguage = 1u << 9, ///< --lang CODE
 };
 
 struct CommandSpec {
@@ -45,7 +46,7 @@ constexpr std::array<CommandSpec, 8> commandSpecs = {{
         {"png", "csv"}},
     {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture | OptionSweep,
         {"png", "svg", "pdf", "gif"}, true},
-    {Command::Sheet, "sheet", OptionDesign | OptionSet | OptionOutput, {"pdf", "json", "csv"}, true},
+    {Command::Sheet, "sheet", OptionDesign | OptionSet | OptionOutput | OptionLanguage, {"pdf", "json", "csv"}, true},
 }};
 
 const CommandSpec *findCommand(std::string_view name)
@@ -77,6 +78,8 @@ unsigned optionFlag(std::string_view option)
     if (option == "--view" || option == "--size" || option == "--camera" || option == "--orthographic"
         || option == "--no-caption" || option == "--one-way")
         return OptionPicture;
+    if (option == "--lang")
+        return OptionLanguage;
     return 0;
 }
 
@@ -285,6 +288,8 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
                 invocation.sets.push_back({value, name, std::nan(""), std::string(number)});
         } else if (option == "--var") {
             invocation.var = value;
+        } else if (option == "--lang") {
+            invocation.language = value;
         } else if (option == "--grid") {
             const auto number = parseNumber(value);
             if (!number || *number < minGrid || *number > maxGrid || *number != std::floor(*number)) {

@@ -66,6 +66,7 @@ struct Invocation {
     int width = defaultPictureWidth; ///< --size WxH (render), pixels
     int height = defaultPictureHeight;
     bool sizeGiven = false; ///< --size was given (an animation's default size is smaller)
+    std::optional<std::string> language; ///< --lang CODE (sheet), checked by the command (clisheet.h)
 };
 
 /// The lower-case extension of `path` without the dot ("png"), empty without one.

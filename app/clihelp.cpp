@@ -30,7 +30,7 @@ Commands:
   render DESIGN --var NAME --from A --to B --steps K [--one-way] -o FILE.gif
                                            an animated GIF of the 2D drawing as NAME
                                            moves from A to B
-  sheet  DESIGN [--set N=V]... -o FILE.pdf|.json|.csv
+  sheet  DESIGN [--set N=V]... [--lang CODE] -o FILE.pdf|.json|.csv
                                            the parameter sheet for building the
                                            prototype: parameters, dimensions, key
                                            poses, checks, plots, dimensioned drawing
@@ -280,7 +280,7 @@ file renamed at the end); on an error nothing is written and an existing FILE is
 was. A pose that cannot be solved exits with status 3, as in 'pkm eval'.
 )";
 
-constexpr std::string_view sheetHelp = R"(Usage: pkm sheet DESIGN [--set NAME=VALUE]... -o FILE.pdf|FILE.json|FILE.csv
+constexpr std::string_view sheetHelp = R"(Usage: pkm sheet DESIGN [--set NAME=VALUE]... [--lang CODE] -o FILE.pdf|FILE.json|FILE.csv
 
 Writes the parameter sheet of the design in a pose — the design's stored pose, or the one
 the --set values give — for the workshop that builds the prototype. Its sections:
@@ -310,6 +310,12 @@ the --set values give — for the workshop that builds the prototype. Its sectio
   warnings     the design warnings
 
   --set NAME=VALUE    applied first, as in 'pkm eval' (theta=30, a=180, mode=X)
+  --lang CODE         the sheet's language: en (English, the default), sr (Serbian,
+                      Cyrillic), sr_Latn (Serbian, Latin) or ru (Russian): titles,
+                      labels, sentences, units and plots in that language, and the PDF's
+                      numbers as it writes them (116,20 in Serbian and Russian). The JSON
+                      and CSV keep their keys, PASS/FAIL/INFO, unit symbols and numbers as
+                      in English; only their texts for people are translated
   -o FILE.pdf         A4 portrait pages: a title block, the sections with aligned tables,
                       the plots as vectors, the drawing with its title block; text is
                       real text, every page numbered
@@ -332,8 +338,9 @@ the --set values give — for the workshop that builds the prototype. Its sectio
 
 Numbers are in display units (mm, °, N, N·m, s): in JSON and CSV with up to 15
 significant digits and '.' whatever the locale, as in 'pkm eval --json'; the PDF prints
-each with its parameter's decimals. A value that is not finite is null in JSON and an
-empty field in CSV. The date is today's, or that of SOURCE_DATE_EPOCH when it is set.
+each with its parameter's decimals, as the --lang language writes numbers. A value that
+is not finite is null in JSON and an empty field in CSV. The date is today's, or that of
+SOURCE_DATE_EPOCH when it is set.
 
 Prints one line: Wrote FILE. The file is written completely or not at all (a temporary
 file renamed at the end); on an error nothing is written and an existing FILE is left as

@@ -6,12 +6,24 @@
 
 namespace pkm {
 
-ReplaceDesignCommand::ReplaceDesignCommand(Document *document, Design before, Design after, const QString &text)
-    : QUndoCommand(text)
-    , m_document(document)
+void TranslatableCommand::setTextMaker(TextMaker text)
+{
+    m_text = std::move(text);
+    retranslate();
+}
+
+void TranslatableCommand::retranslate()
+{
+    if (m_text)
+        setText(m_text());
+}
+
+ReplaceDesignCommand::ReplaceDesignCommand(Document *document, Design before, Design after, TextMaker text)
+    : m_document(document)
     , m_before(std::move(before))
     , m_after(std::move(after))
 {
+    setTextMaker(std::move(text));
 }
 
 void ReplaceDesignCommand::undo()
@@ -32,7 +44,7 @@ SetParameterCommand::SetParameterCommand(Document *document, const QString &name
     , m_before(std::move(before))
     , m_after(std::move(after))
 {
-    setText(QCoreApplication::translate("pkm::SetParameterCommand", "Change %1").arg(name));
+    setTextMaker([name] { return QCoreApplication::translate("pkm::SetParameterCommand", "Change %1").arg(name); });
 }
 
 void SetParameterCommand::undo()

@@ -6,15 +6,32 @@
 
 #include <QUndoCommand>
 
+#include <functional>
+
 namespace pkm {
 
 class Document;
 
-/// Replaces the design (opening a preset or a file).
-class ReplaceDesignCommand : public QUndoCommand
+/// A command whose text ("Open …", "Change a") is made again in a new language
+/// (Document re-texts its stack on QEvent::LanguageChange).
+class TranslatableCommand : public QUndoCommand
 {
 public:
-    ReplaceDesignCommand(Document *document, Design before, Design after, const QString &text);
+    using TextMaker = std::function<QString()>;
+    /// Sets the text from `text` now and on every retranslate().
+    void setTextMaker(TextMaker text);
+    void retranslate();
+
+private:
+    TextMaker m_text;
+};
+
+/// Replaces the design (opening a preset or a file).
+class ReplaceDesignCommand : public TranslatableCommand
+{
+public:
+    /// `text` makes the command's text in the current language.
+    ReplaceDesignCommand(Document *document, Design before, Design after, TextMaker text);
     void undo() override;
     void redo() override;
 
@@ -26,7 +43,7 @@ private:
 
 /// Changes one parameter. A stepping sequence of the same parameter (arrow keys, mouse wheel)
 /// merges into one step; a merged change back to the start is obsolete and leaves the stack.
-class SetParameterCommand : public QUndoCommand
+class SetParameterCommand : public TranslatableCommand
 {
 public:
     /// `continuous`: part of a stepping sequence (arrow keys, wheel) that merges into the

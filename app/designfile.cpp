@@ -5,7 +5,9 @@
 
 #include "quantityformat.h"
 #include "registry.h"
+#include "text.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -21,6 +23,19 @@ namespace {
 Failure fileFailure(const QString &culprit, const QString &message)
 {
     return Failure{FailureKind::InvalidParameter, culprit.toStdString(), message.toStdString()};
+}
+
+/// A number in a message: the locale's decimal point and minus sign in the GUI, '.' in the CLI
+/// (text::number's rules), `significant` digits as QString::number(v, 'g', significant).
+QString numberText(double value, int significant = 10)
+{
+    QString text = QString::number(value, 'g', significant);
+    const text::Hooks hooks = text::installed();
+    if (!hooks.decimalPoint.empty())
+        text.replace(QLatin1Char('.'), toQString(hooks.decimalPoint));
+    if (!hooks.minusSign.empty() && text.startsWith(QLatin1Char('-')))
+        text.replace(0, 1, toQString(hooks.minusSign));
+    return text;
 }
 
 const ParameterInfo *findParameter(const Mechanism &mechanism, const QString &name)
@@ -43,28 +58,25 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     QJsonParseError error;
     const QJsonDocument document = QJsonDocument::fromJson(json, &error);
     if (error.error != QJsonParseError::NoError) {
-        return fileFailure(origin, QStringLiteral("%1 is not valid JSON (%2 at byte %3).")
-                                       .arg(origin, error.errorString())
-                                       .arg(error.offset));
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 is not valid JSON (%2 at byte %3).")
+                                       .arg(origin, error.errorString(), numberText(error.offset)));
     }
     const QJsonObject root = document.object();
     if (!document.isObject() || root.value(QStringLiteral("format")).toString() != QLatin1String(formatName))
-        return fileFailure(origin, QStringLiteral("%1 is not a PKM Studio design file.").arg(origin));
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 is not a PKM Studio design file.").arg(origin));
     const int version = root.value(QStringLiteral("version")).toInt(-1);
     if (version > formatVersion) {
-        return fileFailure(origin, QStringLiteral("%1 was written by a newer PKM Studio (format version %2; this "
-                                                  "version reads up to %3).")
-                                       .arg(origin)
-                                       .arg(version)
-                                       .arg(formatVersion));
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 was written by a newer PKM Studio (format "
+                                                          "version %2; this version reads up to %3).")
+                                       .arg(origin, numberText(version), numberText(formatVersion)));
     }
     if (version < 1)
-        return fileFailure(origin, QStringLiteral("%1 has no valid format version.").arg(origin));
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 has no valid format version.").arg(origin));
     // Older versions are read by the same code: see formatVersion for what each one changed.
 
     const QString kindId = root.value(QStringLiteral("mechanism")).toString();
     if (!findMechanismKind(kindId.toStdString()))
-        return fileFailure(origin, QStringLiteral("%1 names an unknown mechanism kind '%2'.").arg(origin, kindId));
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 names an unknown mechanism kind '%2'.").arg(origin, kindId));
     auto defaults = createMechanism(kindId.toStdString(), {});
     if (!defaults)
         return defaults.failure();
@@ -74,7 +86,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     for (auto it = parameters.begin(); it != parameters.end(); ++it) {
         const ParameterInfo *info = findParameter(**defaults, it.key());
         if (!info)
-            return fileFailure(origin, QStringLiteral("%1: unknown parameter '%2'.").arg(origin, it.key()));
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: unknown parameter '%2'.").arg(origin, it.key()));
         if (it.value().isString()) {
             // a mode given by its name ("mode": "X")
             const std::string word = it.value().toString().toStdString();
@@ -85,8 +97,8 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
                 for (const auto &c : info->choices)
                     names << QString::fromStdString(c.first);
                 return fileFailure(origin, names.isEmpty()
-                                               ? QStringLiteral("%1: parameter '%2' is not a number.").arg(origin, it.key())
-                                               : QStringLiteral("%1: parameter '%2' must be a number or one of %3, not '%4'.")
+                                               ? QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, it.key())
+                                               : QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' must be a number or one of %3, not '%4'.")
                                                      .arg(origin, it.key(), names.join(QStringLiteral(", ")),
                                                           it.value().toString()));
             }
@@ -94,7 +106,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
             continue;
         }
         if (!it.value().isDouble())
-            return fileFailure(origin, QStringLiteral("%1: parameter '%2' is not a number.").arg(origin, it.key()));
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, it.key()));
         values[info->name] = info->unit.fromDisplay(it.value().toDouble());
     }
     auto mechanism = createMechanism(kindId.toStdString(), values);
@@ -115,7 +127,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     const QJsonObject poseObject = root.value(QStringLiteral("pose")).toObject();
     for (auto it = poseObject.begin(); it != poseObject.end(); ++it) {
         if (!it.value().isDouble())
-            return fileFailure(origin, QStringLiteral("%1: pose value '%2' is not a number.").arg(origin, it.key()));
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: pose value '%2' is not a number.").arg(origin, it.key()));
         pose.append({it.key(), it.value().toDouble()});
     }
     if (!pose.isEmpty()) {
@@ -168,11 +180,11 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
         const double fromInputs = info.unit.toDisplay(mechanism.variableValue(*solved, index));
         if (std::abs(fromInputs - display) > savedPoseTolerance * std::max(1.0, std::abs(display))) {
             return Failure{FailureKind::InvalidParameter, info.name,
-                           QStringLiteral("the pose's %1 = %2 %4 does not agree with its inputs, which give %3 %4.")
-                               .arg(toQString(info.name))
-                               .arg(display, 0, 'g', 10)
-                               .arg(fromInputs, 0, 'g', 10)
-                               .arg(toQString(info.unit.symbol))
+                           QCoreApplication::translate("pkm::designfile",
+                                                       "the pose's %1 = %2 %4 does not agree with its inputs, which "
+                                                       "give %3 %4.")
+                               .arg(toQString(info.name), numberText(display), numberText(fromInputs),
+                                    unitText(info.unit))
                                .toStdString()};
         }
         // Agreeing to round-off: keep the file's value, so that save → open is exact.
@@ -194,13 +206,13 @@ Result<Design> load(const QString &presetOrPath)
         path = presetPath(presetOrPath);
         if (!QFile::exists(path)) {
             return fileFailure(presetOrPath,
-                               QStringLiteral("'%1' is neither a preset id (see 'pkm list') nor a design file.")
+                               QCoreApplication::translate("pkm::designfile", "'%1' is neither a preset id (see 'pkm list') nor a design file.")
                                    .arg(presetOrPath));
         }
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return fileFailure(presetOrPath, QStringLiteral("Cannot open %1: %2.").arg(presetOrPath, file.errorString()));
+        return fileFailure(presetOrPath, QCoreApplication::translate("pkm::designfile", "Cannot open %1: %2.").arg(presetOrPath, file.errorString()));
     return parse(file.readAll(), presetOrPath);
 }
 
@@ -240,10 +252,10 @@ Result<bool> save(const Design &design, const QString &path)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return fileFailure(path, QStringLiteral("Cannot write %1: %2.").arg(path, file.errorString()));
+        return fileFailure(path, QCoreApplication::translate("pkm::designfile", "Cannot write %1: %2.").arg(path, file.errorString()));
     file.write(serialize(design));
     if (!file.commit())
-        return fileFailure(path, QStringLiteral("Cannot write %1: %2.").arg(path, file.errorString()));
+        return fileFailure(path, QCoreApplication::translate("pkm::designfile", "Cannot write %1: %2.").arg(path, file.errorString()));
     return true;
 }
 
@@ -263,12 +275,111 @@ QList<PresetInfo> presets()
     return list;
 }
 
+namespace {
+/// The presets' titles and descriptions (resources/presets/*.pkm.json), for lupdate: each must
+/// be exactly as its file has it.
+[[maybe_unused]] constexpr const char *presetTexts[] = {
+    // fivebar-example.pkm.json
+    QT_TRANSLATE_NOOP("presets", "Planar five-bar linkage (example)"),
+    QT_TRANSLATE_NOOP("presets",
+        "A classroom five-bar chosen for PKM Studio (the mobility document, seed 004, shows the planar "
+        "five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven "
+        "at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. "
+        "Chebyshev's count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out "
+        "(B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At "
+        "C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links "
+        "nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by "
+        "the legs stretched or folded in line and, low between A and E, by a direct singularity where BC "
+        "and CD come in line."),
+    // fourbar-example.pkm.json
+    QT_TRANSLATE_NOOP("presets", "Four-bar linkage example (crank-rocker 40/120/100/140 mm)"),
+    QT_TRANSLATE_NOOP("presets",
+        "An example crank-rocker chosen for PKM Studio: the four-bar document (seed 004) gives no link "
+        "lengths, so these are not the document's. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 "
+        "mm, ground AD = 140 mm: s + l = 180 mm < p + q = 220 mm with the crank the shortest link, so the "
+        "crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays "
+        "between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC."),
+    // moma-3a.pkm.json
+    QT_TRANSLATE_NOOP("presets", "MOMA configuration 3a (γ₁ = −5°, γ₂ = +5°)"),
+    QT_TRANSLATE_NOOP("presets",
+        "Configuration of fig. 3a: R₁ = (−100, 0) mm, R₂ = (100, 0) mm, guides turned from the vertical "
+        "by γ₁ = −5° and γ₂ = +5° (α_i = 270° + γ_i), so they open downwards. Links l₁ = l₂ = 195 mm, "
+        "strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Both legs work with "
+        "p_i = B_i − √(B_i² − C_i), the platform below the sliders. The document finds no direct "
+        "singularities in this workspace."),
+    // moma-3b.pkm.json
+    QT_TRANSLATE_NOOP("presets", "MOMA configuration 3b (γ₁ = +5°, γ₂ = −5°)"),
+    QT_TRANSLATE_NOOP("presets",
+        "Configuration of fig. 3b: as 3a with the guides turned the other way, γ₁ = +5° and γ₂ = −5°, so "
+        "they close downwards. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured "
+        "from R_i along the guide). The document finds no direct singularities in this workspace."),
+    // moma-3c.pkm.json
+    QT_TRANSLATE_NOOP("presets", "MOMA configuration 3c (interpreted)"),
+    QT_TRANSLATE_NOOP("presets",
+        "Interpreted: the document describes 3c in two ways that do not agree (the guides along the axes, "
+        "or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this "
+        "preset takes the first. Configuration of fig. 3c: R₁ = (250, 0) mm with α₁ = 180° and R₂ = (0, "
+        "250) mm with α₂ = 270°, the guides along the axes towards the corner. Links l₁ = l₂ = 195 mm, "
+        "strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Here both legs take "
+        "the document's root p_i = B_i − √…; every inverse singularity lies on x = 195 mm or y = 195 mm "
+        "(a link perpendicular to its guide), where the document puts them, at the edge of the other "
+        "assembly mode's region near (195, 195) mm; the direct singularity needs both slider joints at "
+        "the origin, beyond the strokes."),
+    // moma-3d.pkm.json
+    QT_TRANSLATE_NOOP("presets", "MOMA configuration 3d (interpreted)"),
+    QT_TRANSLATE_NOOP("presets",
+        "Interpreted: the document describes 3d in two ways that do not agree (the guides along the axes, "
+        "or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this "
+        "preset takes the first. Configuration of fig. 3d: R₁ = (117, 0) mm with α₁ = 0° and R₂ = (0, "
+        "117) mm with α₂ = 90°, the guides along the axes away from the corner, the platform between them "
+        "near the origin. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from "
+        "R_i along the guide). Here both legs take the root p_i = B_i + √… that keeps the platform on the "
+        "corner side of the sliders; the direct singularities (links stretched in line) bound the "
+        "workspace on the far side."),
+    // oxglide-prototype.pkm.json
+    QT_TRANSLATE_NOOP("presets", "O-X glide prototype (l = 80 mm, s = 20 mm, L = 130 mm)"),
+    QT_TRANSLATE_NOOP("presets",
+        "The rapid-prototyped O-X glide of the Novi Sad document: rods l = 80 mm, platform width s = 20 "
+        "mm, transverse guides L = 130 mm (slider positions 0 to 130 mm), working in the extended (O) "
+        "form. The guide spacing a = 15 mm and the longitudinal travel z = 0 to 150 mm are not given in "
+        "the document and are chosen for the drawing; they do not change the planar workspace."),
+    // pjoint-prototype.pkm.json
+    QT_TRANSLATE_NOOP("presets", "П-joint laboratory prototype (a = 170 mm, k = 0.4)"),
+    QT_TRANSLATE_NOOP("presets",
+        "The laboratory prototype of section 4.2: a = 170 mm, b = 68 mm (k = 0.4), θ = ±60°, driven by "
+        "the hybrid stepper motor with integrated lead screw of Table 1 (lead 2.54 mm, 0.0127 mm/step, 50 "
+        "mm/s, 130 N). The screw efficiency 0.4 is an assumption: Table 1 does not give it."),
+    // pjoint-study-k03.pkm.json
+    QT_TRANSLATE_NOOP("presets", "П-joint design study k = 0.3 (a = 1 m)"),
+    QT_TRANSLATE_NOOP("presets",
+        "Design study of figures 8–12: a = 1 m, k = 0.3, θ over ±75°, with the stepper motor of Table 1."),
+    // pjoint-study-k04.pkm.json
+    QT_TRANSLATE_NOOP("presets", "П-joint design study k = 0.4 (a = 1 m)"),
+    QT_TRANSLATE_NOOP("presets",
+        "Design study of figures 8–12: a = 1 m, k = 0.4, θ over ±75°, with the stepper motor of Table 1."),
+    // pjoint-study-k05.pkm.json
+    QT_TRANSLATE_NOOP("presets", "П-joint design study k = 0.5 (a = 1 m)"),
+    QT_TRANSLATE_NOOP("presets",
+        "Design study of figures 8–12: a = 1 m, k = 0.5, θ over ±75°, with the stepper motor of Table 1."),
+};
+} // namespace
+
+QString presetText(const QString &english)
+{
+    if (english.isEmpty())
+        return english;
+    const QByteArray source = english.toUtf8();
+    return QCoreApplication::translate("presets", source.constData());
+}
+
 Result<MechanismPtr> setDisplayParameter(const MechanismPtr &mechanism, const QString &name, double displayValue)
 {
     const ParameterInfo *info = findParameter(*mechanism, name);
     if (!info) {
         return Failure{FailureKind::UnknownName, name.toStdString(),
-                       "Unknown parameter '" + name.toStdString() + "' (see 'pkm show')."};
+                       QCoreApplication::translate("pkm::designfile", "Unknown parameter '%1' (see 'pkm show').")
+                           .arg(name)
+                           .toStdString()};
     }
     return mechanism->withParameter(info->name, info->unit.fromDisplay(displayValue));
 }
@@ -286,7 +397,9 @@ Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &curre
         const int index = mechanism.variableIndex(name.toStdString());
         if (index < 0) {
             return Failure{FailureKind::UnknownName, name.toStdString(),
-                           "Unknown pose variable '" + name.toStdString() + "'."};
+                           QCoreApplication::translate("pkm::designfile", "Unknown pose variable '%1'.")
+                               .arg(name)
+                               .toStdString()};
         }
         const double value = variables[index].unit.fromDisplay(display);
         if (index < inputs) {
@@ -299,7 +412,10 @@ Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &curre
     }
     if (anyInput && anyOutput) {
         return Failure{FailureKind::InvalidParameter, values.front().first.toStdString(),
-                       "Give either the actuated inputs or the outputs of the pose, not both."};
+                       QCoreApplication::translate("pkm::designfile",
+                                                   "Give either the actuated inputs or the outputs of the pose, not "
+                                                   "both.")
+                           .toStdString()};
     }
     if (anyInput || !anyOutput)
         return mechanism.solveDirect(q, &current);

@@ -47,6 +47,9 @@ QByteArray serialize(const Design &design);
 Result<bool> save(const Design &design, const QString &path);
 
 QList<PresetInfo> presets();
+/// A preset's title or description (as its file gives it, in English) in the current language;
+/// any other text (a user's own design) comes back unchanged.
+QString presetText(const QString &english);
 
 /// Sets one design parameter given in display units; the failure names the parameter.
 Result<MechanismPtr> setDisplayParameter(const MechanismPtr &mechanism, const QString &name, double displayValue);

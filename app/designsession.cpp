@@ -28,7 +28,7 @@ QString lockPathFor(const QString &autosavePath)
 Failure writeFailure(const QString &path, const QString &why)
 {
     return Failure{FailureKind::InvalidParameter, path.toStdString(),
-                   QStringLiteral("Cannot write %1: %2.").arg(path, why).toStdString()};
+                   DesignSession::tr("Cannot write %1: %2.").arg(path, why).toStdString()};
 }
 } // namespace
 
@@ -66,7 +66,7 @@ QString DesignSession::displayName() const
 {
     if (!m_filePath.isEmpty())
         return QFileInfo(m_filePath).fileName();
-    const QString title = m_document->design().title;
+    const QString title = designfile::presetText(m_document->design().title);
     return title.isEmpty() ? tr("Untitled design") : title;
 }
 

@@ -3,6 +3,9 @@
 #include "commands.h"
 #include "quantityformat.h"
 
+#include <QCoreApplication>
+#include <QEvent>
+
 #include <cmath>
 
 namespace pkm {
@@ -19,6 +22,20 @@ Document::Document(QObject *parent)
     Q_ASSERT(initial.ok());
     m_design = *initial;
     m_modeNeighbours = m_design.mechanism->modeNeighbours();
+    if (QCoreApplication *application = QCoreApplication::instance())
+        application->installEventFilter(this);
+}
+
+bool Document::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance()) {
+        for (int i = 0; i < m_undoStack.count(); ++i) {
+            // the stack hands out const commands; their texts are ours to set
+            if (auto *command = dynamic_cast<TranslatableCommand *>(const_cast<QUndoCommand *>(m_undoStack.command(i))))
+                command->retranslate();
+        }
+    }
+    return QObject::eventFilter(watched, event);
 }
 
 Result<bool> Document::open(const QString &presetOrPath)
@@ -27,7 +44,8 @@ Result<bool> Document::open(const QString &presetOrPath)
     if (!loaded)
         return loaded.failure();
     const QString title = loaded->title.isEmpty() ? presetOrPath : loaded->title;
-    m_undoStack.push(new ReplaceDesignCommand(this, m_design, *loaded, tr("Open %1").arg(title)));
+    m_undoStack.push(new ReplaceDesignCommand(this, m_design, *loaded,
+                                              [title] { return tr("Open %1").arg(designfile::presetText(title)); }));
     return true;
 }
 
@@ -117,12 +135,13 @@ std::vector<ModeAlternative> Document::modeAlternatives() const
 Result<bool> Document::switchMode(const ModeAlternative &alternative)
 {
     if (!alternative.mechanism || alternative.pose.inputs.size() != m_design.pose.inputs.size())
-        return Failure{FailureKind::InvalidParameter, {}, "That mode is not available at this pose."};
+        return Failure{FailureKind::InvalidParameter, {}, tr("That mode is not available at this pose.").toStdString()};
     Design next = m_design;
     next.mechanism = alternative.mechanism;
     next.pose = alternative.pose;
-    m_undoStack.push(new ReplaceDesignCommand(this, m_design, next,
-                                              tr("Switch to %1").arg(QString::fromStdString(alternative.label))));
+    m_undoStack.push(new ReplaceDesignCommand(this, m_design, next, [label = alternative.label] {
+        return tr("Switch to %1").arg(coreLabel(label));
+    }));
     return true;
 }
 
@@ -153,8 +172,16 @@ QString Document::limitNote() const
     }
     std::vector<double> values(m.reportLayout().size);
     const Singularity singularity = m.evaluate(m_design.pose, values);
-    if (singularity.type != SingularityType::None)
-        return tr("Singular pose (%1): the mechanism cannot be driven here.").arg(toQString(singularityName(singularity.type)));
+    switch (singularity.type) {
+    case SingularityType::None:
+        break;
+    case SingularityType::Inverse:
+        return tr("Singular pose (inverse): the mechanism cannot be driven here.");
+    case SingularityType::Direct:
+        return tr("Singular pose (direct): the mechanism cannot be driven here.");
+    case SingularityType::Combined:
+        return tr("Singular pose (combined): the mechanism cannot be driven here.");
+    }
     if (singularity.margin < nearSingularMargin)
         return tr("Close to a singular pose: small input steps make large output jumps.");
     return {};

@@ -51,6 +51,11 @@ public:
     // Used by the undo commands only.
     void applyDesign(const Design &design);
 
+protected:
+    /// A new language (QEvent::LanguageChange to the application): the undo stack's texts
+    /// are made again, before the widgets hear of it.
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 signals:
     /// The mechanism (and with it the pose) was replaced: recompute everything.
     void designChanged();

@@ -7,6 +7,7 @@
 #include "quantityformat.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -46,6 +47,26 @@ QString degreeText(double radians, int decimals = 1)
     return formatQuantity(radians, units::angle, decimals);
 }
 
+/// Whole degrees of the transmission limits (40°, 140°) in the locale's digits.
+QString limitText(double degrees)
+{
+    return QLocale().toString(degrees, 'f', 0);
+}
+
+/// Grashof's class as the panel names it, capitalised.
+QString grashofTitle(fourbar::Grashof g)
+{
+    switch (g) {
+    case fourbar::Grashof::CrankRocker: return FourBarPanel::tr("Crank-rocker");
+    case fourbar::Grashof::RockerCrank: return FourBarPanel::tr("Rocker-crank");
+    case fourbar::Grashof::DoubleCrank: return FourBarPanel::tr("Double-crank");
+    case fourbar::Grashof::DoubleRocker: return FourBarPanel::tr("Double-rocker");
+    case fourbar::Grashof::TripleRocker: return FourBarPanel::tr("Triple-rocker");
+    case fourbar::Grashof::ChangePoint: return FourBarPanel::tr("Change-point");
+    }
+    return {};
+}
+
 /// The acute transmission angle min(|γ|, 180° − |γ|) is below the limit.
 bool isPoor(double gammaDegrees)
 {
@@ -83,17 +104,18 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
     layout->setSpacing(6);
 
     // -- link lengths: two per row --------------------------------------------------------------
-    auto *links = new QGroupBox(tr("Link lengths"), this);
+    auto *links = new QGroupBox(this);
+    m_linksGroup = links;
     links->setFont(labelFont);
     auto *grid = new QGridLayout(links);
     grid->setContentsMargins(8, 4, 8, 6);
     grid->setHorizontalSpacing(8);
     grid->setVerticalSpacing(4);
-    const std::array<QString, 4> titles = {tr("AB crank"), tr("BC coupler"), tr("CD rocker"), tr("AD ground")};
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         const QString name = QString::fromLatin1(linkNames[i]);
         LinkRow &row = m_rows[i];
-        auto *label = new QLabel(titles[i], links);
+        auto *label = new QLabel(links);
+        row.label = label;
         row.slider = new QSlider(Qt::Horizontal, links);
         row.slider->setObjectName(QStringLiteral("length_") + name);
         row.slider->setMinimumWidth(80);
@@ -104,7 +126,6 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
         spin->setRange(0.0, 1e5); // 0 is refused by the core with its message
         spin->setSingleStep(1.0);
         spin->setKeyboardTracking(false);
-        spin->setSuffix(QStringLiteral(" mm"));
         spin->setMinimumWidth(100);
         label->setBuddy(spin);
         const int r = int(i) / 2, c = (int(i) % 2) * 4;
@@ -171,11 +192,9 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
     words->addStretch(1);
     info->addLayout(words, 3);
 
-    auto *transmission = new QGroupBox(tr("Transmission angle γ at C"), this);
+    auto *transmission = new QGroupBox(this);
+    m_transmissionGroup = transmission;
     transmission->setFont(labelFont);
-    transmission->setToolTip(tr("The crank drives the rocker well when γ stays between %1° and %2°.")
-                                 .arg(FourBar::poorTransmission)
-                                 .arg(180.0 - FourBar::poorTransmission));
     auto *column = new QVBoxLayout(transmission);
     column->setContentsMargins(8, 2, 8, 4);
     column->setSpacing(2);
@@ -201,6 +220,34 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
         if (auto moved = m_document->setVariable(FourBar::variableAlpha, alpha); !moved)
             emit statusMessage(QString::fromStdString(moved.failure().message), true);
     });
+    retranslate();
+}
+
+void FourBarPanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void FourBarPanel::retranslate()
+{
+    m_linksGroup->setTitle(tr("Link lengths"));
+    const std::array<QString, 4> titles = {tr("AB crank"), tr("BC coupler"), tr("CD rocker"), tr("AD ground")};
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        m_rows[i].label->setText(titles[i]);
+        m_rows[i].spinBox->setSuffix(QLatin1Char(' ') + unitText(units::millimetre));
+    }
+    m_transmissionGroup->setTitle(tr("Transmission angle γ at C"));
+    m_transmissionGroup->setToolTip(tr("The crank drives the rocker well when γ stays between %1° and %2°.")
+                                        .arg(limitText(FourBar::poorTransmission),
+                                            limitText(180.0 - FourBar::poorTransmission)));
+    showLinkMessage();
+    if (!fourbarOf(m_mechanism))
+        return;
+    showLengths(m_dragging < 0);
+    showDesignInfo();
+    showPose(m_pose);
 }
 
 QSlider *FourBarPanel::lengthSlider(const QString &link) const
@@ -226,12 +273,21 @@ bool FourBarPanel::requestLength(const QString &link, double value, bool continu
     auto changed = m_document->setParameter(link, value, continuous);
     if (changed)
         return true;
-    const QString message = QString::fromStdString(changed.failure().message);
-    m_linkMessage->setText(message + QLatin1Char(' ') + tr("The last valid design is kept."));
-    m_linkMessage->show();
+    m_linkFailure = QString::fromStdString(changed.failure().message);
+    showLinkMessage();
     showLengths(false); // the controls go back to the design
-    emit statusMessage(message, true);
+    emit statusMessage(m_linkFailure, true);
     return false;
+}
+
+void FourBarPanel::showLinkMessage()
+{
+    if (m_linkFailure.isEmpty()) {
+        m_linkMessage->hide();
+        return;
+    }
+    m_linkMessage->setText(m_linkFailure + QLatin1Char(' ') + tr("The last valid design is kept."));
+    m_linkMessage->show();
 }
 
 void FourBarPanel::setDesign(const MechanismPtr &mechanism)
@@ -240,7 +296,8 @@ void FourBarPanel::setDesign(const MechanismPtr &mechanism)
     if (!fourbar)
         return;
     m_mechanism = mechanism;
-    m_linkMessage->hide(); // a design that arrives is valid
+    m_linkFailure.clear(); // a design that arrives is valid
+    m_linkMessage->hide();
     showLengths(m_dragging < 0);
     showDesignInfo();
     const Pose pose = m_document ? m_document->pose() : fourbar->homePose();
@@ -273,7 +330,7 @@ void FourBarPanel::showLengths(bool ranges)
             const auto info = std::find_if(
                 infos.begin(), infos.end(), [&](const ParameterInfo &p) { return p.name == linkNames[i]; });
             if (info != infos.end())
-                w->setToolTip(tr("%1: %2").arg(QLatin1String(linkNames[i]), toQString(info->label)));
+                w->setToolTip(tr("%1: %2").arg(QLatin1String(linkNames[i]), coreLabel(info->label)));
         }
     }
     m_updating = false;
@@ -314,13 +371,13 @@ void FourBarPanel::showDesignInfo()
         meaning = tr("the links can fold flat in line, where the open and crossed branches meet.");
         break;
     }
-    QString name = QString::fromLatin1(fourbar::grashofName(g));
-    name[0] = name[0].toUpper();
-    auto sum = [](const std::pair<double, const char *> &a, const std::pair<double, const char *> &b) {
+    const QString name = grashofTitle(g);
+    const QString mm = unitText(units::millimetre);
+    auto sum = [&mm](const std::pair<double, const char *> &a, const std::pair<double, const char *> &b) {
         // one unbreakable piece: the label wraps between the sums, not inside one
-        return QStringLiteral("%1 + %2 = %3 + %4 = %5 mm")
+        return QStringLiteral("%1 + %2 = %3 + %4 = %5 %6")
             .arg(QLatin1String(a.second), QLatin1String(b.second), lengthText(a.first), lengthText(b.first),
-                lengthText(a.first + b.first))
+                lengthText(a.first + b.first), mm)
             .replace(QLatin1Char(' '), QChar(0x00A0));
     };
     m_grashof->setText(tr("<b>%1</b>: s + l = %2 %3 p + q = %4; %5")
@@ -334,9 +391,9 @@ void FourBarPanel::showDesignInfo()
         : tr("<b>α</b> assembles from %1 to %2 only: at the ends the coupler and the rocker are in line (dead "
              "points)")
               .arg(degreeText(alpha.min, 2), degreeText(alpha.max, 2));
-    m_range->setText(tr("%1. <b>δ</b> swings over %2 … %3 (%4 branch).")
-                         .arg(alphaText, degreeText(delta.min), degreeText(delta.max),
-                             QLatin1String(fourbar::branchName(d.branch))));
+    m_range->setText((d.branch == fourbar::crossed ? tr("%1. <b>δ</b> swings over %2 … %3 (crossed branch).")
+                                                   : tr("%1. <b>δ</b> swings over %2 … %3 (open branch)."))
+                         .arg(alphaText, degreeText(delta.min), degreeText(delta.max)));
 
     // |γ| over the motion
     double lo = 180.0, hi = 0.0;
@@ -357,9 +414,8 @@ void FourBarPanel::showDesignInfo()
             ? tr("<span style='color:#b3261e'>over the motion %1° … %2°: enters the poor band</span>")
                   .arg(QLocale().toString(lo, 'f', 1), QLocale().toString(hi, 'f', 1))
             : tr("over the motion %1° … %2°: inside %3° … %4°")
-                  .arg(QLocale().toString(lo, 'f', 1), QLocale().toString(hi, 'f', 1))
-                  .arg(FourBar::poorTransmission)
-                  .arg(180.0 - FourBar::poorTransmission));
+                  .arg(QLocale().toString(lo, 'f', 1), QLocale().toString(hi, 'f', 1),
+                      limitText(FourBar::poorTransmission), limitText(180.0 - FourBar::poorTransmission)));
 }
 
 void FourBarPanel::setPose(const Pose &pose)
@@ -367,7 +423,16 @@ void FourBarPanel::setPose(const Pose &pose)
     const FourBar *fourbar = fourbarOf(m_mechanism);
     if (!fourbar || pose.inputs.size() != 1 || pose.outputs.size() != 1)
         return;
+    m_pose = pose;
     m_plots->setPose(pose);
+    showPose(pose);
+}
+
+void FourBarPanel::showPose(const Pose &pose)
+{
+    const FourBar *fourbar = fourbarOf(m_mechanism);
+    if (!fourbar || pose.inputs.size() != 1 || pose.outputs.size() != 1)
+        return;
     const double gamma = fourbar::angles(fourbar->design(), pose.inputs[0], pose.outputs[0]).gamma / units::degree;
     m_poor = isPoor(gamma);
     const QString value
@@ -376,8 +441,8 @@ void FourBarPanel::setPose(const Pose &pose)
         m_transmission->setText(
             tr("%1 — poor: %2")
                 .arg(value,
-                    std::abs(gamma) < 90.0 ? tr("below %1°").arg(FourBar::poorTransmission)
-                                           : tr("above %1°").arg(180.0 - FourBar::poorTransmission)));
+                    std::abs(gamma) < 90.0 ? tr("below %1°").arg(limitText(FourBar::poorTransmission))
+                                           : tr("above %1°").arg(limitText(180.0 - FourBar::poorTransmission))));
         m_transmission->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; }"));
     } else {
         m_transmission->setText(value);
@@ -422,6 +487,13 @@ void TransmissionGauge::setValues(double gamma, double minimum, double maximum)
     m_minimum = minimum;
     m_maximum = maximum;
     update();
+}
+
+void TransmissionGauge::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        update();
+    QWidget::changeEvent(event);
 }
 
 void TransmissionGauge::paintEvent(QPaintEvent *)

@@ -13,6 +13,7 @@
 #include <array>
 
 class QDoubleSpinBox;
+class QGroupBox;
 class QLabel;
 class QSlider;
 
@@ -59,19 +60,32 @@ public:
 signals:
     void statusMessage(const QString &message, bool error);
 
+protected:
+    /// A new language: every text again, from the current design and pose.
+    void changeEvent(QEvent *event) override;
+
 private:
     struct LinkRow {
+        QLabel *label = nullptr;
         QSlider *slider = nullptr;
         QDoubleSpinBox *spinBox = nullptr;
     };
+    void retranslate();
     void showLengths(bool ranges);
     void showDesignInfo();
+    /// The texts of the pose: γ, its warning, and why α stops.
+    void showPose(const Pose &pose);
     void showLimit(const Pose &pose);
+    void showLinkMessage();
 
     QPointer<Document> m_document;
     MechanismPtr m_mechanism;
+    Pose m_pose; ///< the pose shown last
     std::array<LinkRow, 4> m_rows;
+    QGroupBox *m_linksGroup = nullptr;
+    QGroupBox *m_transmissionGroup = nullptr;
     QLabel *m_linkMessage = nullptr;
+    QString m_linkFailure; ///< the core's reason for the last refused length
     QLabel *m_grashof = nullptr;
     QLabel *m_range = nullptr;
     QLabel *m_limit = nullptr;
@@ -103,6 +117,8 @@ public:
 
 protected:
     void paintEvent(QPaintEvent *event) override;
+    /// The tick labels follow the language's number format.
+    void changeEvent(QEvent *event) override;
 
 private:
     double m_value = 90.0, m_minimum = 90.0, m_maximum = 90.0;

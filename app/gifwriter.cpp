@@ -2,6 +2,8 @@
 
 #include <gif_lib.h>
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <array>
 #include <memory>
@@ -55,10 +57,10 @@ QByteArray encodeGif(const QList<QImage> &frames, const GifOptions &options, QSt
         return QByteArray();
     };
     if (frames.isEmpty())
-        return fail(QStringLiteral("An animation needs at least one frame."));
+        return fail(QCoreApplication::translate("pkm::GifWriter", "An animation needs at least one frame."));
     const QSize size = frames.first().size();
     if (size.isEmpty() || size.width() > 65535 || size.height() > 65535)
-        return fail(QStringLiteral("A GIF frame must be 1 to 65535 pixels on each side."));
+        return fail(QCoreApplication::translate("pkm::GifWriter", "A GIF frame must be 1 to 65535 pixels on each side."));
 
     QByteArray bytes;
     int code = 0;
@@ -82,7 +84,7 @@ QByteArray encodeGif(const QList<QImage> &frames, const GifOptions &options, QSt
     std::vector<GifByteType> red(pixels), green(pixels), blue(pixels), indices(pixels);
     for (const QImage &frame : frames) {
         if (frame.size() != size)
-            return fail(QStringLiteral("All frames of a GIF must have the same size."));
+            return fail(QCoreApplication::translate("pkm::GifWriter", "All frames of a GIF must have the same size."));
         const QImage rgb = frame.convertToFormat(QImage::Format_RGB888);
         for (int y = 0; y < size.height(); ++y) {
             const uchar *line = rgb.constScanLine(y);
@@ -96,10 +98,10 @@ QByteArray encodeGif(const QList<QImage> &frames, const GifOptions &options, QSt
         int colours = 256;
         ColorMap map(GifMakeMapObject(colours, nullptr));
         if (!map)
-            return fail(QStringLiteral("giflib: out of memory."));
+            return fail(QCoreApplication::translate("pkm::GifWriter", "giflib: out of memory."));
         if (GifQuantizeBuffer(size.width(), size.height(), &colours, red.data(), green.data(), blue.data(),
                               indices.data(), map->Colors) == GIF_ERROR)
-            return fail(QStringLiteral("giflib could not reduce a frame to 256 colours."));
+            return fail(QCoreApplication::translate("pkm::GifWriter", "giflib could not reduce a frame to 256 colours."));
         const auto control = frameControl(options.frameMilliseconds);
         if (EGifPutExtension(file.get(), GRAPHICS_EXT_FUNC_CODE, 4, control.data()) == GIF_ERROR
             || EGifPutImageDesc(file.get(), 0, 0, size.width(), size.height(), false, map.get()) == GIF_ERROR)

@@ -1,6 +1,7 @@
 // pkm-studio: the desktop application. Usage: pkm-studio [--3d] [PRESET-ID | DESIGN.pkm.json]
 #include "designsession.h"
 #include "document.h"
+#include "language.h"
 #include "mainwindow.h"
 
 #include <QApplication>
@@ -34,7 +35,20 @@ int main(int argc, char *argv[])
                                                 "default: pjoint-prototype."));
     const QCommandLineOption show3d(QStringLiteral("3d"), QStringLiteral("Start with the 3D view of the linkage."));
     parser.addOption(show3d);
+    const QCommandLineOption languageOption(
+        QStringLiteral("lang"),
+        QStringLiteral("Language for this run: en, sr (Serbian, Cyrillic), sr_Latn (Serbian, Latin) or ru; "
+                       "default: the one chosen in the Language menu, else the system's."),
+        QStringLiteral("code"));
+    parser.addOption(languageOption);
     parser.process(app);
+
+    // The language first, so that every widget is made in it. --lang is for this run only.
+    const QString code = parser.isSet(languageOption) ? parser.value(languageOption) : pkm::language::preferred();
+    if (!pkm::language::apply(code)) {
+        std::fprintf(stderr, "pkm-studio: unknown language '%s' (use en, sr, sr_Latn or ru)\n", qPrintable(code));
+        return 2;
+    }
 
     pkm::MainWindow window;
     const QStringList designs = parser.positionalArguments();

@@ -8,6 +8,7 @@
 #include "dxfwriter.h"
 #include "fourbar.h"
 #include "fourbarpanel.h"
+#include "language.h"
 #include "linkageview.h"
 #include "linkageview3d.h"
 #include "mobilitypanel.h"
@@ -196,14 +197,14 @@ void MainWindow::createDocks()
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setMinimumWidth(330);
-    auto *designDock = new QDockWidget(tr("Design"), this);
+    auto *designDock = m_designDock = new QDockWidget(tr("Design"), this);
     designDock->setObjectName(QStringLiteral("designDock"));
     designDock->setWidget(scroll);
     addDockWidget(Qt::LeftDockWidgetArea, designDock);
 
     m_values = new ValuesTable(this);
     m_values->setMinimumWidth(330);
-    auto *valuesDock = new QDockWidget(tr("Values at this pose"), this);
+    auto *valuesDock = m_valuesDock = new QDockWidget(tr("Values at this pose"), this);
     valuesDock->setObjectName(QStringLiteral("valuesDock"));
     valuesDock->setWidget(m_values);
     addDockWidget(Qt::LeftDockWidgetArea, valuesDock);
@@ -211,7 +212,7 @@ void MainWindow::createDocks()
     // Mobility (issue 6): a tab behind the values, so it takes no room until asked for.
     m_mobility = new MobilityPanel(this);
     m_mobility->setMinimumWidth(330);
-    auto *mobilityDock = new QDockWidget(tr("Mobility"), this);
+    auto *mobilityDock = m_mobilityDock = new QDockWidget(tr("Mobility"), this);
     mobilityDock->setObjectName(QStringLiteral("mobilityDock"));
     mobilityDock->setWidget(m_mobility);
     addDockWidget(Qt::LeftDockWidgetArea, mobilityDock);
@@ -232,43 +233,116 @@ void MainWindow::createDocks()
     });
 }
 
+QAction *MainWindow::translated(QAction *action, const char *source, const char *toolTip)
+{
+    m_translatedActions.append({action, source, toolTip});
+    action->setText(tr(source));
+    if (toolTip)
+        action->setToolTip(tr(toolTip));
+    return action;
+}
+
 void MainWindow::createActions()
 {
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *open = file->addAction(tr("&Open Design…"), this, &MainWindow::openFile);
+    QMenu *file = menuBar()->addMenu(QString());
+    translated(file->menuAction(), QT_TR_NOOP("&File"));
+    QAction *open = translated(file->addAction(QString(), this, &MainWindow::openFile), QT_TR_NOOP("&Open Design…"));
     open->setShortcut(QKeySequence::Open);
-    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu = file->addMenu(QString());
+    translated(m_recentMenu->menuAction(), QT_TR_NOOP("Open &Recent"));
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     updateRecentMenu();
     connect(m_session, &DesignSession::recentFilesChanged, this, &MainWindow::updateRecentMenu);
-    QAction *save = file->addAction(tr("&Save Design"), this, &MainWindow::saveFile);
+    QAction *save = translated(file->addAction(QString(), this, &MainWindow::saveFile), QT_TR_NOOP("&Save Design"));
     save->setShortcut(QKeySequence::Save);
     save->setObjectName(QStringLiteral("saveAction"));
-    QAction *saveAs = file->addAction(tr("Save Design &As…"), this, &MainWindow::saveFileAs);
+    QAction *saveAs = translated(file->addAction(QString(), this, &MainWindow::saveFileAs), QT_TR_NOOP("Save Design &As…"));
     saveAs->setShortcut(QKeySequence::SaveAs);
     file->addSeparator();
-    file->addAction(tr("Export &Animation (GIF)…"), this, &MainWindow::exportAnimationDialog)
+    translated(file->addAction(QString(), this, &MainWindow::exportAnimationDialog), QT_TR_NOOP("Export &Animation (GIF)…"))
         ->setObjectName(QStringLiteral("exportAnimationAction"));
-    file->addAction(tr("Export &Drawing (DXF)…"), this, &MainWindow::exportDrawing)
+    translated(file->addAction(QString(), this, &MainWindow::exportDrawing), QT_TR_NOOP("Export &Drawing (DXF)…"))
         ->setObjectName(QStringLiteral("exportDxfAction"));
-    file->addAction(tr("Export &Parameter Sheet…"), this, &MainWindow::exportParameterSheet)
+    translated(file->addAction(QString(), this, &MainWindow::exportParameterSheet), QT_TR_NOOP("Export &Parameter Sheet…"))
         ->setObjectName(QStringLiteral("exportSheetAction"));
-    file->addAction(tr("Save 2D &View Picture…"), this, &MainWindow::saveViewPicture)
+    translated(file->addAction(QString(), this, &MainWindow::saveViewPicture), QT_TR_NOOP("Save 2D &View Picture…"))
         ->setObjectName(QStringLiteral("saveViewPictureAction"));
     file->addSeparator();
-    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    QAction *quit = translated(file->addAction(QString(), this, &QWidget::close), QT_TR_NOOP("&Quit"));
     quit->setShortcut(QKeySequence::Quit);
 
-    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    m_editMenu = menuBar()->addMenu(QString());
+    translated(m_editMenu->menuAction(), QT_TR_NOOP("&Edit"));
     // The menu names the step ("Undo Change a"); the toolbar keeps a short, steady label and
     // names the step in its tooltip, so a long design title does not widen it.
-    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    QAction *undoButton = new QAction(tr("Undo"), this);
-    QAction *redoButton = new QAction(tr("Redo"), this);
-    for (auto [button, full] : {std::pair{undoButton, undo}, std::pair{redoButton, redo}}) {
+    m_undoButton = translated(new QAction(this), QT_TR_NOOP("Undo"));
+    m_redoButton = translated(new QAction(this), QT_TR_NOOP("Redo"));
+    createUndoActions();
+
+    m_presetsMenu = menuBar()->addMenu(QString());
+    translated(m_presetsMenu->menuAction(), QT_TR_NOOP("&Presets"));
+    m_presetsMenu->setToolTipsVisible(true); // the description says where a preset comes from
+    fillPresetsMenu();
+
+    QMenu *view = menuBar()->addMenu(QString());
+    translated(view->menuAction(), QT_TR_NOOP("&View"));
+    QAction *fit = translated(view->addAction(QString(), m_view, &LinkageView::fitToView), QT_TR_NOOP("&Fit Mechanism"));
+    fit->setShortcut(Qt::Key_F);
+    QAction *zoomIn = translated(view->addAction(QString(), m_view, &LinkageView::zoomIn), QT_TR_NOOP("Zoom &In"));
+    zoomIn->setShortcut(QKeySequence::ZoomIn);
+    QAction *zoomOut = translated(view->addAction(QString(), m_view, &LinkageView::zoomOut), QT_TR_NOOP("Zoom &Out"));
+    zoomOut->setShortcut(QKeySequence::ZoomOut);
+    view->addSeparator();
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        view->addAction(dock->toggleViewAction());
+
+    // Each language by its own name, so that anyone finds theirs whatever is shown now.
+    m_languageMenu = menuBar()->addMenu(QString());
+    m_languageMenu->setObjectName(QStringLiteral("languageMenu"));
+    translated(m_languageMenu->menuAction(), QT_TR_NOOP("&Language"));
+    auto *languages = new QActionGroup(this);
+    for (const language::Language &language : language::all()) {
+        QAction *action = m_languageMenu->addAction(language.nativeName);
+        action->setObjectName(QStringLiteral("language_") + language.code);
+        action->setData(language.code);
+        action->setCheckable(true);
+        action->setChecked(language.code == language::current());
+        languages->addAction(action);
+        connect(action, &QAction::triggered, this, [this, code = language.code] { setLanguage(code); });
+    }
+
+    QMenu *help = menuBar()->addMenu(QString());
+    translated(help->menuAction(), QT_TR_NOOP("&Help"));
+    translated(help->addAction(QString(), this, &MainWindow::about), QT_TR_NOOP("&About PKM Studio"));
+
+    m_toolBar = addToolBar(QString());
+    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_toolBar->addAction(open);
+    m_toolBar->addAction(save);
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_undoButton);
+    m_toolBar->addAction(m_redoButton);
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(fit);
+    m_toolBar->addAction(zoomIn);
+    m_toolBar->addAction(zoomOut);
+    translated(m_toolBar->toggleViewAction(), QT_TR_NOOP("Main Toolbar"));
+}
+
+void MainWindow::createUndoActions()
+{
+    // QUndoStack's actions keep the prefix they were made with: a new language makes new ones.
+    delete m_undoAction;
+    delete m_redoAction;
+    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_undoAction->setObjectName(QStringLiteral("undoAction"));
+    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setShortcut(QKeySequence::Redo);
+    m_redoAction->setObjectName(QStringLiteral("redoAction"));
+    for (auto [button, full] : {std::pair{m_undoButton, m_undoAction}, std::pair{m_redoButton, m_redoAction}}) {
+        disconnect(button, &QAction::triggered, nullptr, nullptr);
         connect(button, &QAction::triggered, full, &QAction::trigger);
         const auto follow = [button, full] {
             button->setEnabled(full->isEnabled());
@@ -277,49 +351,79 @@ void MainWindow::createActions()
         connect(full, &QAction::changed, button, follow);
         follow();
     }
-    edit->addAction(undo);
-    edit->addAction(redo);
+    m_editMenu->addAction(m_undoAction);
+    m_editMenu->addAction(m_redoAction);
+}
 
-    QMenu *presets = menuBar()->addMenu(tr("&Presets"));
-    presets->setToolTipsVisible(true); // the description says where a preset comes from
+void MainWindow::fillPresetsMenu()
+{
+    m_presetsMenu->clear();
     QString lastKind;
     for (const PresetInfo &preset : designfile::presets()) {
         if (!lastKind.isEmpty() && preset.kind != lastKind)
-            presets->addSeparator();
+            m_presetsMenu->addSeparator();
         lastKind = preset.kind;
-        QAction *action = presets->addAction(preset.title, this, [this, id = preset.id] { openFromMenu(id); });
+        QAction *action = m_presetsMenu->addAction(designfile::presetText(preset.title), this,
+                                                   [this, id = preset.id] { openFromMenu(id); });
         action->setData(preset.id);
         action->setObjectName(QStringLiteral("preset_") + preset.id);
         if (auto design = designfile::load(preset.id))
-            action->setToolTip(design->description);
+            action->setToolTip(designfile::presetText(design->description));
     }
+}
 
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    QAction *fit = view->addAction(tr("&Fit Mechanism"), m_view, &LinkageView::fitToView);
-    fit->setShortcut(Qt::Key_F);
-    QAction *zoomIn = view->addAction(tr("Zoom &In"), m_view, &LinkageView::zoomIn);
-    zoomIn->setShortcut(QKeySequence::ZoomIn);
-    QAction *zoomOut = view->addAction(tr("Zoom &Out"), m_view, &LinkageView::zoomOut);
-    zoomOut->setShortcut(QKeySequence::ZoomOut);
-    view->addSeparator();
-    for (QDockWidget *dock : findChildren<QDockWidget *>())
-        view->addAction(dock->toggleViewAction());
+void MainWindow::setLanguage(const QString &code)
+{
+    if (code == language::current())
+        return;
+    if (!language::apply(code)) {
+        showStatus(tr("The language “%1” is not available.").arg(code), true);
+        return;
+    }
+    language::remember(code);
+}
 
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About PKM Studio"), this, &MainWindow::about);
+void MainWindow::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QMainWindow::changeEvent(event);
+}
 
-    QToolBar *toolbar = addToolBar(tr("Main"));
-    toolbar->setObjectName(QStringLiteral("mainToolBar"));
-    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    toolbar->addAction(open);
-    toolbar->addAction(save);
-    toolbar->addSeparator();
-    toolbar->addAction(undoButton);
-    toolbar->addAction(redoButton);
-    toolbar->addSeparator();
-    toolbar->addAction(fit);
-    toolbar->addAction(zoomIn);
-    toolbar->addAction(zoomOut);
+void MainWindow::retranslate()
+{
+    for (const TranslatedAction &entry : std::as_const(m_translatedActions)) {
+        if (!entry.action)
+            continue;
+        entry.action->setText(tr(entry.source));
+        if (entry.toolTip)
+            entry.action->setToolTip(tr(entry.toolTip));
+    }
+    if (m_editMenu)
+        createUndoActions();
+    if (m_presetsMenu)
+        fillPresetsMenu();
+    if (m_languageMenu) {
+        for (QAction *action : m_languageMenu->actions())
+            action->setChecked(action->data().toString() == language::current());
+    }
+    if (m_toolBar)
+        m_toolBar->setWindowTitle(tr("Main Toolbar"));
+    m_designDock->setWindowTitle(tr("Design"));
+    m_valuesDock->setWindowTitle(tr("Values at this pose"));
+    m_mobilityDock->setWindowTitle(tr("Mobility"));
+    m_viewTabs->setTabText(0, tr("2D"));
+    m_viewTabs->setTabText(1, tr("3D"));
+    m_viewTabs->setTabToolTip(1, tr("The mechanism in 3D: drag to turn it, right-drag to pan, wheel to zoom"));
+    // What the main window shows of the design and the pose: the preset's title and note, the
+    // pose in the status bar (numbers by the new locale), the modes, the limit note, the labels
+    // of the drawing. A status message of the old language goes.
+    const Design &design = m_document->design();
+    m_designPanel->setNote(designfile::presetText(design.title), designfile::presetText(design.description));
+    updateTitle();
+    onPoseChanged();
+    if (!m_statusIsError)
+        statusBar()->clearMessage();
 }
 
 bool MainWindow::openDesign(const QString &presetOrPath)
@@ -340,7 +444,7 @@ void MainWindow::onDesignChanged()
     const MechanismPtr &mechanism = design.mechanism;
     updateTitle();
     m_designPanel->setMechanism(mechanism);
-    m_designPanel->setNote(design.title, design.description);
+    m_designPanel->setNote(designfile::presetText(design.title), designfile::presetText(design.description));
     m_variables->setMechanism(mechanism);
     m_values->setMechanism(mechanism);
     m_mobility->setMechanism(mechanism);
@@ -454,14 +558,14 @@ void MainWindow::updateModes()
             QString text = v > 0 ? QStringLiteral("+1") : QStringLiteral("−1");
             for (const auto &[name, choice] : info.choices) {
                 if (choice == v)
-                    text = toQString(name);
+                    text = coreLabel(name); // a key in files ("open"), a word on screen
             }
-            current << QStringLiteral("%1 = %2").arg(toQString(info.symbol), text);
+            current << QStringLiteral("%1 = %2").arg(coreLabel(info.symbol), text);
         }
     }
     QStringList labels;
     for (const ModeAlternative &alternative : m_alternatives)
-        labels << QString::fromStdString(alternative.label);
+        labels << coreLabel(alternative.label);
     m_modeBar->setModes(current.join(QStringLiteral(", ")), labels);
     QList<Scene> ghosts;
     for (const ModeAlternative &alternative : m_alternatives)
@@ -479,7 +583,7 @@ void MainWindow::switchMode(int index)
     if (!switched)
         showStatus(failureText(switched.failure()), true);
     else
-        showStatus(tr("Switched to %1.").arg(QString::fromStdString(alternative.label)));
+        showStatus(tr("Switched to %1.").arg(coreLabel(alternative.label)));
 }
 
 void MainWindow::showStatus(const QString &message, bool error)

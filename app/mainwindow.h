@@ -7,10 +7,14 @@
 
 #include <QMainWindow>
 #include <QMessageBox>
+#include <QPointer>
 
 #include <functional>
 
+class QAction;
+class QDockWidget;
 class QLabel;
+class QToolBar;
 class QMenu;
 class QSplitter;
 class QStackedWidget;
@@ -81,11 +85,21 @@ public:
     /// writes the GIF to `path`; the status bar says when it is done.
     void exportAnimationTo(const QString &path, AnimationSettings settings);
 
+    /// Switches the program to the language `code` (language.h) and remembers it.
+    void setLanguage(const QString &code);
+
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void changeEvent(QEvent *event) override;
 
 private:
     void createActions();
+    /// Sets the action's text (and tooltip) to the translation of `source` now and after every
+    /// change of language.
+    QAction *translated(QAction *action, const char *source, const char *toolTip = nullptr);
+    void createUndoActions();
+    void fillPresetsMenu();
+    void retranslate();
     void createDocks();
     void onDesignChanged();
     void onPoseChanged();
@@ -116,6 +130,23 @@ private:
     Document *m_document = nullptr;
     DesignSession *m_session = nullptr;
     QMenu *m_recentMenu = nullptr;
+    QMenu *m_editMenu = nullptr;
+    QMenu *m_presetsMenu = nullptr;
+    QMenu *m_languageMenu = nullptr;
+    QToolBar *m_toolBar = nullptr;
+    QAction *m_undoAction = nullptr;
+    QAction *m_redoAction = nullptr;
+    QAction *m_undoButton = nullptr;
+    QAction *m_redoButton = nullptr;
+    QDockWidget *m_designDock = nullptr;
+    QDockWidget *m_valuesDock = nullptr;
+    QDockWidget *m_mobilityDock = nullptr;
+    struct TranslatedAction {
+        QPointer<QAction> action;
+        const char *source = nullptr;
+        const char *toolTip = nullptr;
+    };
+    QList<TranslatedAction> m_translatedActions;
     Question m_question;
     LinkageView *m_view = nullptr;
     VariablePanel *m_variables = nullptr;

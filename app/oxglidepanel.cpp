@@ -7,6 +7,7 @@
 #include "workspacepanel.h"
 
 #include <QButtonGroup>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -24,12 +25,14 @@ constexpr int ticksPerPhase = 50; ///< 1.5 s per phase
 
 QString mmText(double value)
 {
-    return QLocale().toString(value, 'f', 2) + QStringLiteral(" mm");
+    return formatQuantity(value, units::millimetre, 2);
 }
 
-QString formTitle(int form)
+/// Whole sentences for each form (not "the %1 form": the name's case changes in Russian and
+/// Serbian with its place in the sentence).
+bool isX(int form)
 {
-    return form == oxglide::formX ? OxGlidePanel::tr("crossed (X)") : OxGlidePanel::tr("extended (O)");
+    return form == oxglide::formX;
 }
 
 const OxGlide *oxglideOf(const MechanismPtr &mechanism)
@@ -46,9 +49,10 @@ OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
 
     auto *row = new QHBoxLayout;
-    auto *formLabel = new QLabel(tr("Form:"), this);
-    m_formO = new QPushButton(tr("O — extended"), this);
-    m_formX = new QPushButton(tr("X — crossed"), this);
+    auto *formLabel = new QLabel(this);
+    m_formLabel = formLabel;
+    m_formO = new QPushButton(this);
+    m_formX = new QPushButton(this);
     auto *group = new QButtonGroup(this);
     for (QPushButton *button : {m_formO, m_formX}) {
         button->setCheckable(true);
@@ -56,12 +60,8 @@ OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
     }
     m_formO->setObjectName(QStringLiteral("formO"));
     m_formX->setObjectName(QStringLiteral("formX"));
-    m_formO->setToolTip(tr("Work in the extended form: the rods splay outwards from the platform."));
-    m_formX->setToolTip(tr("Work in the crossed form: the slider pairs pass each other and the rods cross."));
-    m_cross = new QPushButton(tr("Animate crossing"), this);
+    m_cross = new QPushButton(this);
     m_cross->setObjectName(QStringLiteral("animateCrossing"));
-    m_cross->setToolTip(tr("Raise the platform towards the O↔X crossing (y = l, x_CD − x_AB = s) and stop short of "
-                           "the singular pose there."));
     formLabel->setBuddy(m_formO);
     row->addWidget(formLabel);
     row->addWidget(m_formO);
@@ -92,8 +92,8 @@ OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
     m_tabs = new QTabWidget(this);
     m_formView = new FormWorkspaceView(this);
     m_mapPanel = new WorkspacePanel(this);
-    m_tabs->addTab(m_formView, tr("Workspace O / X"));
-    m_tabs->addTab(m_mapPanel, tr("Singularity map"));
+    m_tabs->addTab(m_formView, QString());
+    m_tabs->addTab(m_mapPanel, QString());
     layout->addWidget(m_tabs, 1);
 
     connect(m_formO, &QPushButton::clicked, this, [this] { requestForm(oxglide::formO); });
@@ -104,6 +104,58 @@ OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
     connect(m_formView, &FormWorkspaceView::pointClicked, this, &OxGlidePanel::pointClicked);
     m_timer.setInterval(tickMilliseconds);
     connect(&m_timer, &QTimer::timeout, this, &OxGlidePanel::tick);
+    retranslate();
+}
+
+void OxGlidePanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void OxGlidePanel::retranslate()
+{
+    m_formLabel->setText(tr("Form:"));
+    m_formO->setText(tr("O — extended"));
+    m_formX->setText(tr("X — crossed"));
+    m_formO->setToolTip(tr("Work in the extended form: the rods splay outwards from the platform."));
+    m_formX->setToolTip(tr("Work in the crossed form: the slider pairs pass each other and the rods cross."));
+    m_cross->setToolTip(tr("Raise the platform towards the O↔X crossing (y = l, x_CD − x_AB = s) and stop short of "
+                           "the singular pose there."));
+    showCrossButton();
+    showLeaveButtons();
+    m_tabs->setTabText(m_tabs->indexOf(m_formView), tr("Workspace O / X"));
+    m_tabs->setTabText(m_tabs->indexOf(m_mapPanel), tr("Singularity map"));
+    if (m_bannerText)
+        m_banner->setText(m_bannerText());
+    showForms();
+}
+
+void OxGlidePanel::showCrossButton()
+{
+    const bool moving = m_phase == Phase::Rising || m_phase == Phase::Descending;
+    m_cross->setText(moving ? tr("Stop") : tr("Animate crossing"));
+}
+
+void OxGlidePanel::showLeaveButtons()
+{
+    if (!oxglideOf(m_mechanism))
+        return;
+    const bool x = isX(currentForm());
+    m_leaveOther->setText(x ? tr("Leave in the extended (O) form") : tr("Leave in the crossed (X) form"));
+    m_leaveSame->setText(x ? tr("Go back in the crossed (X) form") : tr("Go back in the extended (O) form"));
+}
+
+void OxGlidePanel::showBanner(const TextMaker &text)
+{
+    m_bannerText = text;
+    if (!text) {
+        m_banner->hide();
+        return;
+    }
+    m_banner->setText(text());
+    m_banner->show();
 }
 
 QPushButton *OxGlidePanel::formButton(int form) const
@@ -131,10 +183,17 @@ void OxGlidePanel::setDesign(const MechanismPtr &mechanism, const QString &title
     if (!glide)
         return;
     if (!m_switching && m_phase != Phase::Idle)
-        stopAnimation(tr("The crossing stopped: the design changed."));
+        stopAnimation([] { return tr("The crossing stopped: the design changed."); });
     showFormButtons();
     m_mapPanel->setDesign(mechanism, title);
+    showForms();
+}
 
+void OxGlidePanel::showForms()
+{
+    const OxGlide *glide = oxglideOf(m_mechanism);
+    if (!glide)
+        return;
     // fig. 5: the X form's region (light) under the O form's (dark)
     OxGlideDesign o = glide->design(), x = glide->design();
     o.form = oxglide::formO;
@@ -168,7 +227,7 @@ void OxGlidePanel::setPose(const Pose &pose)
         m_formView->setPose(pose.outputs.head<2>());
     m_mapPanel->setPose(pose);
     if (m_phase != Phase::Idle && m_phase != Phase::AtCrossing && !m_expected.outputs.isApprox(pose.outputs))
-        stopAnimation(tr("The crossing stopped: the pose was moved."));
+        stopAnimation([] { return tr("The crossing stopped: the pose was moved."); });
 }
 
 void OxGlidePanel::requestForm(int form)
@@ -185,7 +244,9 @@ void OxGlidePanel::requestForm(int form)
             emit statusMessage(QString::fromStdString(switched.failure().message), true);
             return;
         }
-        emit statusMessage(tr("Switched to the %1 form at the same platform position.").arg(formTitle(form)), false);
+        emit statusMessage(isX(form) ? tr("Switched to the crossed (X) form at the same platform position.")
+                                     : tr("Switched to the extended (O) form at the same platform position."),
+                           false);
         showFormButtons();
         return;
     }
@@ -198,13 +259,15 @@ void OxGlidePanel::requestForm(int form)
             return;
         }
     }
-    emit statusMessage(tr("The %1 form is not available at this pose.").arg(formTitle(form)), true);
+    emit statusMessage(isX(form) ? tr("The crossed (X) form is not available at this pose.")
+                                 : tr("The extended (O) form is not available at this pose."),
+                       true);
 }
 
 void OxGlidePanel::toggleCrossing()
 {
     if (m_phase == Phase::Rising || m_phase == Phase::Descending) {
-        stopAnimation(tr("Crossing stopped."));
+        stopAnimation([] { return tr("Crossing stopped."); });
         return;
     }
     const Pose &pose = m_document->pose();
@@ -221,9 +284,8 @@ void OxGlidePanel::toggleCrossing()
     m_step = std::max(1e-3, (m_target - m_startHeight) / ticksPerPhase);
     m_phase = Phase::Rising;
     m_expected = pose;
-    m_cross->setText(tr("Stop"));
-    m_banner->setText(tr("Raising the platform towards the O↔X crossing at y = l…"));
-    m_banner->show();
+    showCrossButton();
+    showBanner([] { return tr("Raising the platform towards the O↔X crossing at y = l…"); });
     m_timer.start();
 }
 
@@ -238,28 +300,28 @@ void OxGlidePanel::tick()
     m_expected.outputs = outputs;
     auto moved = m_document->moveOutputsTo(outputs);
     if (!moved) {
-        stopAnimation(QString::fromStdString(moved.failure().message), true);
+        const QString message = QString::fromStdString(moved.failure().message);
+        stopAnimation([message] { return message; }, true);
         return;
     }
     m_expected = *moved;
     if (std::abs(next - m_target) > 1e-9)
         return;
     m_timer.stop();
-    m_cross->setText(tr("Animate crossing"));
     if (rising) {
         const double l = oxglideOf(m_mechanism)->design().rod;
         const double angle = std::atan2(next, std::sqrt(std::max(0.0, l * l - next * next))) * 180.0 / std::numbers::pi;
         m_phase = Phase::AtCrossing;
-        m_banner->setText(
-            tr("<b>Stopped %1 short of the singular pose.</b> At y = l = %2 the slider pairs stand at "
-               "x_CD − x_AB = s: the rods are perpendicular to the guides and parallel to each other, so the platform "
-               "can swing sideways while the sliders hold still (a combined singularity), and it may leave in either "
-               "form. Here the rods are at %3° to the guides. Passing needs the platform guided through that point: "
-               "choose the form to leave in.")
-                .arg(mmText(l - next), mmText(l), QLocale().toString(angle, 'f', 1)));
-        const int other = -currentForm();
-        m_leaveOther->setText(tr("Leave in the %1 form").arg(formTitle(other)));
-        m_leaveSame->setText(tr("Go back in the %1 form").arg(formTitle(currentForm())));
+        showCrossButton();
+        showBanner([l, next, angle] {
+            return tr("<b>Stopped %1 short of the singular pose.</b> At y = l = %2 the slider pairs stand at "
+                      "x_CD − x_AB = s: the rods are perpendicular to the guides and parallel to each other, so the "
+                      "platform can swing sideways while the sliders hold still (a combined singularity), and it may "
+                      "leave in either form. Here the rods are at %3° to the guides. Passing needs the platform guided "
+                      "through that point: choose the form to leave in.")
+                .arg(mmText(l - next), mmText(l), QLocale().toString(angle, 'f', 1));
+        });
+        showLeaveButtons();
         m_leaveOther->show();
         m_leaveSame->show();
         emit statusMessage(tr("The crossing stopped %1 below y = l, short of the singular pose x_CD − x_AB = s.")
@@ -267,8 +329,13 @@ void OxGlidePanel::tick()
                            false);
     } else {
         m_phase = Phase::Idle;
-        m_banner->setText(tr("The platform is back at y = %1, in the %2 form.")
-                              .arg(mmText(next), formTitle(currentForm())));
+        showCrossButton();
+        const int form = currentForm();
+        showBanner([next, form] {
+            return (isX(form) ? tr("The platform is back at y = %1, in the crossed (X) form.")
+                              : tr("The platform is back at y = %1, in the extended (O) form."))
+                .arg(mmText(next));
+        });
     }
 }
 
@@ -287,25 +354,25 @@ void OxGlidePanel::leave(bool otherForm)
     m_target = m_startHeight;
     m_step = std::max(1e-3, (m_document->pose().outputs[1] - m_target) / ticksPerPhase);
     m_expected = m_document->pose();
-    m_cross->setText(tr("Stop"));
-    m_banner->setText(tr("Lowering the platform in the %1 form…").arg(formTitle(currentForm())));
+    showCrossButton();
+    const int form = currentForm();
+    showBanner([form] {
+        return isX(form) ? tr("Lowering the platform in the crossed (X) form…")
+                         : tr("Lowering the platform in the extended (O) form…");
+    });
     m_timer.start();
 }
 
-void OxGlidePanel::stopAnimation(const QString &message, bool error)
+void OxGlidePanel::stopAnimation(const TextMaker &message, bool error)
 {
     m_timer.stop();
     m_phase = Phase::Idle;
-    m_cross->setText(tr("Animate crossing"));
+    showCrossButton();
     m_leaveOther->hide();
     m_leaveSame->hide();
-    if (message.isEmpty()) {
-        m_banner->hide();
-    } else {
-        m_banner->setText(message);
-        m_banner->show();
-        emit statusMessage(message, error);
-    }
+    showBanner(message);
+    if (message)
+        emit statusMessage(message(), error);
 }
 
 } // namespace pkm

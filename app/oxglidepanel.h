@@ -12,6 +12,8 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <functional>
+
 class QLabel;
 class QPushButton;
 class QTabWidget;
@@ -60,21 +62,36 @@ signals:
     void statusMessage(const QString &message, bool error);
     void pointClicked(const Eigen::Vector2d &point);
 
+protected:
+    /// A new language: every text again, the banner and the workspace plot's titles included.
+    void changeEvent(QEvent *event) override;
+
 private:
+    /// Makes the banner's text in the current language.
+    using TextMaker = std::function<QString()>;
+    void retranslate();
     void tick();
-    void stopAnimation(const QString &message = {}, bool error = false);
+    /// `message` (none: the banner hides) is shown in the banner and the status bar.
+    void stopAnimation(const TextMaker &message = {}, bool error = false);
+    void showBanner(const TextMaker &text);
     void leave(bool otherForm);
     void showFormButtons();
+    void showCrossButton();
+    void showLeaveButtons();
+    /// The workspaces of both forms (fig. 5) in the form view.
+    void showForms();
     int currentForm() const;
 
     Document *m_document = nullptr;
     MechanismPtr m_mechanism;
+    QLabel *m_formLabel = nullptr;
     QPushButton *m_formO = nullptr;
     QPushButton *m_formX = nullptr;
     QPushButton *m_cross = nullptr;
     QPushButton *m_leaveOther = nullptr;
     QPushButton *m_leaveSame = nullptr;
     QLabel *m_banner = nullptr;
+    TextMaker m_bannerText; ///< the banner's text, or null while it is hidden
     QTabWidget *m_tabs = nullptr;
     FormWorkspaceView *m_formView = nullptr;
     WorkspacePanel *m_mapPanel = nullptr;

@@ -5,11 +5,14 @@
 #include "oxglide.h"
 #include "pjoint.h"
 #include "planarworkspace.h"
+#include "quantityformat.h"
 #include "registry.h"
 #include "sheetparts.h"
+#include "text.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QLocale>
 #include <QTimeZone>
 
 #include <algorithm>
@@ -81,7 +84,7 @@ QString poseText(const Mechanism &mechanism, const Pose &pose)
     }
     for (const ReportText &word : mechanism.reportText(pose)) {
         if (word.group == ReportGroup::Pose)
-            parts << utf8(word.name) + QLatin1Char(' ') + utf8(word.text);
+            parts << utf8(word.name) + QLatin1Char(' ') + coreLabel(word.text);
     }
     return parts.join(QStringLiteral(", "));
 }
@@ -108,7 +111,7 @@ void addParameters(const Mechanism &mechanism, Parts &parts)
         for (const ParameterInfo &info : mechanism.parameterInfo()) {
             if (info.group != group)
                 continue;
-            Item item {info.name, utf8(info.symbol), utf8(info.label),
+            Item item {info.name, utf8(info.symbol), coreLabel(info.label),
                 numberCell(cli::parameterDisplayValue(values, info), info.decimals), std::string(info.unit.symbol),
                 std::string(parameterGroupKey(group))};
             if (group == ParameterGroup::Mode) {
@@ -117,7 +120,7 @@ void addParameters(const Mechanism &mechanism, Parts &parts)
                 item.value.shown = sign;
                 for (const auto &[name, choice] : info.choices) {
                     if (choice == item.value.number)
-                        item.value.shown = utf8(name) + QStringLiteral(" (") + sign + QLatin1Char(')');
+                        item.value.shown = coreLabel(name) + QStringLiteral(" (") + sign + QLatin1Char(')');
                 }
             }
             if (!info.stored)
@@ -211,7 +214,7 @@ void addRanges(const Mechanism &mechanism, const Pose &pose, Parts &parts)
         const VariableInfo &info = variables[i];
         const Interval range = mechanism.variableRange(static_cast<int>(i));
         const int decimals = info.decimals;
-        Row row {info.name, utf8(info.symbol) + QStringLiteral(" — ") + utf8(info.label), {}, false};
+        Row row {info.name, utf8(info.symbol) + QStringLiteral(" — ") + coreLabel(info.label), {}, false};
         row.cells.push_back(info.actuated
                 ? wordCell("input", QCoreApplication::translate("Sheet", "input (actuated)"))
                 : wordCell("output", QCoreApplication::translate("Sheet", "output")));
@@ -219,7 +222,8 @@ void addRanges(const Mechanism &mechanism, const Pose &pose, Parts &parts)
         row.cells.push_back(numberCell(info.unit.toDisplay(range.min), decimals));
         row.cells.push_back(numberCell(info.unit.toDisplay(range.max), decimals));
         row.cells.push_back(numberCell(info.unit.toDisplay(range.max - range.min), decimals));
-        row.cells.push_back(info.unit.symbol.empty() ? wordCell("-") : wordCell(std::string(info.unit.symbol)));
+        row.cells.push_back(info.unit.symbol.empty() ? wordCell("-")
+                                                     : wordCell(std::string(info.unit.symbol), unitShown(info.unit.symbol)));
         table.rows.push_back(std::move(row));
     }
     section.tables.push_back(std::move(table));
@@ -445,7 +449,7 @@ void dimensionLinks(Scene &scene, const Scene &home)
         const Eigen::Vector2d left(-direction.y(), direction.x());
         const double side = left.dot(0.5 * (*from + *to) - centroid) >= 0.0 ? 1.0 : -1.0;
         const std::string name = bar.label.empty() ? std::string() : bar.label + " = ";
-        scene.dimensions.push_back({bar.from, bar.to, side * 0.07 * size, name + formatNumber(length, 2) + " mm"});
+        scene.dimensions.push_back({bar.from, bar.to, side * 0.07 * size, name + text::millimetres(length)});
         shown.push_back(length);
         pairs.push_back(pair);
     }
@@ -535,12 +539,15 @@ QString cellText(const Cell &cell)
         return QStringLiteral("—");
     if (std::isinf(cell.number))
         return cell.number > 0 ? QStringLiteral("∞") : QStringLiteral("-∞");
-    QString text = QString::number(cell.number, 'f', cell.decimals); // always '.', whatever the locale
-    const bool zero = std::all_of(text.cbegin(), text.cend(),
+    // "-0.00" → "0.00": a value that rounds to zero is printed as zero.
+    const QString plain = QString::number(cell.number, 'f', cell.decimals);
+    const bool zero = std::all_of(plain.cbegin(), plain.cend(),
         [](QChar c) { return c == QLatin1Char('-') || c == QLatin1Char('0') || c == QLatin1Char('.'); });
-    if (zero && text.startsWith(QLatin1Char('-')))
-        text.remove(0, 1); // "-0.00" → "0.00"
-    return text;
+    // The language's decimal separator ("116,20" in Russian), no group separators: a table of
+    // dimensions reads "1044.03", as the GUI shows it.
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    return locale.toString(zero ? 0.0 : cell.number, 'f', cell.decimals);
 }
 
 const char *verdictWord(Verdict verdict)
@@ -593,7 +600,7 @@ Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source)
     sheet.description = source.description;
     sheet.kind = std::string(mechanism.kind());
     const MechanismKind *kind = findMechanismKind(mechanism.kind());
-    sheet.kindTitle = kind ? utf8(kind->title) : utf8(mechanism.kind());
+    sheet.kindTitle = kind ? coreLabel(kind->title) : utf8(mechanism.kind());
     sheet.date = sheetDate();
 #ifdef PKM_VERSION
     sheet.version = PKM_VERSION;

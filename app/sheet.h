@@ -11,10 +11,14 @@
 /// glide, with the O-X glide's exact areas). The model is then written as PDF (sheetpdf.cpp),
 /// JSON or CSV (sheetformats.cpp) with the same content.
 ///
-/// Keys (section, table, column, item and check keys, words such as "PASS") are English and
-/// stable: JSON and CSV use them. Titles and labels are for people: every English text of the
-/// sheet goes through QCoreApplication::translate("Sheet", …). Numbers are kept at full
-/// precision in display units (mm, °, N, N·m, s); `decimals` says how many the PDF prints.
+/// Keys (section, table, column, item and check keys, words such as "PASS", unit symbols) are
+/// English and stable: JSON and CSV use them. Titles and labels are for people and come in the
+/// current language: every English text of the sheet goes through
+/// QCoreApplication::translate("Sheet", …), the labels of core's tables through coreLabel()
+/// and the units through unitText(); the numbers inside sentences and in the PDF follow the
+/// current locale (QLocale()). Numbers are kept at full precision in display units (mm, °, N,
+/// N·m, s), written to JSON and CSV in the C locale; `decimals` says how many the PDF prints.
+/// `pkm sheet --lang CODE` makes the sheet in another language (clisheet.h).
 ///
 /// build() and the JSON and CSV writers need no QGuiApplication; the PDF needs one (fonts).
 
@@ -46,8 +50,8 @@ struct Cell {
 };
 Cell numberCell(double value, int decimals);
 Cell wordCell(std::string word, QString shown = {});
-/// The text the PDF prints: the number with its decimals ("-60.00", "—" when not finite), or
-/// the (translated) word.
+/// The text the PDF prints: the number with its decimals in the current locale ("-60.00",
+/// Russian "-60,00"; "—" when not finite), or the (translated) word.
 QString cellText(const Cell &cell);
 
 /// One quantity of a key–value list.

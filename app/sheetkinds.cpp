@@ -443,7 +443,7 @@ void addFourBar(const FourBar &fourbar, const Pose &pose, Parts &parts)
     Check range;
     range.key = "alpha_range";
     range.title = QCoreApplication::translate("Sheet", "Crank angle range");
-    range.criterion = QStringLiteral("α ∈ [%1°, %2°]").arg(numberText(alphaMin, 1), numberText(alphaMax, 1));
+    range.criterion = QCoreApplication::translate("Sheet", "α ∈ [%1°, %2°]").arg(numberText(alphaMin, 1), numberText(alphaMax, 1));
     range.value = numberCell(alphaMax - alphaMin, 1);
     range.limit = numberCell(360.0, 1);
     range.unit = "°";

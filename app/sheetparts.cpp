@@ -4,6 +4,7 @@
 #include "sheetparts.h"
 
 #include "planarworkspace.h"
+#include "quantityformat.h"
 
 #include <QCoreApplication>
 
@@ -32,7 +33,7 @@ Evaluation evaluateAt(const Mechanism &mechanism, const Pose &pose)
 
 Column columnOf(const ReportEntry &entry)
 {
-    return {entry.name, utf8(entry.symbol), std::string(entry.unit.symbol), utf8(entry.label)};
+    return {entry.name, utf8(entry.symbol), std::string(entry.unit.symbol), coreLabel(entry.label)};
 }
 
 Cell cellOf(const ReportEntry &entry, const Evaluation &evaluation)
@@ -45,7 +46,7 @@ Cell cellOf(const ReportEntry &entry, const Evaluation &evaluation)
 
 Item itemOf(const ReportEntry &entry, const Evaluation &evaluation)
 {
-    return {entry.name, utf8(entry.symbol), utf8(entry.label), cellOf(entry, evaluation),
+    return {entry.name, utf8(entry.symbol), coreLabel(entry.label), cellOf(entry, evaluation),
         std::string(entry.unit.symbol), {}};
 }
 
@@ -59,7 +60,7 @@ double displayValue(const Mechanism &mechanism, std::string_view name, const Eva
 
 Column variableColumn(const VariableInfo &info)
 {
-    return {info.name, utf8(info.symbol), std::string(info.unit.symbol), utf8(info.label)};
+    return {info.name, utf8(info.symbol), std::string(info.unit.symbol), coreLabel(info.label)};
 }
 
 Cell variableCell(const Mechanism &mechanism, const Pose &pose, int variable)
@@ -106,6 +107,21 @@ QString numberText(double value, int decimals)
     return cellText(numberCell(value, decimals));
 }
 
+QString unitShown(std::string_view unit)
+{
+    if (unit.empty())
+        return {};
+    // The sheet's own units, for lupdate; the others are core's (units.h).
+    static constexpr const char *own[] = {QT_TRANSLATE_NOOP("Sheet", "min⁻¹"), QT_TRANSLATE_NOOP("Sheet", "steps/s"),
+        QT_TRANSLATE_NOOP("Sheet", "mm³")};
+    const std::string source(unit);
+    for (const char *symbol : own) {
+        if (source == symbol)
+            return QCoreApplication::translate("Sheet", symbol);
+    }
+    return coreLabel(unit);
+}
+
 QString quantityText(double value, int decimals, std::string_view unit)
 {
     QString text = numberText(value, decimals);
@@ -113,7 +129,7 @@ QString quantityText(double value, int decimals, std::string_view unit)
         return text;
     if (unit != "°")
         text += QLatin1Char(' ');
-    return text + utf8(unit);
+    return text + unitShown(unit);
 }
 
 Item numberItem(std::string key, QString symbol, QString label, double value, int decimals, std::string unit)
@@ -218,7 +234,7 @@ Figure sweepPlot(const Mechanism &mechanism, const Pose &pose, int variable, con
         return figure;
     Plot &plot = figure.plot;
     const auto label = [](const QString &symbol, std::string_view unit) {
-        return unit.empty() ? symbol : QStringLiteral("%1 (%2)").arg(symbol, utf8(unit));
+        return unit.empty() ? symbol : QStringLiteral("%1 (%2)").arg(symbol, unitShown(unit));
     };
     plot.xLabel = label(utf8(input.symbol), input.unit.symbol);
     plot.yLabel = label(utf8(entry->symbol), entry->unit.symbol);
@@ -238,7 +254,7 @@ Figure sweepPlot(const Mechanism &mechanism, const Pose &pose, int variable, con
     }
     std::tie(plot.yMin, plot.yMax) = valueAxis(values);
     plot.cursor = input.unit.toDisplay(mechanism.variableValue(pose, variable));
-    figure.caption = utf8(entry->label);
+    figure.caption = coreLabel(entry->label);
     return figure;
 }
 

@@ -56,8 +56,13 @@ Cell variableCell(const Mechanism &mechanism, const Pose &pose, int variable);
 Cell singularityCell(SingularityType type);
 QString verdictText(Verdict verdict);
 
-/// A number for sentences: `decimals` decimals, '.' as separator.
+/// A number for people (the PDF, sentences): `decimals` decimals in the current locale
+/// (QLocale(): "116.20", Russian "116,20"), without group separators, never "-0.00".
 QString numberText(double value, int decimals);
+/// A display unit ("mm", "steps/s") as the current language writes it ("мм"): the unit
+/// symbols of core (units.h) and the few of the sheet, marked QT_TRANSLATE_NOOP("Sheet", …).
+/// The English symbol stays the key in JSON and CSV.
+QString unitShown(std::string_view unit);
 /// "60.00°", "116.20 mm", "0.40": a number and its unit for sentences.
 QString quantityText(double value, int decimals, std::string_view unit);
 

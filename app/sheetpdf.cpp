@@ -291,7 +291,7 @@ private:
             }
             grid.rows.push_back({{{item.symbol, {}, ink, true}, {item.label, {}, ink, false},
                                      {cellText(item.value), {}, ink, false},
-                                     {QString::fromStdString(item.unit), {}, ink, false},
+                                     {detail::unitShown(item.unit), {}, ink, false},
                                      {QString::fromStdString(item.key), {}, grey, false}},
                 false, false});
         }
@@ -312,7 +312,7 @@ private:
                 if (c < row.cells.size() && row.cells[c].isWord())
                     numeric = false;
             }
-            grid.columns.push_back({column.title, QString::fromStdString(column.unit), numeric, false});
+            grid.columns.push_back({column.title, detail::unitShown(column.unit), numeric, false});
         }
         for (const Row &row : source.rows) {
             GridRow out;
@@ -353,7 +353,7 @@ private:
                 result = translated + QStringLiteral(" (") + result + QLatin1Char(')');
             grid.rows.push_back({{{check.title, sub, ink, true}, {cellText(check.value), {}, ink, false},
                                      {hasLimit ? cellText(check.limit) : QString(), {}, ink, false},
-                                     {QString::fromStdString(check.unit), {}, ink, false}, {result, {}, colour, true}},
+                                     {detail::unitShown(check.unit), {}, ink, false}, {result, {}, colour, true}},
                 false, false});
         }
         table(grid, true, 8.0);
@@ -712,8 +712,7 @@ private:
     {
         const int decimals = std::clamp(int(std::ceil(-std::log10(step) + 1e-9)), 0, 6)
             + (std::abs(std::round(step / std::pow(10.0, std::floor(std::log10(step)))) - 2.5) < 1e-9 ? 1 : 0);
-        QString t = QString::number(std::abs(value) < step * 1e-9 ? 0.0 : value, 'f', std::max(0, decimals));
-        return t;
+        return detail::numberText(std::abs(value) < step * 1e-9 ? 0.0 : value, std::max(0, decimals)); // locale
     }
 
     /// Axes with ticks and grid in `plotArea` for x in [x0, x1], y in [y0, y1].

@@ -6,6 +6,7 @@
 
 #include "cliworkspace.h"
 #include "oxglide.h"
+#include "quantityformat.h"
 #include "sheetparts.h"
 
 #include <QCoreApplication>
@@ -97,7 +98,15 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
     Section &section = parts.workspace;
     section.key = "workspace";
     section.title = QCoreApplication::translate("Sheet", "Workspace");
-    const QString modeNow = QString::fromStdString(cli::modeText(modes, parameters));
+    // "branch1 = -1, assembly = +1", a named choice in the current language ("σ = left")
+    QStringList modeWords;
+    for (const ParameterInfo *info : modes) {
+        const auto it = parameters.find(info->name);
+        if (it != parameters.end())
+            modeWords << utf8(info->name) + QStringLiteral(" = ")
+                    + coreLabel(cli::modeValueText(*info, info->unit.toDisplay(it->second)));
+    }
+    const QString modeNow = modeWords.join(QStringLiteral(", "));
     section.intro = QCoreApplication::translate("Sheet",
         "The platform positions reachable with every actuated input inside its range%1, on a grid of %2 × %3 "
         "square cells of %4 mm (as 'pkm workspace --grid %5').")
@@ -125,7 +134,7 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
             QCoreApplication::translate("Sheet", "area of the workspace (grid)"), summary.area, 1, "mm²"));
         for (const auto &[name, area] : named) {
             items.push_back(numberItem("area_" + name, QStringLiteral("A_") + utf8(name),
-                QCoreApplication::translate("Sheet", "area in mode %1 (grid)").arg(utf8(name)), area, 1, "mm²"));
+                QCoreApplication::translate("Sheet", "area in mode %1 (grid)").arg(coreLabel(name)), area, 1, "mm²"));
         }
     }
     if (!modes.empty()) {
@@ -158,7 +167,7 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
         table.title = QCoreApplication::translate("Sheet", "Area per working and assembly mode");
         table.labelTitle = QCoreApplication::translate("Sheet", "mode");
         for (const ParameterInfo *info : modes)
-            table.columns.push_back({info->name, utf8(info->symbol), {}, utf8(info->label)});
+            table.columns.push_back({info->name, utf8(info->symbol), {}, coreLabel(info->label)});
         table.columns.push_back({"area", QCoreApplication::translate("Sheet", "area (grid)"), "mm²", {}});
         if (oxglide)
             table.columns.push_back({"area_exact", QCoreApplication::translate("Sheet", "area (exact)"), "mm²", {}});
@@ -169,9 +178,9 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
             QStringList label;
             for (std::size_t i = 0; i < modes.size(); ++i) {
                 const std::string text = cli::modeValueText(*modes[i], mode.values[i]);
-                label << utf8(modes[i]->name) + QStringLiteral(" = ") + utf8(text);
+                label << utf8(modes[i]->name) + QStringLiteral(" = ") + coreLabel(text);
                 Cell cell = numberCell(mode.values[i], 0);
-                cell.shown = utf8(text);
+                cell.shown = coreLabel(text);
                 row.cells.push_back(cell);
             }
             row.key = "mode_" + std::to_string(m + 1);
@@ -257,7 +266,7 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
                 continue;
             Row row;
             row.key = "curve_" + std::to_string(k + 1);
-            row.label = utf8(curve.label);
+            row.label = coreLabel(curve.label);
             row.cells.push_back(wordCell(curve.type == SingularCurve::Type::Direct ? "direct" : "inverse", typeText(curve.type)));
             const Eigen::Vector2d middle = halfway(curve.points);
             Coordinates outputs(2);
@@ -330,7 +339,7 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
                 continue;
             ++count;
             if (labels.insert(curve.label).second)
-                listed << utf8(curve.label);
+                listed << coreLabel(curve.label);
         }
         Check check;
         check.key = direct ? "direct_singular_poses" : "inverse_singular_poses";

@@ -51,7 +51,7 @@ QString suggestedName(const QString &filePath, const QString &designId)
 QString savePictureAs(QWidget *parent, const Mechanism &mechanism, const Pose &pose, const QString &name,
     const QString &fileName, const QSize &shown, const SceneStyle &style)
 {
-    const QString title = QCoreApplication::translate("ViewPicture", "Save 2D View Picture");
+    const QString title = QCoreApplication::translate("pkm::ViewPicture", "Save 2D View Picture");
     const std::optional<PictureRequest> request = askForPicture(parent, title, fileName, shown);
     if (!request)
         return {};

@@ -5,10 +5,13 @@
 #include "workspacemapview.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace pkm {
 
@@ -25,15 +28,14 @@ WorkspacePanel::WorkspacePanel(QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     auto *row = new QHBoxLayout;
     row->setContentsMargins(8, 4, 8, 0);
-    auto *label = new QLabel(tr("Compare workspace with:"), this);
+    auto *label = new QLabel(this);
+    m_label = label;
     m_compare = new QComboBox(this);
     m_compare->setObjectName(QStringLiteral("comparisonBox"));
     m_compare->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     label->setBuddy(m_compare);
-    m_pin = new QPushButton(tr("Pin this design"), this);
+    m_pin = new QPushButton(this);
     m_pin->setObjectName(QStringLiteral("pinButton"));
-    m_pin->setToolTip(tr("Keep the current design's workspace as the comparison, then change the design "
-                         "and see both outlines."));
     row->addWidget(label);
     row->addWidget(m_compare);
     row->addWidget(m_pin);
@@ -43,6 +45,28 @@ WorkspacePanel::WorkspacePanel(QWidget *parent)
 
     connect(m_compare, &QComboBox::activated, this, &WorkspacePanel::compareWith);
     connect(m_pin, &QPushButton::clicked, this, &WorkspacePanel::pinCurrent);
+    retranslate();
+}
+
+void WorkspacePanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void WorkspacePanel::retranslate()
+{
+    m_label->setText(tr("Compare workspace with:"));
+    m_pin->setText(tr("Pin this design"));
+    m_pin->setToolTip(tr("Keep the current design's workspace as the comparison, then change the design "
+                         "and see both outlines."));
+    if (m_kind.isEmpty())
+        return;
+    const QString current = m_compare->currentData().toString();
+    fillComparisons(current);
+    if (current == pinnedItem && m_pinned)
+        m_map->setComparison(m_pinned, tr("pinned")); // the legend names it in the new language
 }
 
 void WorkspacePanel::setDesign(const MechanismPtr &mechanism, const QString &title)
@@ -64,16 +88,17 @@ void WorkspacePanel::setPose(const Pose &pose)
     m_map->setPose(pose);
 }
 
-void WorkspacePanel::fillComparisons()
+void WorkspacePanel::fillComparisons(const QString &keep)
 {
     m_compare->clear();
     m_compare->addItem(tr("nothing"), QString());
     for (const PresetInfo &preset : designfile::presets()) {
         if (preset.kind == m_kind)
-            m_compare->addItem(preset.title, preset.id);
+            m_compare->addItem(designfile::presetText(preset.title), preset.id);
     }
     if (m_pinned)
-        m_compare->addItem(tr("pinned: %1").arg(m_pinnedTitle), pinnedItem);
+        m_compare->addItem(tr("pinned: %1").arg(designfile::presetText(m_pinnedTitle)), pinnedItem);
+    m_compare->setCurrentIndex(std::max(0, m_compare->findData(keep)));
 }
 
 void WorkspacePanel::compareWith(int index)

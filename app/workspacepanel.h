@@ -8,6 +8,7 @@
 #include <QWidget>
 
 class QComboBox;
+class QLabel;
 class QPushButton;
 
 namespace pkm {
@@ -29,16 +30,23 @@ public:
     void setDesign(const MechanismPtr &mechanism, const QString &title);
     void setPose(const Pose &pose);
 
+protected:
+    /// A new language: the texts and the comparison list again, the choice kept.
+    void changeEvent(QEvent *event) override;
+
 private:
-    void fillComparisons();
+    void retranslate();
+    /// Fills the comparison list; the item with data `keep` stays current if it is still there.
+    void fillComparisons(const QString &keep = {});
     void compareWith(int index);
     void pinCurrent();
 
     WorkspaceMapView *m_map = nullptr;
+    QLabel *m_label = nullptr;
     QComboBox *m_compare = nullptr;
     QPushButton *m_pin = nullptr;
     MechanismPtr m_mechanism;
-    QString m_title;
+    QString m_title; ///< as the design gives it (a preset's in English, translated when shown)
     QString m_kind; ///< the mechanism kind the comparison list was filled for
     MechanismPtr m_pinned;
     QString m_pinnedTitle;

@@ -1,5 +1,7 @@
 #include "fivebar.h"
 
+#include "text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,8 +14,8 @@ constexpr double pi = std::numbers::pi;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 /// Relative tolerance of the solvers: circles that touch up to it meet, modes hold up to it.
 constexpr double solverTolerance = 1e-9;
-constexpr Unit millimetre4{"mm⁴", 1.0};
-constexpr Unit radianPerMillimetre2{"rad²/mm²", 1.0};
+constexpr Unit millimetre4{QT_TRANSLATE_NOOP("core", "mm⁴"), 1.0};
+constexpr Unit radianPerMillimetre2{QT_TRANSLATE_NOOP("core", "rad²/mm²"), 1.0};
 
 /// The names of a leg's parts, for parameters and messages.
 struct LegText {
@@ -34,19 +36,27 @@ Eigen::Vector2d perp(const Eigen::Vector2d &u)
     return {-u.y(), u.x()};
 }
 
+/// An angle for a message: "12.5°".
 std::string deg(double radians)
 {
-    return joinText({formatNumber(radians / units::degree, 3), "°"});
+    return joinText({text::number(radians / units::degree, 3), "°"});
 }
 
 std::string pointText(const Eigen::Vector2d &p)
 {
-    return joinText({"(", formatNumber(p.x(), 3), ", ", formatNumber(p.y(), 3), ") mm"});
+    return text::format(text::translate("core", "(%1, %2) mm"), {text::number(p.x(), 3), text::number(p.y(), 3)});
 }
 
 std::string rangeText(const Interval &range)
 {
-    return joinText({"[", deg(range.min), ", ", deg(range.max), "]"});
+    return text::format(text::translate("core", "[%1, %2]"), {deg(range.min), deg(range.max)});
+}
+
+/// "B left of A→C": where `point` lies from the directed `line`, for a sentence.
+std::string sidePhrase(int side, std::string_view point, std::string_view line)
+{
+    return side == fivebar::right ? text::format(text::translate("core", "%1 right of %2"), {point, line})
+                                  : text::format(text::translate("core", "%1 left of %2"), {point, line});
 }
 
 double scaleOf(const FiveBarDesign &d)
@@ -172,22 +182,26 @@ const std::vector<ParameterInfo> &fivebarParameterInfo()
         const Unit length = units::millimetre, angle = units::angle;
         using G = ParameterGroup;
         std::vector<ParameterInfo> v;
-        v.push_back({"AB", "AB", "length of crank 1, driven at A", length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"BC", "BC", "length of distal link 1, from B to C", length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"CD", "CD", "length of distal link 2, from C to D", length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"DE", "DE", "length of crank 2, driven at E", length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"AE", "AE", "length of the ground, from A to E along +x", length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"theta1_min", "θ₁,min", "lower limit of crank angle θ₁", angle, G::Range, turn, false, false, true, 2, 1});
-        v.push_back({"theta1_max", "θ₁,max", "upper limit of crank angle θ₁", angle, G::Range, turn, false, false, true, 2, 1});
-        v.push_back({"theta4_min", "θ₄,min", "lower limit of crank angle θ₄", angle, G::Range, turn, false, false, true, 2, 1});
-        v.push_back({"theta4_max", "θ₄,max", "upper limit of crank angle θ₄", angle, G::Range, turn, false, false, true, 2, 1});
-        const std::vector<std::pair<std::string, double>> sides = {{"left", 1.0}, {"right", -1.0}};
-        ParameterInfo w1{"working1", "w₁", "working mode of leg 1: elbow B left (+1) or right (−1) of A→C", units::none,
-                         G::Mode, sign, false, false, true, 0, 2};
-        ParameterInfo w2{"working2", "w₂", "working mode of leg 2: elbow D left (+1) or right (−1) of E→C", units::none,
-                         G::Mode, sign, false, false, true, 0, 2};
-        ParameterInfo assembly{"assembly", "σ", "assembly mode: C left (+1) or right (−1) of B→D", units::none, G::Mode,
-                               sign, false, false, true, 0, 2};
+        v.push_back({"AB", "AB", QT_TRANSLATE_NOOP("core", "length of crank 1, driven at A"), length, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"BC", "BC", QT_TRANSLATE_NOOP("core", "length of distal link 1, from B to C"), length, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"CD", "CD", QT_TRANSLATE_NOOP("core", "length of distal link 2, from C to D"), length, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"DE", "DE", QT_TRANSLATE_NOOP("core", "length of crank 2, driven at E"), length, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"AE", "AE", QT_TRANSLATE_NOOP("core", "length of the ground, from A to E along +x"), length, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"theta1_min", "θ₁,min", QT_TRANSLATE_NOOP("core", "lower limit of crank angle θ₁"), angle, G::Range, turn, false, false, true, 2, 1});
+        v.push_back({"theta1_max", "θ₁,max", QT_TRANSLATE_NOOP("core", "upper limit of crank angle θ₁"), angle, G::Range, turn, false, false, true, 2, 1});
+        v.push_back({"theta4_min", "θ₄,min", QT_TRANSLATE_NOOP("core", "lower limit of crank angle θ₄"), angle, G::Range, turn, false, false, true, 2, 1});
+        v.push_back({"theta4_max", "θ₄,max", QT_TRANSLATE_NOOP("core", "upper limit of crank angle θ₄"), angle, G::Range, turn, false, false, true, 2, 1});
+        // the names are keys (files, the command line); the GUI shows them translated
+        const std::vector<std::pair<std::string, double>> sides = {{QT_TRANSLATE_NOOP("core", "left"), 1.0},
+                                                                   {QT_TRANSLATE_NOOP("core", "right"), -1.0}};
+        ParameterInfo w1{"working1", "w₁",
+                         QT_TRANSLATE_NOOP("core", "working mode of leg 1: elbow B left (+1) or right (−1) of A→C"),
+                         units::none, G::Mode, sign, false, false, true, 0, 2};
+        ParameterInfo w2{"working2", "w₂",
+                         QT_TRANSLATE_NOOP("core", "working mode of leg 2: elbow D left (+1) or right (−1) of E→C"),
+                         units::none, G::Mode, sign, false, false, true, 0, 2};
+        ParameterInfo assembly{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: C left (+1) or right (−1) of B→D"),
+                               units::none, G::Mode, sign, false, false, true, 0, 2};
         for (ParameterInfo *mode : {&w1, &w2, &assembly}) {
             mode->choices = sides;
             v.push_back(*mode);
@@ -232,8 +246,8 @@ Result<bool> checkMode(const std::string &name, double value)
 {
     if (value != 1.0 && value != -1.0) {
         return Failure{FailureKind::InvalidParameter, name,
-                       joinText({name, " = ", formatNumber(value),
-                                 " is invalid: it must be +1 (left) or -1 (right)."})};
+                       text::format(text::translate("core", "%1 = %2 is invalid: it must be +1 (left) or -1 (right)."),
+                                    {name, text::number(value)})};
     }
     return true;
 }
@@ -248,7 +262,8 @@ Result<FiveBarDesign> applyChanges(FiveBarDesign d, const ParameterSet &changes)
             std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
         if (info == infos.end()) {
             return Failure{FailureKind::UnknownName, name,
-                           joinText({"The five-bar linkage has no parameter named '", name, "'."})};
+                           text::format(text::translate("core", "The five-bar linkage has no parameter named '%1'."),
+                                        {name})};
         }
         if (auto checked = Mechanism::checkDomain(*info, value); !checked)
             return checked.failure();
@@ -285,13 +300,14 @@ Result<MechanismPtr> FiveBar::create(const FiveBarDesign &d)
         const Interval &r = d.range[leg];
         if (!(r.min < r.max)) {
             return Failure{FailureKind::InvalidParameter, t.thetaMin,
-                           joinText({t.thetaMin, " = ", deg(r.min), " must be less than ", t.thetaMax, " = ",
-                                     deg(r.max), "."})};
+                           text::format(text::translate("core", "%1 = %2 must be less than %3 = %4."),
+                                        {t.thetaMin, deg(r.min), t.thetaMax, deg(r.max)})};
         }
         if (r.max - r.min > 2.0 * pi * (1.0 + 1e-12)) {
             return Failure{FailureKind::InvalidParameter, t.thetaMax,
-                           joinText({t.thetaMax, " = ", deg(r.max), " lies ", deg(r.max - r.min), " above ", t.thetaMin,
-                                     " = ", deg(r.min), ": a crank's range may span one turn (360°) at most."})};
+                           text::format(text::translate("core", "%1 = %2 lies %3 above %4 = %5: a crank's range may "
+                                                                "span one turn (360°) at most."),
+                                        {t.thetaMax, deg(r.max), deg(r.max - r.min), t.thetaMin, deg(r.min)})};
         }
     }
     // A closed loop ABCDE needs every link shorter than the other four together.
@@ -308,10 +324,10 @@ Result<MechanismPtr> FiveBar::create(const FiveBarDesign &d)
                 names.append(names.empty() ? "" : " + ").append(link.first);
         }
         return Failure{FailureKind::InvalidParameter, longest->first,
-                       joinText({longest->first, " = ", formatMillimetres(longest->second), " is not shorter than ",
-                                 names, " = ", formatMillimetres(others),
-                                 ": the links cannot close the loop ABCDE for any crank angles (each link must be "
-                                 "shorter than the other four together)."})};
+                       text::format(text::translate("core", "%1 = %2 is not shorter than %3 = %4: the links cannot "
+                                                            "close the loop ABCDE for any crank angles (each link must "
+                                                            "be shorter than the other four together)."),
+                                    {longest->first, text::millimetres(longest->second), names, text::millimetres(others)})};
     }
     FiveBar candidate(d);
     if (!candidate.m_home.inputs.size()) {
@@ -320,15 +336,22 @@ Result<MechanismPtr> FiveBar::create(const FiveBarDesign &d)
         for (int leg = 0; leg < 2; ++leg)
             modes.append(joinText({legText[std::size_t(leg)].working, " = ", fivebar::sideName(d.working[leg]), ", "}));
         modes.append(joinText({"assembly = ", fivebar::sideName(d.assembly)}));
-        std::string ranges;
-        for (int leg = 0; leg < 2 && limited; ++leg) {
-            const LegText &t = legText[std::size_t(leg)];
-            ranges.append(joinText({leg == 0 ? " and the crank ranges " : ", ", t.thetaMin, "…", t.thetaMax, " = ",
-                                    rangeText(d.range[leg])}));
+        if (!limited) {
+            return Failure{FailureKind::Unreachable, "assembly",
+                           text::format(text::translate("core", "This five-bar has no workspace: with %1 the loop "
+                                                                "ABCDE never closes. Change a mode, a range or a length."),
+                                        {modes})};
         }
-        return Failure{FailureKind::Unreachable, limited ? "theta1_min" : "assembly",
-                       joinText({"This five-bar has no workspace: with ", modes, ranges,
-                                 " the loop ABCDE never closes. Change a mode, a range or a length."})};
+        std::string ranges;
+        for (int leg = 0; leg < 2; ++leg) {
+            const LegText &t = legText[std::size_t(leg)];
+            ranges.append(joinText({leg == 0 ? "" : ", ", t.thetaMin, "…", t.thetaMax, " = ", rangeText(d.range[leg])}));
+        }
+        return Failure{FailureKind::Unreachable, "theta1_min",
+                       text::format(text::translate("core", "This five-bar has no workspace: with %1 and the crank "
+                                                            "ranges %2 the loop ABCDE never closes. Change a mode, a "
+                                                            "range or a length."),
+                                    {modes, ranges})};
     }
     return MechanismPtr(new FiveBar(candidate));
 }
@@ -407,9 +430,11 @@ std::vector<std::string> FiveBar::designWarnings() const
     const std::vector<SingularCurve> curves = singularCurves();
     const auto direct = [](const SingularCurve &c) { return c.type == SingularCurve::Type::Direct; };
     if (std::any_of(curves.begin(), curves.end(), direct)) {
-        warnings.push_back("The workspace of these modes reaches direct singularities (the curves where the distal "
-                           "links BC and CD come in line, marked on the map): there C can move with both cranks held "
-                           "and the mechanism may switch its assembly mode. Keep the path of C away from them.");
+        warnings.push_back(text::translate("core", "The workspace of these modes reaches direct singularities (the "
+                                                   "curves where the distal links BC and CD come in line, marked on "
+                                                   "the map): there C can move with both cranks held and the "
+                                                   "mechanism may switch its assembly mode. Keep the path of C away "
+                                                   "from them."));
     }
     return warnings;
 }
@@ -419,10 +444,10 @@ std::vector<std::string> FiveBar::designWarnings() const
 const std::vector<VariableInfo> &FiveBar::variableInfo() const
 {
     static const std::vector<VariableInfo> infos = {
-        {"theta1", "θ₁", "crank AB angle at A, from +x counter-clockwise (actuated)", units::angle, true, 2},
-        {"theta4", "θ₄", "crank ED angle at E, from +x counter-clockwise (actuated)", units::angle, true, 2},
-        {"x", "x", "output point C, x", units::millimetre, false, 2},
-        {"y", "y", "output point C, y", units::millimetre, false, 2},
+        {"theta1", "θ₁", QT_TRANSLATE_NOOP("core", "crank AB angle at A, from +x counter-clockwise (actuated)"), units::angle, true, 2},
+        {"theta4", "θ₄", QT_TRANSLATE_NOOP("core", "crank ED angle at E, from +x counter-clockwise (actuated)"), units::angle, true, 2},
+        {"x", "x", QT_TRANSLATE_NOOP("core", "output point C, x"), units::millimetre, false, 2},
+        {"y", "y", QT_TRANSLATE_NOOP("core", "output point C, y"), units::millimetre, false, 2},
     };
     return infos;
 }
@@ -501,8 +526,8 @@ Failure FiveBar::explain(const Check &check, bool direct, const std::string &cul
 {
     const FiveBarDesign &d = m_design;
     const LegText &t = legText[std::size_t(check.leg)];
-    const std::string at = joinText({"At theta1 = ", deg(check.thetas[0]), ", theta4 = ", deg(check.thetas[1])});
-    const std::string where = joinText({"C cannot reach ", pointText(check.C)});
+    const std::string theta1 = deg(check.thetas[0]), theta4 = deg(check.thetas[1]);
+    const std::string point = pointText(check.C);
     const double distance = (check.C - fivebar::groundJoint(d, check.leg)).norm();
     const double bd = (check.elbows[1] - check.elbows[0]).norm();
     const double a = d.crank[check.leg], b = d.link[check.leg];
@@ -510,48 +535,58 @@ Failure FiveBar::explain(const Check &check, bool direct, const std::string &cul
     switch (check.reason) {
     case R::LinksApart:
         return Failure{FailureKind::Unreachable, culprit,
-                       joinText({at, " the distal links cannot meet: |BD| = ", formatMillimetres(bd),
-                                 " is more than BC + CD = ", formatMillimetres(d.link[0] + d.link[1]),
-                                 " (past the dead point where BC and CD are stretched in line, a direct "
-                                 "singularity)."})};
+                       text::format(text::translate("core", "At theta1 = %1, theta4 = %2 the distal links cannot meet: "
+                                                            "|BD| = %3 is more than BC + CD = %4 (past the dead point "
+                                                            "where BC and CD are stretched in line, a direct singularity)."),
+                                    {theta1, theta4, text::millimetres(bd), text::millimetres(d.link[0] + d.link[1])})};
     case R::LinksClose:
         return Failure{FailureKind::Unreachable, culprit,
-                       joinText({at, " the distal links cannot meet: |BD| = ", formatMillimetres(bd),
-                                 " is less than |BC − CD| = ", formatMillimetres(std::abs(d.link[0] - d.link[1])),
-                                 " (past the dead point where BC and CD fold in line, a direct singularity)."})};
+                       text::format(text::translate("core", "At theta1 = %1, theta4 = %2 the distal links cannot meet: "
+                                                            "|BD| = %3 is less than |BC − CD| = %4 (past the dead point "
+                                                            "where BC and CD fold in line, a direct singularity)."),
+                                    {theta1, theta4, text::millimetres(bd),
+                                     text::millimetres(std::abs(d.link[0] - d.link[1]))})};
     case R::ElbowsMeet:
         return Failure{FailureKind::Singular, culprit,
-                       joinText({at, " the elbows B and D coincide and BC = CD: the position of C is undetermined."})};
+                       text::format(text::translate("core", "At theta1 = %1, theta4 = %2 the elbows B and D coincide and "
+                                                            "BC = CD: the position of C is undetermined."),
+                                    {theta1, theta4})};
     case R::WorkingMode:
         return Failure{FailureKind::Unreachable, direct ? culprit : t.working,
-                       joinText({at, " leg ", t.number, " would be in its other working mode (", t.elbow, " ",
-                                 fivebar::sideName(-d.working[check.leg]), " of ", t.ground, "→C): crank ", t.crank,
-                                 " and link ", t.link, " pass through in line (an inverse singularity) on the way; "
-                                 "switch ", t.working, " to go on."})};
+                       text::format(text::translate("core", "At theta1 = %1, theta4 = %2 leg %3 would be in its other "
+                                                            "working mode (%4): crank %5 and link %6 pass through in line "
+                                                            "(an inverse singularity) on the way; switch %7 to go on."),
+                                    {theta1, theta4, t.number,
+                                     sidePhrase(-d.working[check.leg], t.elbow, joinText({t.ground, "→C"})), t.crank,
+                                     t.link, t.working})};
     case R::LegTooShort:
         return Failure{FailureKind::Unreachable, culprit,
-                       joinText({where, ": it lies ", formatMillimetres(distance), " from ", t.ground, ", more than ",
-                                 t.crank, " + ", t.link, " = ", formatMillimetres(a + b), "."})};
+                       text::format(text::translate("core", "C cannot reach %1: it lies %2 from %3, more than %4 + %5 = %6."),
+                                    {point, text::millimetres(distance), t.ground, t.crank, t.link,
+                                     text::millimetres(a + b)})};
     case R::LegTooLong:
         return Failure{FailureKind::Unreachable, culprit,
-                       joinText({where, ": it lies ", formatMillimetres(distance), " from ", t.ground, ", less than |",
-                                 t.crank, " − ", t.link, "| = ", formatMillimetres(std::abs(a - b)), "."})};
+                       text::format(text::translate("core", "C cannot reach %1: it lies %2 from %3, less than |%4 − %5| = %6."),
+                                    {point, text::millimetres(distance), t.ground, t.crank, t.link,
+                                     text::millimetres(std::abs(a - b))})};
     case R::OnGroundJoint:
         return Failure{FailureKind::Singular, culprit,
-                       joinText({"C = ", pointText(check.C), " lies on ", t.ground, " and ", t.crank, " = ", t.link,
-                                 ": the crank angle ", t.theta, " is undetermined."})};
+                       text::format(text::translate("core", "C = %1 lies on %2 and %3 = %4: the crank angle %5 is undetermined."),
+                                    {point, t.ground, t.crank, t.link, t.theta})};
     case R::CrankRange:
         return Failure{FailureKind::OutOfRange, t.theta,
-                       joinText({where, ": crank ", t.crank, " would have to be at ", t.theta, " = ", deg(check.theta),
-                                 ", outside its range ", rangeText(d.range[check.leg]), "."})};
+                       text::format(text::translate("core", "C cannot reach %1: crank %2 would have to be at %3 = %4, "
+                                                            "outside its range %5."),
+                                    {point, t.crank, t.theta, deg(check.theta), rangeText(d.range[check.leg])})};
     case R::AssemblyMode:
         return Failure{FailureKind::Unreachable, culprit,
-                       joinText({where, " in this assembly mode (C ", fivebar::sideName(d.assembly),
-                                 " of B→D): it would cross the line BD, where the distal links are in line (a direct "
-                                 "singularity); switch assembly to go on."})};
+                       text::format(text::translate("core", "C cannot reach %1 in this assembly mode (%2): it would cross "
+                                                            "the line BD, where the distal links are in line (a direct "
+                                                            "singularity); switch assembly to go on."),
+                                    {point, sidePhrase(d.assembly, "C", "B→D")})};
     case R::None: break;
     }
-    return Failure{FailureKind::Unreachable, culprit, "No failure."};
+    return Failure{FailureKind::Unreachable, culprit, text::translate("core", "No failure.")};
 }
 
 std::array<double, 2> FiveBar::referenceAngles(const Pose *near) const
@@ -590,12 +625,16 @@ Result<Pose> FiveBar::solveDirect(const Coordinates &inputs, const Pose *near) c
         const LegText &t = legText[std::size_t(leg)];
         const Interval &range = m_design.range[leg];
         if (!std::isfinite(inputs[leg]))
-            return Failure{FailureKind::OutOfRange, t.theta, joinText({t.theta, " must be a finite number."})};
+            return Failure{FailureKind::OutOfRange, t.theta,
+                           text::format(text::translate("core", "%1 must be a finite number."), {t.theta})};
         if (!range.contains(inputs[leg], 1e-12)) {
             return Failure{FailureKind::OutOfRange, t.theta,
-                           joinText({t.theta, " = ", deg(inputs[leg]), " is outside the range of crank ", t.crank, ", ",
-                                     rangeText(range),
-                                     fivebar::fullTurn(range) ? ": the crank turns fully, give its angle within it." : "."})};
+                           fivebar::fullTurn(range)
+                               ? text::format(text::translate("core", "%1 = %2 is outside the range of crank %3, %4: the "
+                                                                      "crank turns fully, give its angle within it."),
+                                              {t.theta, deg(inputs[leg]), t.crank, rangeText(range)})
+                               : text::format(text::translate("core", "%1 = %2 is outside the range of crank %3, %4."),
+                                              {t.theta, deg(inputs[leg]), t.crank, rangeText(range)})};
         }
     }
     const std::array<Interval, 2> &r = m_design.range;
@@ -610,7 +649,8 @@ Result<Pose> FiveBar::solveInverse(const Coordinates &outputs, const Pose *near)
     for (int i = 0; i < 2; ++i) {
         if (!std::isfinite(outputs[i])) {
             const std::string name = i == 0 ? "x" : "y";
-            return Failure{FailureKind::OutOfRange, name, joinText({name, " must be a finite number."})};
+            return Failure{FailureKind::OutOfRange, name,
+                           text::format(text::translate("core", "%1 must be a finite number."), {name})};
         }
     }
     const Check check = checkInverse(outputs.head<2>(), solverTolerance, referenceAngles(near));
@@ -635,24 +675,24 @@ const ReportLayout &FiveBar::reportLayout() const
     static const ReportLayout layout = [] {
         using G = ReportGroup;
         ReportLayout l;
-        l.add(G::Pose, "theta1", "θ₁", "crank AB angle at A, from +x counter-clockwise", units::angle, 2);
-        l.add(G::Pose, "theta4", "θ₄", "crank ED angle at E, from +x counter-clockwise", units::angle, 2);
-        l.add(G::Pose, "x", "x", "output point C, x", units::millimetre, 2);
-        l.add(G::Pose, "y", "y", "output point C, y", units::millimetre, 2);
+        l.add(G::Pose, "theta1", "θ₁", QT_TRANSLATE_NOOP("core", "crank AB angle at A, from +x counter-clockwise"), units::angle, 2);
+        l.add(G::Pose, "theta4", "θ₄", QT_TRANSLATE_NOOP("core", "crank ED angle at E, from +x counter-clockwise"), units::angle, 2);
+        l.add(G::Pose, "x", "x", QT_TRANSLATE_NOOP("core", "output point C, x"), units::millimetre, 2);
+        l.add(G::Pose, "y", "y", QT_TRANSLATE_NOOP("core", "output point C, y"), units::millimetre, 2);
         l.add(G::Jacobian, "Jq", "J_q", "J_q = diag((B − A)×(C − B), (D − E)×(C − D))", units::squareMillimetre, 1, 2, 2);
-        l.add(G::Jacobian, "Jx", "J_x", "J_x rows (C − B)ᵀ, (C − D)ᵀ", units::millimetre, 2, 2, 2);
+        l.add(G::Jacobian, "Jx", "J_x", QT_TRANSLATE_NOOP("core", "J_x rows (C − B)ᵀ, (C − D)ᵀ"), units::millimetre, 2, 2, 2);
         l.add(G::Jacobian, "J", "J", "θ̇ = J·Ċ, J = J_q⁻¹·J_x", units::radianPerMillimetre, 5, 2, 2);
-        l.add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", radianPerMillimetre2, 8);
-        l.add(G::Jacobian, "det_Jq", "det J_q", "0 at an inverse singularity (a leg stretched or folded)", millimetre4, 0);
-        l.add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity (the distal links in line)", units::squareMillimetre, 1);
-        l.add(G::Jacobian, "cond", "κ(J)", "condition number of J", units::none, 3);
-        l.add(G::Derived, "elbow_angle1", "φ₁", "angle ABC between crank AB and link BC (0°, 180°: inverse singularity)", units::angle, 2);
-        l.add(G::Derived, "elbow_angle2", "φ₂", "angle EDC between crank ED and link DC (0°, 180°: inverse singularity)", units::angle, 2);
-        l.add(G::Derived, "links_angle", "ψ", "angle BCD between the distal links (0°, 180°: direct singularity)", units::angle, 2);
-        l.add(G::Derived, "transmission", "μ", "transmission angle between the distal links, min(ψ, 180° − ψ)", units::angle, 2);
-        l.add(G::Derived, "margin_inverse", "m_inv", "distance from the inverse singularities, min |sin φ_i| (0 … 1)", units::none, 4);
-        l.add(G::Derived, "margin_direct", "m_dir", "distance from the direct singularities, |sin ψ| (0 … 1)", units::none, 4);
-        l.add(G::Derived, "margin", "m", "distance from the nearest singularity (0 … 1)", units::none, 4);
+        l.add(G::Jacobian, "det_J", "det J", QT_TRANSLATE_NOOP("core", "determinant of J (0: direct, ∞: inverse singularity)"), radianPerMillimetre2, 8);
+        l.add(G::Jacobian, "det_Jq", "det J_q", QT_TRANSLATE_NOOP("core", "0 at an inverse singularity (a leg stretched or folded)"), millimetre4, 0);
+        l.add(G::Jacobian, "det_Jx", "det J_x", QT_TRANSLATE_NOOP("core", "0 at a direct singularity (the distal links in line)"), units::squareMillimetre, 1);
+        l.add(G::Jacobian, "cond", "κ(J)", QT_TRANSLATE_NOOP("core", "condition number of J"), units::none, 3);
+        l.add(G::Derived, "elbow_angle1", "φ₁", QT_TRANSLATE_NOOP("core", "angle ABC between crank AB and link BC (0°, 180°: inverse singularity)"), units::angle, 2);
+        l.add(G::Derived, "elbow_angle2", "φ₂", QT_TRANSLATE_NOOP("core", "angle EDC between crank ED and link DC (0°, 180°: inverse singularity)"), units::angle, 2);
+        l.add(G::Derived, "links_angle", "ψ", QT_TRANSLATE_NOOP("core", "angle BCD between the distal links (0°, 180°: direct singularity)"), units::angle, 2);
+        l.add(G::Derived, "transmission", "μ", QT_TRANSLATE_NOOP("core", "transmission angle between the distal links, min(ψ, 180° − ψ)"), units::angle, 2);
+        l.add(G::Derived, "margin_inverse", "m_inv", QT_TRANSLATE_NOOP("core", "distance from the inverse singularities, min |sin φ_i| (0 … 1)"), units::none, 4);
+        l.add(G::Derived, "margin_direct", "m_dir", QT_TRANSLATE_NOOP("core", "distance from the direct singularities, |sin ψ| (0 … 1)"), units::none, 4);
+        l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
         return l;
     }();
     return layout;
@@ -722,8 +762,9 @@ std::vector<ModeAlternative> FiveBar::modeNeighbours() const
     };
     // C mirrored across BD turns both distal links about that line: where that carries a leg
     // past its stretched or folded pose, its working mode flips along with the assembly.
-    const std::string mirrored =
-        joinText({"other assembly mode (C ", fivebar::sideName(-d.assembly), " of B→D, same crank angles)"});
+    const std::string mirrored = -d.assembly == fivebar::right
+        ? QT_TRANSLATE_NOOP("core", "other assembly mode (C right of B→D, same crank angles)")
+        : QT_TRANSLATE_NOOP("core", "other assembly mode (C left of B→D, same crank angles)");
     for (int flips = 0; flips < 4; ++flips) {
         ParameterSet changes = {{"assembly", -double(d.assembly)}};
         for (int leg = 0; leg < 2; ++leg) {
@@ -736,8 +777,14 @@ std::vector<ModeAlternative> FiveBar::modeNeighbours() const
     // the other elbow and C: then the assembly mode flips with it.
     for (int leg = 0; leg < 2; ++leg) {
         const LegText &t = legText[std::size_t(leg)];
-        const std::string label = joinText({"leg ", t.number, ": other working mode (", t.elbow, " ",
-                                            fivebar::sideName(-d.working[leg]), " of ", t.ground, "→C, same C)"});
+        // fixed labels (the GUI keeps and translates them): leg × the side the elbow goes to
+        static constexpr std::array<std::array<const char *, 2>, 2> labels = {{
+            {QT_TRANSLATE_NOOP("core", "leg 1: other working mode (B left of A→C, same C)"),
+             QT_TRANSLATE_NOOP("core", "leg 1: other working mode (B right of A→C, same C)")},
+            {QT_TRANSLATE_NOOP("core", "leg 2: other working mode (D left of E→C, same C)"),
+             QT_TRANSLATE_NOOP("core", "leg 2: other working mode (D right of E→C, same C)")},
+        }};
+        const std::string label = labels[std::size_t(leg)][-d.working[leg] == fivebar::right ? 1 : 0];
         const ParameterSet changes = {{t.working, -double(d.working[leg])}};
         add(label, changes, false);
         ParameterSet both = changes;
@@ -755,7 +802,9 @@ KinematicChain FiveBar::kinematicChain(const Pose &pose) const
     const Eigen::Vector2d D = fivebar::elbow(m_design, 1, pose.inputs[1]);
     const Eigen::Vector2d C = pose.outputs.head<2>();
     KinematicChain chain;
-    chain.links = {"ground", "crank AB", "link BC", "link CD", "crank DE"};
+    chain.links = {text::translate("core", "ground"), text::translate("core", "crank AB"),
+                   text::translate("core", "link BC"), text::translate("core", "link CD"),
+                   text::translate("core", "crank DE")};
     const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
     chain.pairs = {{"A", PairType::Revolute, 0, 1, at(A), z, 0.0, true},
                    {"B", PairType::Revolute, 1, 2, at(B), z, 0.0, false},
@@ -763,7 +812,8 @@ KinematicChain FiveBar::kinematicChain(const Pose &pose) const
                    {"D", PairType::Revolute, 3, 4, at(D), z, 0.0, false},
                    {"E", PairType::Revolute, 4, 0, at(E), z, 0.0, true}};
     chain.planar = true;
-    chain.description = "planar five-bar: ground AE, cranks AB and DE (driven at A and E), distal links BC and CD";
+    chain.description = text::translate("core", "planar five-bar: ground AE, cranks AB and DE (driven at A and E), "
+                                                "distal links BC and CD");
     return chain;
 }
 
@@ -790,11 +840,11 @@ Scene FiveBar::scene(const Pose &pose) const
     for (int leg = 0; leg < 2; ++leg) {
         const double theta = pose.inputs[leg];
         s.angles.push_back({leg, 0.0, theta, 0.3 * std::min(d.crank[leg], d.ground),
-                            joinText({leg == 0 ? "θ₁ = " : "θ₄ = ", formatNumber(theta / units::degree, 1), "°"})});
+                            joinText({leg == 0 ? "θ₁ = " : "θ₄ = ", text::number(theta / units::degree, 1), "°"})});
     }
-    s.handles.push_back({4, "drag to move C (inverse kinematics)"});
-    s.handles.push_back({2, "drag to turn crank AB (sets θ₁, direct kinematics)"});
-    s.handles.push_back({3, "drag to turn crank DE (sets θ₄, direct kinematics)"});
+    s.handles.push_back({4, text::translate("core", "drag to move C (inverse kinematics)")});
+    s.handles.push_back({2, text::translate("core", "drag to turn crank AB (sets θ₁, direct kinematics)")});
+    s.handles.push_back({3, text::translate("core", "drag to turn crank DE (sets θ₄, direct kinematics)")});
     // constant over the motion: the cranks' circles and the workspace
     Eigen::AlignedBox3d extent;
     for (int leg = 0; leg < 2; ++leg) {
@@ -831,7 +881,7 @@ Result<Pose> FiveBar::dragHandle(const Pose &current, int handle, const Eigen::V
         inputs[leg] = theta;
         return solveDirect(inputs, &current);
     }
-    return Failure{FailureKind::UnknownName, {}, "No handle with that index."};
+    return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};
 }
 
 } // namespace pkm

@@ -39,6 +39,7 @@
 
 #include "mechanism.h"
 #include "planarworkspace.h"
+#include "text.h"
 
 #include <algorithm>
 #include <array>
@@ -152,7 +153,9 @@ public:
     std::vector<SingularCurve> singularCurves() const override;
     std::string singularityMeaning(SingularCurve::Type type) const override
     {
-        return type == SingularCurve::Type::Inverse ? "crank and distal link in line" : "distal links in line";
+        // the GUI translates the meaning (context "core")
+        return type == SingularCurve::Type::Inverse ? QT_TRANSLATE_NOOP("core", "crank and distal link in line")
+                                                    : QT_TRANSLATE_NOOP("core", "distal links in line");
     }
 
     static constexpr int variableTheta1 = 0;

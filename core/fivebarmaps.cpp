@@ -1,6 +1,7 @@
 // The five-bar's workspace and singularity maps: the inner loop of every map, the singular
 // curves drawn over them and the box that holds the workspace.
 #include "fivebar.h"
+#include "text.h"
 
 #include <cmath>
 #include <limits>
@@ -165,8 +166,14 @@ std::vector<SingularCurve> FiveBar::singularCurves() const
             const double rho = stretched ? a + b : std::abs(a - b);
             if (rho < 1e-9 * (a + b))
                 continue; // folded with a = b: C on G_i, a point
-            const std::string label = joinText({leg == 0 ? "leg 1 " : "leg 2 ", stretched ? "stretched" : "folded",
-                                                leg == 0 ? " (AB, BC in line)" : " (DE, CD in line)"});
+            // fixed labels (the GUI keeps and translates them)
+            static constexpr std::array<std::array<const char *, 2>, 2> labels = {{
+                {QT_TRANSLATE_NOOP("core", "leg 1 stretched (AB, BC in line)"),
+                 QT_TRANSLATE_NOOP("core", "leg 1 folded (AB, BC in line)")},
+                {QT_TRANSLATE_NOOP("core", "leg 2 stretched (DE, CD in line)"),
+                 QT_TRANSLATE_NOOP("core", "leg 2 folded (DE, CD in line)")},
+            }};
+            const std::string label = labels[std::size_t(leg)][stretched ? 0 : 1];
             traceRuns(curves, SingularCurve::Type::Inverse, label, -pi, pi, true, [&](double t, Eigen::Vector2d &C) {
                 C = G + rho * Eigen::Vector2d(std::cos(t), std::sin(t));
                 return checkInverse(C, curveTolerance, reference).ok();
@@ -184,7 +191,8 @@ std::vector<SingularCurve> FiveBar::singularCurves() const
         if (rho < 1e-9 * (b1 + b2))
             continue;
         for (const int side : {fivebar::left, fivebar::right}) {
-            traceRuns(curves, SingularCurve::Type::Direct, "distal links in line", d.range[0].min, d.range[0].max,
+            traceRuns(curves, SingularCurve::Type::Direct, QT_TRANSLATE_NOOP("core", "distal links in line"), d.range[0].min,
+                      d.range[0].max,
                       fivebar::fullTurn(d.range[0]), [&](double theta1, Eigen::Vector2d &C) {
                           const Eigen::Vector2d B = fivebar::elbow(d, 0, theta1);
                           Eigen::Vector2d D;

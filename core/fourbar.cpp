@@ -1,6 +1,7 @@
 #include "fourbar.h"
 
 #include "mobility.h"
+#include "text.h"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +15,7 @@ namespace pkm {
 namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-constexpr Unit radianPerSecond2{"rad/s²", 1.0};
+constexpr Unit radianPerSecond2{QT_TRANSLATE_NOOP("core", "rad/s²"), 1.0};
 /// Samples of the input range for the output range, the home pose and the coupler curve.
 constexpr int rangeSamples = 720;
 
@@ -28,14 +29,16 @@ Eigen::Vector2d perp(const Eigen::Vector2d &u)
     return {-u.y(), u.x()};
 }
 
+/// A length for a sentence, up to three decimals.
 std::string mm(double value)
 {
-    return joinText({formatNumber(value, 3), " mm"});
+    return text::format(text::translate("core", "%1 mm"), {text::number(value, 3)});
 }
 
+/// An angle for a sentence, in degrees.
 std::string deg(double radians)
 {
-    return joinText({formatNumber(radians / units::degree, 3), "°"});
+    return joinText({text::number(radians / units::degree, 3), "°"});
 }
 
 double scaleOf(const FourBarDesign &d)
@@ -73,7 +76,8 @@ namespace fourbar {
 
 const char *branchName(int branch)
 {
-    return branch == crossed ? "crossed" : "open";
+    // words of the reports and JSON (also the parameter's choices): English, translated where shown
+    return branch == crossed ? QT_TRANSLATE_NOOP("core", "crossed") : QT_TRANSLATE_NOOP("core", "open");
 }
 
 Grashof classify(double AB, double BC, double CD, double AD)
@@ -97,12 +101,13 @@ Grashof classify(double AB, double BC, double CD, double AD)
 const char *grashofName(Grashof g)
 {
     switch (g) {
-    case Grashof::CrankRocker: return "crank-rocker";
-    case Grashof::RockerCrank: return "rocker-crank";
-    case Grashof::DoubleCrank: return "double-crank";
-    case Grashof::DoubleRocker: return "double-rocker";
-    case Grashof::TripleRocker: return "triple-rocker";
-    case Grashof::ChangePoint: return "change-point";
+    // words of the reports and JSON: English, translated where shown (text::label, coreLabel)
+    case Grashof::CrankRocker: return QT_TRANSLATE_NOOP("core", "crank-rocker");
+    case Grashof::RockerCrank: return QT_TRANSLATE_NOOP("core", "rocker-crank");
+    case Grashof::DoubleCrank: return QT_TRANSLATE_NOOP("core", "double-crank");
+    case Grashof::DoubleRocker: return QT_TRANSLATE_NOOP("core", "double-rocker");
+    case Grashof::TripleRocker: return QT_TRANSLATE_NOOP("core", "triple-rocker");
+    case Grashof::ChangePoint: return QT_TRANSLATE_NOOP("core", "change-point");
     }
     return "";
 }
@@ -213,15 +218,15 @@ const std::vector<ParameterInfo> &fourbarParameterInfo()
         const Interval positive{0.0, 1e5};
         using G = ParameterGroup;
         std::vector<ParameterInfo> v;
-        v.push_back({"AB", "AB", "crank (input link) length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"BC", "BC", "coupler length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"CD", "CD", "rocker (output link) length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"AD", "AD", "ground (frame) length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"omega1", "ω₁", "crank angular velocity, constant (positive: α grows, counter-clockwise)",
+        v.push_back({"AB", "AB", QT_TRANSLATE_NOOP("core", "crank (input link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"BC", "BC", QT_TRANSLATE_NOOP("core", "coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"CD", "CD", QT_TRANSLATE_NOOP("core", "rocker (output link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"AD", "AD", QT_TRANSLATE_NOOP("core", "ground (frame) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"omega1", "ω₁", QT_TRANSLATE_NOOP("core", "crank angular velocity, constant (positive: α grows, counter-clockwise)"),
                      units::radianPerSecond, G::Actuator, Interval{-1e4, 1e4}, false, false, true, 3, 0.1});
-        v.push_back({"coupler_point", "λ", "coupler point M on BC: BM/BC (0 at B, 1 at C)", units::none, G::Geometry,
+        v.push_back({"coupler_point", "λ", QT_TRANSLATE_NOOP("core", "coupler point M on BC: BM/BC (0 at B, 1 at C)"), units::none, G::Geometry,
                      Interval{0.0, 1.0}, false, false, true, 3, 0.05});
-        ParameterInfo branch{"branch", "σ", "assembly branch: +1 open (C left of B→D), −1 crossed", units::none,
+        ParameterInfo branch{"branch", "σ", QT_TRANSLATE_NOOP("core", "assembly branch: +1 open (C left of B→D), −1 crossed"), units::none,
                              G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2};
         branch.choices = {{"open", 1.0}, {"crossed", -1.0}};
         v.push_back(branch);
@@ -242,8 +247,8 @@ Result<bool> checkBranch(double value)
 {
     if (value != 1.0 && value != -1.0) {
         return Failure{FailureKind::InvalidParameter, "branch",
-                       joinText({"branch = ", formatNumber(value),
-                             " is invalid: it must be +1 (open) or -1 (crossed)."})};
+                       text::format(text::translate("core", "branch = %1 is invalid: it must be +1 (open) or -1 (crossed)."),
+                                    {text::number(value)})};
     }
     return true;
 }
@@ -254,7 +259,8 @@ Result<FourBarDesign> applyChanges(FourBarDesign d, const ParameterSet &changes)
     for (const auto &[name, value] : changes) {
         const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
         if (info == infos.end())
-            return Failure{FailureKind::UnknownName, name, joinText({"The four-bar linkage has no parameter named '", name, "'."})};
+            return Failure{FailureKind::UnknownName, name,
+                           text::format(text::translate("core", "The four-bar linkage has no parameter named '%1'."), {name})};
         if (auto checked = Mechanism::checkDomain(*info, value); !checked)
             return checked.failure();
         if (name == "branch") {
@@ -306,9 +312,10 @@ Result<MechanismPtr> FourBar::create(const FourBarDesign &d)
                 names.append(names.empty() ? "" : " + ").append(link.first);
         }
         return Failure{FailureKind::InvalidParameter, longest->first,
-                       joinText({longest->first, " = ", mm(longest->second), " is not shorter than ", names, " = ", mm(others),
-                             ": the links cannot close the loop ABCD for any crank angle α (each link must be "
-                             "shorter than the other three together)."})};
+                       text::format(text::translate("core", "%1 = %2 is not shorter than %3 = %4: the links cannot close "
+                                                            "the loop ABCD for any crank angle α (each link must be "
+                                                            "shorter than the other three together)."),
+                                    {longest->first, mm(longest->second), names, mm(others)})};
     }
     return MechanismPtr(new FourBar(d));
 }
@@ -476,13 +483,15 @@ std::string FourBar::limitReason(double limit) const
     const double e = (Eigen::Vector2d(d.ground, 0.0) - crankJoint(d, limit)).norm();
     const double sum = d.coupler + d.rocker, difference = std::abs(d.coupler - d.rocker);
     if (std::abs(e - sum) <= std::abs(e - difference)) {
-        return joinText({"at α = ", deg(limit), " the diagonal |BD| reaches BC + CD = ", mm(sum),
-                     ": the coupler and the rocker are stretched in line (a dead point), and beyond it they cannot "
-                     "reach each other"});
+        return text::format(text::translate("core", "at α = %1 the diagonal |BD| reaches BC + CD = %2: the coupler and "
+                                                    "the rocker are stretched in line (a dead point), and beyond it "
+                                                    "they cannot reach each other"),
+                            {deg(limit), mm(sum)});
     }
-    return joinText({"at α = ", deg(limit), " the diagonal |BD| falls to |BC − CD| = ", mm(difference),
-                 ": the coupler and the rocker are folded in line (a dead point), and beyond it they cannot close "
-                 "the loop"});
+    return text::format(text::translate("core", "at α = %1 the diagonal |BD| falls to |BC − CD| = %2: the coupler and "
+                                                "the rocker are folded in line (a dead point), and beyond it they "
+                                                "cannot close the loop"),
+                        {deg(limit), mm(difference)});
 }
 
 std::vector<std::string> FourBar::designWarnings() const
@@ -491,14 +500,15 @@ std::vector<std::string> FourBar::designWarnings() const
     const FourBarDesign &d = m_design;
     const fourbar::Grashof g = grashof(d);
     if (g == fourbar::Grashof::ChangePoint) {
-        warnings.push_back("s + l = p + q (a change-point linkage): the links fold flat in line somewhere in the "
-                           "motion, where the open and crossed branches meet and a real linkage may switch branch.");
+        warnings.push_back(text::translate("core", "s + l = p + q (a change-point linkage): the links fold flat in line "
+                                                   "somewhere in the motion, where the open and crossed branches meet "
+                                                   "and a real linkage may switch branch."));
     }
     if (!m_fullTurn) {
-        warnings.push_back(joinText({"The crank cannot turn fully: α is limited to [", deg(m_alphaRange.min), ", ",
-                                 deg(m_alphaRange.max),
-                                 "], at whose ends the coupler and the rocker are in line (dead points where the "
-                                 "crank cannot drive the rocker)."}));
+        warnings.push_back(text::format(text::translate("core", "The crank cannot turn fully: α is limited to [%1, %2], "
+                                                                "at whose ends the coupler and the rocker are in line "
+                                                                "(dead points where the crank cannot drive the rocker)."),
+                                        {deg(m_alphaRange.min), deg(m_alphaRange.max)}));
         return warnings;
     }
     double worst = pi, worstAlpha = 0.0;
@@ -515,8 +525,9 @@ std::vector<std::string> FourBar::designWarnings() const
         }
     }
     if (worst < poorTransmission * units::degree) {
-        warnings.push_back(joinText({"The transmission angle falls to ", deg(worst), " at α = ", deg(worstAlpha), " (below ",
-                                 formatNumber(poorTransmission), "°): the crank drives the rocker poorly there."}));
+        warnings.push_back(text::format(text::translate("core", "The transmission angle falls to %1 at α = %2 (below "
+                                                                "%3°): the crank drives the rocker poorly there."),
+                                        {deg(worst), deg(worstAlpha), text::number(poorTransmission)}));
     }
     return warnings;
 }
@@ -526,8 +537,8 @@ std::vector<std::string> FourBar::designWarnings() const
 const std::vector<VariableInfo> &FourBar::variableInfo() const
 {
     static const std::vector<VariableInfo> infos = {
-        {"alpha", "α", "crank angle at A, from AD counter-clockwise (actuated)", units::angle, true, 2},
-        {"delta", "δ", "rocker angle at D, from DA clockwise (output)", units::angle, false, 2},
+        {"alpha", "α", QT_TRANSLATE_NOOP("core", "crank angle at A, from AD counter-clockwise (actuated)"), units::angle, true, 2},
+        {"delta", "δ", QT_TRANSLATE_NOOP("core", "rocker angle at D, from DA clockwise (output)"), units::angle, false, 2},
     };
     return infos;
 }
@@ -544,27 +555,32 @@ Result<Pose> FourBar::solveDirect(const Coordinates &inputs, const Pose *) const
     const FourBarDesign &d = m_design;
     const double alpha = inputs[0];
     if (!std::isfinite(alpha))
-        return Failure{FailureKind::OutOfRange, "alpha", "alpha must be a finite number."};
+        return Failure{FailureKind::OutOfRange, "alpha", text::translate("core", "alpha must be a finite number.")};
     if (!m_alphaRange.contains(alpha, 1e-12)) {
-        std::string message = joinText({"alpha = ", deg(alpha), " is outside "});
         if (m_fullTurn) {
-            message.append(joinText({"[0°, 360°]: the crank turns fully, give its angle within one turn."}));
-        } else {
-            const bool above = alpha > m_alphaRange.max;
-            message.append(joinText({"the range of the crank of this ", fourbar::grashofName(grashof(d)), " linkage, [",
-                                 deg(m_alphaRange.min), ", ", deg(m_alphaRange.max), "]: ",
-                                 limitReason(above ? m_alphaRange.max : m_alphaRange.min), "."}));
+            return Failure{FailureKind::OutOfRange, "alpha",
+                           text::format(text::translate("core", "alpha = %1 is outside [0°, 360°]: the crank turns fully, "
+                                                                "give its angle within one turn."),
+                                        {deg(alpha)})};
         }
-        return Failure{FailureKind::OutOfRange, "alpha", message};
+        const bool above = alpha > m_alphaRange.max;
+        return Failure{FailureKind::OutOfRange, "alpha",
+                       text::format(text::translate("core", "alpha = %1 is outside the range of the crank of this %2 "
+                                                            "linkage, [%3, %4]: %5."),
+                                    {deg(alpha), text::label(fourbar::grashofName(grashof(d))), deg(m_alphaRange.min),
+                                     deg(m_alphaRange.max), limitReason(above ? m_alphaRange.max : m_alphaRange.min)})};
     }
     const double a = m_alphaRange.clamp(alpha);
     const fourbar::Position p = fourbar::position(d, a);
     if (!p.valid) {
         if ((Eigen::Vector2d(d.ground, 0.0) - p.B).norm() < 1e-9 * scaleOf(d)) {
             return Failure{FailureKind::Singular, "alpha",
-                           joinText({"At alpha = ", deg(a), " the crank joint B lies on D: the rocker's angle is undetermined."})};
+                           text::format(text::translate("core", "At alpha = %1 the crank joint B lies on D: the rocker's "
+                                                                "angle is undetermined."),
+                                        {deg(a)})};
         }
-        return Failure{FailureKind::Unreachable, "alpha", joinText({"The loop ABCD does not close at alpha = ", deg(a), "."})};
+        return Failure{FailureKind::Unreachable, "alpha",
+                       text::format(text::translate("core", "The loop ABCD does not close at alpha = %1."), {deg(a)})};
     }
     Pose pose;
     pose.inputs.resize(1);
@@ -580,14 +596,19 @@ Result<Pose> FourBar::solveInverse(const Coordinates &outputs, const Pose *near)
     const FourBarDesign &d = m_design;
     const double delta = outputs[0];
     if (!std::isfinite(delta))
-        return Failure{FailureKind::OutOfRange, "delta", "delta must be a finite number."};
+        return Failure{FailureKind::OutOfRange, "delta", text::translate("core", "delta must be a finite number.")};
     if (!m_deltaRange.contains(delta, 1e-12)) {
         return Failure{FailureKind::OutOfRange, "delta",
-                       joinText({"delta = ", deg(delta), " is outside the range the rocker reaches in the ",
-                             fourbar::branchName(d.branch), " branch, [", deg(m_deltaRange.min), ", ",
-                             deg(m_deltaRange.max),
-                             "]: at its ends the crank and the coupler are in line, or the crank is at its own "
-                             "limit."})};
+                       text::format(d.branch == fourbar::crossed
+                                        ? text::translate("core", "delta = %1 is outside the range the rocker reaches in "
+                                                                  "the crossed branch, [%2, %3]: at its ends the crank "
+                                                                  "and the coupler are in line, or the crank is at its "
+                                                                  "own limit.")
+                                        : text::translate("core", "delta = %1 is outside the range the rocker reaches in "
+                                                                  "the open branch, [%2, %3]: at its ends the crank and "
+                                                                  "the coupler are in line, or the crank is at its own "
+                                                                  "limit."),
+                                    {deg(delta), deg(m_deltaRange.min), deg(m_deltaRange.max)})};
     }
     const double x = m_deltaRange.clamp(delta);
     const Eigen::Vector2d C = rockerJoint(d, x), D(d.ground, 0.0);
@@ -595,15 +616,18 @@ Result<Pose> FourBar::solveInverse(const Coordinates &outputs, const Pose *near)
     const double a = d.crank, b = d.coupler, scale = scaleOf(d);
     if (r < 1e-12 * scale) {
         return Failure{FailureKind::Singular, "delta",
-                       joinText({"At delta = ", deg(x), " the rocker joint C lies on A: the crank angle is undetermined."})};
+                       text::format(text::translate("core", "At delta = %1 the rocker joint C lies on A: the crank angle "
+                                                            "is undetermined."),
+                                    {deg(x)})};
     }
     // circle (A, AB) ∩ circle (C, BC)
     const double along = (a * a - b * b + r * r) / (2.0 * r);
     const double across2 = a * a - along * along;
     if (across2 < -1e-12 * a * a) {
         return Failure{FailureKind::Unreachable, "delta",
-                       joinText({"The crank cannot reach the coupler at delta = ", deg(x), ": |AC| = ", mm(r),
-                             " is not between |AB − BC| and AB + BC."})};
+                       text::format(text::translate("core", "The crank cannot reach the coupler at delta = %1: |AC| = %2 "
+                                                            "is not between |AB − BC| and AB + BC."),
+                                    {deg(x), mm(r)})};
     }
     const Eigen::Vector2d u = C / r;
     const double across = std::sqrt(std::max(0.0, across2));
@@ -626,8 +650,12 @@ Result<Pose> FourBar::solveInverse(const Coordinates &outputs, const Pose *near)
     }
     if (std::isnan(chosen)) {
         return Failure{FailureKind::Unreachable, "delta",
-                       joinText({"The rocker reaches delta = ", deg(x), " only in the other assembly branch; this design is ",
-                             fourbar::branchName(d.branch), "."})};
+                       text::format(d.branch == fourbar::crossed
+                                        ? text::translate("core", "The rocker reaches delta = %1 only in the other "
+                                                                  "assembly branch; this design is crossed.")
+                                        : text::translate("core", "The rocker reaches delta = %1 only in the other "
+                                                                  "assembly branch; this design is open."),
+                                    {deg(x)})};
     }
     Pose pose;
     pose.inputs.resize(1);
@@ -667,28 +695,28 @@ const ReportLayout &FourBar::reportLayout() const
     static const ReportLayout layout = [] {
         using G = ReportGroup;
         ReportLayout l;
-        l.add(G::Pose, "alpha", "α", "crank angle at A, from AD counter-clockwise", units::angle, 2);
-        l.add(G::Pose, "delta", "δ", "rocker angle at D, from DA clockwise", units::angle, 2);
-        l.add(G::Pose, "gamma", "γ", "transmission angle at C, from CB to CD counter-clockwise (< 0: crossed)", units::angle, 2);
-        l.add(G::Pose, "delta1", "δ₁", "angle at D from DA to DB (4)", units::angle, 2);
-        l.add(G::Pose, "beta", "β", "angle at B from BA to BC, 360° − (α + γ + δ)", units::angle, 2);
-        l.add(G::Jacobian, "Jq", "J_q", "J_q = ∂F/∂α = 2·AB·BC·sin β (0: inverse singularity)", units::squareMillimetre, 1);
-        l.add(G::Jacobian, "Jx", "J_x", "J_x = −∂F/∂δ = −2·BC·CD·sin γ (0: direct singularity)", units::squareMillimetre, 1);
-        l.add(G::Jacobian, "J", "J", "α̇ = J·δ̇, J = J_q⁻¹·J_x = dα/dδ", units::none, 4);
-        l.add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
-        l.add(G::Derived, "i31", "i₃₁", "transfer function dδ/dα = ω₃/ω₁ = −(9)", units::none, 4);
-        l.add(G::Derived, "omega1", "ω₁", "crank angular velocity (constant)", units::radianPerSecond, 3);
-        l.add(G::Derived, "omega2", "ω₂", "coupler angular velocity, counter-clockwise", units::radianPerSecond, 3);
-        l.add(G::Derived, "omega3", "ω₃", "dδ/dt, exact (the document's (8) with the opposite sign)", units::radianPerSecond, 3);
-        l.add(G::Derived, "epsilon2", "ε₂", "coupler angular acceleration, counter-clockwise", radianPerSecond2, 3);
-        l.add(G::Derived, "epsilon3", "ε₃", "d²δ/dt² at constant ω₁, exact (not the document's (14))", radianPerSecond2, 3);
-        l.add(G::Derived, "transmission", "μ", "acute transmission angle min(|γ|, 180° − |γ|) (below 40°: poor)", units::angle, 2);
-        l.add(G::Derived, "margin", "m", "distance from the nearest singularity, min(|sin β|, |sin γ|)", units::none, 4);
-        l.add(G::Derived, "BD", "BD", "diagonal |BD|", units::millimetre, 2);
-        l.add(G::Derived, "M_x", "x_M", "coupler point M, x", units::millimetre, 2);
-        l.add(G::Derived, "M_y", "y_M", "coupler point M, y", units::millimetre, 2);
-        l.add(G::Derived, "P_x", "x_P", "instantaneous centre P of the coupler, x (none: AB ∥ DC)", units::millimetre, 2);
-        l.add(G::Derived, "P_y", "y_P", "instantaneous centre P of the coupler, y (none: AB ∥ DC)", units::millimetre, 2);
+        l.add(G::Pose, "alpha", "α", QT_TRANSLATE_NOOP("core", "crank angle at A, from AD counter-clockwise"), units::angle, 2);
+        l.add(G::Pose, "delta", "δ", QT_TRANSLATE_NOOP("core", "rocker angle at D, from DA clockwise"), units::angle, 2);
+        l.add(G::Pose, "gamma", "γ", QT_TRANSLATE_NOOP("core", "transmission angle at C, from CB to CD counter-clockwise (< 0: crossed)"), units::angle, 2);
+        l.add(G::Pose, "delta1", "δ₁", QT_TRANSLATE_NOOP("core", "angle at D from DA to DB (4)"), units::angle, 2);
+        l.add(G::Pose, "beta", "β", QT_TRANSLATE_NOOP("core", "angle at B from BA to BC, 360° − (α + γ + δ)"), units::angle, 2);
+        l.add(G::Jacobian, "Jq", "J_q", QT_TRANSLATE_NOOP("core", "J_q = ∂F/∂α = 2·AB·BC·sin β (0: inverse singularity)"), units::squareMillimetre, 1);
+        l.add(G::Jacobian, "Jx", "J_x", QT_TRANSLATE_NOOP("core", "J_x = −∂F/∂δ = −2·BC·CD·sin γ (0: direct singularity)"), units::squareMillimetre, 1);
+        l.add(G::Jacobian, "J", "J", QT_TRANSLATE_NOOP("core", "α̇ = J·δ̇, J = J_q⁻¹·J_x = dα/dδ"), units::none, 4);
+        l.add(G::Jacobian, "det_J", "det J", QT_TRANSLATE_NOOP("core", "determinant of J (0: direct, ∞: inverse singularity)"), units::none, 4);
+        l.add(G::Derived, "i31", "i₃₁", QT_TRANSLATE_NOOP("core", "transfer function dδ/dα = ω₃/ω₁ = −(9)"), units::none, 4);
+        l.add(G::Derived, "omega1", "ω₁", QT_TRANSLATE_NOOP("core", "crank angular velocity (constant)"), units::radianPerSecond, 3);
+        l.add(G::Derived, "omega2", "ω₂", QT_TRANSLATE_NOOP("core", "coupler angular velocity, counter-clockwise"), units::radianPerSecond, 3);
+        l.add(G::Derived, "omega3", "ω₃", QT_TRANSLATE_NOOP("core", "dδ/dt, exact (the document's (8) with the opposite sign)"), units::radianPerSecond, 3);
+        l.add(G::Derived, "epsilon2", "ε₂", QT_TRANSLATE_NOOP("core", "coupler angular acceleration, counter-clockwise"), radianPerSecond2, 3);
+        l.add(G::Derived, "epsilon3", "ε₃", QT_TRANSLATE_NOOP("core", "d²δ/dt² at constant ω₁, exact (not the document's (14))"), radianPerSecond2, 3);
+        l.add(G::Derived, "transmission", "μ", QT_TRANSLATE_NOOP("core", "acute transmission angle min(|γ|, 180° − |γ|) (below 40°: poor)"), units::angle, 2);
+        l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity, min(|sin β|, |sin γ|)"), units::none, 4);
+        l.add(G::Derived, "BD", "BD", QT_TRANSLATE_NOOP("core", "diagonal |BD|"), units::millimetre, 2);
+        l.add(G::Derived, "M_x", "x_M", QT_TRANSLATE_NOOP("core", "coupler point M, x"), units::millimetre, 2);
+        l.add(G::Derived, "M_y", "y_M", QT_TRANSLATE_NOOP("core", "coupler point M, y"), units::millimetre, 2);
+        l.add(G::Derived, "P_x", "x_P", QT_TRANSLATE_NOOP("core", "instantaneous centre P of the coupler, x (none: AB ∥ DC)"), units::millimetre, 2);
+        l.add(G::Derived, "P_y", "y_P", QT_TRANSLATE_NOOP("core", "instantaneous centre P of the coupler, y (none: AB ∥ DC)"), units::millimetre, 2);
         return l;
     }();
     return layout;
@@ -750,9 +778,9 @@ Singularity FourBar::evaluate(const Pose &pose, std::span<double> v) const
 std::vector<ReportText> FourBar::reportText(const Pose &) const
 {
     return {{ReportGroup::Pose, "branch", fourbar::branchName(m_design.branch),
-             "assembly branch: open (C left of B→D) or crossed"},
+             QT_TRANSLATE_NOOP("core", "assembly branch: open (C left of B→D) or crossed")},
             {ReportGroup::Derived, "grashof", fourbar::grashofName(grashof(m_design)),
-             "Grashof class from s + l against p + q"}};
+             QT_TRANSLATE_NOOP("core", "Grashof class from s + l against p + q")}};
 }
 
 std::vector<ModeAlternative> FourBar::modeNeighbours() const
@@ -761,19 +789,23 @@ std::vector<ModeAlternative> FourBar::modeNeighbours() const
     const int other = -m_design.branch;
     const ParameterSet changes = {{"branch", double(other)}};
     if (auto made = withParameters(changes))
-        neighbours.push_back({joinText({fourbar::branchName(other), " branch (same crank angle)"}), changes, *made, true, {}});
+        neighbours.push_back({other == fourbar::crossed ? QT_TRANSLATE_NOOP("core", "crossed branch (same crank angle)")
+                                                        : QT_TRANSLATE_NOOP("core", "open branch (same crank angle)"),
+                              changes, *made, true, {}});
     return neighbours;
 }
 
 KinematicChain FourBar::kinematicChain(const Pose &pose) const
 {
     KinematicChain chain;
-    chain.links = {"ground AD", "crank AB", "coupler BC", "rocker CD"};
+    chain.links = {text::translate("core", "ground AD"), text::translate("core", "crank AB"),
+                   text::translate("core", "coupler BC"), text::translate("core", "rocker CD")};
     chain.pairs = {mobility::planarRevolute("A", 0, 1, Eigen::Vector2d(0.0, 0.0), true),
         mobility::planarRevolute("B", 1, 2, crankJoint(m_design, pose.inputs[0])),
         mobility::planarRevolute("C", 2, 3, rockerJoint(m_design, pose.outputs[0])),
         mobility::planarRevolute("D", 3, 0, Eigen::Vector2d(m_design.ground, 0.0))};
-    chain.description = "planar four-bar: ground AD, crank AB (driven at A), coupler BC, rocker CD";
+    chain.description
+        = text::translate("core", "planar four-bar: ground AD, crank AB (driven at A), coupler BC, rocker CD");
     return chain;
 }
 
@@ -800,19 +832,22 @@ Scene FourBar::scene(const Pose &pose) const
         s.joints.push_back({to3(P), "P", JointKind::Point});
     s.bars.push_back({0, 1, BarKind::Ground, "AD"});
     s.bars.push_back({0, 2, BarKind::Crank, "AB"});
-    s.bars.push_back({2, 3, BarKind::Coupler, parallel ? "BC (P at infinity: AB ∥ DC, the coupler translates)" : "BC"});
+    s.bars.push_back({2, 3, BarKind::Coupler,
+                      parallel ? text::translate("core", "BC (P at infinity: AB ∥ DC, the coupler translates)")
+                               : std::string("BC")});
     s.bars.push_back({1, 3, BarKind::Link, "CD"});
     const double shortest = std::min({d.crank, d.coupler, d.rocker, d.ground});
-    s.angles.push_back({0, 0.0, alpha, 0.3 * std::min(d.crank, d.ground), joinText({"α = ", formatNumber(alpha / units::degree, 1), "°"})});
-    s.angles.push_back({1, pi, -delta, 0.3 * std::min(d.rocker, d.ground), joinText({"δ = ", formatNumber(delta / units::degree, 1), "°"})});
+    s.angles.push_back({0, 0.0, alpha, 0.3 * std::min(d.crank, d.ground), joinText({"α = ", text::number(alpha / units::degree, 1), "°"})});
+    s.angles.push_back({1, pi, -delta, 0.3 * std::min(d.rocker, d.ground), joinText({"δ = ", text::number(delta / units::degree, 1), "°"})});
     const Eigen::Vector2d cb = B - C;
     s.angles.push_back({3, std::atan2(cb.y(), cb.x()), a.gamma, 0.3 * shortest,
-                        joinText({"γ = ", formatNumber(a.gamma / units::degree, 1), "°"})});
-    s.handles.push_back({2, "drag to turn the crank (sets α, direct kinematics)"});
-    s.handles.push_back({3, "drag to swing the rocker (sets δ, inverse kinematics)"});
+                        joinText({"γ = ", text::number(a.gamma / units::degree, 1), "°"})});
+    s.handles.push_back({2, text::translate("core", "drag to turn the crank (sets α, direct kinematics)")});
+    s.handles.push_back({3, text::translate("core", "drag to swing the rocker (sets δ, inverse kinematics)")});
     ScenePolyline curve;
     curve.closed = m_fullTurn;
-    curve.label = joinText({"coupler curve of M (", fourbar::branchName(d.branch), " branch)"});
+    curve.label = d.branch == fourbar::crossed ? text::translate("core", "coupler curve of M (crossed branch)")
+                                               : text::translate("core", "coupler curve of M (open branch)");
     curve.points.reserve(m_curve.size());
     for (const Eigen::Vector2d &p : m_curve)
         curve.points.push_back(to3(p));
@@ -858,7 +893,7 @@ Result<Pose> FourBar::dragHandle(const Pose &current, int handle, const Eigen::V
         outputs << representative(pi - std::atan2(fromD.y(), fromD.x()), current.outputs[0], m_deltaRange);
         return solveInverse(outputs, &current);
     }
-    return Failure{FailureKind::UnknownName, {}, "No handle with that index."};
+    return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};
 }
 
 } // namespace pkm

@@ -64,7 +64,8 @@ struct FourBarDesign {
 namespace fourbar {
 constexpr int open = +1;
 constexpr int crossed = -1;
-/// "open" or "crossed".
+/// "open" or "crossed": the word of files, reports and JSON (English, marked for translation:
+/// text::label() translates it for a person).
 const char *branchName(int branch);
 
 /// Grashof's classes, from s + l against p + q (s the shortest link, l the longest).
@@ -78,7 +79,7 @@ enum class Grashof {
 };
 Grashof classify(double AB, double BC, double CD, double AD);
 /// "crank-rocker", "rocker-crank", "double-crank", "double-rocker", "triple-rocker",
-/// "change-point".
+/// "change-point": English words of reports and JSON, marked for translation (text::label()).
 const char *grashofName(Grashof g);
 
 /// B and C at input α in branch σ by circle–circle intersection, no range checks; `valid` is

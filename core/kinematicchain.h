@@ -35,7 +35,7 @@ struct KinematicPair {
 };
 
 struct KinematicChain {
-    /// Link names, the ground first ("ground", "crank AB", …).
+    /// Link names, the ground first ("ground", "crank AB", …), translated (text::translate).
     std::vector<std::string> links;
     std::vector<KinematicPair> pairs;
     /// All links move in parallel planes (Chebyshev's formula applies).
@@ -43,7 +43,8 @@ struct KinematicChain {
     /// Freedoms that do not move the mechanism's other links (a rod spinning about its own axis
     /// between two spheres): counted by the formulas, reported apart.
     int idleFreedoms = 0;
-    /// A short description for reports ("planar four-bar: ground, crank, coupler, rocker").
+    /// A short description for reports ("planar four-bar: ground, crank, coupler, rocker"),
+    /// translated.
     std::string description;
 
     int movingLinks() const { return static_cast<int>(links.size()) - 1; }

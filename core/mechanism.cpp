@@ -1,5 +1,7 @@
 #include "mechanism.h"
 
+#include "text.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -113,10 +115,11 @@ Result<Pose> Mechanism::solveWith(const Pose &current, int variable, double valu
 {
     const int inputs = inputCount();
     if (variable < 0 || variable >= static_cast<int>(variableInfo().size()))
-        return Failure{FailureKind::UnknownName, {}, "No joint variable with that index."};
+        return Failure{FailureKind::UnknownName, {}, text::translate("core", "No joint variable with that index.")};
     if (!std::isfinite(value)) {
         const std::string &name = variableInfo()[variable].name;
-        return Failure{FailureKind::OutOfRange, name, name + " must be a finite number."};
+        return Failure{FailureKind::OutOfRange, name,
+                       text::format(text::translate("core", "%1 must be a finite number."), {name})};
     }
     if (variable < inputs) {
         Coordinates q = current.inputs;
@@ -184,7 +187,8 @@ std::string joinText(std::initializer_list<std::string_view> parts)
 
 std::string formatMillimetres(double value)
 {
-    return joinText({formatNumber(value, 2), " mm"});
+    // For messages only (never files): the locale's decimal point and unit once hooks are in.
+    return text::millimetres(value);
 }
 
 Result<double> Mechanism::checkDomain(const ParameterInfo &info, double value)
@@ -193,21 +197,36 @@ Result<double> Mechanism::checkDomain(const ParameterInfo &info, double value)
     const bool tooLow = info.openMin ? !(value > d.min) : !(value >= d.min);
     const bool tooHigh = info.openMax ? !(value < d.max) : !(value <= d.max);
     if (!std::isfinite(value) || tooLow || tooHigh) {
-        // Built with append(): GCC 12 warns falsely (-Wrestrict) on chains of operator+.
-        std::string message = info.name;
-        message.append(" (").append(info.label).append(") = ");
-        message.append(std::isfinite(value) ? formatNumber(info.unit.toDisplay(value)) : std::string("not a number"));
-        message.append(" is invalid: it must be ");
-        const double lo = info.unit.toDisplay(d.min);
+        const std::string label = text::label(info.label);
+        const std::string shown = std::isfinite(value) ? text::number(info.unit.toDisplay(value))
+                                                       : text::translate("core", "not a number");
+        // the unit follows the bound: "0 mm", "90°"
+        const std::string unit = info.unit.symbol.empty()
+                                   ? std::string()
+                                   : joinText({info.unit.symbol == units::angle.symbol ? "" : " ",
+                                               text::label(info.unit.symbol)});
+        const std::string lo = text::number(info.unit.toDisplay(d.min));
+        std::string message;
         if (std::isinf(d.max)) {
-            message.append(info.openMin ? "greater than " : "at least ").append(formatNumber(lo));
+            const std::string bound = joinText({lo, unit});
+            message = info.openMin
+                        ? text::format(text::translate("core", "%1 (%2) = %3 is invalid: it must be greater than %4."),
+                                       {info.name, label, shown, bound})
+                        : text::format(text::translate("core", "%1 (%2) = %3 is invalid: it must be at least %4."),
+                                       {info.name, label, shown, bound});
         } else {
-            message.append(info.openMin ? "(" : "[").append(formatNumber(lo)).append(", ");
-            message.append(formatNumber(info.unit.toDisplay(d.max))).append(info.openMax ? ")" : "]");
+            // the brackets say whether the ends are allowed; a locale with a decimal comma may
+            // separate the ends with "; "
+            const std::string hi = text::number(info.unit.toDisplay(d.max));
+            const std::string ends = info.openMin
+                                       ? (info.openMax ? text::translate("core", "(%1, %2)")
+                                                       : text::translate("core", "(%1, %2]"))
+                                       : (info.openMax ? text::translate("core", "[%1, %2)")
+                                                       : text::translate("core", "[%1, %2]"));
+            const std::string interval = joinText({text::format(ends, {lo, hi}), unit});
+            message = text::format(text::translate("core", "%1 (%2) = %3 is invalid: it must be %4."),
+                                   {info.name, label, shown, interval});
         }
-        if (!info.unit.symbol.empty())
-            message.append(info.unit.symbol == units::angle.symbol ? "" : " ").append(info.unit.symbol);
-        message.append(".");
         return Failure{FailureKind::InvalidParameter, info.name, message};
     }
     return value;

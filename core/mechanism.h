@@ -45,7 +45,7 @@ std::string_view parameterGroupKey(ParameterGroup group);
 struct ParameterInfo {
     std::string name;        ///< key in files, CLI and JSON ("a", "theta_min")
     std::string symbol;      ///< as printed ("a", "θ_min")
-    std::string label;       ///< English description ("crank (lever) length")
+    std::string label;       ///< English source, QT_TRANSLATE_NOOP("core", …) ("crank (lever) length")
     Unit unit;               ///< display unit
     ParameterGroup group = ParameterGroup::Geometry;
     Interval domain;         ///< allowed values, core units
@@ -62,7 +62,7 @@ struct ParameterInfo {
 struct VariableInfo {
     std::string name;   ///< "theta", "d"
     std::string symbol; ///< "θ", "d"
-    std::string label;  ///< "output angle"
+    std::string label;  ///< "output angle" (English source, QT_TRANSLATE_NOOP("core", …))
     Unit unit;
     bool actuated = false; ///< true: an input (driven by an actuator); false: an output
     int decimals = 2;
@@ -85,7 +85,7 @@ struct ReportEntry {
     ReportGroup group = ReportGroup::Derived;
     std::string name;   ///< JSON key
     std::string symbol; ///< as printed
-    std::string label;  ///< English description
+    std::string label;  ///< English source, QT_TRANSLATE_NOOP("core", …)
     Unit unit;
     int rows = 1;
     int cols = 1;
@@ -97,8 +97,8 @@ struct ReportEntry {
 struct ReportText {
     ReportGroup group = ReportGroup::Pose;
     std::string name;  ///< JSON key
-    std::string text;
-    std::string label; ///< English description
+    std::string text;  ///< English source (also the JSON value), QT_TRANSLATE_NOOP("core", …)
+    std::string label; ///< English source, QT_TRANSLATE_NOOP("core", …)
 };
 
 struct ReportLayout {
@@ -140,7 +140,7 @@ using MechanismPtr = std::shared_ptr<const Mechanism>;
 /// The same pose seen in another working or assembly mode of the design: what the GUI draws as
 /// a ghost and switches to only when the user asks (never silently).
 struct ModeAlternative {
-    std::string label;      ///< "other assembly mode", "leg 1: other working mode"
+    std::string label;      ///< "other assembly mode" (English source, QT_TRANSLATE_NOOP("core", …))
     ParameterSet changes;   ///< the mode parameters that select it
     MechanismPtr mechanism; ///< the design with `changes` applied
     bool sameInputs = true; ///< the alternative keeps the inputs (else the outputs) of the pose
@@ -164,7 +164,8 @@ public:
     /// does not matter (θ_min and θ_max moved together, k given with a). The default applies
     /// them one by one.
     virtual Result<MechanismPtr> withParameters(const ParameterSet &changes) const;
-    /// Warnings about a valid but questionable design (interference, poor transmission).
+    /// Warnings about a valid but questionable design (interference, poor transmission),
+    /// translated (text::translate).
     virtual std::vector<std::string> designWarnings() const { return {}; }
 
     // -- joint variables ------------------------------------------------------------------
@@ -176,7 +177,7 @@ public:
     virtual Pose homePose() const = 0;
     /// Why variable `variable` cannot go past its upper (or lower) limit when the limit is not
     /// simply the design's range (an assembly limit, a dead point): a clause for "α stops at its
-    /// upper limit 109.08°: …"; empty for a design range.
+    /// upper limit 109.08°: …", translated (text::translate); empty for a design range.
     virtual std::string rangeLimitReason(int variable, bool upper) const
     {
         (void)variable;
@@ -235,9 +236,11 @@ public:
     static Result<MechanismPtr> blameChange(Result<MechanismPtr> made, const ParameterSet &changes);
 };
 
-/// Formats a number for messages with up to `decimals` decimals, trailing zeros removed.
+/// Formats a number with up to `decimals` decimals, trailing zeros removed, always with a '.':
+/// for files, JSON and keys. Sentences a person reads use text::number().
 std::string formatNumber(double value, int decimals = 3);
-/// A length for messages: "12.5 mm" (two decimals at most).
+/// A length for messages: "12.5 mm" (two decimals at most), as text::millimetres(): the
+/// locale's decimal point once text hooks are installed. Not for files.
 std::string formatMillimetres(double value);
 /// Concatenates message parts (GCC 12 warns falsely, -Wrestrict, on chains of operator+).
 std::string joinText(std::initializer_list<std::string_view> parts);

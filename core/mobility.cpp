@@ -1,6 +1,7 @@
 #include "mobility.h"
 
 #include "mechanism.h"
+#include "text.h"
 
 #include <Eigen/SVD>
 
@@ -82,15 +83,17 @@ std::string chainProblem(const KinematicChain &chain)
 {
     const int links = static_cast<int>(chain.links.size());
     if (links == 0)
-        return "no kinematic chain is described for this mechanism";
+        return text::translate("core", "no kinematic chain is described for this mechanism");
     constexpr double along = 1e-9;
     for (const KinematicPair &pair : chain.pairs) {
         if (pair.link1 < 0 || pair.link1 >= links || pair.link2 < 0 || pair.link2 >= links || pair.link1 == pair.link2)
-            return joinText({"pair '", pair.name, "' does not join two different links of the chain"});
+            return text::format(text::translate("core", "pair '%1' does not join two different links of the chain"),
+                                {pair.name});
         if (!pair.point.allFinite() || !pair.axis.allFinite() || !std::isfinite(pair.pitch))
-            return joinText({"pair '", pair.name, "' has a point or an axis that is not finite"});
+            return text::format(text::translate("core", "pair '%1' has a point or an axis that is not finite"),
+                                {pair.name});
         if (needsAxis(pair.type) && pair.axis.norm() < along)
-            return joinText({"pair '", pair.name, "' has no axis"});
+            return text::format(text::translate("core", "pair '%1' has no axis"), {pair.name});
         if (!chain.planar)
             continue;
         const Eigen::Vector3d axis = pair.axis.normalized();
@@ -98,7 +101,9 @@ std::string chainProblem(const KinematicChain &chain)
         const bool inPlane = pair.type == PairType::Prismatic || pair.type == PairType::CamPlanar;
         if ((rotates && axis.head<2>().norm() > along) || (inPlane && std::abs(axis.z()) > along)
             || std::abs(pair.point.z()) > along * std::max(1.0, pair.point.norm()))
-            return joinText({"the chain is marked planar (the plane z = 0) but pair '", pair.name, "' is not"});
+            return text::format(
+                text::translate("core", "the chain is marked planar (the plane z = 0) but pair '%1' is not"),
+                {pair.name});
     }
     return {};
 }
@@ -384,9 +389,17 @@ Nearby exploreNearby(
     return nearby;
 }
 
-std::string count(int n, std::string_view one, std::string_view many)
+/// A phrase with a count: `translated`, the catalogue's plural form of a "%n …(s)" source, when a
+/// program installed one (text::install); else English, `one` for n = 1 and `many` otherwise with
+/// "%n" replaced by n, so that the CLI and the tests read "1 loop", "3 loops".
+std::string counted(std::string translated, int n, std::string_view one, std::string_view many)
 {
-    return joinText({std::to_string(n), " ", n == 1 ? one : many});
+    // a catalogue leaves "%n" for n < 0 (no plural form): filled here, as in English
+    std::string phrase = text::installed().translate ? std::move(translated) : std::string(n == 1 ? one : many);
+    const std::string number = std::to_string(n);
+    for (std::size_t at = phrase.find("%n"); at != std::string::npos; at = phrase.find("%n", at + number.size()))
+        phrase.replace(at, 2, number);
+    return phrase;
 }
 
 /// An integer as printed for people: a true minus sign.
@@ -398,48 +411,95 @@ std::string integerText(int n)
 std::string verdictOf(const MobilityReport &r)
 {
     const int M = r.mobility;
-    std::string text = joinText({r.planar ? "Planar" : "Spatial", " chain of ",
-        count(r.movingLinks, "moving link", "moving links"), ", ", count(r.pairs, "pair", "pairs"), " and ",
-        count(r.loops, "loop", "loops"), ": the rank of its constraint Jacobian gives mobility ", integerText(M)});
+    const std::string links = counted(text::translate("core", "%n moving link(s)", nullptr, r.movingLinks),
+        r.movingLinks, "%n moving link", "%n moving links");
+    const std::string pairs
+        = counted(text::translate("core", "%n pair(s)", nullptr, r.pairs), r.pairs, "%n pair", "%n pairs");
+    const std::string loops
+        = counted(text::translate("core", "%n loop(s)", nullptr, r.loops), r.loops, "%n loop", "%n loops");
+    std::string verdict = text::format(r.planar
+            ? text::translate("core",
+                "Planar chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4")
+            : text::translate("core",
+                "Spatial chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4"),
+        {links, pairs, loops, integerText(M)});
+    const auto add = [&verdict](const std::string &clause) { verdict.append("; ").append(clause); };
     if (r.chebyshev) {
-        text += r.chebyshevFails
-            ? joinText({"; Chebyshev's W = ", integerText(*r.chebyshev), " is wrong: ",
-                count(r.planarRedundantConstraints.value_or(0), "planar loop equation is", "planar loop equations are"),
-                " redundant (an overconstrained planar chain)"})
-            : joinText({"; Chebyshev's W = ", integerText(*r.chebyshev), " is right"});
+        if (r.chebyshevFails) {
+            const int n = r.planarRedundantConstraints.value_or(0);
+            add(text::format(counted(text::translate("core",
+                                         "Chebyshev's W = %1 is wrong: %n planar loop equation(s) is/are redundant (an "
+                                         "overconstrained planar chain)",
+                                         nullptr, n),
+                                 n,
+                                 "Chebyshev's W = %1 is wrong: %n planar loop equation is redundant (an overconstrained "
+                                 "planar chain)",
+                                 "Chebyshev's W = %1 is wrong: %n planar loop equations are redundant (an "
+                                 "overconstrained planar chain)"),
+                {integerText(*r.chebyshev)}));
+        } else {
+            add(text::format(text::translate("core", "Chebyshev's W = %1 is right"), {integerText(*r.chebyshev)}));
+        }
     }
     if (!r.somovMalyshevFails) {
-        text += joinText({"; Somov–Malyshev's W = ", integerText(r.somovMalyshev), " is right"});
+        add(text::format(
+            text::translate("core", "Somov–Malyshev's W = %1 is right"), {integerText(r.somovMalyshev)}));
     } else {
-        text += joinText({"; Somov–Malyshev's W = ", integerText(r.somovMalyshev),
-            " is wrong: it counts 6 equations per loop and ", count(r.redundantConstraints, "is", "are"), " redundant",
-            r.planar                            ? " (parallel axes: a planar loop imposes only 3)"
-                : M > 0 && r.somovMalyshev <= 0 ? " (an overconstrained, \"paradoxical\" chain: it moves)"
-                                                : " (an overconstrained chain)"});
+        const std::string why = r.planar ? text::translate("core", "(parallel axes: a planar loop imposes only 3)")
+            : M > 0 && r.somovMalyshev <= 0
+            ? text::translate("core", "(an overconstrained, \"paradoxical\" chain: it moves)")
+            : text::translate("core", "(an overconstrained chain)");
+        const int n = r.redundantConstraints;
+        add(text::format(counted(text::translate("core",
+                                     "Somov–Malyshev's W = %1 is wrong: it counts 6 equations per loop and %n is/are "
+                                     "redundant %2",
+                                     nullptr, n),
+                             n,
+                             "Somov–Malyshev's W = %1 is wrong: it counts 6 equations per loop and %n is redundant "
+                             "%2",
+                             "Somov–Malyshev's W = %1 is wrong: it counts 6 equations per loop and %n are redundant "
+                             "%2"),
+            {integerText(r.somovMalyshev), why}));
     }
     if (r.singular) {
-        text += joinText({"; at this pose the rank drops: the instantaneous mobility is ", integerText(r.numerical),
-            ", a singular pose"});
+        add(text::format(
+            text::translate("core", "at this pose the rank drops: the instantaneous mobility is %1, a singular pose"),
+            {integerText(r.numerical)}));
     }
     const int useful = M - r.idleFreedoms;
     const int uncontrolled = r.lockedMobilityNearby - r.idleFreedoms;
-    if (r.actuators == 0)
-        text += "; no pair is actuated";
-    else if (uncontrolled > 0)
-        text += joinText({"; ", count(r.actuators, "actuated freedom leaves ", "actuated freedoms leave "),
-            count(uncontrolled, "freedom", "freedoms"), " uncontrolled (under-actuated)"});
-    else if (r.actuators > useful)
-        text += joinText({"; ", count(r.actuators, "actuated freedom", "actuated freedoms"), " for mobility ",
-            integerText(useful), ": redundantly actuated"});
-    else
-        text += joinText(
-            {"; ", count(r.actuators, "actuated freedom: fully actuated", "actuated freedoms: fully actuated")});
+    const int actuators = r.actuators;
+    if (actuators == 0) {
+        add(text::translate("core", "no pair is actuated"));
+    } else if (uncontrolled > 0) {
+        const std::string left = counted(text::translate("core", "%n freedom(s)", nullptr, uncontrolled), uncontrolled,
+            "%n freedom", "%n freedoms");
+        add(text::format(
+            counted(text::translate("core", "%n actuated freedom(s) leave(s) %1 uncontrolled (under-actuated)", nullptr,
+                        actuators),
+                actuators, "%n actuated freedom leaves %1 uncontrolled (under-actuated)",
+                "%n actuated freedoms leave %1 uncontrolled (under-actuated)"),
+            {left}));
+    } else if (actuators > useful) {
+        add(text::format(
+            counted(text::translate("core", "%n actuated freedom(s) for mobility %1: redundantly actuated", nullptr,
+                        actuators),
+                actuators, "%n actuated freedom for mobility %1: redundantly actuated",
+                "%n actuated freedoms for mobility %1: redundantly actuated"),
+            {integerText(useful)}));
+    } else {
+        add(counted(text::translate("core", "%n actuated freedom(s): fully actuated", nullptr, actuators), actuators,
+            "%n actuated freedom: fully actuated", "%n actuated freedoms: fully actuated"));
+    }
     if (r.lockedMobility > r.lockedMobilityNearby)
-        text += "; with the actuators locked it can still move instantaneously here (a direct singularity)";
-    if (r.idleFreedoms > 0)
-        text += joinText({"; ", count(r.idleFreedoms, "idle freedom is", "idle freedoms are"), " included"});
-    text += '.';
-    return text;
+        add(text::translate(
+            "core", "with the actuators locked it can still move instantaneously here (a direct singularity)"));
+    if (r.idleFreedoms > 0) {
+        add(counted(text::translate("core", "%n idle freedom(s) is/are included", nullptr, r.idleFreedoms),
+            r.idleFreedoms, "%n idle freedom is included", "%n idle freedoms are included"));
+    }
+    verdict += '.';
+    return verdict;
 }
 
 } // namespace
@@ -562,7 +622,9 @@ KinematicChain fourRevoluteLoop(
     const std::array<Eigen::Vector3d, 4> &points, const std::array<Eigen::Vector3d, 4> &axes)
 {
     KinematicChain chain;
-    chain.links = {"ground", "link 1", "link 2", "link 3"};
+    chain.links = {text::translate("core", "ground")};
+    for (int i = 1; i < 4; ++i)
+        chain.links.push_back(text::format(text::translate("core", "link %1"), {std::to_string(i)}));
     for (int i = 0; i < 4; ++i)
         chain.pairs.push_back(makePair(
             PairType::Revolute, std::to_string(i + 1), i, (i + 1) % 4, points[std::size_t(i)], axes[std::size_t(i)]));
@@ -578,11 +640,13 @@ KinematicChain spatialParallelogram(double a, double b, double theta)
     const Eigen::Vector3d O = Eigen::Vector3d::Zero(), B(b, 0.0, 0.0), A = B + crank, C = O + crank;
     const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
     KinematicChain chain = fourRevoluteLoop({O, C, A, B}, {z, z, z, z});
-    chain.links = {"ground OB", "crank OC", "coupler CA", "crank AB"};
+    chain.links = {text::translate("core", "ground OB"), text::translate("core", "crank OC"),
+        text::translate("core", "coupler CA"), text::translate("core", "crank AB")};
     const char *names[] = {"O", "C", "A", "B"};
     for (std::size_t i = 0; i < 4; ++i)
         chain.pairs[i].name = names[i];
-    chain.description = "spatial parallelogram: four parallel revolute axes taken as a spatial chain";
+    chain.description
+        = text::translate("core", "spatial parallelogram: four parallel revolute axes taken as a spatial chain");
     return chain;
 }
 
@@ -618,7 +682,8 @@ KinematicChain bennettLinkage(double a, double alpha, double beta, double theta1
             frame = frame * denavitHartenberg(theta[i], 0.0, lengths[i], twists[i]);
     }
     KinematicChain chain = fourRevoluteLoop(points, axes);
-    chain.description = "Bennett linkage: four revolute axes, opposite links equal, a/sin α = b/sin β";
+    chain.description
+        = text::translate("core", "Bennett linkage: four revolute axes, opposite links equal, a/sin α = b/sin β");
     return chain;
 }
 
@@ -635,18 +700,19 @@ KinematicChain randomSpatial4R(unsigned seed, double size)
     }
     KinematicChain chain = fourRevoluteLoop(points, axes);
     chain.pairs[0].actuated = false; // a structure: nothing to drive
-    chain.description = "spatial 4R loop with random axes (not a Bennett linkage)";
+    chain.description = text::translate("core", "spatial 4R loop with random axes (not a Bennett linkage)");
     return chain;
 }
 
 KinematicChain planarFiveBar(const std::array<Eigen::Vector2d, 5> &joints)
 {
     KinematicChain chain;
-    chain.links = {"ground AE", "crank AB", "link BC", "link DC", "crank ED"};
+    chain.links = {text::translate("core", "ground AE"), text::translate("core", "crank AB"),
+        text::translate("core", "link BC"), text::translate("core", "link DC"), text::translate("core", "crank ED")};
     const char *names[] = {"A", "B", "C", "D", "E"};
     for (int i = 0; i < 5; ++i)
         chain.pairs.push_back(planarRevolute(names[i], i, (i + 1) % 5, joints[std::size_t(i)], i == 0 || i == 4));
-    chain.description = "planar five-bar: ground, two driven cranks, two distal links";
+    chain.description = text::translate("core", "planar five-bar: ground, two driven cranks, two distal links");
     return chain;
 }
 
@@ -659,7 +725,7 @@ MobilityReport analyseMobility(const KinematicChain &chain, double tolerance)
     MobilityReport r;
     r.planar = chain.planar;
     if (const std::string problem = chainProblem(chain); !problem.empty()) {
-        r.verdict = joinText({"Cannot analyse the mobility: ", problem, "."});
+        r.verdict = text::format(text::translate("core", "Cannot analyse the mobility: %1."), {problem});
         return r;
     }
     r.valid = true;

@@ -92,7 +92,7 @@ struct MobilityReport {
     bool chebyshevFails = false; ///< planar: Chebyshev's W ≠ mobility
     bool somovMalyshevFails = false; ///< Somov–Malyshev's W ≠ mobility
     bool formulaFails = false; ///< either formula fails for this chain
-    std::string verdict; ///< one English sentence for the classroom
+    std::string verdict; ///< one sentence for the classroom, translated (English without text hooks)
 };
 
 namespace mobility {

@@ -6,6 +6,7 @@
 
 #include "moma.h"
 #include "pjoint.h"
+#include "text.h"
 
 #include <array>
 #include <cmath>
@@ -47,20 +48,23 @@ Scene3D PJoint::scene3d(const Pose &pose) const
     const double outer = plane + 0.5 * thickness;
     Scene3D model;
     auto &parts = model.solids;
+    const std::string crankOC = text::translate("core", "crank OC"), crankBA = text::translate("core", "crank BA"),
+                      couplerCA = text::translate("core", "coupler CA");
     for (const double z : {-plane, plane}) {
-        const char *side = z < 0 ? " (back)" : " (front)";
-        parts.push_back(bar(o, c, z, width, thickness, PartRole::Link, std::string("crank OC") + side));
-        parts.push_back(bar(b, a, z, width, thickness, PartRole::Link, std::string("crank BA") + side));
-        parts.push_back(bar(c, a, z, width, thickness, PartRole::Link, std::string("coupler CA") + side));
+        const std::string side = z < 0 ? text::translate("core", "%1 (back)") : text::translate("core", "%1 (front)");
+        parts.push_back(bar(o, c, z, width, thickness, PartRole::Link, text::format(side, {crankOC})));
+        parts.push_back(bar(b, a, z, width, thickness, PartRole::Link, text::format(side, {crankBA})));
+        parts.push_back(bar(c, a, z, width, thickness, PartRole::Link, text::format(side, {couplerCA})));
     }
     // the base: a plate with a clevis at O and at B outside the parallelograms
     const double baseTop = -0.09 * p.a, baseHeight = 0.05 * p.a;
     parts.push_back(Solid::box({-0.22 * p.a, baseTop - 0.5 * baseHeight, 0.0}, {p.b + 0.22 * p.a, baseTop - 0.5 * baseHeight, 0.0},
-                               2.0 * outer + 2.5 * thickness, baseHeight, uy, PartRole::Ground, "base"));
+                               2.0 * outer + 2.5 * thickness, baseHeight, uy, PartRole::Ground, text::translate("core", "base")));
+    const std::string clevis = text::translate("core", "clevis");
     for (const Eigen::Vector2d &pivot : {o, b}) {
         for (const double z : {-(outer + 0.6 * thickness), outer + 0.6 * thickness})
             parts.push_back(Solid::box(at(Eigen::Vector2d(pivot.x(), baseTop), z), at(pivot, z) + 0.6 * width * uy, 1.6 * width, thickness, uz,
-                                       PartRole::Ground, "clevis"));
+                                       PartRole::Ground, clevis));
     }
     const double pinEnd = outer + 1.2 * thickness;
     parts.push_back(pin(o, -pinEnd, pinEnd, pinRadius, "O"));
@@ -73,10 +77,11 @@ Scene3D PJoint::scene3d(const Pose &pose) const
     const double d = pose.inputs[0];
     const Eigen::Vector2d bodyEnd = o + std::min(p.motorLength, d) * u;
     parts.push_back(Solid::box(at(o - 0.15 * p.motorLength * u, 0.0), at(bodyEnd, 0.0), p.motorWidth, p.motorWidth, uz,
-                               PartRole::Actuator, "stepper motor"));
-    parts.push_back(Solid::cylinder(at(bodyEnd, 0.0), at(a, 0.0), 0.5 * p.screwDiameter, PartRole::Screw, "lead screw"));
+                               PartRole::Actuator, text::translate("core", "stepper motor")));
+    parts.push_back(Solid::cylinder(at(bodyEnd, 0.0), at(a, 0.0), 0.5 * p.screwDiameter, PartRole::Screw,
+                                    text::translate("core", "lead screw")));
     parts.push_back(Solid::cylinder(at(a - 0.06 * p.a * u, 0.0), at(a, 0.0), 0.5 * p.screwDiameter + 0.02 * p.a, PartRole::Screw,
-                                    "rod end"));
+                                    text::translate("core", "rod end")));
 
     // the extent over the whole θ range, so the view stays still while the joint moves
     Eigen::AlignedBox3d box;
@@ -107,25 +112,31 @@ Scene3D Moma::scene3d(const Pose &pose) const
     // layers, back to front: guides, carriages, link 1, link 2, the platform
     const double zGuide = -linkThickness - 0.55 * gw, zCarriage = -0.5 * linkThickness - 0.25 * gw;
     const std::array<double, 2> zLink = {0.0, linkThickness + 0.1 * gw};
+    const std::string guidePattern = text::translate("core", "guide %1"), endStop = text::translate("core", "end stop"),
+                      carriagePattern = text::translate("core", "carriage %1"),
+                      linkPattern = text::translate("core", "link %1");
     for (int leg = 0; leg < 2; ++leg) {
         const std::string name = leg == 0 ? "1" : "2";
         const Eigen::Vector2d axis = moma::direction(d.alpha[leg]);
         const Eigen::Vector2d start = moma::sliderJoint(d, leg, d.strokeMin) - 0.9 * gw * axis;
         const Eigen::Vector2d end = moma::sliderJoint(d, leg, d.strokeMax) + 0.9 * gw * axis;
-        parts.push_back(Solid::box(at(start, zGuide), at(end, zGuide), gw, 0.6 * gw, uz, PartRole::Guide, "guide PO" + name));
+        parts.push_back(Solid::box(at(start, zGuide), at(end, zGuide), gw, 0.6 * gw, uz, PartRole::Guide,
+                                   text::format(guidePattern, {"PO" + name})));
         for (const Eigen::Vector2d &stop : {start, end}) {
             parts.push_back(Solid::box(at(stop - 0.15 * gw * axis, zGuide), at(stop + 0.15 * gw * axis, zGuide), 1.5 * gw, 0.9 * gw, uz,
-                                       PartRole::Ground, "end stop"));
+                                       PartRole::Ground, endStop));
         }
         const Eigen::Vector2d z = moma::sliderJoint(d, leg, pose.inputs[leg]);
         parts.push_back(Solid::box(at(z - 0.9 * gw * axis, zCarriage), at(z + 0.9 * gw * axis, zCarriage), 1.3 * gw, 0.5 * gw, uz,
-                                   PartRole::Slider, "carriage Z" + name));
-        parts.push_back(bar(z, platform, zLink[std::size_t(leg)], linkWidth, linkThickness, PartRole::Link, "link S" + name));
+                                   PartRole::Slider, text::format(carriagePattern, {"Z" + name})));
+        parts.push_back(bar(z, platform, zLink[std::size_t(leg)], linkWidth, linkThickness, PartRole::Link,
+                             text::format(linkPattern, {"S" + name})));
         parts.push_back(pin(z, zCarriage, zLink[std::size_t(leg)] + 0.6 * linkThickness, 0.2 * gw, "Z" + name));
     }
     parts.push_back(pin(platform, -0.6 * linkThickness, zLink[1] + 0.6 * linkThickness, 0.2 * gw, "P"));
     const double zPlatform = zLink[1] + linkThickness;
-    parts.push_back(Solid::cylinder(at(platform, zPlatform), at(platform, zPlatform + 0.4 * gw), 0.85 * gw, PartRole::Platform, "platform"));
+    parts.push_back(Solid::cylinder(at(platform, zPlatform), at(platform, zPlatform + 0.4 * gw), 0.85 * gw, PartRole::Platform,
+                                    text::translate("core", "platform")));
     parts.push_back(Solid::sphere(at(platform, zPlatform + 0.55 * gw), 0.22 * gw, PartRole::Marker, "P"));
 
     // the 2D extent (constant over the workspace) with the guides' ends and the layers' depth

@@ -1,6 +1,7 @@
 #include "moma.h"
 
 #include "mobility.h"
+#include "text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,23 +99,23 @@ const std::vector<ParameterInfo> &momaParameterInfo()
         const Interval sign{-1.0, 1.0};
         using G = ParameterGroup;
         std::vector<ParameterInfo> v;
-        v.push_back({"R1x", "x_R1", "guide 1 reference point, x", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"R1y", "y_R1", "guide 1 reference point, y", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"R2x", "x_R2", "guide 2 reference point, x", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"R2y", "y_R2", "guide 2 reference point, y", units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"alpha1", "α₁", "direction of guide 1", units::angle, G::Geometry, turn, false, false, true, 2, 1});
-        v.push_back({"alpha2", "α₂", "direction of guide 2", units::angle, G::Geometry, turn, false, false, true, 2, 1});
-        v.push_back({"gamma1", "γ₁", "turn of guide 1 from the vertical (α₁ = 270° + γ₁)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
-        v.push_back({"gamma2", "γ₂", "turn of guide 2 from the vertical (α₂ = 270° + γ₂)", units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
-        v.push_back({"l1", "l₁", "length of link S₁", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"l2", "l₂", "length of link S₂", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"p_min", "p_min", "start of the stroke", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        v.push_back({"p_max", "p_max", "end of the stroke", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        v.push_back({"branch1", "β₁", "working mode of leg 1: sign in p₁ = B₁ ± √…", units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"branch2", "β₂", "working mode of leg 2: sign in p₂ = B₂ ± √…", units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"assembly", "σ", "assembly mode: +1 platform left of Z₁→Z₂", units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"one_side", "one side", "links kept on the inner side of the guides (1: on)", units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1});
-        v.push_back({"guide_width", "w_g", "drawn width of a guide", units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
+        v.push_back({"R1x", "x_R1", QT_TRANSLATE_NOOP("core", "guide 1 reference point, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"R1y", "y_R1", QT_TRANSLATE_NOOP("core", "guide 1 reference point, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"R2x", "x_R2", QT_TRANSLATE_NOOP("core", "guide 2 reference point, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"R2y", "y_R2", QT_TRANSLATE_NOOP("core", "guide 2 reference point, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
+        v.push_back({"alpha1", "α₁", QT_TRANSLATE_NOOP("core", "direction of guide 1"), units::angle, G::Geometry, turn, false, false, true, 2, 1});
+        v.push_back({"alpha2", "α₂", QT_TRANSLATE_NOOP("core", "direction of guide 2"), units::angle, G::Geometry, turn, false, false, true, 2, 1});
+        v.push_back({"gamma1", "γ₁", QT_TRANSLATE_NOOP("core", "turn of guide 1 from the vertical (α₁ = 270° + γ₁)"), units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
+        v.push_back({"gamma2", "γ₂", QT_TRANSLATE_NOOP("core", "turn of guide 2 from the vertical (α₂ = 270° + γ₂)"), units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
+        v.push_back({"l1", "l₁", QT_TRANSLATE_NOOP("core", "length of link S₁"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"l2", "l₂", QT_TRANSLATE_NOOP("core", "length of link S₂"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"p_min", "p_min", QT_TRANSLATE_NOOP("core", "start of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        v.push_back({"p_max", "p_max", QT_TRANSLATE_NOOP("core", "end of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        v.push_back({"branch1", "β₁", QT_TRANSLATE_NOOP("core", "working mode of leg 1: sign in p₁ = B₁ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"branch2", "β₂", QT_TRANSLATE_NOOP("core", "working mode of leg 2: sign in p₂ = B₂ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: +1 platform left of Z₁→Z₂"), units::none, G::Mode, sign, false, false, true, 0, 2});
+        v.push_back({"one_side", QT_TRANSLATE_NOOP("core", "one side"), QT_TRANSLATE_NOOP("core", "links kept on the inner side of the guides (1: on)"), units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1});
+        v.push_back({"guide_width", "w_g", QT_TRANSLATE_NOOP("core", "drawn width of a guide"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
         return v;
     }();
     return infos;
@@ -161,13 +162,15 @@ Result<MomaDesign> applyChanges(MomaDesign d, const ParameterSet &changes, const
     for (const auto &[name, value] : changes) {
         const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
         if (info == infos.end())
-            return Failure{FailureKind::UnknownName, name, "MOMA has no parameter named '" + name + "'."};
+            return Failure{FailureKind::UnknownName, name,
+                           text::format(text::translate("core", "MOMA has no parameter named '%1'."), {name})};
     }
     for (int leg = 0; leg < 2; ++leg) {
         const std::string alpha = "alpha" + legName(leg), gamma = "gamma" + legName(leg);
         if (changes.count(alpha) && changes.count(gamma)) {
             return Failure{FailureKind::InvalidParameter, gamma,
-                           alpha + " and " + gamma + " both turn guide " + legName(leg) + ": give one of them."};
+                           text::format(text::translate("core", "%1 and %2 both turn guide %3: give one of them."),
+                                        {alpha, gamma, legName(leg)})};
         }
     }
     auto take = [&](const char *name, double &field) {
@@ -212,12 +215,14 @@ Result<bool> checkModes(const ParameterSet &changes)
     for (const char *name : {"branch1", "branch2", "assembly"}) {
         if (auto it = changes.find(name); it != changes.end() && it->second != 1.0 && it->second != -1.0) {
             return Failure{FailureKind::InvalidParameter, name,
-                           std::string(name) + " = " + formatNumber(it->second) + " is invalid: it must be -1 or +1."};
+                           text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
+                                        {name, text::number(it->second)})};
         }
     }
     if (auto it = changes.find("one_side"); it != changes.end() && it->second != 0.0 && it->second != 1.0) {
         return Failure{FailureKind::InvalidParameter, "one_side",
-                       "one_side = " + formatNumber(it->second) + " is invalid: it must be 0 (off) or 1 (on)."};
+                       text::format(text::translate("core", "one_side = %1 is invalid: it must be 0 (off) or 1 (on)."),
+                                    {text::number(it->second)})};
     }
     return true;
 }
@@ -234,8 +239,8 @@ Result<MechanismPtr> Moma::create(const MomaDesign &design)
         return modes.failure();
     if (!(design.strokeMin < design.strokeMax)) {
         return Failure{FailureKind::InvalidParameter, "p_min",
-                       "p_min = " + formatNumber(design.strokeMin) + " mm must be less than p_max = "
-                           + formatNumber(design.strokeMax) + " mm."};
+                       text::format(text::translate("core", "p_min = %1 mm must be less than p_max = %2 mm."),
+                                    {text::number(design.strokeMin), text::number(design.strokeMax)})};
     }
     // Two guides on one line whose strokes overlap let the slider joints coincide.
     const Eigen::Vector2d a1 = moma::direction(design.alpha[0]), a2 = moma::direction(design.alpha[1]);
@@ -249,18 +254,18 @@ Result<MechanismPtr> Moma::create(const MomaDesign &design)
         const double hi2 = std::max(along(1, design.strokeMin), along(1, design.strokeMax));
         if (lo1 <= hi2 && lo2 <= hi1) {
             return Failure{FailureKind::InvalidParameter, "R2x",
-                           "The guides lie on one line and their strokes overlap: the slider joints Z₁ and Z₂ "
-                           "could coincide. Move R₂ or turn a guide."};
+                           text::translate("core", "The guides lie on one line and their strokes overlap: the slider "
+                                                   "joints Z₁ and Z₂ could coincide. Move R₂ or turn a guide.")};
         }
     }
     Moma candidate(design);
     if (!candidate.m_home.inputs.size()) {
-        std::string message = "This configuration has no workspace: with l₁ = ";
-        message.append(formatNumber(design.length[0])).append(" mm, l₂ = ").append(formatNumber(design.length[1]));
-        message.append(" mm and strokes [").append(formatNumber(design.strokeMin)).append(", ");
-        message.append(formatNumber(design.strokeMax)).append("] mm the links cannot meet in the chosen working "
-                                                              "and assembly modes.");
-        return Failure{FailureKind::Unreachable, "l1", message};
+        return Failure{FailureKind::Unreachable, "l1",
+                       text::format(text::translate("core", "This configuration has no workspace: with l₁ = %1 mm, "
+                                                            "l₂ = %2 mm and strokes [%3, %4] mm the links cannot meet "
+                                                            "in the chosen working and assembly modes."),
+                                    {text::number(design.length[0]), text::number(design.length[1]),
+                                     text::number(design.strokeMin), text::number(design.strokeMax)})};
     }
     return MechanismPtr(new Moma(candidate));
 }
@@ -317,7 +322,7 @@ std::vector<std::string> Moma::designWarnings() const
     if (std::abs(det) > 1e-9) {
         const double p1 = cross(r, -a2) / det, p2 = cross(a1, r) / det;
         if (p1 >= m_design.strokeMin && p1 <= m_design.strokeMax && p2 >= m_design.strokeMin && p2 <= m_design.strokeMax)
-            warnings.push_back("The guides cross inside their strokes: the sliders can collide there.");
+            warnings.push_back(text::translate("core", "The guides cross inside their strokes: the sliders can collide there."));
     }
     return warnings;
 }
@@ -327,10 +332,10 @@ std::vector<std::string> Moma::designWarnings() const
 const std::vector<VariableInfo> &Moma::variableInfo() const
 {
     static const std::vector<VariableInfo> infos = {
-        {"p1", "p₁", "slider 1 position (actuated)", units::millimetre, true, 2},
-        {"p2", "p₂", "slider 2 position (actuated)", units::millimetre, true, 2},
-        {"x", "x", "platform x", units::millimetre, false, 2},
-        {"y", "y", "platform y", units::millimetre, false, 2},
+        {"p1", "p₁", QT_TRANSLATE_NOOP("core", "slider 1 position (actuated)"), units::millimetre, true, 2},
+        {"p2", "p₂", QT_TRANSLATE_NOOP("core", "slider 2 position (actuated)"), units::millimetre, true, 2},
+        {"x", "x", QT_TRANSLATE_NOOP("core", "platform x"), units::millimetre, false, 2},
+        {"y", "y", QT_TRANSLATE_NOOP("core", "platform y"), units::millimetre, false, 2},
     };
     return infos;
 }
@@ -430,8 +435,9 @@ std::string Moma::oneSideViolation(const Eigen::Vector2d &platform, const std::a
         const int inner = moma::innerSide(m_design, leg);
         const double c = cross(moma::direction(m_design.alpha[leg]), platform - z[leg]);
         if (inner != 0 && c * inner < -1e-9 * m_design.length[leg]) {
-            return "link S" + legName(leg) + " would lie on the outer side of guide " + legName(leg)
-                 + " (the one-side constraint is on)";
+            return text::format(
+                text::translate("core", "link S%1 would lie on the outer side of guide %2 (the one-side constraint is on)"),
+                {legName(leg), legName(leg)});
         }
     }
     return {};
@@ -448,16 +454,18 @@ Result<Pose> Moma::direct(double p1, double p2) const
     // Circle–circle intersection measured along Z₁→Z₂ (no division by x_Z2 − x_Z1: DOMAIN §5.4).
     if (distance < 1e-9 * scale) {
         return Failure{FailureKind::Singular, "p1",
-                       "The slider joints Z₁ and Z₂ coincide at p₁ = " + formatNumber(p1) + " mm, p₂ = "
-                           + formatNumber(p2) + " mm: the platform position is undetermined."};
+                       text::format(text::translate("core", "The slider joints Z₁ and Z₂ coincide at p₁ = %1 mm, "
+                                                            "p₂ = %2 mm: the platform position is undetermined."),
+                                    {text::number(p1), text::number(p2)})};
     }
     if (distance > l1 + l2 + 1e-12 * scale || distance < std::abs(l1 - l2) - 1e-12 * scale) {
-        std::string message = "The links cannot meet at p₁ = ";
-        message.append(formatNumber(p1)).append(" mm, p₂ = ").append(formatNumber(p2)).append(" mm: |Z₁Z₂| = ");
-        message.append(formatNumber(distance)).append(" mm is ");
-        message.append(distance > l1 + l2 ? "more than l₁ + l₂ = " + formatNumber(l1 + l2)
-                                          : "less than |l₁ − l₂| = " + formatNumber(std::abs(l1 - l2)));
-        message.append(" mm.");
+        const std::string message = distance > l1 + l2
+            ? text::format(text::translate("core", "The links cannot meet at p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm "
+                                                   "is more than l₁ + l₂ = %4 mm."),
+                           {text::number(p1), text::number(p2), text::number(distance), text::number(l1 + l2)})
+            : text::format(text::translate("core", "The links cannot meet at p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm "
+                                                   "is less than |l₁ − l₂| = %4 mm."),
+                           {text::number(p1), text::number(p2), text::number(distance), text::number(std::abs(l1 - l2))});
         return Failure{FailureKind::Unreachable, "p1", message};
     }
     const Eigen::Vector2d u = between / distance;
@@ -469,16 +477,17 @@ Result<Pose> Moma::direct(double p1, double p2) const
     for (int leg = 0; leg < 2; ++leg) {
         const double w = (platform - z[leg]).dot(moma::direction(d.alpha[leg]));
         if (w * d.branch[leg] > 1e-9 * d.length[leg]) {
-            std::string message = "At p₁ = ";
-            message.append(formatNumber(p1)).append(" mm, p₂ = ").append(formatNumber(p2));
-            message.append(" mm leg ").append(legName(leg)).append(" would be past perpendicular to its guide, ");
-            message.append("in its other working mode (an inverse singularity lies between); switch the mode to go on.");
-            return Failure{FailureKind::Unreachable, "p" + legName(leg), message};
+            return Failure{FailureKind::Unreachable, "p" + legName(leg),
+                           text::format(text::translate("core", "At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past "
+                                                                "perpendicular to its guide, in its other working mode (an "
+                                                                "inverse singularity lies between); switch the mode to go on."),
+                                        {text::number(p1), text::number(p2), legName(leg)})};
         }
     }
     if (auto violation = oneSideViolation(platform, z); !violation.empty()) {
         return Failure{FailureKind::Unreachable, "p1",
-                       "At p₁ = " + formatNumber(p1) + " mm, p₂ = " + formatNumber(p2) + " mm " + violation + "."};
+                       text::format(text::translate("core", "At p₁ = %1 mm, p₂ = %2 mm %3."),
+                                    {text::number(p1), text::number(p2), violation})};
     }
     Pose pose;
     pose.inputs.resize(2);
@@ -493,24 +502,26 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
     const MomaDesign &d = m_design;
     std::array<double, 2> p{};
     std::array<Eigen::Vector2d, 2> z;
-    const std::string where = "(" + formatNumber(platform.x()) + ", " + formatNumber(platform.y()) + ") mm";
+    const std::string where
+        = text::format(text::translate("core", "(%1, %2) mm"), {text::number(platform.x()), text::number(platform.y())});
     for (int leg = 0; leg < 2; ++leg) {
         const double D = moma::discriminant(d, leg, platform); // (9)
         const double l = d.length[leg];
         if (D < -1e-9 * l * l) {
             return Failure{FailureKind::Unreachable, "x",
-                           "The platform cannot reach " + where + ": it lies more than l" + legName(leg) + " = "
-                               + formatNumber(l) + " mm from guide " + legName(leg) + "."};
+                           text::format(text::translate("core", "The platform cannot reach %1: it lies more than "
+                                                                "l%2 = %3 mm from guide %4."),
+                                        {where, legName(leg), text::number(l), legName(leg)})};
         }
         p[leg] = moma::projection(d, leg, platform) + d.branch[leg] * std::sqrt(std::max(0.0, D)); // (7)
         // √D of a D that is zero up to rounding is ~1e-8·l: allow for it at the stroke ends
         const double tolerance = 1e-7 * std::max({1.0, d.strokeMax - d.strokeMin, l});
         if (p[leg] < d.strokeMin - tolerance || p[leg] > d.strokeMax + tolerance) {
-            std::string message = "The platform cannot reach ";
-            message.append(where).append(": slider ").append(legName(leg)).append(" would have to be at p")
-                .append(legName(leg)).append(" = ").append(formatNumber(p[leg])).append(" mm, outside its stroke [")
-                .append(formatNumber(d.strokeMin)).append(", ").append(formatNumber(d.strokeMax)).append("] mm.");
-            return Failure{FailureKind::OutOfRange, "p" + legName(leg), message};
+            return Failure{FailureKind::OutOfRange, "p" + legName(leg),
+                           text::format(text::translate("core", "The platform cannot reach %1: slider %2 would have to "
+                                                                "be at p%3 = %4 mm, outside its stroke [%5, %6] mm."),
+                                        {where, legName(leg), legName(leg), text::number(p[leg]),
+                                         text::number(d.strokeMin), text::number(d.strokeMax)})};
         }
         p[leg] = std::clamp(p[leg], d.strokeMin, d.strokeMax);
         z[leg] = moma::sliderJoint(d, leg, p[leg]);
@@ -518,12 +529,14 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
     const double s = moma::side(z[0], z[1], platform);
     if (s * d.assembly < -1e-9 * d.length[0] * d.length[1]) {
         return Failure{FailureKind::Unreachable, "x",
-                       "The platform cannot reach " + where
-                           + " in this assembly mode: it would cross the line Z₁Z₂, where the links are collinear "
-                             "(a direct singularity); switch the assembly mode to go on."};
+                       text::format(text::translate("core", "The platform cannot reach %1 in this assembly mode: it "
+                                                            "would cross the line Z₁Z₂, where the links are collinear "
+                                                            "(a direct singularity); switch the assembly mode to go on."),
+                                    {where})};
     }
     if (auto violation = oneSideViolation(platform, z); !violation.empty())
-        return Failure{FailureKind::Unreachable, "x", "The platform cannot reach " + where + ": " + violation + "."};
+        return Failure{FailureKind::Unreachable, "x",
+                       text::format(text::translate("core", "The platform cannot reach %1: %2."), {where, violation})};
     Pose pose;
     pose.inputs.resize(2);
     pose.inputs << p[0], p[1];
@@ -537,11 +550,13 @@ Result<Pose> Moma::solveDirect(const Coordinates &inputs, const Pose *) const
     for (int leg = 0; leg < 2; ++leg) {
         const double p = inputs[leg];
         if (!std::isfinite(p))
-            return Failure{FailureKind::OutOfRange, "p" + legName(leg), "p" + legName(leg) + " must be a finite number."};
+            return Failure{FailureKind::OutOfRange, "p" + legName(leg),
+                           text::format(text::translate("core", "%1 must be a finite number."), {"p" + legName(leg)})};
         if (p < m_design.strokeMin || p > m_design.strokeMax) {
             return Failure{FailureKind::OutOfRange, "p" + legName(leg),
-                           "p" + legName(leg) + " = " + formatNumber(p) + " mm is outside the stroke ["
-                               + formatNumber(m_design.strokeMin) + ", " + formatNumber(m_design.strokeMax) + "] mm."};
+                           text::format(text::translate("core", "%1 = %2 mm is outside the stroke [%3, %4] mm."),
+                                        {"p" + legName(leg), text::number(p), text::number(m_design.strokeMin),
+                                         text::number(m_design.strokeMax)})};
         }
     }
     return direct(inputs[0], inputs[1]);
@@ -552,7 +567,8 @@ Result<Pose> Moma::solveInverse(const Coordinates &outputs, const Pose *) const
     for (int i = 0; i < 2; ++i) {
         if (!std::isfinite(outputs[i])) {
             const std::string name = i == 0 ? "x" : "y";
-            return Failure{FailureKind::OutOfRange, name, name + " must be a finite number."};
+            return Failure{FailureKind::OutOfRange, name,
+                           text::format(text::translate("core", "%1 must be a finite number."), {name})};
         }
     }
     return inverse(outputs.head<2>());
@@ -574,21 +590,21 @@ const ReportLayout &Moma::reportLayout() const
     static const ReportLayout layout = [] {
         using G = ReportGroup;
         ReportLayout l;
-        l.add(G::Pose, "p1", "p₁", "slider 1 position", units::millimetre, 2);
-        l.add(G::Pose, "p2", "p₂", "slider 2 position", units::millimetre, 2);
-        l.add(G::Pose, "x", "x", "platform x", units::millimetre, 2);
-        l.add(G::Pose, "y", "y", "platform y", units::millimetre, 2);
+        l.add(G::Pose, "p1", "p₁", QT_TRANSLATE_NOOP("core", "slider 1 position"), units::millimetre, 2);
+        l.add(G::Pose, "p2", "p₂", QT_TRANSLATE_NOOP("core", "slider 2 position"), units::millimetre, 2);
+        l.add(G::Pose, "x", "x", QT_TRANSLATE_NOOP("core", "platform x"), units::millimetre, 2);
+        l.add(G::Pose, "y", "y", QT_TRANSLATE_NOOP("core", "platform y"), units::millimetre, 2);
         l.add(G::Jacobian, "Jp", "J_p", "J_p = diag(2p_i − 2B_i) (18)", units::millimetre, 1, 2, 2);
-        l.add(G::Jacobian, "Jx", "J_x", "J_x rows 2(P − Z_i) (20)", units::millimetre, 1, 2, 2);
-        l.add(G::Jacobian, "J", "J", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)", units::none, 3, 2, 2);
-        l.add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
-        l.add(G::Jacobian, "det_Jp", "det J_p", "0 at an inverse singularity", units::squareMillimetre, 1);
-        l.add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity", units::squareMillimetre, 1);
-        l.add(G::Jacobian, "cond", "κ(J)", "condition number of J", units::none, 3);
-        l.add(G::Derived, "link_angle1", "ψ₁", "angle between link S₁ and guide 1 (90°: inverse singularity)", units::angle, 2);
-        l.add(G::Derived, "link_angle2", "ψ₂", "angle between link S₂ and guide 2 (90°: inverse singularity)", units::angle, 2);
-        l.add(G::Derived, "links_angle", "ψ₁₂", "angle between the links (0°, 180°: direct singularity)", units::angle, 2);
-        l.add(G::Derived, "margin", "m", "distance from the nearest singularity (0 … 1)", units::none, 4);
+        l.add(G::Jacobian, "Jx", "J_x", QT_TRANSLATE_NOOP("core", "J_x rows 2(P − Z_i) (20)"), units::millimetre, 1, 2, 2);
+        l.add(G::Jacobian, "J", "J", QT_TRANSLATE_NOOP("core", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)"), units::none, 3, 2, 2);
+        l.add(G::Jacobian, "det_J", "det J", QT_TRANSLATE_NOOP("core", "determinant of J (0: direct, ∞: inverse singularity)"), units::none, 4);
+        l.add(G::Jacobian, "det_Jp", "det J_p", QT_TRANSLATE_NOOP("core", "0 at an inverse singularity"), units::squareMillimetre, 1);
+        l.add(G::Jacobian, "det_Jx", "det J_x", QT_TRANSLATE_NOOP("core", "0 at a direct singularity"), units::squareMillimetre, 1);
+        l.add(G::Jacobian, "cond", "κ(J)", QT_TRANSLATE_NOOP("core", "condition number of J"), units::none, 3);
+        l.add(G::Derived, "link_angle1", "ψ₁", QT_TRANSLATE_NOOP("core", "angle between link S₁ and guide 1 (90°: inverse singularity)"), units::angle, 2);
+        l.add(G::Derived, "link_angle2", "ψ₂", QT_TRANSLATE_NOOP("core", "angle between link S₂ and guide 2 (90°: inverse singularity)"), units::angle, 2);
+        l.add(G::Derived, "links_angle", "ψ₁₂", QT_TRANSLATE_NOOP("core", "angle between the links (0°, 180°: direct singularity)"), units::angle, 2);
+        l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
         return l;
     }();
     return layout;
@@ -668,7 +684,7 @@ std::vector<ModeAlternative> Moma::modeNeighbours() const
     const double assembly = -double(m_design.assembly);
     // The platform mirrored across Z₁Z₂ turns both links about the line: where that carries a
     // link past perpendicular to its guide, the working modes flip along with the assembly.
-    const std::string mirrored = "other assembly mode (same slider positions)";
+    const std::string mirrored = QT_TRANSLATE_NOOP("core", "other assembly mode (same slider positions)");
     add(mirrored, {{"assembly", assembly}}, true);
     add(mirrored, {{"assembly", assembly}, {"branch1", -double(m_design.branch[0])}}, true);
     add(mirrored, {{"assembly", assembly}, {"branch2", -double(m_design.branch[1])}}, true);
@@ -676,7 +692,9 @@ std::vector<ModeAlternative> Moma::modeNeighbours() const
         true);
     for (int leg = 0; leg < 2; ++leg) {
         const std::string name = "branch" + legName(leg);
-        const std::string label = "leg " + legName(leg) + ": other working mode (same platform position)";
+        const std::string label = leg == 0
+            ? QT_TRANSLATE_NOOP("core", "leg 1: other working mode (same platform position)")
+            : QT_TRANSLATE_NOOP("core", "leg 2: other working mode (same platform position)");
         const double branch = -double(m_design.branch[leg]);
         // Moving slider i to the other root may carry Z_i across the platform's side of Z₁Z₂:
         // then the assembly mode flips with it.
@@ -691,15 +709,19 @@ KinematicChain Moma::kinematicChain(const Pose &pose) const
     const std::array<Eigen::Vector2d, 2> z
         = {moma::sliderJoint(m_design, 0, pose.inputs[0]), moma::sliderJoint(m_design, 1, pose.inputs[1])};
     KinematicChain chain;
-    chain.links = {"ground", "slider K₁", "slider K₂", "link S₁", "link S₂"};
+    chain.links = {text::translate("core", "ground"), text::translate("core", "slider K₁"),
+                   text::translate("core", "slider K₂"), text::translate("core", "link S₁"),
+                   text::translate("core", "link S₂")};
     for (int leg = 0; leg < 2; ++leg) {
-        chain.pairs.push_back(mobility::planarPrismatic(joinText({"guide PO", leg == 0 ? "₁" : "₂"}), 0, 1 + leg,
+        chain.pairs.push_back(mobility::planarPrismatic(
+            leg == 0 ? text::translate("core", "guide PO₁") : text::translate("core", "guide PO₂"), 0, 1 + leg,
             z[std::size_t(leg)], moma::direction(m_design.alpha[std::size_t(leg)]), true));
         chain.pairs.push_back(
             mobility::planarRevolute(joinText({"Z", leg == 0 ? "₁" : "₂"}), 1 + leg, 3 + leg, z[std::size_t(leg)]));
     }
     chain.pairs.push_back(mobility::planarRevolute("P", 3, 4, pose.outputs.head<2>()));
-    chain.description = "MOMA: two sliders on powered guides, two links meeting at the platform joint P";
+    chain.description
+        = text::translate("core", "MOMA: two sliders on powered guides, two links meeting at the platform joint P");
     return chain;
 }
 
@@ -732,17 +754,17 @@ Scene Moma::scene(const Pose &pose) const
             const double c = cross(moma::direction(d.alpha[leg]), platform - z[leg]);
             const double offset = (c > 0 ? -1.0 : 1.0) * (d.guideWidth + 14.0);
             s.dimensions.push_back({3 + leg, 1 + leg, p > 0 ? offset : -offset,
-                                    "p" + std::string(leg == 0 ? "₁" : "₂") + " = " + formatNumber(p, 1)});
+                                    joinText({leg == 0 ? "p₁ = " : "p₂ = ", text::number(p, 1)})});
         }
         const double gamma = std::remainder(d.alpha[leg] - 1.5 * pi, 2 * pi);
         if (std::abs(gamma) > 1e-9 && std::abs(gamma) <= 45.0 * units::degree) {
             s.angles.push_back({3 + leg, 1.5 * pi, gamma, 0.25 * (d.strokeMax - d.strokeMin),
-                                std::string(leg == 0 ? "γ₁" : "γ₂") + " = " + formatNumber(gamma / units::degree, 1) + "°"});
+                                joinText({leg == 0 ? "γ₁ = " : "γ₂ = ", text::number(gamma / units::degree, 1), "°"})});
         }
     }
-    s.handles.push_back({0, "drag to move the platform (inverse kinematics)"});
-    s.handles.push_back({1, "drag along guide 1 to set p₁ (direct kinematics)"});
-    s.handles.push_back({2, "drag along guide 2 to set p₂ (direct kinematics)"});
+    s.handles.push_back({0, text::translate("core", "drag to move the platform (inverse kinematics)")});
+    s.handles.push_back({1, text::translate("core", "drag along guide 1 to set p₁ (direct kinematics)")});
+    s.handles.push_back({2, text::translate("core", "drag along guide 2 to set p₂ (direct kinematics)")});
     Eigen::AlignedBox3d extent;
     for (const SceneGuide &g : s.guides) {
         extent.extend(g.start);
@@ -771,7 +793,7 @@ Result<Pose> Moma::dragHandle(const Pose &current, int handle, const Eigen::Vect
         inputs[leg] = std::clamp(p, m_design.strokeMin, m_design.strokeMax);
         return solveDirect(inputs, &current);
     }
-    return Failure{FailureKind::UnknownName, {}, "No handle with that index."};
+    return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};
 }
 
 } // namespace pkm

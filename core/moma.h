@@ -19,6 +19,7 @@
 
 #include "mechanism.h"
 #include "planarworkspace.h"
+#include "text.h"
 
 #include <array>
 
@@ -109,7 +110,9 @@ public:
     std::vector<SingularCurve> singularCurves() const override;
     std::string singularityMeaning(SingularCurve::Type type) const override
     {
-        return type == SingularCurve::Type::Inverse ? "link ⟂ guide" : "links collinear";
+        // the GUI translates the meaning (context "core")
+        return type == SingularCurve::Type::Inverse ? QT_TRANSLATE_NOOP("core", "link ⟂ guide")
+                                                    : QT_TRANSLATE_NOOP("core", "links collinear");
     }
 
     static constexpr int variableP1 = 0;

@@ -1,6 +1,7 @@
 // MOMA's workspace and singularity maps (DOMAIN.md §2, document figs. 6–10): the inner loop
 // of every map, and the singular curves drawn over them.
 #include "moma.h"
+#include "text.h"
 
 #include <cmath>
 #include <limits>
@@ -174,7 +175,8 @@ std::vector<SingularCurve> Moma::singularCurves() const
         const Eigen::Vector2d a = moma::direction(d.alpha[leg]);
         const Eigen::Vector2d n(-a.y(), a.x());
         for (double sign : {1.0, -1.0}) {
-            trace(SingularCurve::Type::Inverse, "link " + std::to_string(leg + 1) + " ⟂ guide " + std::to_string(leg + 1),
+            trace(SingularCurve::Type::Inverse,
+                  leg == 0 ? QT_TRANSLATE_NOOP("core", "link 1 ⟂ guide 1") : QT_TRANSLATE_NOOP("core", "link 2 ⟂ guide 2"),
                   [&](double p, Eigen::Vector2d &point) {
                       point = moma::sliderJoint(d, leg, p) + sign * d.length[leg] * n;
                       return belongs(point, leg, p);
@@ -190,7 +192,7 @@ std::vector<SingularCurve> Moma::singularCurves() const
         if (rho < 1e-9 * std::max(l1, l2))
             continue;
         for (double root : {1.0, -1.0}) {
-            trace(SingularCurve::Type::Direct, "links collinear", [&](double p1, Eigen::Vector2d &point) {
+            trace(SingularCurve::Type::Direct, QT_TRANSLATE_NOOP("core", "links collinear"), [&](double p1, Eigen::Vector2d &point) {
                 const Eigen::Vector2d z1 = moma::sliderJoint(d, 0, p1);
                 // |R₂ + p₂a₂ − Z₁|² = ρ²: p₂² + 2p₂·a₂·(R₂ − Z₁) + |R₂ − Z₁|² − ρ² = 0
                 const Eigen::Vector2d r = d.reference[1] - z1;

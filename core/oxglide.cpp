@@ -1,5 +1,7 @@
 #include "oxglide.h"
 
+#include "text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -27,7 +29,7 @@ std::string mm(double value)
 
 std::string point(const Eigen::Vector2d &p)
 {
-    return joinText({"(", formatNumber(p.x(), 2), ", ", formatNumber(p.y(), 2), ") mm"});
+    return text::format(text::translate("core", "(%1, %2) mm"), {text::number(p.x(), 2), text::number(p.y(), 2)});
 }
 } // namespace
 
@@ -42,7 +44,7 @@ const char *formName(int form)
 
 const char *formTitle(int form)
 {
-    return form == formX ? "crossed (X)" : "extended (O)";
+    return form == formX ? QT_TRANSLATE_NOOP("core", "crossed (X)") : QT_TRANSLATE_NOOP("core", "extended (O)");
 }
 
 DirectSolution direct(double rod, double width, double xAB, double xCD)
@@ -93,13 +95,13 @@ const std::vector<ParameterInfo> &oxglideParameterInfo()
         const Interval coordinate{-1e5, 1e5};
         using G = ParameterGroup;
         std::vector<ParameterInfo> v;
-        v.push_back({"l", "l", "rod length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"s", "s", "platform width", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"L", "L", "transverse guide length (slider positions 0…L)", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"a", "a", "spacing of the transverse guides", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"z_min", "z_min", "start of the longitudinal travel", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        v.push_back({"z_max", "z_max", "end of the longitudinal travel", units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        ParameterInfo mode{"mode", "form", "+1 extended (O), −1 crossed (X)", units::none, G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2};
+        v.push_back({"l", "l", QT_TRANSLATE_NOOP("core", "rod length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"s", "s", QT_TRANSLATE_NOOP("core", "platform width"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"L", "L", QT_TRANSLATE_NOOP("core", "transverse guide length (slider positions 0…L)"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"a", "a", QT_TRANSLATE_NOOP("core", "spacing of the transverse guides"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"z_min", "z_min", QT_TRANSLATE_NOOP("core", "start of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        v.push_back({"z_max", "z_max", QT_TRANSLATE_NOOP("core", "end of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
+        ParameterInfo mode{"mode", QT_TRANSLATE_NOOP("core", "form"), QT_TRANSLATE_NOOP("core", "+1 extended (O), −1 crossed (X)"), units::none, G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2};
         mode.choices = {{"O", 1.0}, {"X", -1.0}};
         v.push_back(mode);
         return v;
@@ -119,12 +121,15 @@ Result<OxGlideDesign> applyChanges(OxGlideDesign d, const ParameterSet &changes)
         const auto &infos = oxglideParameterInfo();
         const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
         if (info == infos.end())
-            return Failure{FailureKind::UnknownName, name, joinText({"The O-X glide has no parameter named '", name, "'."})};
+            return Failure{FailureKind::UnknownName, name,
+                           text::format(text::translate("core", "The O-X glide has no parameter named '%1'."), {name})};
         if (auto checked = Mechanism::checkDomain(*info, value); !checked)
             return checked.failure();
         if (name == "mode" && value != 1.0 && value != -1.0) {
             return Failure{FailureKind::InvalidParameter, "mode",
-                           joinText({"mode = ", formatNumber(value), " is invalid: it must be +1 (O, extended) or -1 (X, crossed)."})};
+                           text::format(text::translate("core", "mode = %1 is invalid: it must be +1 (O, extended) or -1 "
+                                                                "(X, crossed)."),
+                                        {text::number(value)})};
         }
     }
     auto take = [&](const char *name, double &field) {
@@ -151,26 +156,33 @@ Result<MechanismPtr> OxGlide::create(const OxGlideDesign &d)
             return checked.failure();
     }
     if (d.form != oxglide::formO && d.form != oxglide::formX)
-        return Failure{FailureKind::InvalidParameter, "mode", "mode must be +1 (O, extended) or -1 (X, crossed)."};
+        return Failure{FailureKind::InvalidParameter, "mode",
+                       text::translate("core", "mode must be +1 (O, extended) or -1 (X, crossed).")};
     if (!(d.width < 2.0 * d.rod)) {
         return Failure{FailureKind::InvalidParameter, "s",
-                       joinText({"s = ", mm(d.width), " must be less than 2l = ", mm(2.0 * d.rod),
-                                 ": a platform that wide keeps the rods from ever crossing, so there is no X form."})};
+                       text::format(text::translate("core", "s = %1 must be less than 2l = %2: a platform that wide keeps "
+                                                            "the rods from ever crossing, so there is no X form."),
+                                    {mm(d.width), mm(2.0 * d.rod)})};
     }
     if (!(d.guideLength > d.width)) {
         return Failure{FailureKind::InvalidParameter, "L",
-                       joinText({"L = ", mm(d.guideLength), " must be more than the platform width s = ", mm(d.width),
-                                 ": with guides that short the extended (O) form has no workspace."})};
+                       text::format(text::translate("core", "L = %1 must be more than the platform width s = %2: with "
+                                                            "guides that short the extended (O) form has no workspace."),
+                                    {mm(d.guideLength), mm(d.width)})};
     }
     if (!(d.zMin < d.zMax)) {
         return Failure{FailureKind::InvalidParameter, "z_min",
-                       joinText({"z_min = ", mm(d.zMin), " must be less than z_max = ", mm(d.zMax), "."})};
+                       text::format(text::translate("core", "z_min = %1 must be less than z_max = %2."),
+                                    {mm(d.zMin), mm(d.zMax)})};
     }
     OxGlide candidate(d);
     if (!candidate.m_home.inputs.size()) {
+        const std::string pattern =
+            d.form == oxglide::formX
+                ? text::translate("core", "The crossed (X) form has no workspace with L = %1, s = %2 and l = %3.")
+                : text::translate("core", "The extended (O) form has no workspace with L = %1, s = %2 and l = %3.");
         return Failure{FailureKind::Unreachable, "L",
-                       joinText({"The ", oxglide::formTitle(d.form), " form has no workspace with L = ", mm(d.guideLength),
-                             ", s = ", mm(d.width), " and l = ", mm(d.rod), "."})};
+                       text::format(pattern, {mm(d.guideLength), mm(d.width), mm(d.rod)})};
     }
     return MechanismPtr(new OxGlide(candidate));
 }
@@ -262,11 +274,12 @@ Eigen::AlignedBox2d OxGlide::unionBounds() const
 const std::vector<VariableInfo> &OxGlide::variableInfo() const
 {
     static const std::vector<VariableInfo> infos = {
-        {"x_AB", "x_AB", "slider pair AB position (actuated)", units::millimetre, true, 2},
-        {"x_CD", "x_CD", "slider pair CD position (actuated)", units::millimetre, true, 2},
-        {"z", "z", "longitudinal position (actuated serial axis)", units::millimetre, true, 2, true},
-        {"x", "x", "platform centre T, x", units::millimetre, false, 2},
-        {"y", "y", "platform centre T, y", units::millimetre, false, 2},
+        {"x_AB", "x_AB", QT_TRANSLATE_NOOP("core", "slider pair AB position (actuated)"), units::millimetre, true, 2},
+        {"x_CD", "x_CD", QT_TRANSLATE_NOOP("core", "slider pair CD position (actuated)"), units::millimetre, true, 2},
+        {"z", "z", QT_TRANSLATE_NOOP("core", "longitudinal position (actuated serial axis)"), units::millimetre, true, 2,
+         true},
+        {"x", "x", QT_TRANSLATE_NOOP("core", "platform centre T, x"), units::millimetre, false, 2},
+        {"y", "y", QT_TRANSLATE_NOOP("core", "platform centre T, y"), units::millimetre, false, 2},
     };
     return infos;
 }
@@ -295,24 +308,30 @@ Result<Pose> OxGlide::inverse(const Eigen::Vector2d &platform, double z) const
     const double l = d.rod;
     if (platform.y() > l * (1.0 + 1e-12)) {
         return Failure{FailureKind::Unreachable, "y",
-                       joinText({"The platform cannot reach ", point(platform), ": y is more than the rod length l = ", mm(l), "."})};
+                       text::format(text::translate("core", "The platform cannot reach %1: y is more than the rod length "
+                                                            "l = %2."),
+                                    {point(platform), mm(l)})};
     }
     if (platform.y() < 0.0) {
         return Failure{FailureKind::Unreachable, "y",
-                       joinText({"The platform cannot reach ", point(platform),
-                                 ": it would pass the rod joints' plane y = 0, where the rods lie along the guides (a "
-                                 "direct singularity)."})};
+                       text::format(text::translate("core", "The platform cannot reach %1: it would pass the rod joints' "
+                                                            "plane y = 0, where the rods lie along the guides (a direct "
+                                                            "singularity)."),
+                                    {point(platform)})};
     }
     const Eigen::Vector2d q = oxglide::inverse(l, d.width, d.form, platform);
     const double tolerance = 1e-9 * std::max(l, d.guideLength);
     const char *names[2] = {"x_AB", "x_CD"};
     for (int i = 0; i < 2; ++i) {
         if (q[i] < -tolerance || q[i] > d.guideLength + tolerance) {
-            std::string message = "The ";
-            message.append(oxglide::formTitle(d.form)).append(" form cannot reach ").append(point(platform));
-            message.append(": slider pair ").append(i == 0 ? "AB" : "CD").append(" would have to be at ");
-            message.append(names[i]).append(" = ").append(mm(q[i])).append(", off its guides (0…");
-            message.append(formatNumber(d.guideLength, 2)).append(" mm).");
+            const std::string pattern =
+                d.form == oxglide::formX
+                    ? text::translate("core", "The crossed (X) form cannot reach %1: slider pair %2 would have to be at "
+                                              "%3 = %4, off its guides (0…%5 mm).")
+                    : text::translate("core", "The extended (O) form cannot reach %1: slider pair %2 would have to be at "
+                                              "%3 = %4, off its guides (0…%5 mm).");
+            const std::string message = text::format(pattern, {point(platform), i == 0 ? "AB" : "CD", names[i], mm(q[i]),
+                                                               text::number(d.guideLength, 2)});
             return Failure{FailureKind::OutOfRange, names[i], message};
         }
     }
@@ -332,11 +351,13 @@ Result<Pose> OxGlide::solveDirect(const Coordinates &inputs, const Pose *near) c
     for (int i = 0; i < 3; ++i) {
         const Interval range = variableRange(i);
         if (!std::isfinite(inputs[i]))
-            return Failure{FailureKind::OutOfRange, names[i], joinText({names[i], " must be a finite number."})};
+            return Failure{FailureKind::OutOfRange, names[i],
+                           text::format(text::translate("core", "%1 must be a finite number."), {names[i]})};
         if (!range.contains(inputs[i])) {
-            std::string message = names[i];
-            message.append(" = ").append(mm(inputs[i])).append(i < 2 ? " is off the guides (" : " is outside the travel (");
-            message.append(formatNumber(range.min, 2)).append("…").append(formatNumber(range.max, 2)).append(" mm).");
+            const std::string pattern = i < 2 ? text::translate("core", "%1 = %2 is off the guides (%3…%4 mm).")
+                                              : text::translate("core", "%1 = %2 is outside the travel (%3…%4 mm).");
+            const std::string message = text::format(pattern, {names[i], mm(inputs[i]), text::number(range.min, 2),
+                                                               text::number(range.max, 2)});
             return Failure{FailureKind::OutOfRange, names[i], message};
         }
     }
@@ -345,17 +366,23 @@ Result<Pose> OxGlide::solveDirect(const Coordinates &inputs, const Pose *near) c
     const double e = xCD - xAB - d.width;
     if (!solution.valid) {
         return Failure{FailureKind::Unreachable, "x_CD",
-                       joinText({"The rods cannot reach the platform at x_AB = ", mm(xAB), ", x_CD = ", mm(xCD),
-                                 ": |x_CD − x_AB − s| = ", mm(std::abs(e)), " is more than 2l = ", mm(2.0 * d.rod), "."})};
+                       text::format(text::translate("core", "The rods cannot reach the platform at x_AB = %1, x_CD = %2: "
+                                                            "|x_CD − x_AB − s| = %3 is more than 2l = %4."),
+                                    {mm(xAB), mm(xCD), mm(std::abs(e)), mm(2.0 * d.rod)})};
     }
     if (solution.form != 0 && solution.form != d.form && std::abs(e) > 1e-9 * d.rod) {
-        std::string message = "x_CD − x_AB = ";
-        message.append(mm(xCD - xAB)).append(solution.form == oxglide::formX ? " is less" : " is more");
-        message.append(" than s = ").append(mm(d.width)).append(": these slider positions hold the ");
-        message.append(oxglide::formTitle(solution.form)).append(" form, and the mechanism is ");
-        message.append(oxglide::formTitle(d.form));
-        message.append(". At x_CD − x_AB = s the rods are parallel and the platform can swing (a singularity), "
-                       "so the pairs do not pass it on their own: switch the form to go on.");
+        // the positions hold the other form than the design's: X (less than s) in an O design, or O
+        const std::string pattern =
+            solution.form == oxglide::formX
+                ? text::translate("core", "x_CD − x_AB = %1 is less than s = %2: these slider positions hold the crossed "
+                                          "(X) form, and the mechanism is extended (O). At x_CD − x_AB = s the rods are "
+                                          "parallel and the platform can swing (a singularity), so the pairs do not pass "
+                                          "it on their own: switch the form to go on.")
+                : text::translate("core", "x_CD − x_AB = %1 is more than s = %2: these slider positions hold the extended "
+                                          "(O) form, and the mechanism is crossed (X). At x_CD − x_AB = s the rods are "
+                                          "parallel and the platform can swing (a singularity), so the pairs do not pass "
+                                          "it on their own: switch the form to go on.");
+        const std::string message = text::format(pattern, {mm(xCD - xAB), mm(d.width)});
         // the pair that moved is the culprit (x_CD when both did or nothing says)
         const bool abMoved = near && near->inputs.size() == 3 && near->inputs[0] != xAB && near->inputs[1] == xCD;
         return Failure{FailureKind::Singular, abMoved ? "x_AB" : "x_CD", message};
@@ -373,7 +400,8 @@ Result<Pose> OxGlide::solveInverse(const Coordinates &outputs, const Pose *near)
     for (int i = 0; i < 2; ++i) {
         if (!std::isfinite(outputs[i])) {
             const std::string name = i == 0 ? "x" : "y";
-            return Failure{FailureKind::OutOfRange, name, name + " must be a finite number."};
+            return Failure{FailureKind::OutOfRange, name,
+                           text::format(text::translate("core", "%1 must be a finite number."), {name})};
         }
     }
     const double z = near && near->inputs.size() == 3 ? near->inputs[2] : m_home.inputs[2];
@@ -403,21 +431,21 @@ const ReportLayout &OxGlide::reportLayout() const
     static const ReportLayout layout = [] {
         using G = ReportGroup;
         ReportLayout l;
-        l.add(G::Pose, "x_AB", "x_AB", "slider pair AB position", units::millimetre, 2);
-        l.add(G::Pose, "x_CD", "x_CD", "slider pair CD position", units::millimetre, 2);
-        l.add(G::Pose, "z", "z", "longitudinal position", units::millimetre, 2);
-        l.add(G::Pose, "x", "x", "platform centre T, x", units::millimetre, 2);
-        l.add(G::Pose, "y", "y", "platform centre T, y", units::millimetre, 2);
-        l.add(G::Jacobian, "Jq", "J_q", "J_q = diag(−2u₁, −2u₂), u_i the rods' runs along the guides", units::millimetre, 1, 2, 2);
-        l.add(G::Jacobian, "Jx", "J_x", "J_x rows (2u_i, 2y)", units::millimetre, 1, 2, 2);
-        l.add(G::Jacobian, "J", "J", "q̇ = J·ẋ of the planar part, J = −J_q⁻¹·J_x", units::none, 3, 2, 2);
-        l.add(G::Jacobian, "det_J", "det J", "determinant of J (0: direct, ∞: inverse singularity)", units::none, 4);
-        l.add(G::Jacobian, "det_Jq", "det J_q", "0 at an inverse singularity", units::squareMillimetre, 1);
-        l.add(G::Jacobian, "det_Jx", "det J_x", "0 at a direct singularity", units::squareMillimetre, 1);
-        l.add(G::Jacobian, "cond", "κ(J)", "condition number of J", units::none, 3);
-        l.add(G::Derived, "rod_angle", "ψ", "angle between the rods and the guides (90°: the O↔X crossing)", units::angle, 2);
-        l.add(G::Derived, "crossing", "x_CD − x_AB − s", "distance from the O↔X crossing (0 there; > 0 O, < 0 X)", units::millimetre, 2);
-        l.add(G::Derived, "margin", "m", "distance from the nearest singularity (0 … 1)", units::none, 4);
+        l.add(G::Pose, "x_AB", "x_AB", QT_TRANSLATE_NOOP("core", "slider pair AB position"), units::millimetre, 2);
+        l.add(G::Pose, "x_CD", "x_CD", QT_TRANSLATE_NOOP("core", "slider pair CD position"), units::millimetre, 2);
+        l.add(G::Pose, "z", "z", QT_TRANSLATE_NOOP("core", "longitudinal position"), units::millimetre, 2);
+        l.add(G::Pose, "x", "x", QT_TRANSLATE_NOOP("core", "platform centre T, x"), units::millimetre, 2);
+        l.add(G::Pose, "y", "y", QT_TRANSLATE_NOOP("core", "platform centre T, y"), units::millimetre, 2);
+        l.add(G::Jacobian, "Jq", "J_q", QT_TRANSLATE_NOOP("core", "J_q = diag(−2u₁, −2u₂), u_i the rods' runs along the guides"), units::millimetre, 1, 2, 2);
+        l.add(G::Jacobian, "Jx", "J_x", QT_TRANSLATE_NOOP("core", "J_x rows (2u_i, 2y)"), units::millimetre, 1, 2, 2);
+        l.add(G::Jacobian, "J", "J", QT_TRANSLATE_NOOP("core", "q̇ = J·ẋ of the planar part, J = −J_q⁻¹·J_x"), units::none, 3, 2, 2);
+        l.add(G::Jacobian, "det_J", "det J", QT_TRANSLATE_NOOP("core", "determinant of J (0: direct, ∞: inverse singularity)"), units::none, 4);
+        l.add(G::Jacobian, "det_Jq", "det J_q", QT_TRANSLATE_NOOP("core", "0 at an inverse singularity"), units::squareMillimetre, 1);
+        l.add(G::Jacobian, "det_Jx", "det J_x", QT_TRANSLATE_NOOP("core", "0 at a direct singularity"), units::squareMillimetre, 1);
+        l.add(G::Jacobian, "cond", "κ(J)", QT_TRANSLATE_NOOP("core", "condition number of J"), units::none, 3);
+        l.add(G::Derived, "rod_angle", "ψ", QT_TRANSLATE_NOOP("core", "angle between the rods and the guides (90°: the O↔X crossing)"), units::angle, 2);
+        l.add(G::Derived, "crossing", "x_CD − x_AB − s", QT_TRANSLATE_NOOP("core", "distance from the O↔X crossing (0 there; > 0 O, < 0 X)"), units::millimetre, 2);
+        l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
         return l;
     }();
     return layout;
@@ -485,7 +513,8 @@ Singularity OxGlide::evaluate(const Pose &pose, std::span<double> v) const
 
 std::vector<ReportText> OxGlide::reportText(const Pose &) const
 {
-    return {{ReportGroup::Pose, "mode", oxglide::formName(m_design.form), "form of the pose: O extended, X crossed"}};
+    return {{ReportGroup::Pose, "mode", oxglide::formName(m_design.form),
+             QT_TRANSLATE_NOOP("core", "form of the pose: O extended, X crossed")}};
 }
 
 std::vector<ModeAlternative> OxGlide::modeNeighbours() const
@@ -494,8 +523,10 @@ std::vector<ModeAlternative> OxGlide::modeNeighbours() const
     const int other = -m_design.form;
     const ParameterSet changes = {{"mode", double(other)}};
     if (auto made = withParameters(changes)) {
-        neighbours.push_back({joinText({oxglide::formTitle(other), " form (same platform position)"}), changes, *made,
-                              false, {}});
+        const char *label = other == oxglide::formX
+                                ? QT_TRANSLATE_NOOP("core", "crossed (X) form (same platform position)")
+                                : QT_TRANSLATE_NOOP("core", "extended (O) form (same platform position)");
+        neighbours.push_back({label, changes, *made, false, {}});
     }
     return neighbours;
 }
@@ -539,14 +570,14 @@ std::vector<SingularCurve> OxGlide::singularCurves() const
     // y = l: rods perpendicular to the guides (inverse) and parallel to each other (direct):
     // the O↔X crossing, the top edge of both workspaces
     const Eigen::Vector2d from(0.5 * d.width, d.rod), to(d.guideLength - 0.5 * d.width, d.rod);
-    curves.push_back({SingularCurve::Type::Inverse, "rods ⟂ guides: the O↔X crossing", {from, to}});
-    curves.push_back({SingularCurve::Type::Direct, "rods parallel: the platform can swing", {from, to}});
+    curves.push_back({SingularCurve::Type::Inverse, QT_TRANSLATE_NOOP("core", "rods ⟂ guides: the O↔X crossing"), {from, to}});
+    curves.push_back({SingularCurve::Type::Direct, QT_TRANSLATE_NOOP("core", "rods parallel: the platform can swing"), {from, to}});
     // y = 0: the rods along the guides, where the workspace reaches down that far
     const double sign = d.form == oxglide::formX ? -1.0 : 1.0, w = d.rod;
     const double lo = std::max(0.5 * d.width + sign * w, -0.5 * d.width - sign * w);
     const double hi = std::min(d.guideLength + 0.5 * d.width + sign * w, d.guideLength - 0.5 * d.width - sign * w);
     if (lo < hi)
-        curves.push_back({SingularCurve::Type::Direct, "rods along the guides", {{lo, 0.0}, {hi, 0.0}}});
+        curves.push_back({SingularCurve::Type::Direct, QT_TRANSLATE_NOOP("core", "rods along the guides"), {{lo, 0.0}, {hi, 0.0}}});
     return curves;
 }
 
@@ -564,7 +595,7 @@ Result<Pose> OxGlide::dragHandle(const Pose &current, int handle, const Eigen::V
         inputs[handle - 1] = std::clamp(target.x(), 0.0, m_design.guideLength);
         return solveDirect(inputs, &current);
     }
-    return Failure{FailureKind::UnknownName, {}, "No handle with that index."};
+    return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};
 }
 
 } // namespace pkm

@@ -46,7 +46,7 @@ constexpr int formO = +1;
 constexpr int formX = -1;
 /// "O" or "X".
 const char *formName(int form);
-/// "extended (O)" or "crossed (X)".
+/// "extended (O)" or "crossed (X)": English source, QT_TRANSLATE_NOOP("core", …).
 const char *formTitle(int form);
 
 /// The document's direct kinematics with the corrected sign, no limits checked: the platform
@@ -122,7 +122,8 @@ public:
     std::vector<SingularCurve> singularCurves() const override;
     std::string singularityMeaning(SingularCurve::Type type) const override
     {
-        return type == SingularCurve::Type::Inverse ? "rods ⟂ guides" : "rods along the guides";
+        return type == SingularCurve::Type::Inverse ? QT_TRANSLATE_NOOP("core", "rods ⟂ guides")
+                                                    : QT_TRANSLATE_NOOP("core", "rods along the guides");
     }
     /// A box holding the workspaces of both forms (the X form's holds the O form's).
     Eigen::AlignedBox2d unionBounds() const;

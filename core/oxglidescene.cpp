@@ -5,6 +5,7 @@
 #include "oxglide.h"
 
 #include "mobility.h"
+#include "text.h"
 
 #include <array>
 #include <cmath>
@@ -63,11 +64,13 @@ Scene OxGlide::scene(const Pose &pose) const
         const double start = rod.x() >= 0 ? 0.0 : std::numbers::pi;
         const double sweep = direction - start;
         scene.angles.push_back({jointAB, start, sweep, 0.3 * d.rod,
-                                "ψ = " + formatNumber(std::atan2(std::abs(y), std::abs(rod.x())) / units::degree, 1) + "°"});
+                                joinText({"ψ = ", text::number(std::atan2(std::abs(y), std::abs(rod.x())) / units::degree, 1),
+                                          "°"})});
     }
-    scene.handles.push_back({t, "drag to move the platform (inverse kinematics, in the current form)"});
-    scene.handles.push_back({jointAB, "drag along the guides to set x_AB (direct kinematics)"});
-    scene.handles.push_back({jointCD, "drag along the guides to set x_CD (direct kinematics)"});
+    scene.handles.push_back(
+        {t, text::translate("core", "drag to move the platform (inverse kinematics, in the current form)")});
+    scene.handles.push_back({jointAB, text::translate("core", "drag along the guides to set x_AB (direct kinematics)")});
+    scene.handles.push_back({jointCD, text::translate("core", "drag along the guides to set x_CD (direct kinematics)")});
     const double pad = 0.08 * std::max(L, d.rod);
     // room at the sides for the guides' labels
     scene.extent = Eigen::AlignedBox3d(Eigen::Vector3d(-2.0 * pad, -3.0 * a - rail - pad, 0.0),
@@ -93,52 +96,63 @@ Scene3D OxGlide::scene3d(const Pose &pose) const
     // the carriage of the serial axis: two end plates carrying the transverse guides, riding
     // the longitudinal guides below them
     const double z0 = depth(0) - 0.6 * c, z1 = depth(3) + 0.6 * c;
+    const std::string carriage = text::translate("core", "longitudinal carriage"),
+                      endPlate = text::translate("core", "end plate"),
+                      longitudinalGuide = text::translate("core", "longitudinal guide");
     for (const double px : {-frameGap, L + frameGap}) {
-        parts.push_back(Solid::box({px, bottom, z0}, {px, bottom, z1}, 0.5 * a, 0.7 * a, uy, PartRole::Slider, "longitudinal carriage"));
-        parts.push_back(Solid::box({px, bottom, 0.5 * (z0 + z1)}, {px, 0.5 * a, 0.5 * (z0 + z1)}, z1 - z0, 0.5 * a, ux, PartRole::Ground, "end plate"));
+        parts.push_back(Solid::box({px, bottom, z0}, {px, bottom, z1}, 0.5 * a, 0.7 * a, uy, PartRole::Slider, carriage));
+        parts.push_back(Solid::box({px, bottom, 0.5 * (z0 + z1)}, {px, 0.5 * a, 0.5 * (z0 + z1)}, z1 - z0, 0.5 * a, ux, PartRole::Ground, endPlate));
         parts.push_back(Solid::box({px, bottom - 0.6 * a, d.zMin - 2.5 * c}, {px, bottom - 0.6 * a, d.zMax + 2.5 * c}, 0.5 * a, 0.5 * a, uy,
-                                   PartRole::Guide, "longitudinal guide"));
+                                   PartRole::Guide, longitudinalGuide));
     }
     parts.push_back(Solid::box({-frameGap - a, bottom - 1.2 * a, 0.5 * (d.zMin + d.zMax)}, {L + frameGap + a, bottom - 1.2 * a, 0.5 * (d.zMin + d.zMax)},
-                               d.zMax - d.zMin + 5.0 * c, 0.4 * a, uy, PartRole::Ground, "base"));
+                               d.zMax - d.zMin + 5.0 * c, 0.4 * a, uy, PartRole::Ground, text::translate("core", "base")));
 
     // the transverse guides and the sliders on them
     const std::array<double, 4> sliderX = {xCD, xAB, xAB, xCD};
+    const std::string guidePattern = text::translate("core", "guide %1"),
+                      sliderPattern = text::translate("core", "slider %1"),
+                      compensationPattern = text::translate("core", "compensation element %1"),
+                      rodJointPattern = text::translate("core", "rod joint %1");
     for (int k = 0; k < 4; ++k) {
         const std::string name = guideNames[std::size_t(k)];
         parts.push_back(Solid::box({-frameGap, guideY(k), depth(k)}, {L + frameGap, guideY(k), depth(k)}, rail, rail, uy, PartRole::Guide,
-                                   "guide " + name));
+                                   text::format(guidePattern, {name})));
         const Eigen::Vector3d centre(sliderX[std::size_t(k)], guideY(k), depth(k));
         parts.push_back(Solid::box(centre - 0.5 * sliderLength * ux, centre + 0.5 * sliderLength * ux, sliderWidth, sliderHeight, uy,
-                                   PartRole::Slider, "slider " + name));
+                                   PartRole::Slider, text::format(sliderPattern, {name})));
         // compensation element: from the slider up to the rod-joint plane
         if (k != guideD) {
             parts.push_back(Solid::box({centre.x(), guideY(k) + 0.5 * sliderHeight, depth(k)}, {centre.x(), 0.0, depth(k)}, 0.5 * c, 0.45 * a, ux,
-                                       PartRole::Compensation, "compensation element " + name));
+                                       PartRole::Compensation, text::format(compensationPattern, {name})));
         }
         // the rod joint: a pin across the rod's plane
         parts.push_back(Solid::cylinder({centre.x(), 0.0, depth(k) - 0.45 * c}, {centre.x(), 0.0, depth(k) + 0.45 * c}, 0.28 * a,
-                                        PartRole::Joint, "rod joint " + name));
+                                        PartRole::Joint, text::format(rodJointPattern, {name})));
     }
     // the rigid pairs: A–B directly, C–D around below the other guides
     parts.push_back(Solid::box({xAB, guideY(guideA), depth(guideA)}, {xAB, guideY(guideB), depth(guideB)}, 0.35 * a, 0.35 * a, ux, PartRole::Slider,
-                               "pair AB"));
+                               text::translate("core", "pair AB")));
     const double under = guideY(guideC) - 0.8 * a;
-    parts.push_back(Solid::box({xCD, 0.0, depth(guideD)}, {xCD, under, depth(guideD)}, 0.35 * c, 0.35 * a, ux, PartRole::Slider, "pair CD"));
-    parts.push_back(Solid::box({xCD, under, depth(guideD)}, {xCD, under, depth(guideC)}, 0.35 * a, 0.35 * a, ux, PartRole::Slider, "pair CD"));
-    parts.push_back(Solid::box({xCD, under, depth(guideC)}, {xCD, guideY(guideC), depth(guideC)}, 0.35 * c, 0.35 * a, ux, PartRole::Slider, "pair CD"));
+    const std::string pairCD = text::translate("core", "pair CD");
+    parts.push_back(Solid::box({xCD, 0.0, depth(guideD)}, {xCD, under, depth(guideD)}, 0.35 * c, 0.35 * a, ux, PartRole::Slider, pairCD));
+    parts.push_back(Solid::box({xCD, under, depth(guideD)}, {xCD, under, depth(guideC)}, 0.35 * a, 0.35 * a, ux, PartRole::Slider, pairCD));
+    parts.push_back(Solid::box({xCD, under, depth(guideC)}, {xCD, guideY(guideC), depth(guideC)}, 0.35 * c, 0.35 * a, ux, PartRole::Slider, pairCD));
 
     // rods and the platform with its spherical joints; A, B at the left end, C, D at the right
     const std::array<double, 4> platformX = {x + 0.5 * s, x - 0.5 * s, x - 0.5 * s, x + 0.5 * s};
+    const std::string rodPattern = text::translate("core", "rod %1"),
+                      sphericalPattern = text::translate("core", "spherical joint %1");
     for (int k = 0; k < 4; ++k) {
         const std::string name = guideNames[std::size_t(k)];
         const Eigen::Vector3d from(sliderX[std::size_t(k)], 0.0, depth(k)), to(platformX[std::size_t(k)], y, depth(k));
-        parts.push_back(Solid::cylinder(from, to, 0.16 * a, PartRole::Rod, "rod " + name));
-        parts.push_back(Solid::sphere(to, 0.3 * a, PartRole::Joint, "spherical joint " + name + "′"));
+        parts.push_back(Solid::cylinder(from, to, 0.16 * a, PartRole::Rod, text::format(rodPattern, {name})));
+        parts.push_back(Solid::sphere(to, 0.3 * a, PartRole::Joint,
+                                     text::format(sphericalPattern, {name + "′"})));
     }
     const double thickness = 0.35 * a;
     parts.push_back(Solid::box({x - 0.5 * s - 0.25 * a, y + 0.5 * thickness, z}, {x + 0.5 * s + 0.25 * a, y + 0.5 * thickness, z},
-                               4.0 * c, thickness, uy, PartRole::Platform, "platform"));
+                               4.0 * c, thickness, uy, PartRole::Platform, text::translate("core", "platform")));
     parts.push_back(Solid::sphere({x, y + thickness + 0.2 * a, z}, 0.25 * a, PartRole::Marker, "T"));
 
     model.extent = Eigen::AlignedBox3d(Eigen::Vector3d(-frameGap - a, bottom - 1.4 * a, d.zMin - 2.5 * c),
@@ -155,10 +169,12 @@ KinematicChain OxGlide::kinematicChain(const Pose &pose) const
     enum { Ground, Carriage, PairAB, PairCD, Rods, Platform = Rods + 4 };
     const Eigen::Vector3d ux = Eigen::Vector3d::UnitX(), uz = Eigen::Vector3d::UnitZ();
     KinematicChain chain;
-    chain.links = {"ground", "carriage", "slider pair AB", "slider pair CD"};
+    chain.links = {text::translate("core", "ground"), text::translate("core", "carriage"),
+                   text::translate("core", "slider pair AB"), text::translate("core", "slider pair CD")};
+    const std::string rodPattern = text::translate("core", "rod %1");
     for (int k = 0; k < 4; ++k)
-        chain.links.push_back(joinText({"rod ", guideNames[std::size_t(k)]}));
-    chain.links.push_back("platform");
+        chain.links.push_back(text::format(rodPattern, {guideNames[std::size_t(k)]}));
+    chain.links.push_back(text::translate("core", "platform"));
     chain.pairs.push_back(
         mobility::makePair(PairType::Prismatic, "z", Ground, Carriage, Eigen::Vector3d(0.0, 0.0, z), uz, true));
     chain.pairs.push_back(mobility::makePair(
@@ -176,8 +192,8 @@ KinematicChain OxGlide::kinematicChain(const Pose &pose) const
     }
     chain.planar = false;
     chain.description
-        = "O-X glide: carriage on the longitudinal guides, slider pairs AB and CD, four rods (revolute at the "
-          "sliders, spherical at the platform), platform";
+        = text::translate("core", "O-X glide: carriage on the longitudinal guides, slider pairs AB and CD, four rods "
+                                  "(revolute at the sliders, spherical at the platform), platform");
     return chain;
 }
 

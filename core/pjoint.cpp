@@ -1,6 +1,7 @@
 #include "pjoint.h"
 
 #include "mobility.h"
+#include "text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -152,19 +153,19 @@ const std::vector<ParameterInfo> &PJoint::parameterInfo() const
         const Interval halfTurn{-90.0 * units::degree, 90.0 * units::degree};
         using G = ParameterGroup;
         std::vector<ParameterInfo> v;
-        v.push_back({"a", "a", "crank (lever) length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"b", "b", "base and coupler length", units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"k", "k", "ratio k = b/a", units::none, G::Geometry, positive, true, false, false, 4, 0.01});
-        v.push_back({"theta_min", "θ_min", "lower limit of θ", units::angle, G::Range, halfTurn, true, true, true, 2, 1});
-        v.push_back({"theta_max", "θ_max", "upper limit of θ", units::angle, G::Range, halfTurn, true, true, true, 2, 1});
-        v.push_back({"lead", "h", "lead of the screw", units::millimetrePerRevolution, G::Actuator, positive, true, false, true, 4, 0.1});
-        v.push_back({"step", "Δd", "linear step", units::millimetrePerStep, G::Actuator, positive, true, false, true, 5, 0.001});
-        v.push_back({"speed_max", "ḋ_max", "max. linear speed", units::millimetrePerSecond, G::Actuator, positive, true, false, true, 2, 1});
-        v.push_back({"force_max", "F_max", "max. thrust force", units::newton, G::Actuator, positive, true, false, true, 1, 5});
-        v.push_back({"efficiency", "η", "screw efficiency", units::none, G::Actuator, Interval{0.0, 1.0}, true, false, true, 3, 0.01});
-        v.push_back({"motor_length", "L_M", "motor body length", units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
-        v.push_back({"motor_width", "W_M", "motor body width", units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
-        v.push_back({"screw_diameter", "d_s", "screw diameter", units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1});
+        v.push_back({"a", "a", QT_TRANSLATE_NOOP("core", "crank (lever) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"b", "b", QT_TRANSLATE_NOOP("core", "base and coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
+        v.push_back({"k", "k", QT_TRANSLATE_NOOP("core", "ratio k = b/a"), units::none, G::Geometry, positive, true, false, false, 4, 0.01});
+        v.push_back({"theta_min", "θ_min", QT_TRANSLATE_NOOP("core", "lower limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1});
+        v.push_back({"theta_max", "θ_max", QT_TRANSLATE_NOOP("core", "upper limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1});
+        v.push_back({"lead", "h", QT_TRANSLATE_NOOP("core", "lead of the screw"), units::millimetrePerRevolution, G::Actuator, positive, true, false, true, 4, 0.1});
+        v.push_back({"step", "Δd", QT_TRANSLATE_NOOP("core", "linear step"), units::millimetrePerStep, G::Actuator, positive, true, false, true, 5, 0.001});
+        v.push_back({"speed_max", "ḋ_max", QT_TRANSLATE_NOOP("core", "max. linear speed"), units::millimetrePerSecond, G::Actuator, positive, true, false, true, 2, 1});
+        v.push_back({"force_max", "F_max", QT_TRANSLATE_NOOP("core", "max. thrust force"), units::newton, G::Actuator, positive, true, false, true, 1, 5});
+        v.push_back({"efficiency", "η", QT_TRANSLATE_NOOP("core", "screw efficiency"), units::none, G::Actuator, Interval{0.0, 1.0}, true, false, true, 3, 0.01});
+        v.push_back({"motor_length", "L_M", QT_TRANSLATE_NOOP("core", "motor body length"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
+        v.push_back({"motor_width", "W_M", QT_TRANSLATE_NOOP("core", "motor body width"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
+        v.push_back({"screw_diameter", "d_s", QT_TRANSLATE_NOOP("core", "screw diameter"), units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1});
         return v;
     }();
     return infos;
@@ -223,13 +224,15 @@ Result<MechanismPtr> PJoint::create(const PJointDesign &design)
     const double k = design.k();
     if (!(k >= 1e-6 && k <= 1e6)) {
         return Failure{FailureKind::InvalidParameter, "k",
-                       "k = b/a = " + formatNumber(k, 6) + " is out of proportion: it must lie between 1e-6 and 1e6."};
+                       text::format(text::translate("core", "k = b/a = %1 is out of proportion: it must lie between 1e-6 "
+                                                            "and 1e6."),
+                                    {text::number(k, 6)})};
     }
     if (!(design.thetaMin < design.thetaMax)) {
         return Failure{FailureKind::InvalidParameter, "theta_min",
-                       "theta_min = " + formatNumber(units::angle.toDisplay(design.thetaMin))
-                           + "° must be less than theta_max = "
-                           + formatNumber(units::angle.toDisplay(design.thetaMax)) + "°."};
+                       text::format(text::translate("core", "theta_min = %1° must be less than theta_max = %2°."),
+                                    {text::number(units::angle.toDisplay(design.thetaMin)),
+                                     text::number(units::angle.toDisplay(design.thetaMax))})};
     }
     return MechanismPtr(new PJoint(design));
 }
@@ -245,8 +248,9 @@ Result<PJointDesign> PJoint::withK(PJointDesign design, const ParameterSet &chan
     if (auto k = changes.find("k"); k != changes.end()) {
         if (changes.count("b")) {
             return Failure{FailureKind::InvalidParameter, "k",
-                           "k = " + formatNumber(k->second, 6) + " and b = " + formatNumber(changes.at("b"), 6)
-                               + " mm both set the coupler: give b or k, not both."};
+                           text::format(text::translate("core", "k = %1 and b = %2 mm both set the coupler: give b or "
+                                                                "k, not both."),
+                                        {text::number(k->second, 6), text::number(changes.at("b"), 6)})};
         }
         design.b = k->second * design.a; // k is kept as b/a: it sizes the coupler
     }
@@ -273,7 +277,8 @@ Result<MechanismPtr> PJoint::withParameters(const ParameterSet &changes) const
             }
         }
         if (!known)
-            return Failure{FailureKind::UnknownName, name, "The П-joint has no parameter named '" + name + "'."};
+            return Failure{FailureKind::UnknownName, name,
+                           text::format(text::translate("core", "The П-joint has no parameter named '%1'."), {name})};
     }
     auto design = withK(designFrom(changes, m_design), changes);
     if (!design)
@@ -289,12 +294,12 @@ Result<MechanismPtr> PJoint::withParameter(std::string_view name, double value) 
     if (!made && made.failure().kind == FailureKind::InvalidParameter && made.failure().culprit != name) {
         Failure f = made.failure();
         f.culprit = std::string(name);
-        if (name == "theta_max" && f.message.starts_with("theta_min")) {
-            f.message = "theta_max = " + formatNumber(units::angle.toDisplay(value))
-                      + "° must be greater than theta_min = "
-                      + formatNumber(units::angle.toDisplay(m_design.thetaMin)) + "°.";
+        if (name == "theta_max" && made.failure().culprit == "theta_min") {
+            f.message = text::format(text::translate("core", "theta_max = %1° must be greater than theta_min = %2°."),
+                                     {text::number(units::angle.toDisplay(value)),
+                                      text::number(units::angle.toDisplay(m_design.thetaMin))});
         } else {
-            f.message = std::string(name) + ": " + f.message;
+            f.message = joinText({name, ": ", f.message});
         }
         return f;
     }
@@ -305,9 +310,9 @@ std::vector<std::string> PJoint::designWarnings() const
 {
     std::vector<std::string> warnings;
     if (m_design.motorLength >= dMin()) {
-        warnings.push_back("The motor body (" + formatNumber(m_design.motorLength, 1)
-                           + " mm) is longer than d_min = " + formatNumber(dMin(), 1)
-                           + " mm: the diagonal cannot retract that far.");
+        warnings.push_back(text::format(text::translate("core", "The motor body (%1 mm) is longer than d_min = %2 mm: "
+                                                                "the diagonal cannot retract that far."),
+                                        {text::number(m_design.motorLength, 1), text::number(dMin(), 1)}));
     }
     return warnings;
 }
@@ -317,8 +322,8 @@ std::vector<std::string> PJoint::designWarnings() const
 const std::vector<VariableInfo> &PJoint::variableInfo() const
 {
     static const std::vector<VariableInfo> infos = {
-        {"d", "d", "diagonal length (actuated)", units::millimetre, true, 2},
-        {"theta", "θ", "output angle", units::angle, false, 2},
+        {"d", "d", QT_TRANSLATE_NOOP("core", "diagonal length (actuated)"), units::millimetre, true, 2},
+        {"theta", "θ", QT_TRANSLATE_NOOP("core", "output angle"), units::angle, false, 2},
     };
     return infos;
 }
@@ -351,7 +356,7 @@ Result<Pose> PJoint::solveDirect(const Coordinates &inputs, const Pose *) const
     const double d = inputs[0];
     const PJointDesign &p = m_design;
     if (!std::isfinite(d))
-        return Failure{FailureKind::OutOfRange, "d", "d must be a finite number."};
+        return Failure{FailureKind::OutOfRange, "d", text::format(text::translate("core", "%1 must be a finite number."), {"d"})};
     // The stroke, d(θ_min)…d(θ_max), is what the user may ask for; past |a − b|…a + b the
     // parallelogram could not even close, which makes it unreachable rather than out of range.
     const Interval range = variableRange(variableD);
@@ -359,8 +364,9 @@ Result<Pose> PJoint::solveDirect(const Coordinates &inputs, const Pose *) const
     if (!range.contains(d, tolerance)) {
         const bool closes = d >= std::abs(p.a - p.b) && d <= p.a + p.b;
         return Failure{closes ? FailureKind::OutOfRange : FailureKind::Unreachable, "d",
-                       "d = " + formatNumber(d) + " mm is outside the stroke [" + formatNumber(range.min) + ", "
-                           + formatNumber(range.max) + "] mm that the θ range allows."};
+                       text::format(text::translate("core", "d = %1 mm is outside the stroke [%2, %3] mm that the θ "
+                                                            "range allows."),
+                                    {text::number(d), text::number(range.min), text::number(range.max)})};
     }
     const double theta = std::clamp(pjoint::angle(p, range.clamp(d)), p.thetaMin, p.thetaMax);
     Pose pose;
@@ -373,13 +379,15 @@ Result<Pose> PJoint::solveInverse(const Coordinates &outputs, const Pose *) cons
 {
     const double theta = outputs[0];
     if (!std::isfinite(theta))
-        return Failure{FailureKind::OutOfRange, "theta", "θ must be a finite number."};
+        return Failure{FailureKind::OutOfRange, "theta",
+                       text::format(text::translate("core", "%1 must be a finite number."), {"θ"})};
     const Interval range = variableRange(variableTheta);
     if (!range.contains(theta, relativeTolerance)) {
         return Failure{FailureKind::OutOfRange, "theta",
-                       "θ = " + formatNumber(units::angle.toDisplay(theta)) + "° is outside the design range ["
-                           + formatNumber(units::angle.toDisplay(range.min)) + ", "
-                           + formatNumber(units::angle.toDisplay(range.max)) + "]°."};
+                       text::format(text::translate("core", "θ = %1° is outside the design range [%2, %3]°."),
+                                    {text::number(units::angle.toDisplay(theta)),
+                                     text::number(units::angle.toDisplay(range.min)),
+                                     text::number(units::angle.toDisplay(range.max))})};
     }
     const double clamped = range.clamp(theta);
     Pose pose;
@@ -405,24 +413,24 @@ const ReportLayout &PJoint::reportLayout() const
     static const ReportLayout layout = [] {
         using G = ReportGroup;
         ReportLayout l;
-        l.add(G::Pose, "theta", "θ", "output angle", units::angle, 2);
-        l.add(G::Pose, "d", "d", "diagonal length", units::millimetre, 2);
-        l.add(G::Pose, "phi", "φ", "passive angle of the diagonal", units::angle, 2);
-        l.add(G::Pose, "mu", "μ", "transmission angle", units::angle, 2);
-        l.add(G::Jacobian, "J", "J", "Jacobian ḋ = J·θ̇", units::millimetrePerRadian, 3);
-        l.add(G::Jacobian, "J_inv", "J⁻¹", "inverse Jacobian θ̇ = J⁻¹·ḋ", units::radianPerMillimetre, 5);
-        l.add(G::Jacobian, "J_d", "J_d", "J_d = 2d", units::millimetre, 2);
-        l.add(G::Jacobian, "J_theta", "J_θ", "J_θ = 2a²k·cos θ", units::squareMillimetrePerRadian, 1);
-        l.add(G::Jacobian, "dJ_dtheta", "∂J/∂θ", "derivative of J", units::millimetrePerRadian2, 3);
-        l.add(G::Derived, "torque", "T", "output torque at F_max", units::newtonMetre, 3);
-        l.add(G::Derived, "speed", "ω", "output speed θ̇ at ḋ_max", units::radianPerSecond, 4);
-        l.add(G::Derived, "resolution", "Δθ", "output resolution per step", units::anglePerStep, 5);
-        l.add(G::Derived, "motor_torque", "T_M", "motor torque at F_max", units::newtonMetre, 4);
-        l.add(G::Derived, "d_min", "d_min", "diagonal at θ_min", units::millimetre, 2);
-        l.add(G::Derived, "d_max", "d_max", "diagonal at θ_max", units::millimetre, 2);
-        l.add(G::Derived, "stroke", "d_max − d_min", "actuator stroke", units::millimetre, 2);
-        l.add(G::Derived, "recommended_min", "θ_rec,min", "recommended range from (J ≥ 60 % of best)", units::angle, 1);
-        l.add(G::Derived, "recommended_max", "θ_rec,max", "recommended range to (J ≥ 60 % of best)", units::angle, 1);
+        l.add(G::Pose, "theta", "θ", QT_TRANSLATE_NOOP("core", "output angle"), units::angle, 2);
+        l.add(G::Pose, "d", "d", QT_TRANSLATE_NOOP("core", "diagonal length"), units::millimetre, 2);
+        l.add(G::Pose, "phi", "φ", QT_TRANSLATE_NOOP("core", "passive angle of the diagonal"), units::angle, 2);
+        l.add(G::Pose, "mu", "μ", QT_TRANSLATE_NOOP("core", "transmission angle"), units::angle, 2);
+        l.add(G::Jacobian, "J", "J", QT_TRANSLATE_NOOP("core", "Jacobian ḋ = J·θ̇"), units::millimetrePerRadian, 3);
+        l.add(G::Jacobian, "J_inv", "J⁻¹", QT_TRANSLATE_NOOP("core", "inverse Jacobian θ̇ = J⁻¹·ḋ"), units::radianPerMillimetre, 5);
+        l.add(G::Jacobian, "J_d", "J_d", QT_TRANSLATE_NOOP("core", "J_d = 2d"), units::millimetre, 2);
+        l.add(G::Jacobian, "J_theta", "J_θ", QT_TRANSLATE_NOOP("core", "J_θ = 2a²k·cos θ"), units::squareMillimetrePerRadian, 1);
+        l.add(G::Jacobian, "dJ_dtheta", "∂J/∂θ", QT_TRANSLATE_NOOP("core", "derivative of J"), units::millimetrePerRadian2, 3);
+        l.add(G::Derived, "torque", "T", QT_TRANSLATE_NOOP("core", "output torque at F_max"), units::newtonMetre, 3);
+        l.add(G::Derived, "speed", "ω", QT_TRANSLATE_NOOP("core", "output speed θ̇ at ḋ_max"), units::radianPerSecond, 4);
+        l.add(G::Derived, "resolution", "Δθ", QT_TRANSLATE_NOOP("core", "output resolution per step"), units::anglePerStep, 5);
+        l.add(G::Derived, "motor_torque", "T_M", QT_TRANSLATE_NOOP("core", "motor torque at F_max"), units::newtonMetre, 4);
+        l.add(G::Derived, "d_min", "d_min", QT_TRANSLATE_NOOP("core", "diagonal at θ_min"), units::millimetre, 2);
+        l.add(G::Derived, "d_max", "d_max", QT_TRANSLATE_NOOP("core", "diagonal at θ_max"), units::millimetre, 2);
+        l.add(G::Derived, "stroke", "d_max − d_min", QT_TRANSLATE_NOOP("core", "actuator stroke"), units::millimetre, 2);
+        l.add(G::Derived, "recommended_min", "θ_rec,min", QT_TRANSLATE_NOOP("core", "recommended range from (J ≥ 60 % of best)"), units::angle, 1);
+        l.add(G::Derived, "recommended_max", "θ_rec,max", QT_TRANSLATE_NOOP("core", "recommended range to (J ≥ 60 % of best)"), units::angle, 1);
         return l;
     }();
     return layout;
@@ -490,14 +498,16 @@ KinematicChain PJoint::kinematicChain(const Pose &pose) const
     const Eigen::Vector2d o(0.0, 0.0), b(m_design.b, 0.0), a = b + crank, c = o + crank;
     enum { Ground, CrankBA, CrankOC, Coupler, Motor, Screw };
     KinematicChain chain;
-    chain.links = {"ground OB", "crank BA", "crank OC", "coupler CA", "motor body", "screw"};
+    chain.links = {text::translate("core", "ground OB"), text::translate("core", "crank BA"),
+                   text::translate("core", "crank OC"), text::translate("core", "coupler CA"),
+                   text::translate("core", "motor body"), text::translate("core", "screw")};
     chain.pairs = {mobility::planarRevolute("O", Ground, CrankOC, o), mobility::planarRevolute("B", Ground, CrankBA, b),
         mobility::planarRevolute("C", CrankOC, Coupler, c), mobility::planarRevolute("A", CrankBA, Coupler, a),
-        mobility::planarRevolute("O (motor)", Ground, Motor, o),
-        mobility::planarRevolute("A (screw)", CrankBA, Screw, a),
+        mobility::planarRevolute(text::translate("core", "O (motor)"), Ground, Motor, o),
+        mobility::planarRevolute(text::translate("core", "A (screw)"), CrankBA, Screw, a),
         mobility::planarPrismatic("d", Motor, Screw, o, a - o, true)};
-    chain.description
-        = "active П-joint: hinged parallelogram OBAC with the telescopic diagonal OA (motor body and screw)";
+    chain.description = text::translate("core", "active П-joint: hinged parallelogram OBAC with the telescopic "
+                                                "diagonal OA (motor body and screw)");
     return chain;
 }
 
@@ -529,19 +539,23 @@ Scene PJoint::scene(const Pose &pose) const
     const Eigen::Vector2d toO = (o - a).normalized(), toB = (b - a).normalized();
     const double muStart = std::atan2(toB.y(), toB.x());
     const double mu = signedAngle(toB, toO);
-    auto deg = [](double r) { return formatNumber(units::angle.toDisplay(r), 1) + "°"; };
-    s.angles = {{B, 0.5 * std::numbers::pi, -theta, arc, "θ = " + deg(theta)},
-                {O, 0.0, phi, 1.15 * arc, "φ = " + deg(phi)},
-                {A, muStart, mu, 0.8 * arc, "μ = " + deg(std::abs(mu))}};
+    auto deg = [](double r) { return text::number(units::angle.toDisplay(r), 1); };
+    s.angles = {{B, 0.5 * std::numbers::pi, -theta, arc, joinText({"θ = ", deg(theta), "°"})},
+                {O, 0.0, phi, 1.15 * arc, joinText({"φ = ", deg(phi), "°"})},
+                {A, muStart, mu, 0.8 * arc, joinText({"μ = ", deg(std::abs(mu)), "°"})}};
 
     const double d = pose.inputs[0];
     // O lies to the left of B→A for every |θ| < 90°: a negative offset keeps the a-dimension
     // outside the parallelogram.
     const double sideB = -1.0;
-    s.dimensions = {{O, B, -0.18 * p.a, "b = " + formatNumber(p.b, 1) + " mm"},
-                    {B, A, sideB * 0.16 * p.a, "a = " + formatNumber(p.a, 1) + " mm"},
-                    {O, A, 0.0, "d = " + formatNumber(d, 2) + " mm"}};
-    s.handles = {{A, "drag A to set θ"}, {C, "drag C to set θ"}};
+    // "b = 68 mm": the unit is the locale's ("мм")
+    auto length = [](const char *symbol, double value, int decimals) {
+        return joinText({symbol, " = ", text::format(text::translate("core", "%1 mm"), {text::number(value, decimals)})});
+    };
+    s.dimensions = {{O, B, -0.18 * p.a, length("b", p.b, 1)},
+                    {B, A, sideB * 0.16 * p.a, length("a", p.a, 1)},
+                    {O, A, 0.0, length("d", d, 2)}};
+    s.handles = {{A, text::translate("core", "drag A to set θ")}, {C, text::translate("core", "drag C to set θ")}};
 
     // Extent over the whole θ range so that fitting the view does not follow the motion.
     Eigen::AlignedBox3d box;
@@ -564,7 +578,8 @@ Result<Pose> PJoint::dragHandle(const Pose &, int handle, const Eigen::Vector2d 
     const Eigen::Vector2d pivot = handle == 0 ? Eigen::Vector2d(m_design.b, 0) : Eigen::Vector2d(0, 0);
     const Eigen::Vector2d r = target - pivot;
     if (r.norm() < 1e-9 * m_design.a)
-        return Failure{FailureKind::Unreachable, "theta", "The pointer is on the pivot: θ is undefined there."};
+        return Failure{FailureKind::Unreachable, "theta",
+                       text::translate("core", "The pointer is on the pivot: θ is undefined there.")};
     // Past a limit the joint stops at it; the caller sees the pose at the limit.
     const double theta = std::clamp(std::atan2(r.x(), r.y()), m_design.thetaMin, m_design.thetaMax);
     return solveInverse(Coordinates::Constant(1, theta));

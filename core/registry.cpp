@@ -5,17 +5,18 @@
 #include "moma.h"
 #include "oxglide.h"
 #include "pjoint.h"
+#include "text.h"
 
 namespace pkm {
 
 const std::vector<MechanismKind> &mechanismKinds()
 {
     static const std::vector<MechanismKind> kinds = {
-        {"pjoint", "Active П-joint", &PJoint::createFrom},
-        {"moma", "MOMA 2-axis parallel mechanism", &Moma::createFrom},
-        {"oxglide", "O-X glide hybrid mechanism", &OxGlide::createFrom},
-        {"fourbar", "Planar four-bar linkage", &FourBar::createFrom},
-        {"fivebar", "Planar five-bar linkage", &FiveBar::createFrom},
+        {"pjoint", QT_TRANSLATE_NOOP("core", "Active П-joint"), &PJoint::createFrom},
+        {"moma", QT_TRANSLATE_NOOP("core", "MOMA 2-axis parallel mechanism"), &Moma::createFrom},
+        {"oxglide", QT_TRANSLATE_NOOP("core", "O-X glide hybrid mechanism"), &OxGlide::createFrom},
+        {"fourbar", QT_TRANSLATE_NOOP("core", "Planar four-bar linkage"), &FourBar::createFrom},
+        {"fivebar", QT_TRANSLATE_NOOP("core", "Planar five-bar linkage"), &FiveBar::createFrom},
     };
     return kinds;
 }
@@ -33,7 +34,8 @@ Result<MechanismPtr> createMechanism(std::string_view id, const ParameterSet &pa
 {
     const MechanismKind *kind = findMechanismKind(id);
     if (!kind)
-        return Failure{FailureKind::UnknownName, std::string(id), "Unknown mechanism kind '" + std::string(id) + "'."};
+        return Failure{FailureKind::UnknownName, std::string(id),
+                       text::format(text::translate("core", "Unknown mechanism kind '%1'."), {id})};
     auto defaults = kind->create({});
     if (!defaults)
         return defaults.failure();
@@ -43,7 +45,8 @@ Result<MechanismPtr> createMechanism(std::string_view id, const ParameterSet &pa
             known = known || info.name == name;
         if (!known) {
             return Failure{FailureKind::UnknownName, name,
-                           "A " + std::string(kind->title) + " has no parameter named '" + name + "'."};
+                           text::format(text::translate("core", "A %1 has no parameter named '%2'."),
+                                        {text::label(kind->title), name})};
         }
     }
     return kind->create(parameters);

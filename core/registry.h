@@ -10,7 +10,7 @@ namespace pkm {
 
 struct MechanismKind {
     std::string_view id;    ///< "pjoint"
-    std::string_view title; ///< "Active П-joint"
+    std::string_view title; ///< "Active П-joint": English source, QT_TRANSLATE_NOOP("core", …)
     /// Builds a validated design from named values; missing ones take the kind's defaults,
     /// unknown names are refused.
     Result<MechanismPtr> (*create)(const ParameterSet &parameters);

@@ -21,7 +21,7 @@ enum class FailureKind {
 struct Failure {
     FailureKind kind = FailureKind::InvalidParameter;
     std::string culprit; ///< the parameter or variable name the message is about
-    std::string message; ///< one English sentence naming the culprit and the allowed values
+    std::string message; ///< one sentence naming the culprit and the allowed values (text::translate)
 };
 
 template <class T>

@@ -54,7 +54,7 @@ struct SceneAngle {
     double start = 0.0;
     double sweep = 0.0;
     double radius = 0.0; ///< preferred arc radius, mm
-    std::string label;   ///< "θ = 12.0°"
+    std::string label;   ///< "θ = 12.0°" (text::number: the locale's decimal point)
 };
 
 /// A dimension line between two joints, offset sideways by `offset` mm (positive: to the left
@@ -63,13 +63,13 @@ struct SceneDimension {
     int from = 0;
     int to = 0;
     double offset = 0.0;
-    std::string text;
+    std::string text; ///< "b = 68 mm", translated
 };
 
 /// A joint the user may drag; the mechanism's dragHandle() turns the target into a pose.
 struct SceneHandle {
     int joint = 0;
-    std::string hint; ///< what dragging does ("drag to set θ")
+    std::string hint; ///< what dragging does ("drag to set θ"), translated
 };
 
 /// A polyline in the mechanism plane (a coupler curve, a trajectory), drawn thin; `closed`

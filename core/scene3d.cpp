@@ -1,5 +1,7 @@
 #include "scene3d.h"
 
+#include "text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -127,13 +129,16 @@ int guideOf(const Scene &scene, const SceneJoint &joint)
     return found;
 }
 
-std::string named(const char *what, const std::string &label)
-{
-    std::string name(what);
-    if (!label.empty())
-        name.append(" ").append(label);
-    return name;
-}
+/// The name of a kind of part, translated once per model: alone ("link") and with the scene
+/// label it carries ("link a").
+struct PartName {
+    std::string bare;
+    std::string pattern; ///< "link %1"
+    std::string operator()(const std::string &label) const
+    {
+        return label.empty() ? bare : text::format(pattern, {label});
+    }
+};
 
 } // namespace
 
@@ -153,6 +158,16 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
     const std::vector<int> layers = barLayers(scene, layerCount);
     const Layout layout(t, layerCount);
 
+    const PartName linkName{text::translate("core", "link"), text::translate("core", "link %1")};
+    const PartName motorName{text::translate("core", "motor"), text::translate("core", "motor %1")};
+    const PartName screwName{text::translate("core", "screw"), text::translate("core", "screw %1")};
+    const PartName guideName{text::translate("core", "guide"), text::translate("core", "guide %1")};
+    const PartName endStopName{text::translate("core", "end stop"), text::translate("core", "end stop %1")};
+    const PartName sliderName{text::translate("core", "slider"), text::translate("core", "slider %1")};
+    const PartName supportName{text::translate("core", "support"), text::translate("core", "support %1")};
+    const PartName pointName{text::translate("core", "point"), text::translate("core", "point %1")};
+    const PartName jointName{text::translate("core", "joint"), text::translate("core", "joint %1")};
+
     Scene3D model;
     std::vector<Solid> &solids = model.solids;
     solids.reserve(3 * scene.bars.size() + 3 * scene.actuators.size() + 4 * scene.guides.size() + 4 * n);
@@ -171,10 +186,10 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
         const Eigen::Vector3d p = at(bar.from, z), q = at(bar.to, z);
         const std::size_t first = solids.size();
         if ((q - p).norm() > 1e-9 * t)
-            solids.push_back(Solid::box(p, q, t, layout.barHeight, zAxis, role, named("link", bar.label)));
+            solids.push_back(Solid::box(p, q, t, layout.barHeight, zAxis, role, linkName(bar.label)));
         for (const Eigen::Vector3d &end : {p, q})
             solids.push_back(
-                Solid::cylinder(end - h * zAxis, end + h * zAxis, 0.5 * t, role, named("link", bar.label)));
+                Solid::cylinder(end - h * zAxis, end + h * zAxis, 0.5 * t, role, linkName(bar.label)));
         pins[std::size_t(bar.from)].add(z - h, z + h);
         pins[std::size_t(bar.to)].add(z - h, z + h);
         if (role == PartRole::Ground)
@@ -196,15 +211,15 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
         const double body = std::clamp(actuator.bodyLength, 0.0, distance);
         if (body > 0.0)
             solids.push_back(
-                Solid::box(p, p + body * u, width, width, zAxis, PartRole::Actuator, named("motor", actuator.label)));
+                Solid::box(p, p + body * u, width, width, zAxis, PartRole::Actuator, motorName(actuator.label)));
         if (body < distance) {
             // The bearing boss where the screw leaves an unclipped body.
             const double boss = std::min(0.12 * width, distance - body);
             if (body >= actuator.bodyLength && boss > 0.0)
                 solids.push_back(Solid::cylinder(p + body * u, p + (body + boss) * u,
-                    std::min(0.3 * width, 3.0 * screwRadius), PartRole::Screw, named("motor", actuator.label)));
+                    std::min(0.3 * width, 3.0 * screwRadius), PartRole::Screw, motorName(actuator.label)));
             solids.push_back(
-                Solid::cylinder(p + body * u, q, screwRadius, PartRole::Screw, named("screw", actuator.label)));
+                Solid::cylinder(p + body * u, q, screwRadius, PartRole::Screw, screwName(actuator.label)));
         }
         pins[std::size_t(actuator.from)].add(z, z);
         pins[std::size_t(actuator.to)].add(z, z);
@@ -234,10 +249,10 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
         const std::size_t first = solids.size();
         // The rail ends inside its stops, so no two faces meet in one plane.
         solids.push_back(Solid::box(a - 0.5 * stop * u, b + 0.5 * stop * u, width, layout.railHeight(), zAxis,
-            PartRole::Guide, named("guide", guide.label)));
+            PartRole::Guide, guideName(guide.label)));
         for (const Eigen::Vector3d &end : {Eigen::Vector3d(a - stop * u), Eigen::Vector3d(b)}) {
             solids.push_back(Solid::box(end, end + stop * u, width + 0.4 * t, layout.railHeight() + 0.2 * t, zAxis,
-                PartRole::Ground, named("end stop", guide.label)));
+                PartRole::Ground, endStopName(guide.label)));
         }
         fixedSolids.emplace_back(first, solids.size());
     }
@@ -260,7 +275,7 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
             const double across = guide ? std::max(1.3 * guide->width, guide->width + 0.4 * t) : 1.2 * t;
             const Eigen::Vector3d centre = at(jointIndex, layout.carriageZ());
             solids.push_back(Solid::box(centre - 0.5 * length * u, centre + 0.5 * length * u, across,
-                layout.carriageHeight(), zAxis, PartRole::Slider, named("slider", label)));
+                layout.carriageHeight(), zAxis, PartRole::Slider, sliderName(label)));
             span.add(layout.carriageZ(), layout.carriageZ());
             break;
         }
@@ -270,18 +285,18 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
             const Eigen::Vector3d top(p.x(), p.y() + 0.6 * t, p.z() + z), foot(p.x(), bottom, p.z() + z);
             fixedSolids.emplace_back(solids.size(), solids.size() + 2);
             solids.push_back(Solid::box(foot - 0.1 * t * Eigen::Vector3d::UnitY(), top, 1.4 * t, 0.6 * t, zAxis,
-                PartRole::Ground, named("support", label)));
+                PartRole::Ground, supportName(label)));
             const Eigen::Vector3d footCentre = foot - 0.3 * t * Eigen::Vector3d::UnitY();
             solids.push_back(Solid::box(footCentre - 1.3 * t * Eigen::Vector3d::UnitX(),
                 footCentre + 1.3 * t * Eigen::Vector3d::UnitX(), 0.4 * t, 1.4 * t, zAxis, PartRole::Ground,
-                named("support", label)));
+                supportName(label)));
             span.add(z, z);
             break;
         }
         case JointKind::Point: {
             // On a rail: half sunk into its front face; else in the plane of what it joins.
             const double z = jointGuide[j] >= 0 ? layout.railFront() : (span.empty() ? 0.0 : span.middle());
-            solids.push_back(Solid::sphere(at(jointIndex, z), 0.3 * t, PartRole::Marker, named("point", label)));
+            solids.push_back(Solid::sphere(at(jointIndex, z), 0.3 * t, PartRole::Marker, pointName(label)));
             continue;
         }
         case JointKind::Spherical: {
@@ -289,8 +304,8 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
             const double radius = 0.55 * t;
             if (!span.empty() && span.high - span.low > 2.0 * radius)
                 solids.push_back(Solid::cylinder(at(jointIndex, span.low - layout.overhang),
-                    at(jointIndex, span.high + layout.overhang), 0.3 * t, PartRole::Joint, named("joint", label)));
-            solids.push_back(Solid::sphere(at(jointIndex, z), radius, PartRole::Joint, named("joint", label)));
+                    at(jointIndex, span.high + layout.overhang), 0.3 * t, PartRole::Joint, jointName(label)));
+            solids.push_back(Solid::sphere(at(jointIndex, z), radius, PartRole::Joint, jointName(label)));
             continue;
         }
         case JointKind::Revolute:
@@ -299,7 +314,7 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
         if (span.empty())
             span.add(-0.5 * layout.barHeight, 0.5 * layout.barHeight);
         solids.push_back(Solid::cylinder(at(jointIndex, span.low - layout.overhang),
-            at(jointIndex, span.high + layout.overhang), 0.45 * t, PartRole::Joint, named("joint", label)));
+            at(jointIndex, span.high + layout.overhang), 0.45 * t, PartRole::Joint, jointName(label)));
     }
 
     // The 2D extent thickened in z, and grown to hold the fixed parts and the stack of layers

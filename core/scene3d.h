@@ -44,7 +44,7 @@ struct Solid {
     Eigen::Vector2d section = Eigen::Vector2d(1.0, 1.0);
     Eigen::Vector3d up = Eigen::Vector3d::UnitY();
     PartRole role = PartRole::Link;
-    std::string label; ///< what it is ("guide C", "rod A"), for picking and tooltips
+    std::string label; ///< what it is ("guide C", "rod A"), translated, for picking and tooltips
 
     static Solid box(const Eigen::Vector3d &from, const Eigen::Vector3d &to, double width, double height,
                      const Eigen::Vector3d &up, PartRole role, std::string label = {})

@@ -3,6 +3,8 @@
 /// newton-metres, times seconds. A Unit says how a core value is shown to a person (UI, CLI):
 /// display = core × scale. Only angle-bearing units have a scale other than 1.
 
+#include "text.h"
+
 #include <numbers>
 #include <string_view>
 
@@ -20,21 +22,21 @@ namespace units {
 inline constexpr double degree = std::numbers::pi / 180.0; ///< radians per degree
 
 inline constexpr Unit none{"", 1.0};
-inline constexpr Unit millimetre{"mm", 1.0};
-inline constexpr Unit squareMillimetre{"mm²", 1.0};
+inline constexpr Unit millimetre{QT_TRANSLATE_NOOP("core", "mm"), 1.0};
+inline constexpr Unit squareMillimetre{QT_TRANSLATE_NOOP("core", "mm²"), 1.0};
 inline constexpr Unit angle{"°", 180.0 / std::numbers::pi};             ///< core: rad
-inline constexpr Unit newton{"N", 1.0};
-inline constexpr Unit newtonMetre{"N·m", 1.0};
-inline constexpr Unit millimetrePerSecond{"mm/s", 1.0};
-inline constexpr Unit radianPerSecond{"rad/s", 1.0};
-inline constexpr Unit millimetrePerRadian{"mm/rad", 1.0};
-inline constexpr Unit millimetrePerRadian2{"mm/rad²", 1.0};
-inline constexpr Unit squareMillimetrePerRadian{"mm²/rad", 1.0};
-inline constexpr Unit radianPerMillimetre{"rad/mm", 1.0};
-inline constexpr Unit millimetrePerRevolution{"mm/rev", 1.0};
-inline constexpr Unit millimetrePerStep{"mm/step", 1.0};
-inline constexpr Unit anglePerStep{"°/step", 180.0 / std::numbers::pi}; ///< core: rad/step
-inline constexpr Unit newtonMetrePerRadian{"N·m/rad", 1.0};
+inline constexpr Unit newton{QT_TRANSLATE_NOOP("core", "N"), 1.0};
+inline constexpr Unit newtonMetre{QT_TRANSLATE_NOOP("core", "N·m"), 1.0};
+inline constexpr Unit millimetrePerSecond{QT_TRANSLATE_NOOP("core", "mm/s"), 1.0};
+inline constexpr Unit radianPerSecond{QT_TRANSLATE_NOOP("core", "rad/s"), 1.0};
+inline constexpr Unit millimetrePerRadian{QT_TRANSLATE_NOOP("core", "mm/rad"), 1.0};
+inline constexpr Unit millimetrePerRadian2{QT_TRANSLATE_NOOP("core", "mm/rad²"), 1.0};
+inline constexpr Unit squareMillimetrePerRadian{QT_TRANSLATE_NOOP("core", "mm²/rad"), 1.0};
+inline constexpr Unit radianPerMillimetre{QT_TRANSLATE_NOOP("core", "rad/mm"), 1.0};
+inline constexpr Unit millimetrePerRevolution{QT_TRANSLATE_NOOP("core", "mm/rev"), 1.0};
+inline constexpr Unit millimetrePerStep{QT_TRANSLATE_NOOP("core", "mm/step"), 1.0};
+inline constexpr Unit anglePerStep{QT_TRANSLATE_NOOP("core", "°/step"), 180.0 / std::numbers::pi}; ///< core: rad/step
+inline constexpr Unit newtonMetrePerRadian{QT_TRANSLATE_NOOP("core", "N·m/rad"), 1.0};
 } // namespace units
 
 } // namespace pkm

@@ -12,6 +12,8 @@
 #include <QWheelEvent>
 
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace pkm {
 
@@ -28,15 +30,56 @@ QString groupTitle(ParameterGroup group)
     return {};
 }
 
+/// A parameter's value as its field shows it: enough decimals to show the stored value,
+/// trailing zeros dropped, in the locale's form.
+QString valueText(const ParameterInfo &info, const ParameterSet &values)
+{
+    const double display = info.unit.toDisplay(values.at(info.name));
+    QString text = QLocale().toString(display, 'f', info.decimals + 2);
+    const QChar point = QLocale().decimalPoint().at(0);
+    if (text.contains(point)) {
+        while (text.endsWith(QLatin1Char('0')))
+            text.chop(1);
+        if (text.endsWith(point))
+            text.chop(1);
+    }
+    return text;
+}
+
+const ParameterInfo *parameterNamed(const MechanismPtr &mechanism, const QString &name)
+{
+    if (!mechanism)
+        return nullptr;
+    for (const ParameterInfo &info : mechanism->parameterInfo()) {
+        if (toQString(info.name) == name)
+            return &info;
+    }
+    return nullptr;
+}
+
+QString notNumberMessage(const QString &name, const QString &label, const QString &text)
+{
+    return DesignPanel::tr("%1 (%2): '%3' is not a number.").arg(name, label, text);
+}
+
 const char *nameProperty = "pkmParameter";
 const char *helpProperty = "pkmHelp"; ///< the field's tooltip while it is valid
 } // namespace
 
 bool parseNumber(const QString &text, const QString &unitSymbol, double *value)
 {
+    return parseNumber(text, QStringList {unitSymbol}, value);
+}
+
+bool parseNumber(const QString &text, const QStringList &unitSymbols, double *value)
+{
     QString t = text.trimmed();
-    if (!unitSymbol.isEmpty() && t.endsWith(unitSymbol))
-        t = t.left(t.size() - unitSymbol.size()).trimmed();
+    for (const QString &unitSymbol : unitSymbols) {
+        if (!unitSymbol.isEmpty() && t.endsWith(unitSymbol)) {
+            t = t.left(t.size() - unitSymbol.size()).trimmed();
+            break;
+        }
+    }
     t.replace(QChar(0x2212), QLatin1Char('-')); // typographic minus
     bool ok = false;
     double v = QLocale().toDouble(t, &ok);
@@ -133,8 +176,12 @@ void DesignPanel::rebuild()
         delete item;
     }
     m_fields.clear();
+    m_rows.clear();
+    m_boxes.clear();
     QHash<int, QFormLayout *> forms;
-    for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
+    const std::vector<ParameterInfo> &infos = m_mechanism->parameterInfo();
+    for (int i = 0; i < static_cast<int>(infos.size()); ++i) {
+        const ParameterInfo &info = infos[std::size_t(i)];
         const int group = static_cast<int>(info.group);
         if (!forms.contains(group)) {
             auto *box = new QGroupBox(groupTitle(info.group), this);
@@ -142,40 +189,84 @@ void DesignPanel::rebuild()
             form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
             m_groups->addWidget(box);
             forms.insert(group, form);
+            m_boxes.insert(group, box);
         }
         const QString name = toQString(info.name);
-        auto *row = new QWidget;
-        auto *rowLayout = new QHBoxLayout(row);
+        auto *rowWidget = new QWidget;
+        auto *rowLayout = new QHBoxLayout(rowWidget);
         rowLayout->setContentsMargins(0, 0, 0, 0);
-        auto *edit = new QLineEdit(row);
-        edit->setObjectName(QStringLiteral("parameter_") + name);
-        edit->setProperty(nameProperty, name);
-        edit->setAlignment(Qt::AlignRight);
-        edit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0000.00000")));
-        edit->installEventFilter(this);
-        const QString unit = unitText(info.unit);
-        QString range = info.domain.max == std::numeric_limits<double>::infinity()
-                          ? tr("greater than %1").arg(QLocale().toString(info.unit.toDisplay(info.domain.min)))
-                          : tr("between %1 and %2")
-                                .arg(QLocale().toString(info.unit.toDisplay(info.domain.min)),
-                                     QLocale().toString(info.unit.toDisplay(info.domain.max)));
-        edit->setToolTip(tr("%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.")
-                             .arg(toQString(info.label), name, range, unit)
-                             .arg(QLocale().toString(info.displayStep)));
-        connect(edit, &QLineEdit::editingFinished, this, [this, name] { commit(name, false); });
-        rowLayout->addWidget(edit, 1);
-        auto *unitLabel = new QLabel(unit, row);
-        unitLabel->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")));
-        rowLayout->addWidget(unitLabel);
-        auto *label = new QLabel(QStringLiteral("<b>%1</b>&nbsp; %2").arg(toQString(info.symbol).toHtmlEscaped(),
-                                                                      toQString(info.label).toHtmlEscaped()));
-        label->setWordWrap(true); // long labels wrap rather than push the fields out of the dock
-        label->setBuddy(edit);
-        label->setToolTip(edit->toolTip());
-        edit->setProperty(helpProperty, edit->toolTip());
-        forms.value(group)->addRow(label, row);
-        m_fields.insert(name, edit);
+        Row row;
+        row.parameter = i;
+        row.edit = new QLineEdit(rowWidget);
+        row.edit->setObjectName(QStringLiteral("parameter_") + name);
+        row.edit->setProperty(nameProperty, name);
+        row.edit->setAlignment(Qt::AlignRight);
+        row.edit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0000.00000")));
+        row.edit->installEventFilter(this);
+        connect(row.edit, &QLineEdit::editingFinished, this, [this, name] { commit(name, false); });
+        rowLayout->addWidget(row.edit, 1);
+        row.unit = new QLabel(rowWidget);
+        row.unit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")));
+        rowLayout->addWidget(row.unit);
+        row.label = new QLabel;
+        row.label->setWordWrap(true); // long labels wrap rather than push the fields out of the dock
+        row.label->setBuddy(row.edit);
+        describe(row);
+        forms.value(group)->addRow(row.label, rowWidget);
+        m_fields.insert(name, row.edit);
+        m_rows.append(row);
     }
+}
+
+void DesignPanel::describe(const Row &row)
+{
+    const ParameterInfo &info = m_mechanism->parameterInfo()[std::size_t(row.parameter)];
+    const QString name = toQString(info.name);
+    const QString label = coreLabel(info.label);
+    const QString unit = unitText(info.unit);
+    const QString range = info.domain.max == std::numeric_limits<double>::infinity()
+                            ? tr("greater than %1").arg(QLocale().toString(info.unit.toDisplay(info.domain.min)))
+                            : tr("between %1 and %2")
+                                  .arg(QLocale().toString(info.unit.toDisplay(info.domain.min)),
+                                       QLocale().toString(info.unit.toDisplay(info.domain.max)));
+    const QString help = tr("%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.")
+                             .arg(label, name, range, unit)
+                             .arg(QLocale().toString(info.displayStep));
+    row.edit->setProperty(helpProperty, help);
+    if (row.edit->styleSheet().isEmpty()) // an invalid field's tooltip says why
+        row.edit->setToolTip(help);
+    row.unit->setText(unit);
+    // A symbol is the same in every language, unless it is a word ("form"), which core marks.
+    row.label->setText(
+        QStringLiteral("<b>%1</b>&nbsp; %2").arg(coreLabel(info.symbol).toHtmlEscaped(), label.toHtmlEscaped()));
+    row.label->setToolTip(help);
+}
+
+void DesignPanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void DesignPanel::retranslate()
+{
+    showNote();
+    if (!m_mechanism)
+        return;
+    for (auto it = m_boxes.cbegin(); it != m_boxes.cend(); ++it)
+        it.value()->setTitle(groupTitle(static_cast<ParameterGroup>(it.key())));
+    const ParameterSet values = m_mechanism->parameters();
+    for (const Row &row : std::as_const(m_rows)) {
+        describe(row);
+        // The value in the new locale's form, unless the field holds what the user typed.
+        const bool typing = row.edit->hasFocus() && row.edit->isModified();
+        if (row.edit->styleSheet().isEmpty() && !typing)
+            row.edit->setText(valueText(m_mechanism->parameterInfo()[std::size_t(row.parameter)], values));
+    }
+    showWarnings();
+    if (!m_message->isHidden())
+        showMessage();
 }
 
 void DesignPanel::showValues()
@@ -185,20 +276,19 @@ void DesignPanel::showValues()
         QLineEdit *edit = m_fields.value(toQString(info.name));
         if (!edit)
             continue;
-        const double display = info.unit.toDisplay(values.at(info.name));
-        // Enough decimals to show the stored value, trailing zeros dropped.
-        QString text = QLocale().toString(display, 'f', info.decimals + 2);
-        const QChar point = QLocale().decimalPoint().at(0);
-        if (text.contains(point)) {
-            while (text.endsWith(QLatin1Char('0')))
-                text.chop(1);
-            if (text.endsWith(point))
-                text.chop(1);
-        }
-        edit->setText(text);
+        edit->setText(valueText(info, values));
         setMark(edit, false);
     }
     m_message->hide();
+    m_messageReason.clear();
+    m_notNumberField.clear();
+    m_notNumberText.clear();
+    showWarnings();
+}
+
+void DesignPanel::showWarnings()
+{
+    // Core says them in the language of the moment (text::translate).
     QStringList warnings;
     for (const std::string &w : m_mechanism->designWarnings())
         warnings << QString::fromStdString(w);
@@ -212,7 +302,23 @@ void DesignPanel::markInvalid(const QString &name, const QString &message)
         setMark(edit, true);
         edit->setToolTip(message);
     }
-    m_message->setText(message + QLatin1Char(' ') + tr("The last valid design is kept."));
+    m_messageReason = message;
+    m_notNumberField.clear();
+    m_notNumberText.clear();
+    showMessage();
+}
+
+void DesignPanel::showMessage()
+{
+    QString reason = m_messageReason;
+    if (!m_notNumberField.isEmpty()) {
+        // Said here, so it can be said again in another language.
+        const ParameterInfo *info = parameterNamed(m_mechanism, m_notNumberField);
+        reason = notNumberMessage(m_notNumberField, info ? coreLabel(info->label) : QString(), m_notNumberText);
+        if (QLineEdit *edit = m_fields.value(m_notNumberField); edit && !edit->styleSheet().isEmpty())
+            edit->setToolTip(reason);
+    }
+    m_message->setText(reason + QLatin1Char(' ') + tr("The last valid design is kept."));
     m_message->show();
 }
 
@@ -244,8 +350,12 @@ void DesignPanel::commit(const QString &name, bool continuous)
             if (edit->text().trimmed().compare(toQString(choice), Qt::CaseInsensitive) == 0)
                 edit->setText(QLocale().toString(number));
         }
-        if (!parseNumber(edit->text(), unitText(info.unit), &value)) {
-            markInvalid(name, tr("%1 (%2): '%3' is not a number.").arg(name, toQString(info.label), edit->text()));
+        // the unit as shown ("мм") or its English symbol ("mm")
+        if (!parseNumber(edit->text(), QStringList {unitText(info.unit), toQString(info.unit.symbol)}, &value)) {
+            const QString text = edit->text();
+            markInvalid(name, notNumberMessage(name, coreLabel(info.label), text));
+            m_notNumberField = name;
+            m_notNumberText = text;
             return;
         }
         // An unchanged field (focus left without an edit) is not an edit.

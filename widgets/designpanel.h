@@ -6,8 +6,11 @@
 #include "mechanism.h"
 
 #include <QHash>
+#include <QStringList>
+#include <QVector>
 #include <QWidget>
 
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QVBoxLayout;
@@ -39,9 +42,25 @@ signals:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    void changeEvent(QEvent *event) override;
 
 private:
+    /// One field: its parameter (index into parameterInfo()) and the widgets that show it.
+    struct Row {
+        int parameter = 0;
+        QLabel *label = nullptr;
+        QLineEdit *edit = nullptr;
+        QLabel *unit = nullptr;
+    };
     void rebuild();
+    /// Sets every text again in the current language: group titles, labels, units, tooltips,
+    /// the values in the locale's form (a field being typed into or marked invalid keeps its
+    /// text), the warnings, the note's link and the message.
+    void retranslate();
+    /// The label, unit and tooltip of one field.
+    void describe(const Row &row);
+    void showWarnings();
+    void showMessage();
     void commit(const QString &name, bool continuous);
     void step(const QString &name, int steps);
     void showValues();
@@ -51,7 +70,15 @@ private:
     MechanismPtr m_mechanism;
     QVBoxLayout *m_groups = nullptr;
     QHash<QString, QLineEdit *> m_fields;
+    QVector<Row> m_rows;
+    QHash<int, QGroupBox *> m_boxes; ///< by ParameterGroup
     QLabel *m_message = nullptr;
+    /// What the message says, without "The last valid design is kept.": the document's reason
+    /// (kept as given) or, for a field that is not a number, that field (said again in the
+    /// current language).
+    QString m_messageReason;
+    QString m_notNumberField;
+    QString m_notNumberText;
     QLabel *m_note = nullptr;
     QString m_noteTitle;
     QString m_noteText;
@@ -62,5 +89,8 @@ private:
 /// Parses a number typed by a person: the locale's form or the C form ("0,4" and "0.4" in a
 /// comma locale), with an optional trailing unit symbol. Returns false for anything else.
 bool parseNumber(const QString &text, const QString &unitSymbol, double *value);
+/// The same with any one of several unit symbols (the translated one and the English one:
+/// "12 мм" and "12 mm").
+bool parseNumber(const QString &text, const QStringList &unitSymbols, double *value);
 
 } // namespace pkm

@@ -2,7 +2,9 @@
 
 #include "plotfont.h"
 #include "plotticker.h"
+#include "quantityformat.h"
 
+#include <QEvent>
 #include <QLocale>
 #include <QMouseEvent>
 #include <QVBoxLayout>
@@ -22,7 +24,7 @@ constexpr double tickPoints = 11, labelPoints = 12, titlePoints = 13, legendPoin
 
 QString areaText(double area)
 {
-    return QLocale().toString(area, 'f', 1) + QStringLiteral(" mm²");
+    return QLocale().toString(area, 'f', 1) + QLatin1Char(' ') + unitText(units::squareMillimetre);
 }
 
 QCPCurve *addCurve(QCustomPlot *plot, const QPen &pen)
@@ -35,14 +37,14 @@ QCPCurve *addCurve(QCustomPlot *plot, const QPen &pen)
 }
 
 /// A legend entry with a filled swatch and no data.
-void addSwatch(QCustomPlot *plot, const QColor &fill, const QString &name)
+QCPGraph *addSwatch(QCustomPlot *plot, const QColor &fill)
 {
     QCPGraph *graph = plot->addGraph();
     graph->setPen(QPen(fill.darker(130), 1.0));
     graph->setBrush(fill);
-    graph->setName(name);
     graph->setSelectable(QCP::stNone);
     graph->setProperty("swatch", true);
+    return graph;
 }
 } // namespace
 
@@ -94,8 +96,6 @@ FormWorkspaceView::FormWorkspaceView(QWidget *parent)
         axis->setTickLabels(false);
         axis->grid()->setVisible(false);
     }
-    plot->xAxis->setLabel(tr("x (mm)"));
-    plot->yAxis->setLabel(tr("y (mm)"));
 
     m_regions = new QCPItemPixmap(plot);
     m_regions->setScaled(true, Qt::IgnoreAspectRatio, Qt::FastTransformation);
@@ -119,6 +119,7 @@ FormWorkspaceView::FormWorkspaceView(QWidget *parent)
     connect(plot, &QCustomPlot::afterLayout, this, &FormWorkspaceView::fitView);
     connect(plot, &QCustomPlot::mousePress, this, [this](QMouseEvent *event) { m_pressPosition = event->position().toPoint(); });
     connect(plot, &QCustomPlot::mouseRelease, this, &FormWorkspaceView::mouseReleased);
+    retranslate();
 }
 
 void FormWorkspaceView::setForms(const QString &title, const std::vector<FormRegion> &forms,
@@ -132,7 +133,13 @@ void FormWorkspaceView::setForms(const QString &title, const std::vector<FormReg
     m_areas.clear();
     m_unionArea = 0.0;
     m_plot->clearGraphs();
+    m_swatches.clear();
+    m_formTitles.clear();
+    m_shownAreas.clear();
+    m_unionShown = 0.0;
+    m_exactAreas = false;
     if (m_bounds.isEmpty()) {
+        retranslate();
         m_plot->replot();
         return;
     }
@@ -192,17 +199,18 @@ void FormWorkspaceView::setForms(const QString &title, const std::vector<FormReg
     m_singularHalo->data()->set(curves, true);
 
     for (std::size_t i = 0; i < forms.size(); ++i) {
-        const double area = forms[i].exactArea > 0 ? forms[i].exactArea : m_areas[i];
-        addSwatch(m_plot, forms[i].fill, tr("%1: %2").arg(forms[i].title, areaText(area)));
+        m_swatches.push_back(addSwatch(m_plot, forms[i].fill));
+        m_formTitles.push_back(forms[i].title);
+        m_shownAreas.push_back(forms[i].exactArea > 0 ? forms[i].exactArea : m_areas[i]);
     }
-    const bool exact = std::all_of(forms.begin(), forms.end(), [](const FormRegion &f) { return f.exactArea > 0; });
+    m_exactAreas = std::all_of(forms.begin(), forms.end(), [](const FormRegion &f) { return f.exactArea > 0; });
     // Nested forms (the O-X glide's O inside X): the union is the larger form, exactly.
     double unionShown = m_unionArea;
     for (std::size_t i = 0; i < forms.size(); ++i) {
         if (forms[i].exactArea > 0 && std::abs(m_areas[i] - m_unionArea) < 0.5 * m_grid.cellArea())
             unionShown = forms[i].exactArea;
     }
-    m_outline->setName(tr("union, outlined: %1").arg(areaText(unionShown)));
+    m_unionShown = unionShown;
     m_outline->addToLegend();
     m_singular->setName(singularLabel);
     m_singular->setVisible(!curves.isEmpty());
@@ -210,10 +218,7 @@ void FormWorkspaceView::setForms(const QString &title, const std::vector<FormReg
         m_singular->addToLegend();
     else
         m_singular->removeFromLegend();
-    m_plot->setToolTip(exact ? tr("Areas of the forms: exact (closed form). Union: counted on a %1 × %2 grid.")
-                                   .arg(m_grid.columns)
-                                   .arg(m_grid.rows)
-                             : tr("Areas counted on a %1 × %2 grid.").arg(m_grid.columns).arg(m_grid.rows));
+    retranslate();
     fitView();
     m_plot->replot();
 }
@@ -284,6 +289,31 @@ void FormWorkspaceView::mouseReleased(QMouseEvent *event)
         || !m_plot->axisRect()->rect().contains(position))
         return;
     emit pointClicked(Eigen::Vector2d(m_plot->xAxis->pixelToCoord(position.x()), m_plot->yAxis->pixelToCoord(position.y())));
+}
+
+void FormWorkspaceView::retranslate()
+{
+    m_plot->xAxis->setLabel(tr("x (mm)"));
+    m_plot->yAxis->setLabel(tr("y (mm)"));
+    for (std::size_t i = 0; i < m_swatches.size(); ++i)
+        m_swatches[i]->setName(tr("%1: %2").arg(m_formTitles[i], areaText(m_shownAreas[i])));
+    if (m_swatches.empty())
+        return;
+    m_outline->setName(tr("union, outlined: %1").arg(areaText(m_unionShown)));
+    const QLocale locale;
+    const QString columns = locale.toString(m_grid.columns), rows = locale.toString(m_grid.rows);
+    m_plot->setToolTip(m_exactAreas
+            ? tr("Areas of the forms: exact (closed form). Union: counted on a %1 × %2 grid.").arg(columns, rows)
+            : tr("Areas counted on a %1 × %2 grid.").arg(columns, rows));
+}
+
+void FormWorkspaceView::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+    QWidget::changeEvent(event);
 }
 
 bool FormWorkspaceView::eventFilter(QObject *watched, QEvent *event)

@@ -17,6 +17,7 @@
 
 class QCustomPlot;
 class QCPCurve;
+class QCPGraph;
 class QCPItemPixmap;
 class QCPItemTracer;
 class QCPTextElement;
@@ -57,9 +58,13 @@ signals:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    /// On a change of language: the axes, the legend's own words and the tooltip again (the
+    /// titles given to setForms() are the caller's to translate: it calls setForms() again).
+    void changeEvent(QEvent *event) override;
 
 private:
     void fitView();
+    void retranslate();
     void mouseReleased(QMouseEvent *event);
 
     QCustomPlot *m_plot = nullptr;
@@ -73,6 +78,12 @@ private:
     std::vector<std::vector<char>> m_reached; ///< per form, per cell (row-major from the bottom)
     std::vector<double> m_areas;
     double m_unionArea = 0.0;
+    // what the legend and the tooltip are made of, to make them again in another language
+    std::vector<QCPGraph *> m_swatches; ///< one per form, in order
+    std::vector<QString> m_formTitles;
+    std::vector<double> m_shownAreas; ///< exact where known, else on the grid, mm²
+    double m_unionShown = 0.0;        ///< mm²
+    bool m_exactAreas = false;
     Eigen::AlignedBox2d m_bounds;
     QPoint m_pressPosition;
 };

@@ -149,14 +149,42 @@ FourBarPlots::FourBarPlots(QWidget *parent)
             column->addWidget(plot);
         return widget;
     };
-    m_tabs->addTab(page({m_panels[DeltaPlot].plot}), tr("δ(α) — fig. 4"));
-    m_tabs->addTab(page({m_panels[Omega3Plot].plot, m_panels[Epsilon3Plot].plot}), tr("ω₃, ε₃ — fig. 6"));
-    m_tabs->addTab(page({m_panels[GammaPlot].plot}), tr("γ(α)"));
-    m_tabs->addTab(page({m_panels[SweepPlot].plot}), tr("δ vs AB — fig. 5"));
+    m_tabs->addTab(page({m_panels[DeltaPlot].plot}), QString());
+    m_tabs->addTab(page({m_panels[Omega3Plot].plot, m_panels[Epsilon3Plot].plot}), QString());
+    m_tabs->addTab(page({m_panels[GammaPlot].plot}), QString());
+    m_tabs->addTab(page({m_panels[SweepPlot].plot}), QString());
+    retranslate();
+}
+
+void FourBarPlots::retranslate()
+{
+    m_tabs->setTabText(0, tr("δ(α) — fig. 4"));
+    m_tabs->setTabText(1, tr("ω₃, ε₃ — fig. 6"));
+    m_tabs->setTabText(2, QStringLiteral("γ(α)")); // symbols only
+    m_tabs->setTabText(3, tr("δ vs AB — fig. 5"));
     m_tabs->setTabToolTip(0, tr("The rocker angle δ over the crank's range (click to set α)"));
     m_tabs->setTabToolTip(1, tr("The rocker's angular velocity and acceleration at constant ω₁ (click to set α)"));
     m_tabs->setTabToolTip(2, tr("The transmission angle at C; shaded where the crank drives the rocker poorly"));
     m_tabs->setTabToolTip(3, tr("δ at the current α as the crank length AB changes, the other links fixed"));
+    for (int i = 0; i < PlotCount; ++i) {
+        if (i != SweepPlot)
+            m_panels[i].plot->setToolTip(tr("Click or drag to set the crank angle α"));
+    }
+    if (!m_mechanism)
+        return;
+    retitle();
+    for (int i = 0; i < PlotCount; ++i) {
+        placeCursor(i);
+        m_panels[i].needsReplot = true;
+        refresh(i);
+    }
+}
+
+void FourBarPlots::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
 }
 
 FourBarPlots::~FourBarPlots() = default;
@@ -200,6 +228,7 @@ void FourBarPlots::createPanel(int index)
     }
 
     p.curve = plot->addGraph();
+    p.curve->setName(QString()); // not QCustomPlot's "Graph 1": retitle() names it
     p.curve->setPen(QPen(QColor(designRgb), 2.5));
     p.curve->setSelectable(QCP::stNone);
 
@@ -222,6 +251,7 @@ void FourBarPlots::createPanel(int index)
     }
     if (index == SweepPlot) {
         m_largestCrankLine = plot->addGraph();
+        m_largestCrankLine->setName(QString());
         m_largestCrankLine->setPen(QPen(QColor(limitRgb), 2.0, Qt::DashLine));
         m_largestCrankLine->setSelectable(QCP::stNone);
     }
@@ -251,8 +281,7 @@ void FourBarPlots::createPanel(int index)
                 request(event);
         });
         connect(plot, &QCustomPlot::mouseRelease, this, [this](QMouseEvent *) { m_pressed = false; });
-        plot->setCursor(Qt::CrossCursor);
-        plot->setToolTip(tr("Click or drag to set the crank angle α"));
+        plot->setCursor(Qt::CrossCursor); // its tooltip: retranslate()
     }
 }
 
@@ -443,7 +472,7 @@ void FourBarPlots::retitle()
     const QString links = tr("AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 branch")
                               .arg(locale.toString(d.crank, 'g', 6), locale.toString(d.coupler, 'g', 6),
                                   locale.toString(d.rocker, 'g', 6), locale.toString(d.ground, 'g', 6),
-                                  d.branch == fourbar::crossed ? tr("crossed") : tr("open"));
+                                  d.branch == fourbar::crossed ? tr("crossed", "branch") : tr("open", "branch"));
     const QString omega = number(d.omega1, 2);
     const QString alpha = number(m_sweepAlpha / units::degree, 1);
     const std::array<QString, PlotCount> titles {
@@ -461,7 +490,7 @@ void FourBarPlots::retitle()
         tr("at α = %1°; BC, CD, AD fixed").arg(alpha),
     };
     const std::array<QString, PlotCount> yLabels {
-        tr("δ (°)"), tr("ω₃ (rad/s)"), tr("ε₃ (rad/s²)"), tr("γ (°)"), tr("δ (°)")};
+        QStringLiteral("δ (°)"), tr("ω₃ (rad/s)"), tr("ε₃ (rad/s²)"), QStringLiteral("γ (°)"), QStringLiteral("δ (°)")};
     for (int i = 0; i < PlotCount; ++i) {
         Panel &p = m_panels[i];
         p.title->setText(titles[std::size_t(i)]);
@@ -469,16 +498,20 @@ void FourBarPlots::retitle()
         p.plot->xAxis->setLabel(i == SweepPlot ? tr("crank length AB (mm)") : tr("crank angle α (°)"));
         p.plot->yAxis->setLabel(yLabels[std::size_t(i)]);
     }
-    m_panels[GammaPlot].curve->setName(tr("γ(α)"));
+    // symbols, the same in every language (only γ and δ are in a legend)
+    m_panels[DeltaPlot].curve->setName(QStringLiteral("δ(α)"));
+    m_panels[Omega3Plot].curve->setName(QStringLiteral("ω₃(α)"));
+    m_panels[Epsilon3Plot].curve->setName(QStringLiteral("ε₃(α)"));
+    m_panels[GammaPlot].curve->setName(QStringLiteral("γ(α)"));
     m_poorSwatch->setName(tr("poor transmission: |γ| < %1° or > %2°")
-                              .arg(FourBar::poorTransmission)
-                              .arg(180.0 - FourBar::poorTransmission));
+                              .arg(number(FourBar::poorTransmission, 0), number(180.0 - FourBar::poorTransmission, 0)));
     m_panels[SweepPlot].curve->setName(tr("δ at α = %1°").arg(alpha));
     if (std::isfinite(m_largestCrank)) {
         m_largestCrankLine->setName(
             tr("largest AB that assembles: %1 mm").arg(locale.toString(m_largestCrank, 'f', 1)));
         m_largestCrankLine->addToLegend();
     } else {
+        m_largestCrankLine->setName(QString());
         m_largestCrankLine->removeFromLegend();
     }
 }
@@ -505,7 +538,7 @@ void FourBarPlots::placeCursor(int index)
     QString text;
     switch (index) {
     case DeltaPlot:
-        text = tr("δ = %1°").arg(number(value, 1));
+        text = QStringLiteral("δ = %1°").arg(number(value, 1));
         break;
     case Omega3Plot:
         text = tr("ω₃ = %1 rad/s").arg(number(value, 2));
@@ -514,7 +547,7 @@ void FourBarPlots::placeCursor(int index)
         text = tr("ε₃ = %1 rad/s²").arg(number(value, 1));
         break;
     case GammaPlot:
-        text = tr("γ = %1°").arg(number(value, 1));
+        text = QStringLiteral("γ = %1°").arg(number(value, 1));
         break;
     default:
         text = tr("AB = %1 mm, δ = %2°").arg(QLocale().toString(x, 'f', 1), number(value, 1));
@@ -524,7 +557,7 @@ void FourBarPlots::placeCursor(int index)
     const double gamma = fourbar::angles(m_design, alpha, delta).gamma;
     if (rate && (!finite || std::abs(std::sin(gamma)) < 1e-6)) {
         // at a dead point the crank cannot drive the rocker: the rate is unbounded
-        const QString symbol = index == Omega3Plot ? tr("ω₃") : tr("ε₃");
+        const QString symbol = index == Omega3Plot ? QStringLiteral("ω₃") : QStringLiteral("ε₃");
         text = tr("%1 → %2∞: dead point").arg(symbol, value < 0 ? QString(QChar(0x2212)) : QString());
     } else if (!finite) {
         text = tr("no pose");

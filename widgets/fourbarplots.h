@@ -80,6 +80,7 @@ signals:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    void changeEvent(QEvent *event) override;
 
 private:
     struct Panel {
@@ -100,6 +101,9 @@ private:
     void recomputeCurves();
     void recomputeSweep();
     void retitle();
+    /// Sets every text again in the current language (tabs, tooltips, titles, axes, legends,
+    /// cursor labels).
+    void retranslate();
     void placeCursor(int index);
     void refresh(int index);
     /// The value of plot `index` at α (display units) for the current design.

@@ -1,5 +1,7 @@
 #include "linkageview.h"
 
+#include "quantityformat.h"
+
 #include <QApplication>
 #include <QCursor>
 #include <QElapsedTimer>
@@ -399,6 +401,17 @@ void LinkageView::keyPressEvent(QKeyEvent *event)
     event->accept();
 }
 
+void LinkageView::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        // The hovered handle's hint, "Click to switch to: …" and the scale bar's unit; the
+        // scene's own texts come with the next setScene() from the owner.
+        updateToolTip();
+        update();
+    }
+    QWidget::changeEvent(event);
+}
+
 void LinkageView::updateHover(const QPointF &position)
 {
     const int handle = handleAt(position);
@@ -429,7 +442,7 @@ void LinkageView::setHoverGhost(int ghost)
 void LinkageView::updateToolTip()
 {
     if (m_hoverHandle >= 0 && m_hoverHandle < int(m_scene.handles.size()))
-        setToolTip(QString::fromStdString(m_scene.handles[std::size_t(m_hoverHandle)].hint));
+        setToolTip(coreLabel(m_scene.handles[std::size_t(m_hoverHandle)].hint));
     else if (m_hoverGhost >= 0)
         setToolTip(shownMessage());
     else

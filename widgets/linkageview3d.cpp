@@ -1,6 +1,7 @@
 #include "linkageview3d.h"
 
 #include <QElapsedTimer>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFrame>
@@ -63,7 +64,7 @@ LinkageView3D::LinkageView3D(QWidget *parent)
 
     // Known before the first paint, so that a view that can never draw says so at once and
     // never puts a QOpenGLWidget into a window that cannot composite it.
-    static const QString problem = Renderer3D::probeOpenGL(); // once per process: it makes a context
+    static const Renderer3D::Message problem = Renderer3D::probeOpenGLMessage(); // once per process: it makes a context
 
     if (problem.isEmpty())
         m_canvas = new Canvas(this);
@@ -87,17 +88,33 @@ QOpenGLWidget *LinkageView3D::glWidget() const
     return m_canvas;
 }
 
-void LinkageView3D::setUnavailable(const QString &reason)
+void LinkageView3D::setUnavailable(const Renderer3D::Message &reason)
 {
     m_glFailed = true;
-    const QString headline = tr("3D view unavailable: OpenGL 3.3 could not be started.");
-    m_glStatus = headline + QLatin1Char(' ') + reason;
-    m_unavailableLabel->setText(headline + QLatin1Char('\n') + reason);
+    m_unavailableReason = reason;
+    m_unavailableLabel->setText(unavailableText(QLatin1Char('\n')));
     m_unavailableLabel->setGeometry(rect());
     m_unavailableLabel->show();
     m_unavailableLabel->raise();
     if (m_canvas)
         m_canvas->hide();
+}
+
+QString LinkageView3D::unavailableText(QChar separator) const
+{
+    return tr("3D view unavailable: OpenGL 3.3 could not be started.") + separator + m_unavailableReason.text();
+}
+
+QString LinkageView3D::glStatus() const
+{
+    return m_glFailed ? unavailableText(QLatin1Char(' ')) : m_renderer.glDescription();
+}
+
+void LinkageView3D::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange && m_glFailed)
+        m_unavailableLabel->setText(unavailableText(QLatin1Char('\n')));
+    QWidget::changeEvent(event);
 }
 
 void LinkageView3D::requestFrame()
@@ -121,11 +138,11 @@ void LinkageView3D::initializeGl()
     connect(m_canvas->context(), &QOpenGLContext::aboutToBeDestroyed, this, &LinkageView3D::cleanupGl,
         Qt::UniqueConnection);
     if (!m_renderer.initialize()) {
-        setUnavailable(m_renderer.errorString());
+        setUnavailable(m_renderer.errorMessage());
         return;
     }
     m_glFailed = false;
-    m_glStatus = m_renderer.glDescription();
+    m_unavailableReason = {};
     m_unavailableLabel->hide();
 }
 
@@ -218,7 +235,7 @@ QImage LinkageView3D::renderImage(const QSize &size)
         return image;
     }
     if (m_glFailed) {
-        m_imageError = m_glStatus;
+        m_imageError = glStatus();
         return {};
     }
     // Never shown: a context of its own.
@@ -341,10 +358,8 @@ View3DPanel::View3DPanel(QWidget *parent)
     auto *bar = new QHBoxLayout;
     bar->setContentsMargins(6, 4, 6, 4);
     bar->setSpacing(4);
-    auto addButton = [&](const QString &text, const QString &toolTip, const QString &name) {
+    auto addButton = [&](const QString &name) {
         auto *button = new QToolButton(this);
-        button->setText(text);
-        button->setToolTip(toolTip);
         button->setObjectName(name);
         button->setToolButtonStyle(Qt::ToolButtonTextOnly);
         button->setAutoRaise(false);
@@ -358,27 +373,26 @@ View3DPanel::View3DPanel(QWidget *parent)
         bar->addWidget(line);
     };
     using View = Camera3D::StandardView;
-    QToolButton *fit = addButton(tr("Fit"), tr("Show the whole mechanism (F, or double-click)"), QStringLiteral("fit"));
-    connect(fit, &QToolButton::clicked, m_view, &LinkageView3D::fit);
+    m_fitButton = addButton(QStringLiteral("fit"));
+    connect(m_fitButton, &QToolButton::clicked, m_view, &LinkageView3D::fit);
     addSeparator();
     const struct {
-        QString text, toolTip, name;
+        QToolButton **button;
+        const char *name;
         View view;
     } views[] = {
-        {tr("Front"), tr("Look at the mechanism plane, as the 2D view does (1)"), QStringLiteral("front"), View::Front},
-        {tr("Top"), tr("Look down from above (7)"), QStringLiteral("top"), View::Top},
-        {tr("Side"), tr("Look from the right (3)"), QStringLiteral("side"), View::Side},
-        {tr("Isometric"), tr("Look from the front, right and above at once"), QStringLiteral("isometric"),
-            View::Isometric},
+        {&m_frontButton, "front", View::Front},
+        {&m_topButton, "top", View::Top},
+        {&m_sideButton, "side", View::Side},
+        {&m_isometricButton, "isometric", View::Isometric},
     };
     for (const auto &entry : views) {
-        QToolButton *button = addButton(entry.text, entry.toolTip, entry.name);
+        *entry.button = addButton(QString::fromLatin1(entry.name));
         const View view = entry.view;
-        connect(button, &QToolButton::clicked, m_view, [this, view] { m_view->setStandardView(view); });
+        connect(*entry.button, &QToolButton::clicked, m_view, [this, view] { m_view->setStandardView(view); });
     }
     addSeparator();
-    m_perspectiveButton = addButton(tr("Perspective"),
-        tr("Perspective when on, orthographic (true to scale) when off (5)"), QStringLiteral("perspective"));
+    m_perspectiveButton = addButton(QStringLiteral("perspective"));
     m_perspectiveButton->setCheckable(true);
     m_perspectiveButton->setChecked(m_view->projection() == Camera3D::Projection::Perspective);
     connect(m_perspectiveButton, &QToolButton::toggled, m_view, [this](bool on) {
@@ -388,9 +402,9 @@ View3DPanel::View3DPanel(QWidget *parent)
         m_perspectiveButton->setChecked(projection == Camera3D::Projection::Perspective);
     });
     bar->addStretch(1);
-    QToolButton *save = addButton(
-        tr("Save picture…"), tr("Save the 3D view as a PNG picture at twice its size"), QStringLiteral("savePicture"));
-    connect(save, &QToolButton::clicked, this, &View3DPanel::savePictureAs);
+    m_saveButton = addButton(QStringLiteral("savePicture"));
+    connect(m_saveButton, &QToolButton::clicked, this, &View3DPanel::savePictureAs);
+    retranslate();
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -398,6 +412,31 @@ View3DPanel::View3DPanel(QWidget *parent)
     layout->addLayout(bar);
     layout->addWidget(m_view, 1);
     m_lastDirectory = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+}
+
+void View3DPanel::retranslate()
+{
+    m_fitButton->setText(tr("Fit"));
+    m_fitButton->setToolTip(tr("Show the whole mechanism (F, or double-click)"));
+    m_frontButton->setText(tr("Front"));
+    m_frontButton->setToolTip(tr("Look at the mechanism plane, as the 2D view does (1)"));
+    m_topButton->setText(tr("Top"));
+    m_topButton->setToolTip(tr("Look down from above (7)"));
+    m_sideButton->setText(tr("Side"));
+    m_sideButton->setToolTip(tr("Look from the right (3)"));
+    m_isometricButton->setText(tr("Isometric"));
+    m_isometricButton->setToolTip(tr("Look from the front, right and above at once"));
+    m_perspectiveButton->setText(tr("Perspective"));
+    m_perspectiveButton->setToolTip(tr("Perspective when on, orthographic (true to scale) when off (5)"));
+    m_saveButton->setText(tr("Save picture…"));
+    m_saveButton->setToolTip(tr("Save the 3D view as a PNG picture at twice its size"));
+}
+
+void View3DPanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
 }
 
 bool View3DPanel::savePicture(const QString &path, QString *error)

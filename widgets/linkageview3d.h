@@ -51,7 +51,7 @@ public:
     /// False when OpenGL 3.3 could not be started; glStatus() then says why.
     bool isGlAvailable() const { return !m_glFailed; }
     /// The OpenGL in use ("OpenGL 4.5 (…), llvmpipe"), or why the view is unavailable.
-    QString glStatus() const { return m_glStatus; }
+    QString glStatus() const;
 
     /// The current scene and camera rendered into an image of `size` pixels (multisampled),
     /// for "Save picture…" and exports; works before the view is first shown. A null image,
@@ -88,6 +88,7 @@ protected:
     void mouseDoubleClickEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
+    void changeEvent(QEvent *event) override;
 
 private:
     enum class Drag { None, Orbit, Pan };
@@ -98,7 +99,9 @@ private:
     void cleanupGl();
     void requestFrame();
     /// Shows why (one sentence) instead of the picture.
-    void setUnavailable(const QString &reason);
+    void setUnavailable(const Renderer3D::Message &reason);
+    /// The headline and the reason, in the current language.
+    QString unavailableText(QChar separator) const;
     void syncViewport();
     void cameraMoved();
 
@@ -108,7 +111,7 @@ private:
     bool m_hasScene = false;
     bool m_userMoved = false; ///< orbited, panned or zoomed since the last fit
     bool m_glFailed = false;
-    QString m_glStatus;
+    Renderer3D::Message m_unavailableReason;
     QString m_imageError;
     Canvas *m_canvas = nullptr;
     QLabel *m_unavailableLabel = nullptr;
@@ -142,8 +145,20 @@ public slots:
     /// Asks for a PNG file name and saves the picture; a failure is shown in a message box.
     void savePictureAs();
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
+    /// The buttons' texts and tooltips in the current language.
+    void retranslate();
+
     LinkageView3D *m_view = nullptr;
+    QToolButton *m_fitButton = nullptr;
+    QToolButton *m_frontButton = nullptr;
+    QToolButton *m_topButton = nullptr;
+    QToolButton *m_sideButton = nullptr;
+    QToolButton *m_isometricButton = nullptr;
+    QToolButton *m_saveButton = nullptr;
     QToolButton *m_perspectiveButton = nullptr;
     QString m_lastDirectory;
 };

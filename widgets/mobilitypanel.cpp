@@ -7,6 +7,7 @@
 #include <QDockWidget>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QScrollBar>
 #include <QTextBrowser>
 #include <QTextDocumentFragment>
@@ -125,7 +126,11 @@ private:
     // -- words and numbers ------------------------------------------------------------------
 
     /// An integer as printed for people: a true minus sign.
-    static QString integer(int n) { return n < 0 ? QStringLiteral("−%1").arg(-n) : QString::number(n); }
+    static QString integer(int n)
+    {
+        const QString digits = QLocale().toString(std::abs(n));
+        return n < 0 ? QStringLiteral("−") + digits : digits;
+    }
 
     /// English plurals of "%n link(s)" until the English catalogue supplies them
     /// (translations/README.md).
@@ -189,7 +194,7 @@ private:
                                  "%n of them are redundant.",
                                   nullptr, redundant),
             redundant)
-                           .arg(integer(w), integer(r.mobility), QString::number(perLoop));
+                           .arg(integer(w), integer(r.mobility), integer(perLoop));
         if (w < 0 && r.mobility == 0)
             text += QLatin1Char(' ') + tr("A negative W rightly says “rigid”, but it is not the mobility: M = 0.");
         return text;
@@ -209,17 +214,17 @@ private:
     {
         switch (type) {
         case PairType::Revolute:
-            return tr("%1 revolute").arg(count);
+            return tr("%n revolute", nullptr, count);
         case PairType::Prismatic:
-            return tr("%1 prismatic").arg(count);
+            return tr("%n prismatic", nullptr, count);
         case PairType::Screw:
-            return tr("%1 screw").arg(count);
+            return tr("%n screw", nullptr, count);
         case PairType::Cylindrical:
-            return tr("%1 cylindrical").arg(count);
+            return tr("%n cylindrical", nullptr, count);
         case PairType::CamPlanar:
-            return tr("%1 planar cam").arg(count);
+            return tr("%n planar cam", nullptr, count);
         case PairType::Spherical:
-            return tr("%1 spherical").arg(count);
+            return tr("%n spherical", nullptr, count);
         }
         return {};
     }
@@ -259,9 +264,11 @@ private:
         }
         if (c.links.empty())
             return out;
+        // core names the links in the language of the moment: "ground AD", Russian "стойка AD"
         const QString groundName = html(c.links.front());
-        const QString ground = groundName.startsWith(QLatin1String("ground")) ? tr("the %1").arg(groundName)
-                                                                              : tr("the ground (%1)").arg(groundName);
+        const bool named = groundName.startsWith(QLatin1String("ground"))
+            || groundName.startsWith(QCoreApplication::translate("core", "ground").toHtmlEscaped());
+        const QString ground = named ? tr("the %1").arg(groundName) : tr("the ground (%1)").arg(groundName);
         QStringList moving;
         for (std::size_t i = 1; i < c.links.size(); ++i)
             moving << html(c.links[i]);
@@ -318,7 +325,7 @@ private:
             const int gained = r.numerical - r.mobility;
             QString text = gained == 1
                 ? tr("At this pose the mechanism gains an instantaneous freedom (singularity).")
-                : tr("At this pose the mechanism gains %1 instantaneous freedoms (singularity).").arg(gained);
+                : tr("At this pose the mechanism gains %n instantaneous freedoms (singularity).", nullptr, gained);
             text += QLatin1Char(' ')
                 + tr("The rank of the loop equations drops from %1 to %2: the instantaneous mobility is %3, the "
                      "mobility next to this pose %4.")
@@ -513,16 +520,12 @@ MobilityPanel::MobilityPanel(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     auto *row = new QHBoxLayout;
-    auto *label = new QLabel(tr("Analyse:"), this);
+    m_subjectLabel = new QLabel(this);
     m_subjectBox = new QComboBox(this);
-    m_subjectBox->addItem(tr("This mechanism"));
-    m_subjectBox->addItem(tr("Example: spatial parallelogram"));
-    m_subjectBox->addItem(tr("Example: Bennett linkage"));
-    m_subjectBox->addItem(tr("Example: general spatial 4R (rigid)"));
-    m_subjectBox->setToolTip(tr("Classroom examples: chains where the structural formulas fail, and one where "
-                                "the counts predict the truth"));
-    label->setBuddy(m_subjectBox);
-    row->addWidget(label);
+    for (int i = 0; i < 4; ++i) // one per Subject; their texts: retranslate()
+        m_subjectBox->addItem(QString());
+    m_subjectLabel->setBuddy(m_subjectBox);
+    row->addWidget(m_subjectLabel);
     row->addWidget(m_subjectBox, 1);
     layout->addLayout(row);
     m_browser = new QTextBrowser(this);
@@ -536,6 +539,31 @@ MobilityPanel::MobilityPanel(QWidget *parent)
         request();
     });
     connect(&m_watcher, &QFutureWatcher<Analysis>::finished, this, &MobilityPanel::onFinished);
+    retranslate();
+}
+
+void MobilityPanel::retranslate()
+{
+    m_subjectLabel->setText(tr("Analyse:"));
+    m_subjectBox->setItemText(int(Subject::ThisMechanism), tr("This mechanism"));
+    m_subjectBox->setItemText(int(Subject::SpatialParallelogram), tr("Example: spatial parallelogram"));
+    m_subjectBox->setItemText(int(Subject::BennettLinkage), tr("Example: Bennett linkage"));
+    m_subjectBox->setItemText(int(Subject::SpatialFourR), tr("Example: general spatial 4R (rigid)"));
+    m_subjectBox->setToolTip(tr("Classroom examples: chains where the structural formulas fail, and one where "
+                                "the counts predict the truth"));
+}
+
+void MobilityPanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        // The analysis on display speaks the old language (core made its chain and verdict):
+        // run it again, now or when the panel is seen.
+        if (m_html.isEmpty() && isBusy())
+            showPlaceholder(tr("Analysing…"));
+        request();
+    }
+    QWidget::changeEvent(event);
 }
 
 MobilityPanel::~MobilityPanel()

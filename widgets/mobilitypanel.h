@@ -26,6 +26,7 @@
 
 class QComboBox;
 class QDockWidget;
+class QLabel;
 class QTextBrowser;
 
 namespace pkm {
@@ -75,6 +76,9 @@ signals:
 protected:
     void showEvent(QShowEvent *event) override;
     bool event(QEvent *event) override;
+    /// On a change of language: the controls' texts again, and the analysis run again (its
+    /// chain and verdict are core's sentences, made in the language of the moment).
+    void changeEvent(QEvent *event) override;
 
 private:
     /// One analysis: what was asked and what came out.
@@ -97,7 +101,9 @@ private:
     void onFinished();
     void display(const Analysis &analysis);
     void showPlaceholder(const QString &text);
+    void retranslate();
 
+    QLabel *m_subjectLabel = nullptr;
     QComboBox *m_subjectBox = nullptr;
     QTextBrowser *m_browser = nullptr;
     MechanismPtr m_mechanism;

@@ -1,5 +1,6 @@
 #include "modebar.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -23,24 +24,40 @@ ModeBar::ModeBar(QWidget *parent)
 void ModeBar::setModes(const QString &current, const QStringList &labels)
 {
     setVisible(!current.isEmpty() || !labels.isEmpty());
-    m_current->setText(current.isEmpty() ? QString() : tr("Modes: %1").arg(current));
-    if (labels == m_labels)
-        return;
-    m_labels = labels;
-    qDeleteAll(m_buttonList);
-    m_buttonList.clear();
-    for (int i = 0; i < labels.size(); ++i) {
-        // the short form on the button ("other assembly mode"), the whole label in the tooltip
-        const QString brief = labels[i].section(QStringLiteral(" ("), 0, 0);
-        auto *button = new QPushButton(tr("→ %1").arg(brief), this);
-        button->setObjectName(QStringLiteral("modeButton%1").arg(i));
-        button->setToolTip(tr("Switch to %1. The mechanism stays in its mode until you click here or on "
-                              "its ghost in the view.")
-                               .arg(labels[i]));
-        connect(button, &QPushButton::clicked, this, [this, i] { emit switchRequested(i); });
-        m_buttons->addWidget(button);
-        m_buttonList.append(button);
+    m_currentText = current;
+    if (labels != m_labels) {
+        m_labels = labels;
+        qDeleteAll(m_buttonList);
+        m_buttonList.clear();
+        for (int i = 0; i < labels.size(); ++i) {
+            auto *button = new QPushButton(this);
+            button->setObjectName(QStringLiteral("modeButton%1").arg(i));
+            connect(button, &QPushButton::clicked, this, [this, i] { emit switchRequested(i); });
+            m_buttons->addWidget(button);
+            m_buttonList.append(button);
+        }
     }
+    retranslate();
+}
+
+void ModeBar::retranslate()
+{
+    m_current->setText(m_currentText.isEmpty() ? QString() : tr("Modes: %1").arg(m_currentText));
+    for (int i = 0; i < m_buttonList.size(); ++i) {
+        // the short form on the button ("other assembly mode"), the whole label in the tooltip
+        const QString brief = m_labels[i].section(QStringLiteral(" ("), 0, 0);
+        m_buttonList[i]->setText(tr("→ %1").arg(brief));
+        m_buttonList[i]->setToolTip(tr("Switch to %1. The mechanism stays in its mode until you click here or on "
+                                       "its ghost in the view.")
+                                        .arg(m_labels[i]));
+    }
+}
+
+void ModeBar::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
 }
 
 QPushButton *ModeBar::button(int index) const

@@ -28,8 +28,15 @@ public:
 signals:
     void switchRequested(int index);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
+    /// "Modes: …" and the buttons' texts in the current language.
+    void retranslate();
+
     QLabel *m_current = nullptr;
+    QString m_currentText;
     QHBoxLayout *m_buttons = nullptr;
     QStringList m_labels;
     QList<QPushButton *> m_buttonList;

@@ -6,6 +6,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -26,6 +27,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -44,6 +46,14 @@ bool fail(QString *error, const QString &message)
     if (error)
         *error = message;
     return false;
+}
+
+/// A count of pixels or dots for people: the locale's digits, no group separator ("1920").
+QString count(int value)
+{
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    return locale.toString(value);
 }
 
 int dotsPerMetre(int dpi)
@@ -170,18 +180,14 @@ QByteArray paintPicture(const QString &format, const PictureOptions &options, in
         || size.height() > maximumPictureSide) {
         fail(error,
             PictureDialog::tr("%1 × %2 pixels is not a picture size: each side must be from %3 to %4.")
-                .arg(size.width())
-                .arg(size.height())
-                .arg(minimumPictureSide)
-                .arg(maximumPictureSide));
+                .arg(count(size.width()), count(size.height()), count(minimumPictureSide),
+                    count(maximumPictureSide)));
         return {};
     }
     if (options.dpi < minimumPictureDpi || options.dpi > maximumPictureDpi) {
         fail(error,
             PictureDialog::tr("%1 dpi is not a resolution: it must be from %2 to %3 dpi.")
-                .arg(options.dpi)
-                .arg(minimumPictureDpi)
-                .arg(maximumPictureDpi));
+                .arg(count(options.dpi), count(minimumPictureDpi), count(maximumPictureDpi)));
         return {};
     }
     if (fontDpi <= 0)
@@ -200,8 +206,7 @@ QByteArray paintPicture(const QString &format, const PictureOptions &options, in
         if (image.isNull()) {
             fail(error,
                 PictureDialog::tr("There is not enough memory for a picture of %1 × %2 pixels.")
-                    .arg(size.width())
-                    .arg(size.height()));
+                    .arg(count(size.width()), count(size.height())));
             return {};
         }
         // Drawn at the screen's DPI (text in points as on screen), then labelled with the chosen one.
@@ -445,29 +450,23 @@ PictureDialog::PictureDialog(const QSize &shown, const QString &format, QWidget 
     , m_dpiBox(new QComboBox(this))
     , m_note(new QLabel(this))
 {
-    setWindowTitle(tr("Picture Size"));
     const QSize base = shown.isEmpty() ? QSize(800, 600)
                                        : shown.boundedTo(QSize(maximumPictureSide, maximumPictureSide))
                                              .expandedTo(QSize(minimumPictureSide, minimumPictureSide));
     m_presets = {base, (2 * base).boundedTo(QSize(maximumPictureSide, maximumPictureSide)), QSize(1920, 1080),
         QSize(3840, 2160)};
-    const auto size = [](const QSize &s) { return tr("%1 × %2").arg(s.width()).arg(s.height()); };
     m_sizeBox->setObjectName(QStringLiteral("sizeBox"));
-    m_sizeBox->addItem(tr("As shown — %1").arg(size(m_presets[0])));
-    m_sizeBox->addItem(tr("Twice as shown — %1").arg(size(m_presets[1])));
-    m_sizeBox->addItem(tr("Full HD — %1").arg(size(m_presets[2])));
-    m_sizeBox->addItem(tr("4K UHD — %1").arg(size(m_presets[3])));
-    m_sizeBox->addItem(tr("Custom"));
+    for (int i = 0; i <= int(m_presets.size()); ++i) // the presets and "Custom": retranslate()
+        m_sizeBox->addItem(QString());
     for (QSpinBox *box : {m_width, m_height}) {
         box->setRange(minimumPictureSide, maximumPictureSide);
-        box->setSuffix(tr(" px"));
         box->setAccelerated(true);
     }
     m_width->setObjectName(QStringLiteral("widthBox"));
     m_height->setObjectName(QStringLiteral("heightBox"));
     m_dpiBox->setObjectName(QStringLiteral("dpiBox"));
     for (const int dpi : dpiChoices())
-        m_dpiBox->addItem(tr("%1 dpi").arg(dpi), dpi);
+        m_dpiBox->addItem(QString(), dpi);
     m_note->setObjectName(QStringLiteral("pictureNote"));
     m_note->setWordWrap(true);
     m_note->setMinimumWidth(320);
@@ -477,20 +476,13 @@ PictureDialog::PictureDialog(const QSize &shown, const QString &format, QWidget 
     m_height->setValue(remembered.custom.height());
     m_sizeBox->setCurrentIndex(std::clamp(remembered.preset, 0, int(m_sizeBox->count()) - 1));
     m_dpiBox->setCurrentIndex(std::max(0, m_dpiBox->findData(remembered.dpi)));
-    if (format == QLatin1String("svg")) {
+    if (format == QLatin1String("svg"))
         m_dpiBox->setEnabled(false); // an SVG has no pixels to spread over an inch
-        m_dpiBox->setToolTip(tr("An SVG drawing is scalable: its size is in CSS pixels."));
-    } else if (format == QLatin1String("pdf")) {
-        m_dpiBox->setToolTip(tr("The PDF's page is the size in pixels at this resolution."));
-    } else {
-        m_dpiBox->setToolTip(tr("Stored in the PNG: the size it prints at."));
-    }
 
     auto *form = new QFormLayout;
-    form->addRow(tr("&Size:"), m_sizeBox);
-    form->addRow(tr("&Width:"), m_width);
-    form->addRow(tr("&Height:"), m_height);
-    form->addRow(tr("&Resolution:"), m_dpiBox);
+    m_form = form;
+    for (QWidget *field : std::initializer_list<QWidget *> {m_sizeBox, m_width, m_height, m_dpiBox})
+        form->addRow(new QLabel(this), field); // the labels' texts and buddies: retranslate()
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -503,7 +495,46 @@ PictureDialog::PictureDialog(const QSize &shown, const QString &format, QWidget 
     connect(m_width, &QSpinBox::valueChanged, this, &PictureDialog::updateNote);
     connect(m_height, &QSpinBox::valueChanged, this, &PictureDialog::updateNote);
     connect(m_dpiBox, &QComboBox::currentIndexChanged, this, &PictureDialog::updateNote);
+    retranslate();
     presetChosen();
+}
+
+void PictureDialog::retranslate()
+{
+    setWindowTitle(tr("Picture Size"));
+    const auto size = [](const QSize &s) { return tr("%1 × %2").arg(count(s.width()), count(s.height())); };
+    m_sizeBox->setItemText(0, tr("As shown — %1").arg(size(m_presets[0])));
+    m_sizeBox->setItemText(1, tr("Twice as shown — %1").arg(size(m_presets[1])));
+    m_sizeBox->setItemText(2, tr("Full HD — %1").arg(size(m_presets[2])));
+    m_sizeBox->setItemText(3, tr("4K UHD — %1").arg(size(m_presets[3])));
+    m_sizeBox->setItemText(4, tr("Custom"));
+    for (QSpinBox *box : {m_width, m_height})
+        box->setSuffix(tr(" px"));
+    const QList<int> dpis = dpiChoices();
+    for (int i = 0; i < int(dpis.size()); ++i)
+        m_dpiBox->setItemText(i, tr("%1 dpi").arg(count(dpis[i])));
+    if (m_format == QLatin1String("svg"))
+        m_dpiBox->setToolTip(tr("An SVG drawing is scalable: its size is in CSS pixels."));
+    else if (m_format == QLatin1String("pdf"))
+        m_dpiBox->setToolTip(tr("The PDF's page is the size in pixels at this resolution."));
+    else
+        m_dpiBox->setToolTip(tr("Stored in the PNG: the size it prints at."));
+    const std::array<std::pair<QWidget *, QString>, 4> labels {{{m_sizeBox, tr("&Size:")}, {m_width, tr("&Width:")},
+        {m_height, tr("&Height:")}, {m_dpiBox, tr("&Resolution:")}}};
+    for (const auto &[field, text] : labels) {
+        if (auto *label = qobject_cast<QLabel *>(m_form->labelForField(field))) {
+            label->setText(text);
+            label->setBuddy(field);
+        }
+    }
+    updateNote();
+}
+
+void PictureDialog::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDialog::changeEvent(event);
 }
 
 PictureOptions PictureDialog::options() const
@@ -521,12 +552,12 @@ QString PictureDialog::physicalText() const
     const QString mm = tr("%1 × %2 mm")
                            .arg(locale.toString(chosen.size.width() * 25.4 / chosen.dpi, 'f', 1),
                                locale.toString(chosen.size.height() * 25.4 / chosen.dpi, 'f', 1));
-    const QString pixels = tr("%1 × %2 pixels").arg(chosen.size.width()).arg(chosen.size.height());
+    const QString pixels = tr("%1 × %2 pixels").arg(count(chosen.size.width()), count(chosen.size.height()));
     if (m_format == QLatin1String("svg"))
         return tr("An SVG drawing of %1 (CSS pixels), lines and text as vectors.").arg(pixels);
     if (m_format == QLatin1String("pdf"))
-        return tr("A PDF page of %1: %2 at %3 dpi, lines and text as vectors.").arg(mm, pixels).arg(chosen.dpi);
-    return tr("A PNG picture of %1; it prints at %2 at %3 dpi.").arg(pixels, mm).arg(chosen.dpi);
+        return tr("A PDF page of %1: %2 at %3 dpi, lines and text as vectors.").arg(mm, pixels, count(chosen.dpi));
+    return tr("A PNG picture of %1; it prints at %2 at %3 dpi.").arg(pixels, mm, count(chosen.dpi));
 }
 
 void PictureDialog::presetChosen()

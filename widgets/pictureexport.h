@@ -27,6 +27,7 @@
 class QByteArray;
 class QComboBox;
 class QCPPainter;
+class QFormLayout;
 class QCustomPlot;
 class QLabel;
 class QMenu;
@@ -136,9 +137,14 @@ public:
 
     void accept() override;
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     void presetChosen();
     void updateNote();
+    /// Every text of the dialog in the current language (the choices stay as they are).
+    void retranslate();
 
     QString m_format;
     QList<QSize> m_presets;
@@ -147,6 +153,7 @@ private:
     QSpinBox *m_height = nullptr;
     QComboBox *m_dpiBox = nullptr;
     QLabel *m_note = nullptr;
+    QFormLayout *m_form = nullptr;
 };
 
 } // namespace pkm

@@ -286,6 +286,7 @@ void PJointPlots::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange) {
         retranslate();
         for (int i = 0; i < PlotCount; ++i) {
+            placeCursor(i); // the value beside the marker, in the new locale
             m_panels[i].needsReplot = true;
             refresh(i, true);
         }
@@ -438,8 +439,15 @@ void PJointPlots::retranslate()
             .arg(locale.toString(m_design.forceMax, 'g', 6), motorTorque),
     };
 
+    // Tick labels are written in the plot widget's locale (QCustomPlot sets "C" for itself):
+    // the language's, without group separators, as the numbers elsewhere.
+    QLocale tickLocale = locale;
+    tickLocale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+
     for (int i = 0; i < PlotCount; ++i) {
         Panel &p = m_panels[i];
+        if (p.plot->locale() != tickLocale)
+            p.plot->setLocale(tickLocale);
         p.title->setText(titles[size_t(i)]);
         p.subtitle->setText(subtitles[size_t(i)]);
         p.plot->xAxis->setLabel(tr("θ (°)"));
@@ -456,12 +464,12 @@ void PJointPlots::retranslate()
             p.recommendedSwatch->setName(tr("recommended %1°…%2° (J ≥ %3 % of best)")
                                              .arg(number(recommended.min / units::degree, 0),
                                                   number(recommended.max / units::degree, 0))
-                                             .arg(pjoint::recommendedTorqueShare * 100));
+                                             .arg(locale.toString(pjoint::recommendedTorqueShare * 100)));
         }
         if (p.steepSwatch)
             p.steepSwatch->setName(tr("steep region"));
         if (p.weakTransmissionSwatch)
-            p.weakTransmissionSwatch->setName(tr("μ < %1°: force almost along the crank").arg(weakTransmission));
+            p.weakTransmissionSwatch->setName(tr("μ < %1°: force almost along the crank").arg(locale.toString(weakTransmission)));
         fitToWidth(i);
     }
 }

@@ -1,5 +1,9 @@
 #include "quantityformat.h"
 
+#include "text.h"
+
+#include <QCoreApplication>
+
 #include <cmath>
 
 namespace pkm {
@@ -11,7 +15,15 @@ QString toQString(std::string_view text)
 
 QString unitText(const Unit &unit)
 {
-    return toQString(unit.symbol);
+    return coreLabel(unit.symbol);
+}
+
+QString coreLabel(std::string_view label)
+{
+    if (label.empty())
+        return {};
+    const std::string source(label);
+    return QCoreApplication::translate("core", source.c_str());
 }
 
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale)

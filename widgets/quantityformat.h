@@ -13,7 +13,12 @@ namespace pkm {
 
 /// Core strings are UTF-8.
 QString toQString(std::string_view text);
+/// The unit's symbol in the current language ("mm", Russian "мм").
 QString unitText(const Unit &unit);
+/// A fixed English label from a core table (ParameterInfo::label, VariableInfo::label,
+/// ReportEntry::label, ReportText::label and ::text, ModeAlternative::label, SingularCurve::label,
+/// MechanismKind::title), marked there with QT_TRANSLATE_NOOP("core", …), in the current language.
+QString coreLabel(std::string_view label);
 /// `coreValue` in core units; shown in the unit's display units.
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale = QLocale());
 

@@ -127,23 +127,22 @@ bool Renderer3D::contextIsCurrent() const
 bool Renderer3D::initialize()
 {
     cleanup();
-    m_error.clear();
+    m_error = {};
     QOpenGLContext *context = QOpenGLContext::currentContext();
     if (!context) {
-        m_error = tr("No OpenGL context is current.");
+        m_error = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "No OpenGL context is current."), {}};
         return false;
     }
     const QSurfaceFormat format = context->format();
     if (context->isOpenGLES() || format.version() < qMakePair(3, 3)) {
-        m_error = tr("The driver offers OpenGL %1%2.%3; the 3D view needs OpenGL 3.3.")
-                      .arg(context->isOpenGLES() ? QStringLiteral("ES ") : QString())
-                      .arg(format.majorVersion())
-                      .arg(format.minorVersion());
+        m_error = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "The driver offers OpenGL %1%2.%3; the 3D view needs OpenGL 3.3."),
+            {context->isOpenGLES() ? QStringLiteral("ES ") : QString(), QString::number(format.majorVersion()),
+                QString::number(format.minorVersion())}};
         return false;
     }
     auto *gl = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_3_3_Core>(context);
     if (!gl || !gl->initializeOpenGLFunctions()) {
-        m_error = tr("The OpenGL 3.3 core functions could not be resolved.");
+        m_error = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "The OpenGL 3.3 core functions could not be resolved."), {}};
         return false;
     }
     m_gl = gl;
@@ -184,11 +183,10 @@ bool Renderer3D::initialize()
     m_gl->glBindVertexArray(0);
     m_gl->glBindBuffer(GL_ARRAY_BUFFER, 0);
 
-    m_description = tr("OpenGL %1.%2 (%3), %4")
-                        .arg(format.majorVersion())
-                        .arg(format.minorVersion())
-                        .arg(QString::fromLatin1(reinterpret_cast<const char *>(m_gl->glGetString(GL_VERSION))))
-                        .arg(QString::fromLatin1(reinterpret_cast<const char *>(m_gl->glGetString(GL_RENDERER))));
+    m_description = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "OpenGL %1.%2 (%3), %4"),
+        {QString::number(format.majorVersion()), QString::number(format.minorVersion()),
+            QString::fromLatin1(reinterpret_cast<const char *>(m_gl->glGetString(GL_VERSION))),
+            QString::fromLatin1(reinterpret_cast<const char *>(m_gl->glGetString(GL_RENDERER)))}};
     m_dirty = true;
     return true;
 }
@@ -200,7 +198,7 @@ bool Renderer3D::buildPrograms()
         if (program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex)
             && program->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) && program->link())
             return true;
-        m_error = tr("The 3D view's shaders could not be built: %1").arg(program->log().trimmed());
+        m_error = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "The 3D view's shaders could not be built: %1"), {program->log().trimmed()}};
         return false;
     };
     return build(m_solidProgram, solidVertexShader, solidFragmentShader)
@@ -305,17 +303,15 @@ void Renderer3D::render(const Camera3D &camera, const QSize &viewport, qreal dev
 QImage Renderer3D::renderImage(const Camera3D &camera, const QSize &size)
 {
     if (!contextIsCurrent()) {
-        m_error = tr("No OpenGL context is current.");
+        m_error = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "No OpenGL context is current."), {}};
         return {};
     }
     GLint maximumSize = 0, maximumSamples = 0, previous = 0;
     m_gl->glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maximumSize);
     m_gl->glGetIntegerv(GL_MAX_SAMPLES, &maximumSamples);
     if (size.isEmpty() || size.width() > maximumSize || size.height() > maximumSize) {
-        m_error = tr("A picture of %1 × %2 pixels is not possible: the largest is %3 × %3.")
-                      .arg(size.width())
-                      .arg(size.height())
-                      .arg(maximumSize);
+        m_error = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "A picture of %1 × %2 pixels is not possible: the largest is %3 × %3."),
+            {QString::number(size.width()), QString::number(size.height()), QString::number(maximumSize)}};
         return {};
     }
     m_gl->glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
@@ -336,26 +332,46 @@ QImage Renderer3D::renderImage(const Camera3D &camera, const QSize &size)
     }
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
     if (image.isNull())
-        m_error = tr("The OpenGL driver could not make a framebuffer of %1 × %2 pixels.")
-                      .arg(size.width())
-                      .arg(size.height());
+        m_error = {QT_TRANSLATE_NOOP("pkm::Renderer3D", "The OpenGL driver could not make a framebuffer of %1 × %2 pixels."),
+            {QString::number(size.width()), QString::number(size.height())}};
     return image;
 }
 
-QString Renderer3D::probeOpenGL()
+Renderer3D::Message Renderer3D::probeOpenGLMessage()
 {
     QOpenGLContext context;
     context.setFormat(surfaceFormat());
     if (!context.create())
-        return tr("No OpenGL context could be created on the “%1” display platform.")
-            .arg(QGuiApplication::platformName());
+        return {QT_TRANSLATE_NOOP("pkm::Renderer3D", "No OpenGL context could be created on the “%1” display platform."),
+            {QGuiApplication::platformName()}};
     const QSurfaceFormat format = context.format();
     if (context.isOpenGLES() || format.version() < qMakePair(3, 3))
-        return tr("The driver offers OpenGL %1%2.%3 only.")
-            .arg(context.isOpenGLES() ? QStringLiteral("ES ") : QString())
-            .arg(format.majorVersion())
-            .arg(format.minorVersion());
+        return {QT_TRANSLATE_NOOP("pkm::Renderer3D", "The driver offers OpenGL %1%2.%3 only."),
+            {context.isOpenGLES() ? QStringLiteral("ES ") : QString(), QString::number(format.majorVersion()),
+                QString::number(format.minorVersion())}};
     return {};
+}
+
+QString Renderer3D::Message::text() const
+{
+    if (!source)
+        return {};
+    const QString pattern = QCoreApplication::translate("pkm::Renderer3D", source);
+    // In one pass, as QString::arg(a, b, …) does: an argument holding "%2" stays as it is.
+    QString result;
+    result.reserve(pattern.size());
+    for (qsizetype i = 0; i < pattern.size(); ++i) {
+        if (pattern[i] == QLatin1Char('%') && i + 1 < pattern.size()) {
+            const int n = pattern[i + 1].digitValue();
+            if (n >= 1 && n <= arguments.size()) {
+                result += arguments[n - 1];
+                ++i;
+                continue;
+            }
+        }
+        result += pattern[i];
+    }
+    return result;
 }
 
 QImage Renderer3D::renderOffscreen(const Scene3D &scene, const Camera3D &camera, const QSize &size, QString *error)

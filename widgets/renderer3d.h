@@ -17,6 +17,7 @@
 #include <QImage>
 #include <QSize>
 #include <QString>
+#include <QStringList>
 #include <QSurfaceFormat>
 
 #include <memory>
@@ -43,14 +44,25 @@ public:
     /// SceneStyle::background, the 2D view's.
     static QColor backgroundColour();
 
+    /// A sentence kept as its English source and its arguments, so that it can be said again
+    /// after a change of language (the 3D view's "unavailable" text follows one).
+    struct Message {
+        const char *source = nullptr; ///< marked QT_TRANSLATE_NOOP("pkm::Renderer3D", …)
+        QStringList arguments; ///< for %1, %2, …
+        bool isEmpty() const { return source == nullptr; }
+        /// In the current language, the arguments filled in.
+        QString text() const;
+    };
+
     /// With a context current: resolves the 3.3 core functions, compiles the shaders and
     /// creates the buffers. False, with errorString(), when any of it fails.
     bool initialize();
     bool isInitialized() const { return m_gl != nullptr; }
     /// Why initialize() or renderImage() failed, in one sentence.
-    QString errorString() const { return m_error; }
+    QString errorString() const { return m_error.text(); }
+    Message errorMessage() const { return m_error; }
     /// "OpenGL 4.5 (Core Profile) Mesa 22.3.6, llvmpipe" once initialised.
-    QString glDescription() const { return m_description; }
+    QString glDescription() const { return m_description.text(); }
 
     /// Tessellates the scene and its ground grid now; they are uploaded by the next render().
     void setScene(const Scene3D &scene);
@@ -76,7 +88,9 @@ public:
         const Scene3D &scene, const Camera3D &camera, const QSize &size, QString *error = nullptr);
     /// Why an OpenGL 3.3 core context cannot be had here, or an empty string when it can.
     /// Creates and destroys a throwaway context.
-    static QString probeOpenGL();
+    static QString probeOpenGL() { return probeOpenGLMessage().text(); }
+    /// The same, to be said again in another language; empty when a context can be had.
+    static Message probeOpenGLMessage();
 
     /// Deletes the GL objects; call with the context of initialize() current. Safe to repeat.
     void cleanup();
@@ -95,8 +109,8 @@ private:
     int m_uploadedIndices = 0;
     int m_uploadedLines = 0;
     bool m_dirty = true;
-    QString m_error;
-    QString m_description;
+    Message m_error;
+    Message m_description;
 
     Mesh3D m_mesh;
     GroundGrid m_grid;

@@ -1,11 +1,13 @@
 #include "scenepainter.h"
 
+#include "quantityformat.h"
 #include "scenegeometry.h"
 #include "scenelabels.h"
 #include "sceneprimitives.h"
 
 #include <QFont>
 #include <QFontMetricsF>
+#include <QLocale>
 #include <QPainter>
 #include <QPen>
 #include <QPolygonF>
@@ -390,7 +392,10 @@ void ScenePainter::paintScaleBar(
     const double barLength = millimetres * mapping.scale;
     const QFont font = detail::labelFont(style.fontPixels * px, false);
     const QFontMetricsF metrics(font, painter.device());
-    const QString text = QStringLiteral("%1 mm").arg(millimetres);
+    // "50 mm", "0,5 мм": the locale's number (no group separator, as everywhere) and unit.
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    const QString text = locale.toString(millimetres, 'g', 6) + QLatin1Char(' ') + unitText(units::millimetre);
     const double margin = 16.0 * px, tick = 8.0 * px;
     const QPointF right(area.right() - margin, area.bottom() - margin);
     const QPointF left = right - QPointF(barLength, 0.0);

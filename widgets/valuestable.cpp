@@ -2,6 +2,7 @@
 
 #include "quantityformat.h"
 
+#include <QEvent>
 #include <QHeaderView>
 
 #include <cmath>
@@ -47,12 +48,28 @@ ValuesTable::ValuesTable(QWidget *parent)
     header()->setStretchLastSection(true);
 }
 
+void ValuesTable::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        setHeaderLabels({tr("Quantity"), tr("Value"), tr("Meaning")});
+        // The rows again, in the new language, and the values of the pose shown in its locale.
+        if (m_mechanism) {
+            rebuild();
+            if (m_pose)
+                setPose(*m_pose);
+        }
+    }
+    QTreeWidget::changeEvent(event);
+}
+
 void ValuesTable::setMechanism(const MechanismPtr &mechanism)
 {
     const bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind();
     m_mechanism = mechanism;
-    if (rebuildNeeded)
+    if (rebuildNeeded) {
+        m_pose.reset(); // a pose of another kind of mechanism
         rebuild();
+    }
 }
 
 void ValuesTable::rebuild()
@@ -76,10 +93,11 @@ void ValuesTable::rebuild()
             current = entry.group;
             addGroup(groupTitle(entry.group));
         }
-        auto *item = new QTreeWidgetItem(this, {toQString(entry.symbol), QString(), toQString(entry.label)});
+        const QString label = coreLabel(entry.label);
+        auto *item = new QTreeWidgetItem(this, {toQString(entry.symbol), QString(), label});
         item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
         item->setData(0, Qt::UserRole, toQString(entry.name));
-        item->setToolTip(2, toQString(entry.label)); // the column may be too narrow for it
+        item->setToolTip(2, label); // the column may be too narrow for it
         m_items.push_back(item);
     }
     addGroup(tr("Singularity"));
@@ -91,6 +109,7 @@ void ValuesTable::setPose(const Pose &pose)
 {
     if (!m_mechanism)
         return;
+    m_pose = pose;
     const Singularity singularity = m_mechanism->evaluate(pose, m_values);
     const ReportLayout &layout = m_mechanism->reportLayout();
     qsizetype widest = 0;

@@ -5,6 +5,8 @@
 #include "mechanism.h"
 
 #include <QTreeWidget>
+
+#include <optional>
 #include <vector>
 
 namespace pkm {
@@ -22,6 +24,9 @@ public:
     /// The text shown for a report entry ("J") or "singularity"; for tests.
     QString valueText(const QString &name) const;
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     void rebuild();
 
@@ -29,6 +34,7 @@ private:
     std::vector<QTreeWidgetItem *> m_items; ///< one per report entry
     QTreeWidgetItem *m_singularity = nullptr;
     std::vector<double> m_values;
+    std::optional<Pose> m_pose; ///< the pose shown, to show it again in another language
     qsizetype m_widestValue = 0; ///< longest value text so far, in characters
 };
 

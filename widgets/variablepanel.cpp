@@ -3,6 +3,7 @@
 #include "quantityformat.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
 #include <QSignalBlocker>
@@ -42,12 +43,8 @@ void VariablePanel::rebuild()
     for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
         const VariableInfo &info = variables[i];
         Row row;
-        const QString role = info.actuated ? tr("input, actuated") : tr("output");
-        row.name = new QLabel(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>")
-                                  .arg(toQString(info.symbol).toHtmlEscaped(), role),
-                              this);
+        row.name = new QLabel(this);
         row.name->setFont(big);
-        row.name->setToolTip(toQString(info.label));
         row.minimum = new QLabel(this);
         row.maximum = new QLabel(this);
         row.minimum->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -55,7 +52,6 @@ void VariablePanel::rebuild()
         row.slider->setObjectName(QStringLiteral("slider_") + toQString(info.name));
         row.slider->setRange(0, sliderSteps);
         row.slider->setMinimumWidth(120);
-        row.slider->setToolTip(tr("Drag to set %1 (%2)").arg(toQString(info.symbol), toQString(info.label)));
         row.spinBox = new QDoubleSpinBox(this);
         row.spinBox->setObjectName(QStringLiteral("spin_") + toQString(info.name));
         row.spinBox->setDecimals(info.decimals);
@@ -65,8 +61,6 @@ void VariablePanel::rebuild()
         row.spinBox->setFont(big);
         row.spinBox->setMinimumWidth(140);
         row.spinBox->setAlignment(Qt::AlignRight);
-        const QString unit = unitText(info.unit);
-        row.spinBox->setSuffix(unit.startsWith(QChar(0x00B0)) ? unit : QLatin1Char(' ') + unit);
 
         connect(row.slider, &QSlider::valueChanged, this, [this, i](int position) {
             if (m_updating)
@@ -88,7 +82,37 @@ void VariablePanel::rebuild()
         m_grid->addWidget(row.maximum, i, 3);
         m_grid->addWidget(row.spinBox, i, 4);
         m_rows.append(row);
+        describe(i);
     }
+}
+
+void VariablePanel::describe(int i)
+{
+    const VariableInfo &info = m_mechanism->variableInfo()[std::size_t(i)];
+    Row &row = m_rows[i];
+    const QString symbol = toQString(info.symbol);
+    const QString label = coreLabel(info.label);
+    const QString role = info.actuated ? tr("input, actuated") : tr("output");
+    row.name->setText(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>").arg(symbol.toHtmlEscaped(), role));
+    row.name->setToolTip(label);
+    row.slider->setToolTip(tr("Drag to set %1 (%2)").arg(symbol, label));
+    const QString unit = unitText(info.unit);
+    const QSignalBlocker blocker(row.spinBox);
+    row.spinBox->setSuffix(unit.startsWith(QChar(0x00B0)) ? unit : QLatin1Char(' ') + unit);
+}
+
+void VariablePanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        // The spin boxes show numbers in the panel's locale: the new language's (QLocale()).
+        setLocale(QLocale());
+        if (m_mechanism) {
+            for (int i = 0; i < m_rows.size(); ++i)
+                describe(i);
+            updateRanges(); // the limits beside the sliders, in the new locale
+        }
+    }
+    QWidget::changeEvent(event);
 }
 
 void VariablePanel::updateRanges()

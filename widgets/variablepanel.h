@@ -35,6 +35,9 @@ signals:
     void sliderPressed();
     void sliderReleased();
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     struct Row {
         QLabel *name = nullptr;
@@ -44,6 +47,8 @@ private:
         QDoubleSpinBox *spinBox = nullptr;
     };
     void rebuild();
+    /// The texts of row i (its name, role, tooltips and unit) in the current language.
+    void describe(int i);
     void updateRanges();
 
     MechanismPtr m_mechanism;

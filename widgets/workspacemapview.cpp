@@ -1,7 +1,5 @@
 #include "workspacemapview.h"
 
-#include <QCoreApplication>
-
 #include "plotfont.h"
 #include "plotticker.h"
 #include "quantityformat.h"
@@ -467,7 +465,7 @@ WorkspaceMapView::WorkspaceMapView(QWidget *parent)
     connect(plot, &QCustomPlot::mouseDoubleClick, this, [this] { resetView(); });
 
     retranslate();
-    showMessage(tr("No mechanism."));
+    showMessage(messageText());
 }
 
 WorkspaceMapView::~WorkspaceMapView()
@@ -492,9 +490,7 @@ void WorkspaceMapView::setMechanism(MechanismPtr mechanism)
         m_debounce->stop();
         m_mapPending = false;
         clearMap();
-        showMessage(m_mechanism ? tr("No planar workspace: the outputs of this mechanism are not a point of the "
-                                     "plane, so there is no workspace map to show.")
-                                : tr("No mechanism."));
+        showMessage(messageText());
         updateBusy();
         return;
     }
@@ -701,8 +697,7 @@ void WorkspaceMapView::applyMap(WorkspaceMapResult &result)
     m_inverse->data()->set(result.inverse, true);
     m_direct->data()->set(result.direct, true);
     m_curveCounts = {result.inverseCount, result.directCount};
-    m_singularityMeanings = {QCoreApplication::translate("core", result.inverseMeaning.c_str()),
-                             QCoreApplication::translate("core", result.directMeaning.c_str())};
+    m_singularityMeanings = {result.inverseMeaning, result.directMeaning};
     for (QCPItemTracer *item : {m_poseCircle, m_poseCross})
         item->setVisible(m_hasPose);
 
@@ -746,6 +741,13 @@ void WorkspaceMapView::showMessage(const QString &text)
     m_quantityBox->setEnabled(false);
 }
 
+QString WorkspaceMapView::messageText() const
+{
+    return m_mechanism ? tr("No planar workspace: the outputs of this mechanism are not a point of the plane, so "
+                            "there is no workspace map to show.")
+                       : tr("No mechanism.");
+}
+
 QString WorkspaceMapView::message() const
 {
     return m_stack->currentWidget() == m_messageLabel ? m_messageLabel->text() : QString();
@@ -756,7 +758,7 @@ QString WorkspaceMapView::message() const
 void WorkspaceMapView::updateTitle()
 {
     const bool condition = m_shownQuantity == MapQuantity::Condition;
-    const QString symbol = condition ? tr("κ(J)") : tr("det J");
+    const QString symbol = condition ? QStringLiteral("κ(J)") : QStringLiteral("det J"); // symbols
     if (m_mapBounds.isEmpty()) {
         m_title->setText(tr("Workspace map"));
         m_colorScale->setLabel(QString());
@@ -787,9 +789,9 @@ void WorkspaceMapView::updateLegend()
     const auto name = [](const QString &kind, const QString &meaning) {
         return meaning.isEmpty() ? kind : tr("%1 (%2)").arg(kind, meaning);
     };
-    m_inverse->setName(name(tr("inverse singularity"), m_singularityMeanings[0])
+    m_inverse->setName(name(tr("inverse singularity"), coreLabel(m_singularityMeanings[0]))
                        + (m_curveCounts[0] || m_mapBounds.isEmpty() ? QString() : none));
-    m_direct->setName(name(tr("direct singularity"), m_singularityMeanings[1])
+    m_direct->setName(name(tr("direct singularity"), coreLabel(m_singularityMeanings[1]))
                       + (m_curveCounts[1] || m_mapBounds.isEmpty() ? QString() : none));
     if (m_comparisonArea > 0.0) {
         QString text = tr("%1: boundary, %2").arg(m_comparisonLabel, formatQuantity(m_comparisonArea, units::squareMillimetre, 0));
@@ -819,11 +821,13 @@ void WorkspaceMapView::updateLegend()
 void WorkspaceMapView::retranslate()
 {
     m_quantityLabel->setText(tr("&Map:"));
-    m_quantityBox->setItemText(0, tr("det J"));
+    m_quantityBox->setItemText(0, QStringLiteral("det J")); // a symbol
     m_quantityBox->setItemText(1, tr("condition number κ(J)"));
     m_busyLabel->setText(tr("computing…"));
     m_plot->xAxis->setLabel(tr("x (mm)"));
     m_plot->yAxis->setLabel(tr("y (mm)"));
+    if (m_stack->currentWidget() == m_messageLabel)
+        m_messageLabel->setText(messageText());
     updateTitle();
     updateLegend();
 }
@@ -832,6 +836,7 @@ void WorkspaceMapView::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange) {
         retranslate();
+        updateBusy(); // "computing…" changed its width
         m_plot->replot(QCustomPlot::rpQueuedReplot);
     }
     QWidget::changeEvent(event);

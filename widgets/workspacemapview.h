@@ -24,6 +24,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 class QCPColorMap;
@@ -131,6 +132,8 @@ private:
     void applyComparison(WorkspaceMapResult &result);
     void clearMap();
     void showMessage(const QString &text);
+    /// Why there is no map: no mechanism, or one without a planar workspace.
+    QString messageText() const;
     void updateBusy();
     void updateTitle();
     void updateLegend();
@@ -160,7 +163,8 @@ private:
     std::vector<float> m_values; ///< as computed, row-major from the bottom row
     double m_colourLimit = 0.0;  ///< det J: ±limit; κ: 1…limit
     std::array<int, 2> m_curveCounts {}; ///< inverse, direct
-    std::array<QString, 2> m_singularityMeanings; ///< "link ⟂ guide", "links collinear"
+    /// "link ⟂ guide", "links collinear": English sources from core, translated when shown
+    std::array<std::string, 2> m_singularityMeanings;
     double m_comparisonArea = 0.0;
     Eigen::AlignedBox2d m_mapBounds;        ///< grid bounds of the map, mm (empty: none)
     Eigen::AlignedBox2d m_comparisonBounds; ///< of the comparison's grid, mm (empty: none)

@@ -3,7 +3,9 @@
 // `pkm eval --json` and `pkm workspace --json`; bad extensions and failing writes leave no file.
 
 #include "cli.h"
+#include "language.h"
 #include "mainwindow.h"
+#include "text.h"
 
 #include <QApplication>
 #include <QDir>
@@ -19,6 +21,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QTranslator>
 #include <QtTest>
 
 #include <cmath>
@@ -128,6 +131,51 @@ bool close(double a, double b, double relative = 1e-12)
     return std::abs(a - b) <= relative * std::max(1.0, std::max(std::abs(a), std::abs(b)));
 }
 
+/// Where `translated` (a sheet in another language) differs from `english` other than in its
+/// texts for people: the keys, the numbers, the words of the cells, the units and the verdicts
+/// must be the same. Empty when they are.
+QString differenceBeyondTexts(const QJsonValue &english, const QJsonValue &translated, const QStringList &path = {})
+{
+    const QString where = path.join(QLatin1Char('/'));
+    if (english.type() != translated.type())
+        return where + QStringLiteral(": another type");
+    if (english.isObject()) {
+        const QJsonObject a = english.toObject(), b = translated.toObject();
+        if (a.keys() != b.keys())
+            return where + QStringLiteral(": other keys");
+        for (auto it = a.begin(); it != a.end(); ++it) {
+            const QString why = differenceBeyondTexts(it.value(), b[it.key()], path + QStringList {it.key()});
+            if (!why.isEmpty())
+                return why;
+        }
+        return {};
+    }
+    if (english.isArray()) {
+        const QJsonArray a = english.toArray(), b = translated.toArray();
+        if (a.size() != b.size())
+            return where + QStringLiteral(": another length");
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            const QString why = differenceBeyondTexts(a[i], b[i], path + QStringList {QString::number(i)});
+            if (!why.isEmpty())
+                return why;
+        }
+        return {};
+    }
+    if (english.isString()) {
+        static const QStringList kept {QStringLiteral("sheet"), QStringLiteral("design"), QStringLiteral("mechanism"),
+            QStringLiteral("date"), QStringLiteral("version"), QStringLiteral("key"), QStringLiteral("kind"),
+            QStringLiteral("unit"), QStringLiteral("result"), QStringLiteral("scale"), QStringLiteral("group"),
+            QStringLiteral("value"), QStringLiteral("limit")};
+        const QString last = path.value(path.size() - 1), parent = path.value(path.size() - 2);
+        const bool mustKeep = kept.contains(last) || parent == QLatin1String("values");
+        if (mustKeep && english.toString() != translated.toString())
+            return where + QStringLiteral(": '") + english.toString() + QStringLiteral("' became '")
+                + translated.toString() + QLatin1Char('\'');
+        return {};
+    }
+    return english == translated ? QString() : where + QStringLiteral(": another value");
+}
+
 QString fixed(double number, int decimals)
 {
     QString text = QString::number(number, 'f', decimals);
@@ -165,6 +213,13 @@ private slots:
     void help();
     void inProcessJsonAndPdfNeedsGui();
     void fileMenuHasTheExport();
+
+    void unknownLanguage();
+    void englishIsTheDefault();
+    void languageKeepsKeysAndNumbers();
+    void russianPdfNumbers();
+    void russianSheet();
+    void inProcessLanguageIsRestored();
 
 private:
     QString pdfText(const QString &pdf, bool layout = true);
@@ -751,6 +806,198 @@ void TestSheet::fileMenuHasTheExport()
     const QJsonObject sheet = readJson(path(QStringLiteral("gui.json")));
     QCOMPARE(sheet[QStringLiteral("mechanism")].toString(), QStringLiteral("pjoint"));
     QCOMPARE(value(sheet, QStringLiteral("parameters"), QStringLiteral("a")), 170.0);
+}
+
+void TestSheet::unknownLanguage()
+{
+    const QString json = path(QStringLiteral("german.json"));
+    const Run run = runPkm({QStringLiteral("sheet"), QStringLiteral("pjoint-prototype"), QStringLiteral("--lang"),
+        QStringLiteral("de"), QStringLiteral("-o"), json});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY(run.out.isEmpty());
+    QVERIFY2(run.err.startsWith("pkm: --lang de: unknown language 'de'"), run.err.constData());
+    QVERIFY2(run.err.contains("en, sr, sr_Latn or ru"), run.err.constData());
+    QCOMPARE(run.err.count('\n'), 1); // one sentence
+    QVERIFY(!QFile::exists(json));
+    // no value, and a command without the option
+    QCOMPARE(runPkm({QStringLiteral("sheet"), QStringLiteral("pjoint-prototype"), QStringLiteral("-o"), json,
+                 QStringLiteral("--lang")})
+                 .exitCode,
+        2);
+    const Run eval = runPkm({QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--lang"),
+        QStringLiteral("ru")});
+    QCOMPARE(eval.exitCode, 2);
+    QVERIFY2(eval.err.contains("'--lang' is not an option of 'pkm eval'"), eval.err.constData());
+    // the help says which languages there are
+    const Run help = runPkm({QStringLiteral("sheet"), QStringLiteral("--help")});
+    QVERIFY(help.out.contains("--lang CODE"));
+    QVERIFY(help.out.contains("sr_Latn"));
+}
+
+void TestSheet::englishIsTheDefault()
+{
+    // English whatever the system's locale: scripts read the sheet
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("SOURCE_DATE_EPOCH"), QStringLiteral("86400"));
+    environment.insert(QStringLiteral("LC_ALL"), QStringLiteral("ru_RU.UTF-8"));
+    environment.insert(QStringLiteral("LANG"), QStringLiteral("ru_RU.UTF-8"));
+    for (const QString &extension : {QStringLiteral("json"), QStringLiteral("csv")}) {
+        const QString plain = path(QStringLiteral("default.") + extension), english = path(QStringLiteral("english.") + extension);
+        QCOMPARE(runPkm({QStringLiteral("sheet"), QStringLiteral("fourbar-example"), QStringLiteral("-o"), plain}, environment).exitCode, 0);
+        QCOMPARE(runPkm({QStringLiteral("sheet"), QStringLiteral("fourbar-example"), QStringLiteral("--lang"),
+                     QStringLiteral("en"), QStringLiteral("-o"), english},
+                     environment)
+                     .exitCode,
+            0);
+        QFile a(plain), b(english);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        QCOMPARE(a.readAll(), b.readAll());
+    }
+    const QJsonObject sheet = readJson(path(QStringLiteral("default.json")));
+    QCOMPARE(section(sheet, QStringLiteral("parameters"))[QStringLiteral("title")].toString(), QStringLiteral("Design parameters"));
+    if (m_pdftotext.isEmpty())
+        QSKIP("pdftotext (poppler-utils) is not installed");
+    const QString pdf = path(QStringLiteral("default.pdf"));
+    QCOMPARE(runPkm({QStringLiteral("sheet"), QStringLiteral("pjoint-prototype"), QStringLiteral("-o"), pdf}, environment).exitCode, 0);
+    const QString text = pdfText(pdf);
+    QVERIFY(text.contains(QStringLiteral("116.20")));
+    QVERIFY(text.contains(QStringLiteral("Parameter sheet")));
+}
+
+void TestSheet::languageKeepsKeysAndNumbers()
+{
+    // Another language: the same keys, numbers, cell words, units and verdicts as in English;
+    // only the texts for people differ.
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("SOURCE_DATE_EPOCH"), QStringLiteral("86400"));
+    const auto sheet = [&](const QString &design, const QString &code, const QString &file) {
+        QStringList arguments {QStringLiteral("sheet"), design, QStringLiteral("-o"), file};
+        if (!code.isEmpty())
+            arguments << QStringLiteral("--lang") << code;
+        return runPkm(arguments, environment);
+    };
+    for (const QString &design : {QStringLiteral("pjoint-prototype"), QStringLiteral("oxglide-prototype")}) {
+        const QString english = path(design + QStringLiteral("-en.json")), englishCsv = path(design + QStringLiteral("-en.csv"));
+        QCOMPARE(sheet(design, {}, english).exitCode, 0);
+        QCOMPARE(sheet(design, {}, englishCsv).exitCode, 0);
+        const QJsonObject reference = readJson(english);
+        QVERIFY(!reference.isEmpty());
+        for (const QString &code : {QStringLiteral("ru"), QStringLiteral("sr_Latn")}) {
+            const QString json = path(design + QLatin1Char('-') + code + QStringLiteral(".json"));
+            const Run run = sheet(design, code, json);
+            QVERIFY2(run.exitCode == 0, run.err.constData());
+            QVERIFY(run.out.startsWith("Wrote " + json.toUtf8() + " (parameter sheet of ")); // the CLI stays English
+            const QString why = differenceBeyondTexts(reference, readJson(json));
+            QVERIFY2(why.isEmpty(), qPrintable(design + QLatin1Char(' ') + code + QStringLiteral(": ") + why));
+        }
+        // the CSV has the same values: only the texts of the title block, figures and notes may differ
+        const QString csv = path(design + QStringLiteral("-ru.csv"));
+        QCOMPARE(sheet(design, QStringLiteral("ru"), csv).exitCode, 0);
+        const QList<QStringList> a = readCsv(englishCsv), b = readCsv(csv);
+        QCOMPARE(a.size(), b.size());
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            const bool text = (a[i][0] == QLatin1String("sheet")
+                                  && (a[i][2] == QLatin1String("mechanism_title") || a[i][2] == QLatin1String("pose")))
+                || a[i][3] == QLatin1String("title") || a[i][3] == QLatin1String("text");
+            if (text)
+                QCOMPARE(b[i].mid(0, 4), a[i].mid(0, 4));
+            else
+                QCOMPARE(b[i], a[i]);
+        }
+    }
+}
+
+void TestSheet::russianPdfNumbers()
+{
+    if (m_pdftotext.isEmpty())
+        QSKIP("pdftotext (poppler-utils) is not installed");
+    // The PDF writes numbers as the language does: a decimal comma in Russian and Serbian.
+    for (const QString &code : {QStringLiteral("ru"), QStringLiteral("sr")}) {
+        const QString pdf = path(QStringLiteral("prototype-") + code + QStringLiteral(".pdf"));
+        const Run run = runPkm({QStringLiteral("sheet"), QStringLiteral("pjoint-prototype"), QStringLiteral("--lang"), code,
+            QStringLiteral("-o"), pdf});
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        const QString text = pdfText(pdf);
+        QVERIFY2(!text.isEmpty(), "pdftotext extracted no text");
+        QVERIFY(text.contains(QStringLiteral("pjoint-prototype")));
+        for (const char *number : {"116,20", "231,40", "115,21"})
+            QVERIFY2(text.contains(QLatin1String(number)), number);
+        QVERIFY(!text.contains(QStringLiteral("116.20")));
+        // the English verdicts stay, for searching any language's sheet
+        QVERIFY(text.contains(QStringLiteral("PASS")));
+        QVERIFY(text.contains(QStringLiteral("FAIL")));
+    }
+}
+
+void TestSheet::russianSheet()
+{
+    // The Russian catalogue translates the sheet; until it does, there is nothing to see.
+    QTranslator catalogue;
+    if (!catalogue.load(QStringLiteral(":/i18n/pkm_studio_ru")) || catalogue.translate("Sheet", "Parameter sheet").isEmpty())
+        QSKIP("the Russian catalogue does not translate the parameter sheet yet");
+    const QString json = path(QStringLiteral("prototype-ru.json"));
+    QCOMPARE(runPkm({QStringLiteral("sheet"), QStringLiteral("pjoint-prototype"), QStringLiteral("--lang"), QStringLiteral("ru"),
+                 QStringLiteral("-o"), json})
+                 .exitCode,
+        0);
+    const QJsonObject sheet = readJson(json);
+    QCOMPARE(section(sheet, QStringLiteral("parameters"))[QStringLiteral("title")].toString(), QStringLiteral("Параметры конструкции"));
+    QCOMPARE(section(sheet, QStringLiteral("checks"))[QStringLiteral("title")].toString(), QStringLiteral("Проверка привода"));
+    QCOMPARE(section(sheet, QStringLiteral("drawing"))[QStringLiteral("title")].toString(), QStringLiteral("Чертёж с размерами"));
+    // core's labels, where the catalogue has them
+    const QJsonObject english = section(m_prototype, QStringLiteral("parameters"))[QStringLiteral("values")].toObject();
+    const QJsonObject russian = section(sheet, QStringLiteral("parameters"))[QStringLiteral("values")].toObject();
+    for (auto it = english.begin(); it != english.end(); ++it) {
+        const QByteArray label = it.value()[QStringLiteral("label")].toString().toUtf8();
+        const QString translated = catalogue.translate("core", label.constData());
+        if (!translated.isEmpty())
+            QCOMPARE(russian[it.key()][QStringLiteral("label")].toString(), translated);
+    }
+    const QString kind = catalogue.translate("core", m_prototype[QStringLiteral("mechanism_title")].toString().toUtf8().constData());
+    if (!kind.isEmpty())
+        QCOMPARE(sheet[QStringLiteral("mechanism_title")].toString(), kind);
+
+    if (m_pdftotext.isEmpty())
+        QSKIP("pdftotext (poppler-utils) is not installed");
+    const QString pdf = path(QStringLiteral("prototype-ru.pdf"));
+    QCOMPARE(runPkm({QStringLiteral("sheet"), QStringLiteral("pjoint-prototype"), QStringLiteral("--lang"), QStringLiteral("ru"),
+                 QStringLiteral("-o"), pdf})
+                 .exitCode,
+        0);
+    const QString text = pdfText(pdf);
+    for (const char *heading : {"Лист параметров", "Параметры конструкции", "Производные размеры", "Диапазоны движения",
+             "Характерные положения", "Проверка привода", "Графики", "Чертёж с размерами", "стр. 1 из "})
+        QVERIFY2(text.contains(QString::fromUtf8(heading)), heading);
+    QVERIFY(text.contains(QStringLiteral("ВЫПОЛНЕНО (PASS)")));
+    QVERIFY(text.contains(QStringLiteral("НЕ ВЫПОЛНЕНО (FAIL)")));
+    QVERIFY(!text.contains(QStringLiteral("Design parameters")));
+    if (catalogue.translate("core", "mm") == QStringLiteral("мм"))
+        QVERIFY(text.contains(QStringLiteral("мм")));
+}
+
+void TestSheet::inProcessLanguageIsRestored()
+{
+    // runCli() in this process: --lang changes the language only while the sheet is made.
+    const QString locale = QLocale().name();
+    const QString title = QCoreApplication::translate("Sheet", "Parameter sheet");
+    const std::string number = pkm::text::number(-1.5, 1);
+    std::FILE *out = std::tmpfile();
+    std::FILE *err = std::tmpfile();
+    QVERIFY(out && err);
+    const QString russian = path(QStringLiteral("inprocess-ru.json"));
+    QCOMPARE(pkm::runCli({QStringLiteral("sheet"), QStringLiteral("fourbar-example"), QStringLiteral("--lang"),
+                 QStringLiteral("ru"), QStringLiteral("-o"), russian},
+                 out, err),
+        0);
+    QCOMPARE(QLocale().name(), locale);
+    QCOMPARE(QCoreApplication::translate("Sheet", "Parameter sheet"), title);
+    QCOMPARE(pkm::text::number(-1.5, 1), number);
+    const QString english = path(QStringLiteral("inprocess-en.json"));
+    QCOMPARE(pkm::runCli({QStringLiteral("sheet"), QStringLiteral("fourbar-example"), QStringLiteral("-o"), english}, out, err), 0);
+    QCOMPARE(section(readJson(english), QStringLiteral("parameters"))[QStringLiteral("title")].toString(),
+        QStringLiteral("Design parameters"));
+    std::fclose(out);
+    std::fclose(err);
 }
 
 QTEST_MAIN(TestSheet)

@@ -1,0 +1,306 @@
+// Switching the running program between English, Serbian (Cyrillic and Latin) and Russian:
+// the choice follows the system locale at first and is remembered; the switch re-translates
+// the real widgets at once — menus, docks, the design panel, the plots, every text a person
+// sees — formats numbers by the language's locale, and exports (the parameter sheet) follow.
+#include "designpanel.h"
+#include "document.h"
+#include "language.h"
+#include "mainwindow.h"
+#include "pjointplots.h"
+#include "sheet.h"
+#include "text.h"
+
+#include <qcustomplot.h>
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenuBar>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTreeWidget>
+
+using namespace pkm;
+
+namespace {
+
+/// Every text the window shows: labels, buttons, group titles, tabs, menus, dock titles,
+/// headers, plot axes and legends, the status bar's permanent labels.
+QStringList visibleTexts(QWidget *root)
+{
+    QStringList texts;
+    const auto add = [&texts](const QString &t) {
+        if (!t.trimmed().isEmpty())
+            texts << t;
+    };
+    for (QLabel *w : root->findChildren<QLabel *>()) {
+        if (w->isVisibleTo(root))
+            add(w->text());
+    }
+    for (QAbstractButton *w : root->findChildren<QAbstractButton *>()) {
+        if (w->isVisibleTo(root)) {
+            add(w->text());
+            add(w->toolTip());
+        }
+    }
+    for (QGroupBox *w : root->findChildren<QGroupBox *>()) {
+        if (w->isVisibleTo(root))
+            add(w->title());
+    }
+    for (QTabBar *w : root->findChildren<QTabBar *>()) {
+        for (int i = 0; i < w->count(); ++i)
+            add(w->tabText(i));
+    }
+    for (QDockWidget *w : root->findChildren<QDockWidget *>())
+        add(w->windowTitle());
+    for (QTreeWidget *w : root->findChildren<QTreeWidget *>()) {
+        if (!w->isVisibleTo(root))
+            continue;
+        for (int c = 0; c < w->columnCount(); ++c)
+            add(w->headerItem()->text(c));
+        for (int i = 0; i < w->topLevelItemCount(); ++i) {
+            QTreeWidgetItem *item = w->topLevelItem(i);
+            add(item->text(0));
+            for (int k = 0; k < item->childCount(); ++k)
+                add(item->child(k)->text(w->columnCount() - 1));
+        }
+    }
+    for (QCustomPlot *plot : root->findChildren<QCustomPlot *>()) {
+        if (!plot->isVisibleTo(root))
+            continue;
+        for (QCPAxis *axis : plot->axisRect() ? plot->axisRect()->axes() : QList<QCPAxis *>())
+            add(axis->label());
+        for (int i = 0; i < plot->plottableCount(); ++i)
+            add(plot->plottable(i)->name());
+    }
+    if (auto *window = qobject_cast<QMainWindow *>(root)) {
+        for (QAction *menu : window->menuBar()->actions()) {
+            add(menu->text());
+            if (menu->menu()) {
+                for (QAction *item : menu->menu()->actions())
+                    add(item->text());
+            }
+        }
+    }
+    return texts;
+}
+
+/// English words left in a Russian window: runs of three or more Latin letters, bar names
+/// and symbols that are the same in every language.
+QStringList englishWords(const QStringList &texts)
+{
+    static const QRegularExpression word(QStringLiteral("(?<![\\w_])[A-Za-z]{3,}(?![\\w_])"));
+    static const QStringList same = {
+        QStringLiteral("PKM"), QStringLiteral("Studio"), QStringLiteral("MOMA"), QStringLiteral("DXF"),
+        QStringLiteral("GIF"), QStringLiteral("PDF"), QStringLiteral("JSON"), QStringLiteral("CSV"),
+        QStringLiteral("PNG"), QStringLiteral("SVG"), QStringLiteral("det"), QStringLiteral("min"),
+        QStringLiteral("max"), QStringLiteral("rec"), QStringLiteral("cos"), QStringLiteral("sin"),
+        QStringLiteral("glide"), QStringLiteral("English"), QStringLiteral("Srpski"), QStringLiteral("latinica"),
+        QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Bennett"), QStringLiteral("nbsp"),
+        QStringLiteral("sub"), QStringLiteral("sup"), QStringLiteral("span"), QStringLiteral("style"),
+        QStringLiteral("color"), QStringLiteral("html"), QStringLiteral("href"), QStringLiteral("div"),
+        QStringLiteral("font"), QStringLiteral("weight"), QStringLiteral("bold"), QStringLiteral("table"),
+    };
+    QStringList found;
+    for (const QString &t : texts) {
+        QString plain = t;
+        plain.remove(QRegularExpression(QStringLiteral("<[^>]*>"))); // markup is not text
+        for (auto it = word.globalMatch(plain); it.hasNext();) {
+            const QString w = it.next().captured();
+            if (!same.contains(w, Qt::CaseInsensitive))
+                found << QStringLiteral("“") + w + QStringLiteral("” in “") + t.left(120) + QStringLiteral("”");
+        }
+    }
+    found.removeDuplicates();
+    return found;
+}
+
+QAction *languageAction(MainWindow &window, const QString &code)
+{
+    return window.findChild<QAction *>(QStringLiteral("language_") + code);
+}
+
+void switchTo(MainWindow &window, const QString &code)
+{
+    QAction *action = languageAction(window, code);
+    QVERIFY(action);
+    action->trigger();
+    QCoreApplication::processEvents(); // LanguageChange is posted
+    QCoreApplication::processEvents();
+    QCOMPARE(language::current(), code);
+    QVERIFY(action->isChecked());
+}
+
+QString fileMenuText(MainWindow &window)
+{
+    return window.menuBar()->actions().value(0)->text();
+}
+
+} // namespace
+
+class TestLanguages : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void cleanup()
+    {
+        language::apply(QStringLiteral("en"));
+        QCoreApplication::processEvents();
+    }
+
+    // The first start speaks the system's language; a choice is remembered over it.
+    void defaultFollowsSystem()
+    {
+        QCOMPARE(language::bestFor(QLocale(QStringLiteral("ru_RU"))), QStringLiteral("ru"));
+        QCOMPARE(language::bestFor(QLocale(QStringLiteral("sr_RS"))), QStringLiteral("sr"));
+        QCOMPARE(language::bestFor(QLocale(QStringLiteral("sr_Cyrl_RS"))), QStringLiteral("sr"));
+        QCOMPARE(language::bestFor(QLocale(QStringLiteral("sr_Latn_RS"))), QStringLiteral("sr_Latn"));
+        QCOMPARE(language::bestFor(QLocale(QStringLiteral("sr_Latn_ME"))), QStringLiteral("sr_Latn"));
+        QCOMPARE(language::bestFor(QLocale(QStringLiteral("en_GB"))), QStringLiteral("en"));
+        QCOMPARE(language::bestFor(QLocale(QStringLiteral("de_DE"))), QStringLiteral("en"));
+        QSettings().remove(QStringLiteral("language"));
+        QCOMPARE(language::preferred(), language::bestFor(QLocale::system()));
+        language::remember(QStringLiteral("sr_Latn"));
+        QCOMPARE(language::preferred(), QStringLiteral("sr_Latn"));
+        language::remember(QStringLiteral("klingon")); // not a language: ignored
+        QCOMPARE(language::preferred(), QStringLiteral("sr_Latn"));
+        QSettings().remove(QStringLiteral("language"));
+    }
+
+    // The Language menu switches every widget at once and remembers the choice.
+    void switchRetranslatesTheWindow()
+    {
+        QVERIFY(language::apply(QStringLiteral("en")));
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QCoreApplication::processEvents();
+        QCOMPARE(fileMenuText(window), QStringLiteral("&File"));
+        const QStringList english = visibleTexts(&window);
+        QVERIFY(english.contains(QStringLiteral("Values at this pose")));
+
+        for (const QString &code : {QStringLiteral("ru"), QStringLiteral("sr"), QStringLiteral("sr_Latn")}) {
+            switchTo(window, code);
+            QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), code);
+            const QString file = QCoreApplication::translate("pkm::MainWindow", "&File");
+            QVERIFY(file != QStringLiteral("&File"));
+            QCOMPARE(fileMenuText(window), file);
+            const QStringList now = visibleTexts(&window);
+            QVERIFY(!now.contains(QStringLiteral("Values at this pose")));
+            // the design panel names the П-joint's crank in the language (a core label)
+            const QString crank = QCoreApplication::translate("core", "crank (lever) length");
+            QVERIFY(crank != QStringLiteral("crank (lever) length"));
+            bool found = false;
+            for (QLabel *label : window.designPanel()->findChildren<QLabel *>())
+                found = found || label->text().contains(crank);
+            QVERIFY2(found, qPrintable(code));
+            // most of what was English reads differently now
+            int same = 0;
+            for (const QString &t : now)
+                same += english.contains(t) && t.contains(QRegularExpression(QStringLiteral("[A-Za-z]{4,}"))) ? 1 : 0;
+            QVERIFY2(same <= 3, qPrintable(code + QStringLiteral(": ") + QString::number(same)));
+        }
+        switchTo(window, QStringLiteral("en"));
+        QCOMPARE(fileMenuText(window), QStringLiteral("&File"));
+        QCOMPARE(visibleTexts(&window).size(), english.size());
+    }
+
+    // In Russian no English word is left on the screen, for every kind of mechanism, and the
+    // numbers have a decimal comma.
+    void nothingLeftInEnglish_data()
+    {
+        QTest::addColumn<QString>("preset");
+        for (const char *preset : {"pjoint-prototype", "moma-3a", "oxglide-prototype", "fourbar-example", "fivebar-example"})
+            QTest::newRow(preset) << QString::fromLatin1(preset);
+    }
+    void nothingLeftInEnglish()
+    {
+        QFETCH(QString, preset);
+        QVERIFY(language::apply(QStringLiteral("en")));
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(window.openDesign(preset));
+        QCoreApplication::processEvents();
+        switchTo(window, QStringLiteral("ru"));
+        QTest::qWait(50);
+        const QStringList left = englishWords(visibleTexts(&window));
+        QVERIFY2(left.isEmpty(), qPrintable(left.join(QStringLiteral("\n"))));
+        // the pose in the status bar: "θ = 60,00°"
+        bool comma = false;
+        for (QLabel *label : window.statusBar()->findChildren<QLabel *>())
+            comma = comma || label->text().contains(QRegularExpression(QStringLiteral("\\d,\\d")));
+        QVERIFY(comma);
+    }
+
+    // Core's sentences come in the language too, with its numbers.
+    void coreSentencesFollow()
+    {
+        QVERIFY(language::apply(QStringLiteral("en")));
+        MainWindow window;
+        window.show();
+        switchTo(window, QStringLiteral("ru"));
+        auto refused = window.document()->setParameter(QStringLiteral("a"), -1.5, false); // a must be positive
+        QVERIFY(!refused);
+        const QString message = QString::fromStdString(refused.failure().message);
+        QVERIFY2(message.contains(QRegularExpression(QStringLiteral("[а-яА-Я]{4,}"))), qPrintable(message));
+        QVERIFY2(!message.contains(QStringLiteral("must")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("1,5")), qPrintable(message)); // the number the Russian way
+    }
+
+    // A sheet exported in Russian has Russian headings; its JSON keys and numbers stay
+    // locale-independent.
+    void russianSheet()
+    {
+        QVERIFY(language::apply(QStringLiteral("ru")));
+        MainWindow window;
+        const sheet::Source source{"pjoint-prototype", window.document()->design().title,
+                                   window.document()->design().description};
+        const sheet::Sheet built = sheet::build(*window.document()->mechanism(), window.document()->pose(), source);
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("ru.pdf"));
+        const QString json = dir.filePath(QStringLiteral("ru.json"));
+        QVERIFY(!sheet::save(built, pdf.toStdString()));
+        QVERIFY(!sheet::save(built, json.toStdString()));
+
+        const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
+        if (pdftotext.isEmpty())
+            QSKIP("pdftotext (poppler-utils) is not installed");
+        QProcess process;
+        process.start(pdftotext, {QStringLiteral("-enc"), QStringLiteral("UTF-8"), pdf, QStringLiteral("-")});
+        QVERIFY(process.waitForFinished(30000));
+        const QString text = QString::fromUtf8(process.readAllStandardOutput());
+        for (const char *heading : {"Parameter sheet", "Design parameters"}) {
+            const QString russian = QCoreApplication::translate("Sheet", heading);
+            QVERIFY2(russian != QString::fromLatin1(heading), heading);
+            QVERIFY2(text.contains(russian), qPrintable(russian + QStringLiteral(" not in:\n") + text.left(2000)));
+        }
+        QVERIFY(!text.contains(QStringLiteral("Design parameters")));
+
+        QFile file(json);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray content = file.readAll();
+        QVERIFY(content.contains("\"sections\""));
+        QVERIFY(QRegularExpression(QStringLiteral("\\d\\.\\d")).match(QString::fromUtf8(content)).hasMatch());
+    }
+};
+
+QTEST_MAIN(TestLanguages)
+#include "tst_languages.moc"

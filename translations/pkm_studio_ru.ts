@@ -1,0 +1,4611 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="ru_RU">
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>OK</source>
+        <translation>ОК</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Сохранить</translation>
+    </message>
+    <message>
+        <source>Save All</source>
+        <translation>Сохранить все</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Открыть</translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation>&amp;Да</translation>
+    </message>
+    <message>
+        <source>Yes to &amp;All</source>
+        <translation>Да для &amp;всех</translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation>&amp;Нет</translation>
+    </message>
+    <message>
+        <source>N&amp;o to All</source>
+        <translation>Н&amp;ет для всех</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Прервать</translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>Ignore</source>
+        <translation>Пропустить</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Не сохранять</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>Справка</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Применить</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Сбросить</translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation>Восстановить значения по умолчанию</translation>
+    </message>
+</context>
+<context>
+    <name>Sheet</name>
+    <message>
+        <source>frame</source>
+        <translation>стойка</translation>
+    </message>
+    <message>
+        <source>crank</source>
+        <translation>кривошип</translation>
+    </message>
+    <message>
+        <source>coupler</source>
+        <translation>шатун</translation>
+    </message>
+    <message>
+        <source>link</source>
+        <translation>звено</translation>
+    </message>
+    <message>
+        <source>rod</source>
+        <translation>тяга</translation>
+    </message>
+    <message>
+        <source>platform</source>
+        <translation>платформа</translation>
+    </message>
+    <message>
+        <source>Design parameters</source>
+        <translation>Параметры конструкции</translation>
+    </message>
+    <message>
+        <source> (derived)</source>
+        <translation> (производная величина)</translation>
+    </message>
+    <message>
+        <source>Derived dimensions</source>
+        <translation>Производные размеры</translation>
+    </message>
+    <message>
+        <source>Links and guides (between joint centres)</source>
+        <translation>Звенья и направляющие (между центрами шарниров)</translation>
+    </message>
+    <message>
+        <source>between</source>
+        <translation>между</translation>
+    </message>
+    <message>
+        <source>part</source>
+        <translation>деталь</translation>
+    </message>
+    <message>
+        <source>kind</source>
+        <translation>вид</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>длина</translation>
+    </message>
+    <message>
+        <source>guide</source>
+        <translation>направляющая</translation>
+    </message>
+    <message>
+        <source>guide (stroke)</source>
+        <translation>направляющая (ход)</translation>
+    </message>
+    <message>
+        <source>Ranges of motion</source>
+        <translation>Диапазоны движения</translation>
+    </message>
+    <message>
+        <source>variable</source>
+        <translation>переменная</translation>
+    </message>
+    <message>
+        <source>role</source>
+        <translation>роль</translation>
+    </message>
+    <message>
+        <source>this pose</source>
+        <translation>это положение</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>мин</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>макс</translation>
+    </message>
+    <message>
+        <source>travel</source>
+        <translation>ход</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>ед. изм.</translation>
+    </message>
+    <message>
+        <source>input (actuated)</source>
+        <translation>вход (приводной)</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>выход</translation>
+    </message>
+    <message>
+        <source>pose</source>
+        <translation>положение</translation>
+    </message>
+    <message>
+        <source>home</source>
+        <translation>исходное положение</translation>
+    </message>
+    <message>
+        <source>%1 max</source>
+        <translation>%1 макс</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 мин</translation>
+    </message>
+    <message>
+        <source>Every actuated input at the ends of its range with the others at the home pose, where the mechanism reaches it.</source>
+        <translation>Каждый приводной вход на концах своего диапазона при остальных входах в исходном положении — там, где механизм достигает такого положения.</translation>
+    </message>
+    <message>
+        <source>No singular pose in the range of motion</source>
+        <translation>Нет особых положений в диапазоне движения</translation>
+    </message>
+    <message>
+        <source>singularity margin ≥ %1</source>
+        <translation>запас до особого положения ≥ %1</translation>
+    </message>
+    <message>
+        <source>least at %1 = %2</source>
+        <translation>наименьший при %1 = %2</translation>
+    </message>
+    <message>
+        <source>%1 over %2</source>
+        <translation>%1 в зависимости от %2</translation>
+    </message>
+    <message>
+        <source>Dimensioned drawing</source>
+        <translation>Чертёж с размерами</translation>
+    </message>
+    <message>
+        <source>The mechanism in the pose of this sheet, scale %1</source>
+        <translation>Механизм в положении этого листа, масштаб %1</translation>
+    </message>
+    <message>
+        <source>Pose: %1. Scale %2 on A4 (the scale bar holds on any print size). Lengths in mm, angles in degrees; the dimensions are those of the pose shown.</source>
+        <translation>Положение: %1. Масштаб %2 на листе A4 (масштабная линейка верна при любом размере печати). Длины в мм, углы в градусах; размеры даны для показанного положения.</translation>
+    </message>
+    <message>
+        <source>Design warnings</source>
+        <translation>Предупреждения по конструкции</translation>
+    </message>
+    <message>
+        <source>Key poses</source>
+        <translation>Характерные положения</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Проверки</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Графики</translation>
+    </message>
+    <message>
+        <source>screw beyond the motor body at d_min</source>
+        <translation>выступание винта за корпус двигателя при d_min</translation>
+    </message>
+    <message>
+        <source>screw beyond the motor body at d_max (least free screw length)</source>
+        <translation>выступание винта за корпус двигателя при d_max (наименьшая свободная длина винта)</translation>
+    </message>
+    <message>
+        <source>motor steps per revolution of the screw</source>
+        <translation>шагов двигателя на один оборот винта</translation>
+    </message>
+    <message>
+        <source>motor speed at ḋ_max, 60·ḋ_max/h</source>
+        <translation>частота вращения двигателя при ḋ_max, 60·ḋ_max/h</translation>
+    </message>
+    <message>
+        <source>step rate at ḋ_max, ḋ_max/Δd</source>
+        <translation>частота шагов при ḋ_max, ḋ_max/Δd</translation>
+    </message>
+    <message>
+        <source>Key poses over the range and the recommended range</source>
+        <translation>Характерные положения: диапазон движения и рекомендуемый диапазон</translation>
+    </message>
+    <message>
+        <source>θ_rec,min</source>
+        <translation>θ_rec,min</translation>
+    </message>
+    <message>
+        <source>θ_rec,max</source>
+        <translation>θ_rec,max</translation>
+    </message>
+    <message>
+        <source> (this pose)</source>
+        <translation> (данное положение)</translation>
+    </message>
+    <message>
+        <source>T at F_max = %1 N, θ̇ at ḋ_max = %2 mm/s, Δθ per motor step Δd = %3 mm. The recommended range keeps J — and with it T, θ̇ and Δθ — within %4 % of its best over the range (the document: θ = −60°…40°).</source>
+        <translation>T при F_max = %1 Н, θ̇ при ḋ_max = %2 мм/с, Δθ на один шаг двигателя Δd = %3 мм. В рекомендуемом диапазоне J — а вместе с ним T, θ̇ и Δθ — остаётся в пределах %4 % от своего наилучшего значения в диапазоне (в документе: θ = −60°…40°).</translation>
+    </message>
+    <message>
+        <source>Actuator check</source>
+        <translation>Проверка привода</translation>
+    </message>
+    <message>
+        <source>The chosen motor: lead h = %1 mm, step Δd = %2 mm, ḋ_max = %3 mm/s, thrust F_max = %4 N, screw efficiency η = %5; body %6 mm long.</source>
+        <translation>Выбранный двигатель: ход винта h = %1 мм, шаг Δd = %2 мм, ḋ_max = %3 мм/с, осевое усилие F_max = %4 Н, КПД винта η = %5; длина корпуса %6 мм.</translation>
+    </message>
+    <message>
+        <source>Motor body fits the shortest diagonal</source>
+        <translation>Корпус двигателя короче наименьшей диагонали</translation>
+    </message>
+    <message>
+        <source>stroke d_max − d_min = %1 mm</source>
+        <translation>ход d_max − d_min = %1 мм</translation>
+    </message>
+    <message>
+        <source>worst at θ = %1, best at θ = %2; recommended range %3…%4</source>
+        <translation>худшее при θ = %1, лучшее при θ = %2; рекомендуемый диапазон %3…%4</translation>
+    </message>
+    <message>
+        <source>Output torque T = J·F_max (13)</source>
+        <translation>Выходной момент T = J·F_max (13)</translation>
+    </message>
+    <message>
+        <source>least T ≥ %1 % of the best</source>
+        <translation>наименьший T ≥ %1 % от наибольшего</translation>
+    </message>
+    <message>
+        <source>Output speed θ̇ = ḋ_max/J (8)</source>
+        <translation>Выходная скорость θ̇ = ḋ_max/J (8)</translation>
+    </message>
+    <message>
+        <source>greatest θ̇ ≤ the least ÷ %1</source>
+        <translation>наибольшая θ̇ ≤ наименьшая ÷ %1</translation>
+    </message>
+    <message>
+        <source>Output resolution Δθ = Δd/J</source>
+        <translation>Разрешение на выходе Δθ = Δd/J</translation>
+    </message>
+    <message>
+        <source>coarsest Δθ ≤ the finest ÷ %1</source>
+        <translation>самое грубое Δθ ≤ самое мелкое ÷ %1</translation>
+    </message>
+    <message>
+        <source>No singular pose in the range (θ = ±90°)</source>
+        <translation>Нет особых положений в диапазоне (θ = ±90°)</translation>
+    </message>
+    <message>
+        <source>|cos θ| ≥ %1</source>
+        <translation>|cos θ| ≥ %1</translation>
+    </message>
+    <message>
+        <source>Motor torque to push F_max</source>
+        <translation>Момент двигателя для создания усилия F_max</translation>
+    </message>
+    <message>
+        <source>the motor must give it at %1 min⁻¹ (%2 steps/s)</source>
+        <translation>двигатель должен развивать его при %1 мин⁻¹ (%2 шаг/с)</translation>
+    </message>
+    <message>
+        <source>FAIL above means that the range of θ reaches where J falls steeply: keep the joint in the recommended range %1…%2 where it must give its torque, speed and resolution.</source>
+        <translation>«НЕ ВЫПОЛНЕНО» выше означает, что диапазон θ заходит в область резкого спада J: там, где шарнир должен обеспечивать свой момент, скорость и разрешение, держите его в рекомендуемом диапазоне %1…%2.</translation>
+    </message>
+    <message>
+        <source>Diagonal length d(θ) (2), fig. 8</source>
+        <translation>Длина диагонали d(θ) (2), рис. 8</translation>
+    </message>
+    <message>
+        <source>Transmission angle μ(θ), fig. 10</source>
+        <translation>Угол передачи μ(θ), рис. 10</translation>
+    </message>
+    <message>
+        <source>Jacobian J(θ) = ∂d/∂θ (7), fig. 11</source>
+        <translation>Якобиан J(θ) = ∂d/∂θ (7), рис. 11</translation>
+    </message>
+    <message>
+        <source>Output torque T = J·F_max (13), fig. 17</source>
+        <translation>Выходной момент T = J·F_max (13), рис. 17</translation>
+    </message>
+    <message>
+        <source>Output speed θ̇ = ḋ_max/J, fig. 16</source>
+        <translation>Выходная скорость θ̇ = ḋ_max/J, рис. 16</translation>
+    </message>
+    <message>
+        <source>Output resolution Δθ = Δd/J, fig. 15</source>
+        <translation>Разрешение на выходе Δθ = Δd/J, рис. 15</translation>
+    </message>
+    <message>
+        <source>θ (°)</source>
+        <translation>θ (°)</translation>
+    </message>
+    <message>
+        <source>beyond the θ range</source>
+        <translation>за пределами диапазона θ</translation>
+    </message>
+    <message>
+        <source>this design (k = %1)</source>
+        <translation>эта конструкция (k = %1)</translation>
+    </message>
+    <message>
+        <source>recommended range</source>
+        <translation>рекомендуемый диапазон</translation>
+    </message>
+    <message>
+        <source>steep region</source>
+        <translation>крутой участок</translation>
+    </message>
+    <message>
+        <source>a = %1 mm; the family k = 0.3 … 1.5 at the same a</source>
+        <translation>a = %1 мм; семейство k = 0,3 … 1,5 при том же a</translation>
+    </message>
+    <message>
+        <source>crank-rocker</source>
+        <translation>кривошипно-коромысловый</translation>
+    </message>
+    <message>
+        <source>rocker-crank</source>
+        <translation>коромыслово-кривошипный</translation>
+    </message>
+    <message>
+        <source>double-crank</source>
+        <translation>двухкривошипный</translation>
+    </message>
+    <message>
+        <source>double-rocker</source>
+        <translation>двухкоромысловый</translation>
+    </message>
+    <message>
+        <source>triple-rocker (non-Grashof)</source>
+        <translation>трёхкоромысловый (не по Грасгофу)</translation>
+    </message>
+    <message>
+        <source>change-point</source>
+        <translation>переходный</translation>
+    </message>
+    <message>
+        <source>class</source>
+        <translation>класс</translation>
+    </message>
+    <message>
+        <source>Grashof class, s + l against p + q</source>
+        <translation>класс по Грасгофу: s + l в сравнении с p + q</translation>
+    </message>
+    <message>
+        <source>shortest + longest link</source>
+        <translation>самое короткое + самое длинное звено</translation>
+    </message>
+    <message>
+        <source>the other two links</source>
+        <translation>два остальных звена</translation>
+    </message>
+    <message>
+        <source>Key poses over the crank angle</source>
+        <translation>Характерные положения по углу кривошипа</translation>
+    </message>
+    <message>
+        <source>least μ</source>
+        <translation>наименьший μ</translation>
+    </message>
+    <message>
+        <source>At the constant crank speed ω₁ = %1 rad/s.</source>
+        <translation>При постоянной угловой скорости кривошипа ω₁ = %1 рад/с.</translation>
+    </message>
+    <message>
+        <source>Design check</source>
+        <translation>Проверка конструкции</translation>
+    </message>
+    <message>
+        <source>Grashof class</source>
+        <translation>Класс по Грасгофу</translation>
+    </message>
+    <message>
+        <source>s + l = %1 mm, p + q = %2 mm</source>
+        <translation>s + l = %1 мм; p + q = %2 мм</translation>
+    </message>
+    <message>
+        <source>Crank angle range</source>
+        <translation>Диапазон угла кривошипа</translation>
+    </message>
+    <message>
+        <source>the crank AB turns fully</source>
+        <translation>кривошип AB проворачивается полностью</translation>
+    </message>
+    <message>
+        <source>the crank AB cannot turn fully</source>
+        <translation>кривошип AB не проворачивается полностью</translation>
+    </message>
+    <message>
+        <source>Least transmission angle over the range</source>
+        <translation>Наименьший угол передачи в диапазоне</translation>
+    </message>
+    <message>
+        <source>at α = %1°</source>
+        <translation>при α = %1°</translation>
+    </message>
+    <message>
+        <source>Rocker angle δ(α)</source>
+        <translation>Угол коромысла δ(α)</translation>
+    </message>
+    <message>
+        <source>Transmission angle μ(α)</source>
+        <translation>Угол передачи μ(α)</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity ω₃(α)</source>
+        <translation>Угловая скорость коромысла ω₃(α)</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration ε₃(α)</source>
+        <translation>Угловое ускорение коромысла ε₃(α)</translation>
+    </message>
+    <message>
+        <source>μ = %1°: poor below</source>
+        <translation>μ = %1°: ниже — плохая передача</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>inverse</source>
+        <translation>обратное</translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation>прямое</translation>
+    </message>
+    <message>
+        <source>combined</source>
+        <translation>комбинированное</translation>
+    </message>
+    <message>
+        <source>PASS</source>
+        <translation>ВЫПОЛНЕНО</translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation>НЕ ВЫПОЛНЕНО</translation>
+    </message>
+    <message>
+        <source>INFO</source>
+        <translation>СПРАВКА</translation>
+    </message>
+    <message>
+        <source>singularity</source>
+        <translation>сингулярность</translation>
+    </message>
+    <message>
+        <source>singularity class of the pose</source>
+        <translation>вид сингулярности в этом положении</translation>
+    </message>
+    <message>
+        <source>PKM Studio · Parameter sheet</source>
+        <translation>PKM Studio · Лист параметров</translation>
+    </message>
+    <message>
+        <source>page %1 of %2</source>
+        <translation>стр. %1 из %2</translation>
+    </message>
+    <message>
+        <source>Parameter sheet</source>
+        <translation>Лист параметров</translation>
+    </message>
+    <message>
+        <source>field</source>
+        <translation>поле</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>значение</translation>
+    </message>
+    <message>
+        <source>Design</source>
+        <translation>Конструкция</translation>
+    </message>
+    <message>
+        <source>Mechanism</source>
+        <translation>Механизм</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Дата</translation>
+    </message>
+    <message>
+        <source>Software</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>About</source>
+        <translation>Описание</translation>
+    </message>
+    <message>
+        <source>Units: lengths mm, angles degrees, forces N, torques N·m, times s, unless a column says otherwise.</source>
+        <translation>Единицы: длины — мм, углы — градусы, силы — Н, моменты — Н·м, время — с, если в столбце не указано иное.</translation>
+    </message>
+    <message>
+        <source>Geometry</source>
+        <translation>Геометрия</translation>
+    </message>
+    <message>
+        <source>Range of motion</source>
+        <translation>Диапазон движения</translation>
+    </message>
+    <message>
+        <source>Actuator</source>
+        <translation>Привод</translation>
+    </message>
+    <message>
+        <source>Drawing only</source>
+        <translation>Только для чертежа</translation>
+    </message>
+    <message>
+        <source>Working and assembly modes</source>
+        <translation>Рабочие режимы и варианты сборки</translation>
+    </message>
+    <message>
+        <source>symbol</source>
+        <translation>обозначение</translation>
+    </message>
+    <message>
+        <source>quantity</source>
+        <translation>величина</translation>
+    </message>
+    <message>
+        <source>key</source>
+        <translation>ключ</translation>
+    </message>
+    <message>
+        <source>check</source>
+        <translation>проверка</translation>
+    </message>
+    <message>
+        <source>limit</source>
+        <translation>предел</translation>
+    </message>
+    <message>
+        <source>result</source>
+        <translation>результат</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (мм)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (мм)</translation>
+    </message>
+    <message>
+        <source>scale (A4)</source>
+        <translation>масштаб (A4)</translation>
+    </message>
+    <message>
+        <source>scale bar</source>
+        <translation>масштабная линейка</translation>
+    </message>
+    <message>
+        <source>units</source>
+        <translation>единицы</translation>
+    </message>
+    <message>
+        <source>mm, degrees</source>
+        <translation>мм, градусы</translation>
+    </message>
+    <message>
+        <source>design</source>
+        <translation>конструкция</translation>
+    </message>
+    <message>
+        <source>date</source>
+        <translation>дата</translation>
+    </message>
+    <message>
+        <source>Parameter sheet: %1</source>
+        <translation>Лист параметров: %1</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Рабочее пространство</translation>
+    </message>
+    <message>
+        <source>The platform positions reachable with every actuated input inside its range%1, on a grid of %2 × %3 square cells of %4 mm (as &apos;pkm workspace --grid %5&apos;).</source>
+        <translation>Положения платформы, достижимые при каждом приводном входе в пределах его диапазона%1, на сетке %2 × %3 квадратных ячеек со стороной %4 мм (как &apos;pkm workspace --grid %5&apos;).</translation>
+    </message>
+    <message>
+        <source>area of this form&apos;s workspace (exact)</source>
+        <translation>площадь рабочего пространства этой формы (точно)</translation>
+    </message>
+    <message>
+        <source>area of the extended (O) form (exact)</source>
+        <translation>площадь для вытянутой (O) формы (точно)</translation>
+    </message>
+    <message>
+        <source>area of the crossed (X) form (exact)</source>
+        <translation>площадь для скрещенной (X) формы (точно)</translation>
+    </message>
+    <message>
+        <source>area of this form on the grid</source>
+        <translation>площадь этой формы по сетке</translation>
+    </message>
+    <message>
+        <source>area of the workspace (grid)</source>
+        <translation>площадь рабочего пространства (по сетке)</translation>
+    </message>
+    <message>
+        <source>area in mode %1 (grid)</source>
+        <translation>площадь в режиме %1 (по сетке)</translation>
+    </message>
+    <message>
+        <source>area of the union of all modes (grid)</source>
+        <translation>площадь объединения всех режимов (по сетке)</translation>
+    </message>
+    <message>
+        <source>travel of the carrying axis</source>
+        <translation>ход несущей оси</translation>
+    </message>
+    <message>
+        <source>volume: the area extruded over the travel</source>
+        <translation>объём: площадь, вытянутая на длину хода</translation>
+    </message>
+    <message>
+        <source>reachable cells from x</source>
+        <translation>достижимые ячейки от x</translation>
+    </message>
+    <message>
+        <source>reachable cells to x</source>
+        <translation>достижимые ячейки до x</translation>
+    </message>
+    <message>
+        <source>reachable cells from y</source>
+        <translation>достижимые ячейки от y</translation>
+    </message>
+    <message>
+        <source>reachable cells to y</source>
+        <translation>достижимые ячейки до y</translation>
+    </message>
+    <message>
+        <source>cells</source>
+        <translation>ячейки</translation>
+    </message>
+    <message>
+        <source>reachable cells of the grid</source>
+        <translation>достижимые ячейки сетки</translation>
+    </message>
+    <message>
+        <source>Area per working and assembly mode</source>
+        <translation>Площадь для каждого рабочего режима и варианта сборки</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>режим</translation>
+    </message>
+    <message>
+        <source>area (grid)</source>
+        <translation>площадь (по сетке)</translation>
+    </message>
+    <message>
+        <source>area (exact)</source>
+        <translation>площадь (точно)</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>примечание</translation>
+    </message>
+    <message>
+        <source>this design</source>
+        <translation>данная конструкция</translation>
+    </message>
+    <message>
+        <source>no workspace</source>
+        <translation>нет рабочего пространства</translation>
+    </message>
+    <message>
+        <source>Workspaces of the modes</source>
+        <translation>Рабочие пространства режимов</translation>
+    </message>
+    <message>
+        <source>As &apos;pkm workspace -o FILE.png&apos;: this design&apos;s mode dark blue over the others&apos; light blue, the outline of their union dark.</source>
+        <translation>Как в &apos;pkm workspace -o FILE.png&apos;: режим данной конструкции — тёмно-синим поверх остальных (голубым), контур их объединения — тёмным.</translation>
+    </message>
+    <message>
+        <source>As &apos;pkm workspace -o FILE.png&apos;: the reachable cells light blue with a dark outline.</source>
+        <translation>Как в &apos;pkm workspace -o FILE.png&apos;: достижимые ячейки — голубым, с тёмным контуром.</translation>
+    </message>
+    <message>
+        <source>Singularity map: det J</source>
+        <translation>Карта сингулярностей: det J</translation>
+    </message>
+    <message>
+        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1.</source>
+        <translation>Как в &apos;pkm map -o FILE.png&apos;: det J синим ниже 0, белым при 0 (прямая сингулярность), красным выше 0, с ограничением ±%1.</translation>
+    </message>
+    <message>
+        <source>Singular poses in the workspace</source>
+        <translation>Особые положения в рабочем пространстве</translation>
+    </message>
+    <message>
+        <source>near-singular cells (margin &lt; %1, about 3° from a singular pose)</source>
+        <translation>ячейки вблизи особых положений (запас &lt; %1, примерно 3° от особого положения)</translation>
+    </message>
+    <message>
+        <source>their area</source>
+        <translation>их площадь</translation>
+    </message>
+    <message>
+        <source>Singular curves, each with one of its poses</source>
+        <translation>Кривые особых положений, для каждой — одно из её положений</translation>
+    </message>
+    <message>
+        <source>where</source>
+        <translation>где</translation>
+    </message>
+    <message>
+        <source>type</source>
+        <translation>тип</translation>
+    </message>
+    <message>
+        <source>curve length</source>
+        <translation>длина кривой</translation>
+    </message>
+    <message>
+        <source>Inverse: a leg loses a degree of freedom (a link perpendicular to its guide); direct: the platform gains one (the links in line). The pose given is the middle of each curve.</source>
+        <translation>Обратная: кинематическая цепь теряет степень свободы (звено перпендикулярно своей направляющей); прямая: платформа приобретает лишнюю степень свободы (звенья на одной прямой). Приведённое положение — середина каждой кривой.</translation>
+    </message>
+    <message>
+        <source>No singular curve lies inside the workspace.</source>
+        <translation>Внутри рабочего пространства нет кривых особых положений.</translation>
+    </message>
+    <message>
+        <source>Stroke of %1 the workspace uses</source>
+        <translation>Ход %1, используемый рабочим пространством</translation>
+    </message>
+    <message>
+        <source>within the guide %1 … %2</source>
+        <translation>в пределах направляющей %1 … %2</translation>
+    </message>
+    <message>
+        <source>within its range %1 … %2</source>
+        <translation>в пределах своего диапазона %1 … %2</translation>
+    </message>
+    <message>
+        <source>used from %1 to %2</source>
+        <translation>используется от %1 до %2</translation>
+    </message>
+    <message>
+        <source>Direct singular poses in the workspace</source>
+        <translation>Прямые особые положения в рабочем пространстве</translation>
+    </message>
+    <message>
+        <source>Inverse singular poses in the workspace</source>
+        <translation>Обратные особые положения в рабочем пространстве</translation>
+    </message>
+    <message>
+        <source>none: the platform would move with the actuators locked</source>
+        <translation>не допускаются: платформа двигалась бы при застопоренных приводах</translation>
+    </message>
+    <message>
+        <source>where a leg reaches the end of its reach; keep away in use</source>
+        <translation>где кинематическая цепь достигает предела досягаемости; в работе держаться в стороне</translation>
+    </message>
+    <message>
+        <source>no singular curve of this kind</source>
+        <translation>нет кривых особых положений этого вида</translation>
+    </message>
+    <message>
+        <source>α ∈ [%1°, %2°]</source>
+        <translation>α ∈ [%1°; %2°]</translation>
+    </message>
+    <message>
+        <source>min⁻¹</source>
+        <translation>мин⁻¹</translation>
+    </message>
+    <message>
+        <source>steps/s</source>
+        <translation>шаг/с</translation>
+    </message>
+    <message>
+        <source>mm³</source>
+        <translation>мм³</translation>
+    </message>
+</context>
+<context>
+    <name>core</name>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 мм</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>mm²</source>
+        <translation>мм²</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>Н</translation>
+    </message>
+    <message>
+        <source>N·m</source>
+        <translation>Н·м</translation>
+    </message>
+    <message>
+        <source>mm/s</source>
+        <translation>мм/с</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>рад/с</translation>
+    </message>
+    <message>
+        <source>mm/rad</source>
+        <translation>мм/рад</translation>
+    </message>
+    <message>
+        <source>mm/rad²</source>
+        <translation>мм/рад²</translation>
+    </message>
+    <message>
+        <source>mm²/rad</source>
+        <translation>мм²/рад</translation>
+    </message>
+    <message>
+        <source>rad/mm</source>
+        <translation>рад/мм</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>мм/об</translation>
+    </message>
+    <message>
+        <source>mm/step</source>
+        <translation>мм/шаг</translation>
+    </message>
+    <message>
+        <source>°/step</source>
+        <translation>°/шаг</translation>
+    </message>
+    <message>
+        <source>N·m/rad</source>
+        <translation>Н·м/рад</translation>
+    </message>
+    <message>
+        <source>mm⁴</source>
+        <translation>мм⁴</translation>
+    </message>
+    <message>
+        <source>rad²/mm²</source>
+        <translation>рад²/мм²</translation>
+    </message>
+    <message>
+        <source>(%1, %2) mm</source>
+        <translation>(%1; %2) мм</translation>
+    </message>
+    <message>
+        <source>[%1, %2]</source>
+        <translation>[%1; %2]</translation>
+    </message>
+    <message>
+        <source>%1 right of %2</source>
+        <translation>%1 справа от %2</translation>
+    </message>
+    <message>
+        <source>%1 left of %2</source>
+        <translation>%1 слева от %2</translation>
+    </message>
+    <message>
+        <source>length of crank 1, driven at A</source>
+        <translation>длина кривошипа 1 (привод в A)</translation>
+    </message>
+    <message>
+        <source>length of distal link 1, from B to C</source>
+        <translation>длина шатуна 1, от B до C</translation>
+    </message>
+    <message>
+        <source>length of distal link 2, from C to D</source>
+        <translation>длина шатуна 2, от C до D</translation>
+    </message>
+    <message>
+        <source>length of crank 2, driven at E</source>
+        <translation>длина кривошипа 2 (привод в E)</translation>
+    </message>
+    <message>
+        <source>length of the ground, from A to E along +x</source>
+        <translation>длина стойки, от A до E вдоль +x</translation>
+    </message>
+    <message>
+        <source>lower limit of crank angle θ₁</source>
+        <translation>нижняя граница угла кривошипа θ₁</translation>
+    </message>
+    <message>
+        <source>upper limit of crank angle θ₁</source>
+        <translation>верхняя граница угла кривошипа θ₁</translation>
+    </message>
+    <message>
+        <source>lower limit of crank angle θ₄</source>
+        <translation>нижняя граница угла кривошипа θ₄</translation>
+    </message>
+    <message>
+        <source>upper limit of crank angle θ₄</source>
+        <translation>верхняя граница угла кривошипа θ₄</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>слева</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>справа</translation>
+    </message>
+    <message>
+        <source>working mode of leg 1: elbow B left (+1) or right (−1) of A→C</source>
+        <translation>рабочий режим ветви 1: шарнир B слева (+1) или справа (−1) от A→C</translation>
+    </message>
+    <message>
+        <source>working mode of leg 2: elbow D left (+1) or right (−1) of E→C</source>
+        <translation>рабочий режим ветви 2: шарнир D слева (+1) или справа (−1) от E→C</translation>
+    </message>
+    <message>
+        <source>assembly mode: C left (+1) or right (−1) of B→D</source>
+        <translation>вариант сборки: C слева (+1) или справа (−1) от B→D</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is invalid: it must be +1 (left) or -1 (right).</source>
+        <translation>%1 = %2 — недопустимое значение: должно быть +1 (слева) или -1 (справа).</translation>
+    </message>
+    <message>
+        <source>The five-bar linkage has no parameter named &apos;%1&apos;.</source>
+        <translation>У пятизвенного механизма нет параметра «%1».</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must be less than %3 = %4.</source>
+        <translation>%1 = %2 должно быть меньше %3 = %4.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 lies %3 above %4 = %5: a crank&apos;s range may span one turn (360°) at most.</source>
+        <translation>%1 = %2 больше %4 = %5 на %3: диапазон кривошипа может охватывать не более одного оборота (360°).</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is not shorter than %3 = %4: the links cannot close the loop ABCDE for any crank angles (each link must be shorter than the other four together).</source>
+        <translation>%1 = %2 не короче, чем %3 = %4: звенья не могут замкнуть контур ABCDE ни при каких углах кривошипов (каждое звено должно быть короче суммы остальных четырёх).</translation>
+    </message>
+    <message>
+        <source>This five-bar has no workspace: with %1 the loop ABCDE never closes. Change a mode, a range or a length.</source>
+        <translation>У этого пятизвенного механизма нет рабочего пространства: при %1 контур ABCDE не замыкается ни в одном положении. Измените режим, диапазон или длину.</translation>
+    </message>
+    <message>
+        <source>This five-bar has no workspace: with %1 and the crank ranges %2 the loop ABCDE never closes. Change a mode, a range or a length.</source>
+        <translation>У этого пятизвенного механизма нет рабочего пространства: при %1 и диапазонах кривошипов %2 контур ABCDE не замыкается ни в одном положении. Измените режим, диапазон или длину.</translation>
+    </message>
+    <message>
+        <source>The workspace of these modes reaches direct singularities (the curves where the distal links BC and CD come in line, marked on the map): there C can move with both cranks held and the mechanism may switch its assembly mode. Keep the path of C away from them.</source>
+        <translation>Рабочее пространство в этих режимах доходит до особых положений прямой кинематики (кривых, на которых шатуны BC и CD выстраиваются в одну линию; они отмечены на карте): там точка C может смещаться при обоих застопоренных кривошипах, а механизм — сменить вариант сборки. Держите траекторию C подальше от них.</translation>
+    </message>
+    <message>
+        <source>crank AB angle at A, from +x counter-clockwise (actuated)</source>
+        <translation>угол кривошипа AB в A, от +x против часовой стрелки (приводной)</translation>
+    </message>
+    <message>
+        <source>crank ED angle at E, from +x counter-clockwise (actuated)</source>
+        <translation>угол кривошипа ED в E, от +x против часовой стрелки (приводной)</translation>
+    </message>
+    <message>
+        <source>output point C, x</source>
+        <translation>выходная точка C, x</translation>
+    </message>
+    <message>
+        <source>output point C, y</source>
+        <translation>выходная точка C, y</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 the distal links cannot meet: |BD| = %3 is more than BC + CD = %4 (past the dead point where BC and CD are stretched in line, a direct singularity).</source>
+        <translation>При theta1 = %1, theta4 = %2 шатуны не могут сойтись: |BD| = %3 больше, чем BC + CD = %4 (за мёртвой точкой, где BC и CD вытянуты в одну линию, — особым положением прямой кинематики).</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 the distal links cannot meet: |BD| = %3 is less than |BC − CD| = %4 (past the dead point where BC and CD fold in line, a direct singularity).</source>
+        <translation>При theta1 = %1, theta4 = %2 шатуны не могут сойтись: |BD| = %3 меньше, чем |BC − CD| = %4 (за мёртвой точкой, где BC и CD складываются в одну линию, — особым положением прямой кинематики).</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 the elbows B and D coincide and BC = CD: the position of C is undetermined.</source>
+        <translation>При theta1 = %1, theta4 = %2 шарниры B и D совпадают, а BC = CD: положение C не определено.</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 leg %3 would be in its other working mode (%4): crank %5 and link %6 pass through in line (an inverse singularity) on the way; switch %7 to go on.</source>
+        <translation>При theta1 = %1, theta4 = %2 ветвь %3 оказалась бы в другом рабочем режиме (%4): по пути кривошип %5 и шатун %6 проходят через положение на одной прямой (особое положение обратной кинематики); чтобы продолжить, переключите %7.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1: it lies %2 from %3, more than %4 + %5 = %6.</source>
+        <translation>C не может достичь точки %1: она удалена от %3 на %2, это больше, чем %4 + %5 = %6.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1: it lies %2 from %3, less than |%4 − %5| = %6.</source>
+        <translation>C не может достичь точки %1: она удалена от %3 на %2, это меньше, чем |%4 − %5| = %6.</translation>
+    </message>
+    <message>
+        <source>C = %1 lies on %2 and %3 = %4: the crank angle %5 is undetermined.</source>
+        <translation>C = %1 совпадает с %2, а %3 = %4: угол кривошипа %5 не определён.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1: crank %2 would have to be at %3 = %4, outside its range %5.</source>
+        <translation>C не может достичь точки %1: кривошип %2 должен был бы стоять в %3 = %4, вне своего диапазона %5.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch assembly to go on.</source>
+        <translation>C не может достичь точки %1 в этом варианте сборки (%2): она пересекла бы прямую BD, на которой шатуны лежат на одной линии (особое положение прямой кинематики); чтобы продолжить, переключите вариант сборки (assembly).</translation>
+    </message>
+    <message>
+        <source>No failure.</source>
+        <translation>Ошибки нет.</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number.</source>
+        <translation>%1 должно быть конечным числом.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range of crank %3, %4: the crank turns fully, give its angle within it.</source>
+        <translation>%1 = %2 вне диапазона кривошипа %3, %4: кривошип проворачивается полностью, задайте угол в этих пределах.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range of crank %3, %4.</source>
+        <translation>%1 = %2 вне диапазона кривошипа %3, %4.</translation>
+    </message>
+    <message>
+        <source>crank AB angle at A, from +x counter-clockwise</source>
+        <translation>угол кривошипа AB в A, от +x против часовой стрелки</translation>
+    </message>
+    <message>
+        <source>crank ED angle at E, from +x counter-clockwise</source>
+        <translation>угол кривошипа ED в E, от +x против часовой стрелки</translation>
+    </message>
+    <message>
+        <source>J_x rows (C − B)ᵀ, (C − D)ᵀ</source>
+        <translation>строки J_x: (C − B)ᵀ, (C − D)ᵀ</translation>
+    </message>
+    <message>
+        <source>determinant of J (0: direct, ∞: inverse singularity)</source>
+        <translation>определитель J (0 — особое положение прямой, ∞ — обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>0 at an inverse singularity (a leg stretched or folded)</source>
+        <translation>0 в особом положении обратной кинематики (ветвь вытянута или сложена)</translation>
+    </message>
+    <message>
+        <source>0 at a direct singularity (the distal links in line)</source>
+        <translation>0 в особом положении прямой кинематики (шатуны на одной прямой)</translation>
+    </message>
+    <message>
+        <source>condition number of J</source>
+        <translation>число обусловленности J</translation>
+    </message>
+    <message>
+        <source>angle ABC between crank AB and link BC (0°, 180°: inverse singularity)</source>
+        <translation>угол ABC между кривошипом AB и шатуном BC (0°, 180° — особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>angle EDC between crank ED and link DC (0°, 180°: inverse singularity)</source>
+        <translation>угол EDC между кривошипом ED и шатуном DC (0°, 180° — особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>angle BCD between the distal links (0°, 180°: direct singularity)</source>
+        <translation>угол BCD между шатунами (0°, 180° — особое положение прямой кинематики)</translation>
+    </message>
+    <message>
+        <source>transmission angle between the distal links, min(ψ, 180° − ψ)</source>
+        <translation>угол передачи между шатунами, min(ψ, 180° − ψ)</translation>
+    </message>
+    <message>
+        <source>distance from the inverse singularities, min |sin φ_i| (0 … 1)</source>
+        <translation>удалённость от особых положений обратной кинематики, min |sin φ_i| (0 … 1)</translation>
+    </message>
+    <message>
+        <source>distance from the direct singularities, |sin ψ| (0 … 1)</source>
+        <translation>удалённость от особых положений прямой кинематики, |sin ψ| (0 … 1)</translation>
+    </message>
+    <message>
+        <source>distance from the nearest singularity (0 … 1)</source>
+        <translation>удалённость от ближайшего особого положения (0 … 1)</translation>
+    </message>
+    <message>
+        <source>other assembly mode (C right of B→D, same crank angles)</source>
+        <translation>другой вариант сборки (C справа от B→D, те же углы кривошипов)</translation>
+    </message>
+    <message>
+        <source>other assembly mode (C left of B→D, same crank angles)</source>
+        <translation>другой вариант сборки (C слева от B→D, те же углы кривошипов)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (B left of A→C, same C)</source>
+        <translation>ветвь 1: другой рабочий режим (B слева от A→C, та же точка C)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (B right of A→C, same C)</source>
+        <translation>ветвь 1: другой рабочий режим (B справа от A→C, та же точка C)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (D left of E→C, same C)</source>
+        <translation>ветвь 2: другой рабочий режим (D слева от E→C, та же точка C)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (D right of E→C, same C)</source>
+        <translation>ветвь 2: другой рабочий режим (D справа от E→C, та же точка C)</translation>
+    </message>
+    <message>
+        <source>ground</source>
+        <translation>стойка</translation>
+    </message>
+    <message>
+        <source>crank AB</source>
+        <translation>кривошип AB</translation>
+    </message>
+    <message>
+        <source>link BC</source>
+        <translation>шатун BC</translation>
+    </message>
+    <message>
+        <source>link CD</source>
+        <translation>шатун CD</translation>
+    </message>
+    <message>
+        <source>crank DE</source>
+        <translation>кривошип DE</translation>
+    </message>
+    <message>
+        <source>planar five-bar: ground AE, cranks AB and DE (driven at A and E), distal links BC and CD</source>
+        <translation>плоский пятизвенный механизм: стойка AE, кривошипы AB и DE (привод в A и E), шатуны BC и CD</translation>
+    </message>
+    <message>
+        <source>drag to move C (inverse kinematics)</source>
+        <translation>перетащите, чтобы переместить C (обратная кинематика)</translation>
+    </message>
+    <message>
+        <source>drag to turn crank AB (sets θ₁, direct kinematics)</source>
+        <translation>перетащите, чтобы повернуть кривошип AB (задаёт θ₁, прямая кинематика)</translation>
+    </message>
+    <message>
+        <source>drag to turn crank DE (sets θ₄, direct kinematics)</source>
+        <translation>перетащите, чтобы повернуть кривошип DE (задаёт θ₄, прямая кинематика)</translation>
+    </message>
+    <message>
+        <source>No handle with that index.</source>
+        <translation>Нет маркера с таким номером.</translation>
+    </message>
+    <message>
+        <source>crank and distal link in line</source>
+        <translation>кривошип и шатун на одной прямой</translation>
+    </message>
+    <message>
+        <source>distal links in line</source>
+        <translation>шатуны на одной прямой</translation>
+    </message>
+    <message>
+        <source>leg 1 stretched (AB, BC in line)</source>
+        <translation>ветвь 1 вытянута (AB, BC на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 1 folded (AB, BC in line)</source>
+        <translation>ветвь 1 сложена (AB, BC на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 2 stretched (DE, CD in line)</source>
+        <translation>ветвь 2 вытянута (DE, CD на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 2 folded (DE, CD in line)</source>
+        <translation>ветвь 2 сложена (DE, CD на одной прямой)</translation>
+    </message>
+    <message>
+        <source>rad/s²</source>
+        <translation>рад/с²</translation>
+    </message>
+    <message>
+        <source>crossed</source>
+        <translation>скрещенная</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>открытая</translation>
+    </message>
+    <message>
+        <source>crank-rocker</source>
+        <translation>кривошипно-коромысловый</translation>
+    </message>
+    <message>
+        <source>rocker-crank</source>
+        <translation>коромыслово-кривошипный</translation>
+    </message>
+    <message>
+        <source>double-crank</source>
+        <translation>двухкривошипный</translation>
+    </message>
+    <message>
+        <source>double-rocker</source>
+        <translation>двухкоромысловый</translation>
+    </message>
+    <message>
+        <source>triple-rocker</source>
+        <translation>трёхкоромысловый</translation>
+    </message>
+    <message>
+        <source>change-point</source>
+        <translation>переходный</translation>
+    </message>
+    <message>
+        <source>crank (input link) length</source>
+        <translation>длина кривошипа (входного звена)</translation>
+    </message>
+    <message>
+        <source>coupler length</source>
+        <translation>длина шатуна</translation>
+    </message>
+    <message>
+        <source>rocker (output link) length</source>
+        <translation>длина коромысла (выходного звена)</translation>
+    </message>
+    <message>
+        <source>ground (frame) length</source>
+        <translation>длина стойки (неподвижного звена)</translation>
+    </message>
+    <message>
+        <source>crank angular velocity, constant (positive: α grows, counter-clockwise)</source>
+        <translation>угловая скорость кривошипа, постоянная (положительная: α растёт, против часовой стрелки)</translation>
+    </message>
+    <message>
+        <source>coupler point M on BC: BM/BC (0 at B, 1 at C)</source>
+        <translation>точка M шатуна на BC: BM/BC (0 в B, 1 в C)</translation>
+    </message>
+    <message>
+        <source>assembly branch: +1 open (C left of B→D), −1 crossed</source>
+        <translation>ветвь сборки: +1 открытая (C слева от B→D), −1 скрещенная</translation>
+    </message>
+    <message>
+        <source>branch = %1 is invalid: it must be +1 (open) or -1 (crossed).</source>
+        <translation>branch = %1 — недопустимое значение: должно быть +1 (открытая) или -1 (скрещенная).</translation>
+    </message>
+    <message>
+        <source>The four-bar linkage has no parameter named &apos;%1&apos;.</source>
+        <translation>У четырёхзвенного механизма нет параметра «%1».</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is not shorter than %3 = %4: the links cannot close the loop ABCD for any crank angle α (each link must be shorter than the other three together).</source>
+        <translation>%1 = %2 не меньше, чем %3 = %4: звенья не замыкают контур ABCD ни при каком угле кривошипа α (каждое звено должно быть короче трёх остальных, вместе взятых).</translation>
+    </message>
+    <message>
+        <source>at α = %1 the diagonal |BD| reaches BC + CD = %2: the coupler and the rocker are stretched in line (a dead point), and beyond it they cannot reach each other</source>
+        <translation>при α = %1 диагональ |BD| достигает BC + CD = %2: шатун и коромысло вытянуты в одну линию (мёртвое положение), и дальше они не могут соединиться</translation>
+    </message>
+    <message>
+        <source>at α = %1 the diagonal |BD| falls to |BC − CD| = %2: the coupler and the rocker are folded in line (a dead point), and beyond it they cannot close the loop</source>
+        <translation>при α = %1 диагональ |BD| уменьшается до |BC − CD| = %2: шатун и коромысло сложены в одну линию (мёртвое положение), и дальше они не могут замкнуть контур</translation>
+    </message>
+    <message>
+        <source>s + l = p + q (a change-point linkage): the links fold flat in line somewhere in the motion, where the open and crossed branches meet and a real linkage may switch branch.</source>
+        <translation>s + l = p + q (переходный механизм): в каком-то положении звенья складываются в одну линию; там открытая и скрещенная ветви сходятся, и реальный механизм может перейти на другую ветвь.</translation>
+    </message>
+    <message>
+        <source>The crank cannot turn fully: α is limited to [%1, %2], at whose ends the coupler and the rocker are in line (dead points where the crank cannot drive the rocker).</source>
+        <translation>Кривошип не проворачивается полностью: α ограничен отрезком [%1, %2], на концах которого шатун и коромысло лежат на одной линии (мёртвые положения, в которых кривошип не может вести коромысло).</translation>
+    </message>
+    <message>
+        <source>The transmission angle falls to %1 at α = %2 (below %3°): the crank drives the rocker poorly there.</source>
+        <translation>Угол передачи падает до %1 при α = %2 (меньше %3°): здесь кривошип плохо передаёт движение коромыслу.</translation>
+    </message>
+    <message>
+        <source>crank angle at A, from AD counter-clockwise (actuated)</source>
+        <translation>угол кривошипа в A, от AD против часовой стрелки (ведущий)</translation>
+    </message>
+    <message>
+        <source>rocker angle at D, from DA clockwise (output)</source>
+        <translation>угол коромысла в D, от DA по часовой стрелке (выход)</translation>
+    </message>
+    <message>
+        <source>alpha must be a finite number.</source>
+        <translation>Значение alpha должно быть конечным числом.</translation>
+    </message>
+    <message>
+        <source>alpha = %1 is outside [0°, 360°]: the crank turns fully, give its angle within one turn.</source>
+        <translation>alpha = %1 вне [0°, 360°]: кривошип проворачивается полностью, задайте его угол в пределах одного оборота.</translation>
+    </message>
+    <message>
+        <source>alpha = %1 is outside the range of the crank of this %2 linkage, [%3, %4]: %5.</source>
+        <translation>alpha = %1 вне диапазона кривошипа этого механизма (тип по Грасгофу: %2), [%3, %4]: %5.</translation>
+    </message>
+    <message>
+        <source>At alpha = %1 the crank joint B lies on D: the rocker&apos;s angle is undetermined.</source>
+        <translation>При alpha = %1 шарнир кривошипа B совпадает с D: угол коромысла не определён.</translation>
+    </message>
+    <message>
+        <source>The loop ABCD does not close at alpha = %1.</source>
+        <translation>Контур ABCD не замыкается при alpha = %1.</translation>
+    </message>
+    <message>
+        <source>delta must be a finite number.</source>
+        <translation>Значение delta должно быть конечным числом.</translation>
+    </message>
+    <message>
+        <source>delta = %1 is outside the range the rocker reaches in the crossed branch, [%2, %3]: at its ends the crank and the coupler are in line, or the crank is at its own limit.</source>
+        <translation>delta = %1 вне диапазона, который коромысло проходит в скрещенной ветви, [%2, %3]: на его концах кривошип и шатун лежат на одной линии или кривошип находится на собственном пределе.</translation>
+    </message>
+    <message>
+        <source>delta = %1 is outside the range the rocker reaches in the open branch, [%2, %3]: at its ends the crank and the coupler are in line, or the crank is at its own limit.</source>
+        <translation>delta = %1 вне диапазона, который коромысло проходит в открытой ветви, [%2, %3]: на его концах кривошип и шатун лежат на одной линии или кривошип находится на собственном пределе.</translation>
+    </message>
+    <message>
+        <source>At delta = %1 the rocker joint C lies on A: the crank angle is undetermined.</source>
+        <translation>При delta = %1 шарнир коромысла C совпадает с A: угол кривошипа не определён.</translation>
+    </message>
+    <message>
+        <source>The crank cannot reach the coupler at delta = %1: |AC| = %2 is not between |AB − BC| and AB + BC.</source>
+        <translation>При delta = %1 кривошип не достаёт до шатуна: |AC| = %2 не лежит между |AB − BC| и AB + BC.</translation>
+    </message>
+    <message>
+        <source>The rocker reaches delta = %1 only in the other assembly branch; this design is crossed.</source>
+        <translation>Коромысло достигает delta = %1 только в другой ветви сборки; эта конструкция собрана в скрещенной ветви.</translation>
+    </message>
+    <message>
+        <source>The rocker reaches delta = %1 only in the other assembly branch; this design is open.</source>
+        <translation>Коромысло достигает delta = %1 только в другой ветви сборки; эта конструкция собрана в открытой ветви.</translation>
+    </message>
+    <message>
+        <source>crank angle at A, from AD counter-clockwise</source>
+        <translation>угол кривошипа в A, от AD против часовой стрелки</translation>
+    </message>
+    <message>
+        <source>rocker angle at D, from DA clockwise</source>
+        <translation>угол коромысла в D, от DA по часовой стрелке</translation>
+    </message>
+    <message>
+        <source>transmission angle at C, from CB to CD counter-clockwise (&lt; 0: crossed)</source>
+        <translation>угол передачи в C, от CB к CD против часовой стрелки (&lt; 0: скрещенная ветвь)</translation>
+    </message>
+    <message>
+        <source>angle at D from DA to DB (4)</source>
+        <translation>угол в D от DA к DB (4)</translation>
+    </message>
+    <message>
+        <source>angle at B from BA to BC, 360° − (α + γ + δ)</source>
+        <translation>угол в B от BA к BC, 360° − (α + γ + δ)</translation>
+    </message>
+    <message>
+        <source>J_q = ∂F/∂α = 2·AB·BC·sin β (0: inverse singularity)</source>
+        <translation>J_q = ∂F/∂α = 2·AB·BC·sin β (0: особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>J_x = −∂F/∂δ = −2·BC·CD·sin γ (0: direct singularity)</source>
+        <translation>J_x = −∂F/∂δ = −2·BC·CD·sin γ (0: особое положение прямой кинематики)</translation>
+    </message>
+    <message>
+        <source>α̇ = J·δ̇, J = J_q⁻¹·J_x = dα/dδ</source>
+        <translation>α̇ = J·δ̇, J = J_q⁻¹·J_x = dα/dδ</translation>
+    </message>
+    <message>
+        <source>transfer function dδ/dα = ω₃/ω₁ = −(9)</source>
+        <translation>передаточная функция dδ/dα = ω₃/ω₁ = −(9)</translation>
+    </message>
+    <message>
+        <source>crank angular velocity (constant)</source>
+        <translation>угловая скорость кривошипа (постоянная)</translation>
+    </message>
+    <message>
+        <source>coupler angular velocity, counter-clockwise</source>
+        <translation>угловая скорость шатуна, против часовой стрелки</translation>
+    </message>
+    <message>
+        <source>dδ/dt, exact (the document&apos;s (8) with the opposite sign)</source>
+        <translation>dδ/dt, точное значение (формула (8) статьи с обратным знаком)</translation>
+    </message>
+    <message>
+        <source>coupler angular acceleration, counter-clockwise</source>
+        <translation>угловое ускорение шатуна, против часовой стрелки</translation>
+    </message>
+    <message>
+        <source>d²δ/dt² at constant ω₁, exact (not the document&apos;s (14))</source>
+        <translation>d²δ/dt² при постоянной ω₁, точное значение (не формула (14) статьи)</translation>
+    </message>
+    <message>
+        <source>acute transmission angle min(|γ|, 180° − |γ|) (below 40°: poor)</source>
+        <translation>острый угол передачи min(|γ|, 180° − |γ|) (меньше 40°: плохая передача)</translation>
+    </message>
+    <message>
+        <source>distance from the nearest singularity, min(|sin β|, |sin γ|)</source>
+        <translation>удалённость от ближайшего особого положения, min(|sin β|, |sin γ|)</translation>
+    </message>
+    <message>
+        <source>diagonal |BD|</source>
+        <translation>диагональ |BD|</translation>
+    </message>
+    <message>
+        <source>coupler point M, x</source>
+        <translation>точка шатуна M, x</translation>
+    </message>
+    <message>
+        <source>coupler point M, y</source>
+        <translation>точка шатуна M, y</translation>
+    </message>
+    <message>
+        <source>instantaneous centre P of the coupler, x (none: AB ∥ DC)</source>
+        <translation>мгновенный центр скоростей P шатуна, x (нет: AB ∥ DC)</translation>
+    </message>
+    <message>
+        <source>instantaneous centre P of the coupler, y (none: AB ∥ DC)</source>
+        <translation>мгновенный центр скоростей P шатуна, y (нет: AB ∥ DC)</translation>
+    </message>
+    <message>
+        <source>assembly branch: open (C left of B→D) or crossed</source>
+        <translation>ветвь сборки: открытая (C слева от B→D) или скрещенная</translation>
+    </message>
+    <message>
+        <source>Grashof class from s + l against p + q</source>
+        <translation>тип по Грасгофу: s + l в сравнении с p + q</translation>
+    </message>
+    <message>
+        <source>crossed branch (same crank angle)</source>
+        <translation>скрещенная ветвь (тот же угол кривошипа)</translation>
+    </message>
+    <message>
+        <source>open branch (same crank angle)</source>
+        <translation>открытая ветвь (тот же угол кривошипа)</translation>
+    </message>
+    <message>
+        <source>ground AD</source>
+        <translation>стойка AD</translation>
+    </message>
+    <message>
+        <source>coupler BC</source>
+        <translation>шатун BC</translation>
+    </message>
+    <message>
+        <source>rocker CD</source>
+        <translation>коромысло CD</translation>
+    </message>
+    <message>
+        <source>planar four-bar: ground AD, crank AB (driven at A), coupler BC, rocker CD</source>
+        <translation>плоский четырёхзвенный механизм: стойка AD, кривошип AB (привод в A), шатун BC, коромысло CD</translation>
+    </message>
+    <message>
+        <source>BC (P at infinity: AB ∥ DC, the coupler translates)</source>
+        <translation>BC (P в бесконечности: AB ∥ DC, шатун движется поступательно)</translation>
+    </message>
+    <message>
+        <source>drag to turn the crank (sets α, direct kinematics)</source>
+        <translation>перетащите, чтобы повернуть кривошип (задаёт α, прямая кинематика)</translation>
+    </message>
+    <message>
+        <source>drag to swing the rocker (sets δ, inverse kinematics)</source>
+        <translation>перетащите, чтобы качнуть коромысло (задаёт δ, обратная кинематика)</translation>
+    </message>
+    <message>
+        <source>coupler curve of M (crossed branch)</source>
+        <translation>шатунная кривая точки M (скрещенная ветвь)</translation>
+    </message>
+    <message>
+        <source>coupler curve of M (open branch)</source>
+        <translation>шатунная кривая точки M (открытая ветвь)</translation>
+    </message>
+    <message>
+        <source>No joint variable with that index.</source>
+        <translation>Нет обобщённой координаты с таким номером.</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>не число</translation>
+    </message>
+    <message>
+        <source>%1 (%2) = %3 is invalid: it must be greater than %4.</source>
+        <translation>%1 (%2) = %3 — недопустимое значение: оно должно быть больше %4.</translation>
+    </message>
+    <message>
+        <source>%1 (%2) = %3 is invalid: it must be at least %4.</source>
+        <translation>%1 (%2) = %3 — недопустимое значение: оно должно быть не меньше %4.</translation>
+    </message>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <source>(%1, %2]</source>
+        <translation>(%1; %2]</translation>
+    </message>
+    <message>
+        <source>[%1, %2)</source>
+        <translation>[%1; %2)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) = %3 is invalid: it must be %4.</source>
+        <translation>%1 (%2) = %3 — недопустимое значение: оно должно лежать в пределах %4.</translation>
+    </message>
+    <message>
+        <source>no kinematic chain is described for this mechanism</source>
+        <translation>для этого механизма не описана кинематическая цепь</translation>
+    </message>
+    <message>
+        <source>pair &apos;%1&apos; does not join two different links of the chain</source>
+        <translation>пара «%1» не соединяет два разных звена цепи</translation>
+    </message>
+    <message>
+        <source>pair &apos;%1&apos; has a point or an axis that is not finite</source>
+        <translation>у пары «%1» точка или ось заданы не конечными числами</translation>
+    </message>
+    <message>
+        <source>pair &apos;%1&apos; has no axis</source>
+        <translation>у пары «%1» нет оси</translation>
+    </message>
+    <message>
+        <source>the chain is marked planar (the plane z = 0) but pair &apos;%1&apos; is not</source>
+        <translation>цепь отмечена как плоская (плоскость z = 0), но пара «%1» не лежит в ней</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n moving link(s)</source>
+        <translation>
+            <numerusform>%n подвижное звено</numerusform>
+            <numerusform>%n подвижных звена</numerusform>
+            <numerusform>%n подвижных звеньев</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pair(s)</source>
+        <translation>
+            <numerusform>%n кинематическая пара</numerusform>
+            <numerusform>%n кинематические пары</numerusform>
+            <numerusform>%n кинематических пар</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n loop(s)</source>
+        <translation>
+            <numerusform>%n замкнутый контур</numerusform>
+            <numerusform>%n замкнутых контура</numerusform>
+            <numerusform>%n замкнутых контуров</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Planar chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
+        <translation>Плоская цепь (%1, %2 и %3): ранг её матрицы Якоби уравнений связей даёт подвижность %4</translation>
+    </message>
+    <message>
+        <source>Spatial chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
+        <translation>Пространственная цепь (%1, %2 и %3): ранг её матрицы Якоби уравнений связей даёт подвижность %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>Chebyshev&apos;s W = %1 is wrong: %n planar loop equation(s) is/are redundant (an overconstrained planar chain)</source>
+        <translation>
+            <numerusform>формула Чебышева даёт W = %1 — неверно: %n уравнение плоских контуров избыточно (плоская цепь с избыточными связями)</numerusform>
+            <numerusform>формула Чебышева даёт W = %1 — неверно: %n уравнения плоских контуров избыточны (плоская цепь с избыточными связями)</numerusform>
+            <numerusform>формула Чебышева даёт W = %1 — неверно: %n уравнений плоских контуров избыточны (плоская цепь с избыточными связями)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Chebyshev&apos;s W = %1 is right</source>
+        <translation>формула Чебышева даёт W = %1 — верно</translation>
+    </message>
+    <message>
+        <source>Somov–Malyshev&apos;s W = %1 is right</source>
+        <translation>формула Сомова–Малышева даёт W = %1 — верно</translation>
+    </message>
+    <message>
+        <source>(parallel axes: a planar loop imposes only 3)</source>
+        <translation>(оси параллельны: плоский контур накладывает только 3)</translation>
+    </message>
+    <message>
+        <source>(an overconstrained, &quot;paradoxical&quot; chain: it moves)</source>
+        <translation>(«парадоксальная» цепь с избыточными связями: она подвижна)</translation>
+    </message>
+    <message>
+        <source>(an overconstrained chain)</source>
+        <translation>(цепь с избыточными связями)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Somov–Malyshev&apos;s W = %1 is wrong: it counts 6 equations per loop and %n is/are redundant %2</source>
+        <translation>
+            <numerusform>формула Сомова–Малышева даёт W = %1 — неверно: она считает 6 уравнений на контур, а %n из них избыточно %2</numerusform>
+            <numerusform>формула Сомова–Малышева даёт W = %1 — неверно: она считает 6 уравнений на контур, а %n из них избыточны %2</numerusform>
+            <numerusform>формула Сомова–Малышева даёт W = %1 — неверно: она считает 6 уравнений на контур, а %n из них избыточны %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>at this pose the rank drops: the instantaneous mobility is %1, a singular pose</source>
+        <translation>в этом положении ранг падает: мгновенная подвижность равна %1 — особое положение</translation>
+    </message>
+    <message>
+        <source>no pair is actuated</source>
+        <translation>ни одна пара не снабжена приводом</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n freedom(s)</source>
+        <translation>
+            <numerusform>%n степень свободы</numerusform>
+            <numerusform>%n степени свободы</numerusform>
+            <numerusform>%n степеней свободы</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s) leave(s) %1 uncontrolled (under-actuated)</source>
+        <translation>
+            <numerusform>%n степень свободы с приводом: без управления остаётся %1 (приводов недостаточно)</numerusform>
+            <numerusform>%n степени свободы с приводом: без управления остаётся %1 (приводов недостаточно)</numerusform>
+            <numerusform>%n степеней свободы с приводом: без управления остаётся %1 (приводов недостаточно)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s) for mobility %1: redundantly actuated</source>
+        <translation>
+            <numerusform>%n степень свободы с приводом при подвижности %1: избыточное число приводов</numerusform>
+            <numerusform>%n степени свободы с приводом при подвижности %1: избыточное число приводов</numerusform>
+            <numerusform>%n степеней свободы с приводом при подвижности %1: избыточное число приводов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s): fully actuated</source>
+        <translation>
+            <numerusform>%n степень свободы с приводом: механизм полностью управляем</numerusform>
+            <numerusform>%n степени свободы с приводом: механизм полностью управляем</numerusform>
+            <numerusform>%n степеней свободы с приводом: механизм полностью управляем</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>with the actuators locked it can still move instantaneously here (a direct singularity)</source>
+        <translation>при застопоренных приводах цепь здесь ещё может мгновенно сместиться (особое положение прямой кинематики)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n idle freedom(s) is/are included</source>
+        <translation>
+            <numerusform>включая местные степени свободы: %n</numerusform>
+            <numerusform>включая местные степени свободы: %n</numerusform>
+            <numerusform>включая местные степени свободы: %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>link %1</source>
+        <translation>звено %1</translation>
+    </message>
+    <message>
+        <source>ground OB</source>
+        <translation>стойка OB</translation>
+    </message>
+    <message>
+        <source>crank OC</source>
+        <translation>кривошип OC</translation>
+    </message>
+    <message>
+        <source>coupler CA</source>
+        <translation>шатун CA</translation>
+    </message>
+    <message>
+        <source>spatial parallelogram: four parallel revolute axes taken as a spatial chain</source>
+        <translation>пространственный параллелограмм: четыре параллельные оси вращательных пар, рассматриваемые как пространственная цепь</translation>
+    </message>
+    <message>
+        <source>Bennett linkage: four revolute axes, opposite links equal, a/sin α = b/sin β</source>
+        <translation>механизм Беннетта: четыре оси вращательных пар, противоположные звенья равны, a/sin α = b/sin β</translation>
+    </message>
+    <message>
+        <source>spatial 4R loop with random axes (not a Bennett linkage)</source>
+        <translation>пространственный контур 4R со случайными осями (не механизм Беннетта)</translation>
+    </message>
+    <message>
+        <source>ground AE</source>
+        <translation>стойка AE</translation>
+    </message>
+    <message>
+        <source>link DC</source>
+        <translation>шатун DC</translation>
+    </message>
+    <message>
+        <source>crank ED</source>
+        <translation>кривошип ED</translation>
+    </message>
+    <message>
+        <source>planar five-bar: ground, two driven cranks, two distal links</source>
+        <translation>плоский пятизвенный механизм: стойка, два ведущих кривошипа, два шатуна</translation>
+    </message>
+    <message>
+        <source>Cannot analyse the mobility: %1.</source>
+        <translation>Не удаётся определить подвижность: %1.</translation>
+    </message>
+    <message>
+        <source>crank BA</source>
+        <translation>кривошип BA</translation>
+    </message>
+    <message>
+        <source>%1 (back)</source>
+        <translation>%1 (сзади)</translation>
+    </message>
+    <message>
+        <source>%1 (front)</source>
+        <translation>%1 (спереди)</translation>
+    </message>
+    <message>
+        <source>base</source>
+        <translation>основание</translation>
+    </message>
+    <message>
+        <source>clevis</source>
+        <translation>вилка</translation>
+    </message>
+    <message>
+        <source>stepper motor</source>
+        <translation>шаговый двигатель</translation>
+    </message>
+    <message>
+        <source>lead screw</source>
+        <translation>ходовой винт</translation>
+    </message>
+    <message>
+        <source>rod end</source>
+        <translation>шарнирный наконечник</translation>
+    </message>
+    <message>
+        <source>guide %1</source>
+        <translation>направляющая %1</translation>
+    </message>
+    <message>
+        <source>end stop</source>
+        <translation>упор</translation>
+    </message>
+    <message>
+        <source>carriage %1</source>
+        <translation>каретка %1</translation>
+    </message>
+    <message>
+        <source>platform</source>
+        <translation>платформа</translation>
+    </message>
+    <message>
+        <source>guide 1 reference point, x</source>
+        <translation>опорная точка направляющей 1, x</translation>
+    </message>
+    <message>
+        <source>guide 1 reference point, y</source>
+        <translation>опорная точка направляющей 1, y</translation>
+    </message>
+    <message>
+        <source>guide 2 reference point, x</source>
+        <translation>опорная точка направляющей 2, x</translation>
+    </message>
+    <message>
+        <source>guide 2 reference point, y</source>
+        <translation>опорная точка направляющей 2, y</translation>
+    </message>
+    <message>
+        <source>direction of guide 1</source>
+        <translation>ориентация направляющей 1</translation>
+    </message>
+    <message>
+        <source>direction of guide 2</source>
+        <translation>ориентация направляющей 2</translation>
+    </message>
+    <message>
+        <source>turn of guide 1 from the vertical (α₁ = 270° + γ₁)</source>
+        <translation>поворот направляющей 1 от вертикали (α₁ = 270° + γ₁)</translation>
+    </message>
+    <message>
+        <source>turn of guide 2 from the vertical (α₂ = 270° + γ₂)</source>
+        <translation>поворот направляющей 2 от вертикали (α₂ = 270° + γ₂)</translation>
+    </message>
+    <message>
+        <source>length of link S₁</source>
+        <translation>длина звена S₁</translation>
+    </message>
+    <message>
+        <source>length of link S₂</source>
+        <translation>длина звена S₂</translation>
+    </message>
+    <message>
+        <source>start of the stroke</source>
+        <translation>начало хода</translation>
+    </message>
+    <message>
+        <source>end of the stroke</source>
+        <translation>конец хода</translation>
+    </message>
+    <message>
+        <source>working mode of leg 1: sign in p₁ = B₁ ± √…</source>
+        <translation>рабочий режим ветви 1: знак в p₁ = B₁ ± √…</translation>
+    </message>
+    <message>
+        <source>working mode of leg 2: sign in p₂ = B₂ ± √…</source>
+        <translation>рабочий режим ветви 2: знак в p₂ = B₂ ± √…</translation>
+    </message>
+    <message>
+        <source>assembly mode: +1 platform left of Z₁→Z₂</source>
+        <translation>вариант сборки: +1 — платформа слева от Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>links kept on the inner side of the guides (1: on)</source>
+        <translation>звенья только с внутренней стороны направляющих (1: вкл.)</translation>
+    </message>
+    <message>
+        <source>drawn width of a guide</source>
+        <translation>ширина направляющей на рисунке</translation>
+    </message>
+    <message>
+        <source>MOMA has no parameter named &apos;%1&apos;.</source>
+        <translation>У MOMA нет параметра «%1».</translation>
+    </message>
+    <message>
+        <source>%1 and %2 both turn guide %3: give one of them.</source>
+        <translation>%1 и %2 оба задают поворот направляющей %3: укажите только один из них.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is invalid: it must be -1 or +1.</source>
+        <translation>%1 = %2 — недопустимое значение: должно быть -1 или +1.</translation>
+    </message>
+    <message>
+        <source>one_side = %1 is invalid: it must be 0 (off) or 1 (on).</source>
+        <translation>one_side = %1 — недопустимое значение: должно быть 0 (выкл.) или 1 (вкл.).</translation>
+    </message>
+    <message>
+        <source>p_min = %1 mm must be less than p_max = %2 mm.</source>
+        <translation>p_min = %1 мм должно быть меньше p_max = %2 мм.</translation>
+    </message>
+    <message>
+        <source>The guides lie on one line and their strokes overlap: the slider joints Z₁ and Z₂ could coincide. Move R₂ or turn a guide.</source>
+        <translation>Направляющие лежат на одной прямой, и их ходы перекрываются: шарниры ползунов Z₁ и Z₂ могут совпасть. Сместите R₂ или поверните направляющую.</translation>
+    </message>
+    <message>
+        <source>This configuration has no workspace: with l₁ = %1 mm, l₂ = %2 mm and strokes [%3, %4] mm the links cannot meet in the chosen working and assembly modes.</source>
+        <translation>У этой конфигурации нет рабочего пространства: при l₁ = %1 мм, l₂ = %2 мм и ходе [%3; %4] мм звенья не могут сойтись в выбранных рабочих режимах и варианте сборки.</translation>
+    </message>
+    <message>
+        <source>The guides cross inside their strokes: the sliders can collide there.</source>
+        <translation>Направляющие пересекаются в пределах хода: там ползуны могут столкнуться.</translation>
+    </message>
+    <message>
+        <source>slider 1 position (actuated)</source>
+        <translation>положение ползуна 1 (приводное)</translation>
+    </message>
+    <message>
+        <source>slider 2 position (actuated)</source>
+        <translation>положение ползуна 2 (приводное)</translation>
+    </message>
+    <message>
+        <source>platform x</source>
+        <translation>платформа, x</translation>
+    </message>
+    <message>
+        <source>platform y</source>
+        <translation>платформа, y</translation>
+    </message>
+    <message>
+        <source>link S%1 would lie on the outer side of guide %2 (the one-side constraint is on)</source>
+        <translation>звено S%1 оказалось бы с внешней стороны направляющей %2 (включено ограничение на одну сторону)</translation>
+    </message>
+    <message>
+        <source>The slider joints Z₁ and Z₂ coincide at p₁ = %1 mm, p₂ = %2 mm: the platform position is undetermined.</source>
+        <translation>Шарниры ползунов Z₁ и Z₂ совпадают при p₁ = %1 мм, p₂ = %2 мм: положение платформы не определено.</translation>
+    </message>
+    <message>
+        <source>The links cannot meet at p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm is more than l₁ + l₂ = %4 mm.</source>
+        <translation>Звенья не могут сойтись при p₁ = %1 мм, p₂ = %2 мм: |Z₁Z₂| = %3 мм больше, чем l₁ + l₂ = %4 мм.</translation>
+    </message>
+    <message>
+        <source>The links cannot meet at p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm is less than |l₁ − l₂| = %4 mm.</source>
+        <translation>Звенья не могут сойтись при p₁ = %1 мм, p₂ = %2 мм: |Z₁Z₂| = %3 мм меньше, чем |l₁ − l₂| = %4 мм.</translation>
+    </message>
+    <message>
+        <source>At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past perpendicular to its guide, in its other working mode (an inverse singularity lies between); switch the mode to go on.</source>
+        <translation>При p₁ = %1 мм, p₂ = %2 мм ветвь %3 перешла бы через перпендикуляр к своей направляющей, в другой рабочий режим (между ними — особое положение обратной кинематики); чтобы продолжить, переключите режим.</translation>
+    </message>
+    <message>
+        <source>At p₁ = %1 mm, p₂ = %2 mm %3.</source>
+        <translation>При p₁ = %1 мм, p₂ = %2 мм %3.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: it lies more than l%2 = %3 mm from guide %4.</source>
+        <translation>Платформа не может достичь точки %1: точка удалена от направляющей %4 более чем на l%2 = %3 мм.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: slider %2 would have to be at p%3 = %4 mm, outside its stroke [%5, %6] mm.</source>
+        <translation>Платформа не может достичь точки %1: ползун %2 должен был бы стоять в p%3 = %4 мм, вне своего хода [%5; %6] мм.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1 in this assembly mode: it would cross the line Z₁Z₂, where the links are collinear (a direct singularity); switch the assembly mode to go on.</source>
+        <translation>Платформа не может достичь точки %1 в этом варианте сборки: она пересекла бы прямую Z₁Z₂, на которой звенья коллинеарны (особое положение прямой кинематики); чтобы продолжить, переключите вариант сборки.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: %2.</source>
+        <translation>Платформа не может достичь точки %1: %2.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 mm is outside the stroke [%3, %4] mm.</source>
+        <translation>%1 = %2 мм вне хода [%3; %4] мм.</translation>
+    </message>
+    <message>
+        <source>slider 1 position</source>
+        <translation>положение ползуна 1</translation>
+    </message>
+    <message>
+        <source>slider 2 position</source>
+        <translation>положение ползуна 2</translation>
+    </message>
+    <message>
+        <source>J_x rows 2(P − Z_i) (20)</source>
+        <translation>строки J_x: 2(P − Z_i) (20)</translation>
+    </message>
+    <message>
+        <source>ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)</source>
+        <translation>ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) с точностью до знака)</translation>
+    </message>
+    <message>
+        <source>0 at an inverse singularity</source>
+        <translation>0 в особом положении обратной кинематики</translation>
+    </message>
+    <message>
+        <source>0 at a direct singularity</source>
+        <translation>0 в особом положении прямой кинематики</translation>
+    </message>
+    <message>
+        <source>angle between link S₁ and guide 1 (90°: inverse singularity)</source>
+        <translation>угол между звеном S₁ и направляющей 1 (90° — особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>angle between link S₂ and guide 2 (90°: inverse singularity)</source>
+        <translation>угол между звеном S₂ и направляющей 2 (90° — особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>angle between the links (0°, 180°: direct singularity)</source>
+        <translation>угол между звеньями (0°, 180° — особое положение прямой кинематики)</translation>
+    </message>
+    <message>
+        <source>other assembly mode (same slider positions)</source>
+        <translation>другой вариант сборки (те же положения ползунов)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (same platform position)</source>
+        <translation>ветвь 1: другой рабочий режим (то же положение платформы)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (same platform position)</source>
+        <translation>ветвь 2: другой рабочий режим (то же положение платформы)</translation>
+    </message>
+    <message>
+        <source>slider K₁</source>
+        <translation>ползун K₁</translation>
+    </message>
+    <message>
+        <source>slider K₂</source>
+        <translation>ползун K₂</translation>
+    </message>
+    <message>
+        <source>link S₁</source>
+        <translation>звено S₁</translation>
+    </message>
+    <message>
+        <source>link S₂</source>
+        <translation>звено S₂</translation>
+    </message>
+    <message>
+        <source>guide PO₁</source>
+        <translation>направляющая PO₁</translation>
+    </message>
+    <message>
+        <source>guide PO₂</source>
+        <translation>направляющая PO₂</translation>
+    </message>
+    <message>
+        <source>MOMA: two sliders on powered guides, two links meeting at the platform joint P</source>
+        <translation>MOMA: два ползуна на приводных направляющих и два звена, соединённые шарниром платформы P</translation>
+    </message>
+    <message>
+        <source>drag to move the platform (inverse kinematics)</source>
+        <translation>перетащите, чтобы переместить платформу (обратная кинематика)</translation>
+    </message>
+    <message>
+        <source>drag along guide 1 to set p₁ (direct kinematics)</source>
+        <translation>перетащите вдоль направляющей 1, чтобы задать p₁ (прямая кинематика)</translation>
+    </message>
+    <message>
+        <source>drag along guide 2 to set p₂ (direct kinematics)</source>
+        <translation>перетащите вдоль направляющей 2, чтобы задать p₂ (прямая кинематика)</translation>
+    </message>
+    <message>
+        <source>link ⟂ guide</source>
+        <translation>звено ⟂ направляющей</translation>
+    </message>
+    <message>
+        <source>links collinear</source>
+        <translation>звенья коллинеарны</translation>
+    </message>
+    <message>
+        <source>link 1 ⟂ guide 1</source>
+        <translation>звено 1 ⟂ направляющей 1</translation>
+    </message>
+    <message>
+        <source>link 2 ⟂ guide 2</source>
+        <translation>звено 2 ⟂ направляющей 2</translation>
+    </message>
+    <message>
+        <source>crossed (X)</source>
+        <translation>скрещенная (X)</translation>
+    </message>
+    <message>
+        <source>extended (O)</source>
+        <translation>вытянутая (O)</translation>
+    </message>
+    <message>
+        <source>rod length</source>
+        <translation>длина стержня</translation>
+    </message>
+    <message>
+        <source>platform width</source>
+        <translation>ширина платформы</translation>
+    </message>
+    <message>
+        <source>transverse guide length (slider positions 0…L)</source>
+        <translation>длина поперечных направляющих (положения ползунов 0…L)</translation>
+    </message>
+    <message>
+        <source>spacing of the transverse guides</source>
+        <translation>расстояние между поперечными направляющими</translation>
+    </message>
+    <message>
+        <source>start of the longitudinal travel</source>
+        <translation>начало продольного хода</translation>
+    </message>
+    <message>
+        <source>end of the longitudinal travel</source>
+        <translation>конец продольного хода</translation>
+    </message>
+    <message>
+        <source>+1 extended (O), −1 crossed (X)</source>
+        <translation>+1 вытянутая (O), −1 скрещенная (X)</translation>
+    </message>
+    <message>
+        <source>The O-X glide has no parameter named &apos;%1&apos;.</source>
+        <translation>У механизма O-X glide нет параметра «%1».</translation>
+    </message>
+    <message>
+        <source>mode = %1 is invalid: it must be +1 (O, extended) or -1 (X, crossed).</source>
+        <translation>mode = %1 — недопустимое значение: должно быть +1 (O, вытянутая форма) или -1 (X, скрещенная).</translation>
+    </message>
+    <message>
+        <source>mode must be +1 (O, extended) or -1 (X, crossed).</source>
+        <translation>mode должно быть +1 (O, вытянутая форма) или -1 (X, скрещенная).</translation>
+    </message>
+    <message>
+        <source>s = %1 must be less than 2l = %2: a platform that wide keeps the rods from ever crossing, so there is no X form.</source>
+        <translation>s = %1 должно быть меньше 2l = %2: при такой широкой платформе стержни никогда не скрещиваются, и скрещенной (X) формы нет.</translation>
+    </message>
+    <message>
+        <source>L = %1 must be more than the platform width s = %2: with guides that short the extended (O) form has no workspace.</source>
+        <translation>L = %1 должно быть больше ширины платформы s = %2: при таких коротких направляющих у вытянутой (O) формы нет рабочего пространства.</translation>
+    </message>
+    <message>
+        <source>z_min = %1 must be less than z_max = %2.</source>
+        <translation>z_min = %1 должно быть меньше z_max = %2.</translation>
+    </message>
+    <message>
+        <source>The crossed (X) form has no workspace with L = %1, s = %2 and l = %3.</source>
+        <translation>У скрещенной (X) формы нет рабочего пространства при L = %1, s = %2 и l = %3.</translation>
+    </message>
+    <message>
+        <source>The extended (O) form has no workspace with L = %1, s = %2 and l = %3.</source>
+        <translation>У вытянутой (O) формы нет рабочего пространства при L = %1, s = %2 и l = %3.</translation>
+    </message>
+    <message>
+        <source>slider pair AB position (actuated)</source>
+        <translation>положение пары ползунов AB (приводное)</translation>
+    </message>
+    <message>
+        <source>slider pair CD position (actuated)</source>
+        <translation>положение пары ползунов CD (приводное)</translation>
+    </message>
+    <message>
+        <source>longitudinal position (actuated serial axis)</source>
+        <translation>продольное положение (приводная последовательная ось)</translation>
+    </message>
+    <message>
+        <source>platform centre T, x</source>
+        <translation>центр платформы T, x</translation>
+    </message>
+    <message>
+        <source>platform centre T, y</source>
+        <translation>центр платформы T, y</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: y is more than the rod length l = %2.</source>
+        <translation>Платформа не может достичь точки %1: y больше длины стержня l = %2.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: it would pass the rod joints&apos; plane y = 0, where the rods lie along the guides (a direct singularity).</source>
+        <translation>Платформа не может достичь точки %1: она перешла бы через плоскость шарниров стержней y = 0, где стержни лежат вдоль направляющих (особое положение прямой кинематики).</translation>
+    </message>
+    <message>
+        <source>The crossed (X) form cannot reach %1: slider pair %2 would have to be at %3 = %4, off its guides (0…%5 mm).</source>
+        <translation>Скрещенная (X) форма не может достичь точки %1: пара ползунов %2 должна была бы оказаться в %3 = %4, за пределами своих направляющих (0…%5 мм).</translation>
+    </message>
+    <message>
+        <source>The extended (O) form cannot reach %1: slider pair %2 would have to be at %3 = %4, off its guides (0…%5 mm).</source>
+        <translation>Вытянутая (O) форма не может достичь точки %1: пара ползунов %2 должна была бы оказаться в %3 = %4, за пределами своих направляющих (0…%5 мм).</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is off the guides (%3…%4 mm).</source>
+        <translation>%1 = %2 за пределами направляющих (%3…%4 мм).</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the travel (%3…%4 mm).</source>
+        <translation>%1 = %2 за пределами хода (%3…%4 мм).</translation>
+    </message>
+    <message>
+        <source>The rods cannot reach the platform at x_AB = %1, x_CD = %2: |x_CD − x_AB − s| = %3 is more than 2l = %4.</source>
+        <translation>Стержни не достают до платформы при x_AB = %1, x_CD = %2: |x_CD − x_AB − s| = %3 больше 2l = %4.</translation>
+    </message>
+    <message>
+        <source>x_CD − x_AB = %1 is less than s = %2: these slider positions hold the crossed (X) form, and the mechanism is extended (O). At x_CD − x_AB = s the rods are parallel and the platform can swing (a singularity), so the pairs do not pass it on their own: switch the form to go on.</source>
+        <translation>x_CD − x_AB = %1 меньше s = %2: такие положения ползунов соответствуют скрещенной (X) форме, а механизм находится в вытянутой (O). При x_CD − x_AB = s стержни параллельны и платформа может качаться (особое положение), поэтому пары ползунов сами его не проходят: чтобы продолжить, переключите форму.</translation>
+    </message>
+    <message>
+        <source>x_CD − x_AB = %1 is more than s = %2: these slider positions hold the extended (O) form, and the mechanism is crossed (X). At x_CD − x_AB = s the rods are parallel and the platform can swing (a singularity), so the pairs do not pass it on their own: switch the form to go on.</source>
+        <translation>x_CD − x_AB = %1 больше s = %2: такие положения ползунов соответствуют вытянутой (O) форме, а механизм находится в скрещенной (X). При x_CD − x_AB = s стержни параллельны и платформа может качаться (особое положение), поэтому пары ползунов сами его не проходят: чтобы продолжить, переключите форму.</translation>
+    </message>
+    <message>
+        <source>slider pair AB position</source>
+        <translation>положение пары ползунов AB</translation>
+    </message>
+    <message>
+        <source>slider pair CD position</source>
+        <translation>положение пары ползунов CD</translation>
+    </message>
+    <message>
+        <source>longitudinal position</source>
+        <translation>продольное положение</translation>
+    </message>
+    <message>
+        <source>J_q = diag(−2u₁, −2u₂), u_i the rods&apos; runs along the guides</source>
+        <translation>J_q = diag(−2u₁, −2u₂), u_i — проекции стержней на направляющие</translation>
+    </message>
+    <message>
+        <source>J_x rows (2u_i, 2y)</source>
+        <translation>строки J_x: (2u_i, 2y)</translation>
+    </message>
+    <message>
+        <source>q̇ = J·ẋ of the planar part, J = −J_q⁻¹·J_x</source>
+        <translation>q̇ = J·ẋ плоской части, J = −J_q⁻¹·J_x</translation>
+    </message>
+    <message>
+        <source>angle between the rods and the guides (90°: the O↔X crossing)</source>
+        <translation>угол между стержнями и направляющими (90°: переход O↔X)</translation>
+    </message>
+    <message>
+        <source>distance from the O↔X crossing (0 there; &gt; 0 O, &lt; 0 X)</source>
+        <translation>расстояние до перехода O↔X (0 на нём; &gt; 0 O, &lt; 0 X)</translation>
+    </message>
+    <message>
+        <source>form of the pose: O extended, X crossed</source>
+        <translation>форма положения: O вытянутая, X скрещенная</translation>
+    </message>
+    <message>
+        <source>crossed (X) form (same platform position)</source>
+        <translation>скрещенная (X) форма (то же положение платформы)</translation>
+    </message>
+    <message>
+        <source>extended (O) form (same platform position)</source>
+        <translation>вытянутая (O) форма (то же положение платформы)</translation>
+    </message>
+    <message>
+        <source>rods ⟂ guides: the O↔X crossing</source>
+        <translation>стержни ⟂ направляющим: переход O↔X</translation>
+    </message>
+    <message>
+        <source>rods parallel: the platform can swing</source>
+        <translation>стержни параллельны: платформа может качаться</translation>
+    </message>
+    <message>
+        <source>rods along the guides</source>
+        <translation>стержни вдоль направляющих</translation>
+    </message>
+    <message>
+        <source>rods ⟂ guides</source>
+        <translation>стержни ⟂ направляющим</translation>
+    </message>
+    <message>
+        <source>drag to move the platform (inverse kinematics, in the current form)</source>
+        <translation>перетащите, чтобы переместить платформу (обратная кинематика, в текущей форме)</translation>
+    </message>
+    <message>
+        <source>drag along the guides to set x_AB (direct kinematics)</source>
+        <translation>перетащите вдоль направляющих, чтобы задать x_AB (прямая кинематика)</translation>
+    </message>
+    <message>
+        <source>drag along the guides to set x_CD (direct kinematics)</source>
+        <translation>перетащите вдоль направляющих, чтобы задать x_CD (прямая кинематика)</translation>
+    </message>
+    <message>
+        <source>longitudinal carriage</source>
+        <translation>продольная каретка</translation>
+    </message>
+    <message>
+        <source>end plate</source>
+        <translation>торцевая плита</translation>
+    </message>
+    <message>
+        <source>longitudinal guide</source>
+        <translation>продольная направляющая</translation>
+    </message>
+    <message>
+        <source>slider %1</source>
+        <translation>ползун %1</translation>
+    </message>
+    <message>
+        <source>compensation element %1</source>
+        <translation>компенсирующий элемент %1</translation>
+    </message>
+    <message>
+        <source>rod joint %1</source>
+        <translation>шарнир стержня %1</translation>
+    </message>
+    <message>
+        <source>pair AB</source>
+        <translation>пара AB</translation>
+    </message>
+    <message>
+        <source>pair CD</source>
+        <translation>пара CD</translation>
+    </message>
+    <message>
+        <source>rod %1</source>
+        <translation>стержень %1</translation>
+    </message>
+    <message>
+        <source>spherical joint %1</source>
+        <translation>сферический шарнир %1</translation>
+    </message>
+    <message>
+        <source>carriage</source>
+        <translation>каретка</translation>
+    </message>
+    <message>
+        <source>slider pair AB</source>
+        <translation>пара ползунов AB</translation>
+    </message>
+    <message>
+        <source>slider pair CD</source>
+        <translation>пара ползунов CD</translation>
+    </message>
+    <message>
+        <source>O-X glide: carriage on the longitudinal guides, slider pairs AB and CD, four rods (revolute at the sliders, spherical at the platform), platform</source>
+        <translation>O-X glide: каретка на продольных направляющих, пары ползунов AB и CD, четыре стержня (вращательные шарниры на ползунах, сферические на платформе), платформа</translation>
+    </message>
+    <message>
+        <source>crank (lever) length</source>
+        <translation>длина кривошипа (рычага)</translation>
+    </message>
+    <message>
+        <source>base and coupler length</source>
+        <translation>длина стойки и шатуна</translation>
+    </message>
+    <message>
+        <source>ratio k = b/a</source>
+        <translation>отношение k = b/a</translation>
+    </message>
+    <message>
+        <source>lower limit of θ</source>
+        <translation>нижний предел θ</translation>
+    </message>
+    <message>
+        <source>upper limit of θ</source>
+        <translation>верхний предел θ</translation>
+    </message>
+    <message>
+        <source>lead of the screw</source>
+        <translation>ход резьбы винта</translation>
+    </message>
+    <message>
+        <source>linear step</source>
+        <translation>линейный шаг</translation>
+    </message>
+    <message>
+        <source>max. linear speed</source>
+        <translation>макс. линейная скорость</translation>
+    </message>
+    <message>
+        <source>max. thrust force</source>
+        <translation>макс. осевое усилие</translation>
+    </message>
+    <message>
+        <source>screw efficiency</source>
+        <translation>КПД винтовой передачи</translation>
+    </message>
+    <message>
+        <source>motor body length</source>
+        <translation>длина корпуса двигателя</translation>
+    </message>
+    <message>
+        <source>motor body width</source>
+        <translation>ширина корпуса двигателя</translation>
+    </message>
+    <message>
+        <source>screw diameter</source>
+        <translation>диаметр винта</translation>
+    </message>
+    <message>
+        <source>k = b/a = %1 is out of proportion: it must lie between 1e-6 and 1e6.</source>
+        <translation>k = b/a = %1 — нереальное соотношение: оно должно лежать между 1e-6 и 1e6.</translation>
+    </message>
+    <message>
+        <source>theta_min = %1° must be less than theta_max = %2°.</source>
+        <translation>theta_min = %1° должно быть меньше theta_max = %2°.</translation>
+    </message>
+    <message>
+        <source>k = %1 and b = %2 mm both set the coupler: give b or k, not both.</source>
+        <translation>k = %1 и b = %2 мм оба задают длину шатуна: укажите b или k, но не оба сразу.</translation>
+    </message>
+    <message>
+        <source>The П-joint has no parameter named &apos;%1&apos;.</source>
+        <translation>У П-шарнира нет параметра «%1».</translation>
+    </message>
+    <message>
+        <source>theta_max = %1° must be greater than theta_min = %2°.</source>
+        <translation>theta_max = %1° должно быть больше theta_min = %2°.</translation>
+    </message>
+    <message>
+        <source>The motor body (%1 mm) is longer than d_min = %2 mm: the diagonal cannot retract that far.</source>
+        <translation>Корпус двигателя (%1 мм) длиннее, чем d_min = %2 мм: диагональ не может укоротиться настолько.</translation>
+    </message>
+    <message>
+        <source>diagonal length (actuated)</source>
+        <translation>длина диагонали (приводная)</translation>
+    </message>
+    <message>
+        <source>output angle</source>
+        <translation>выходной угол</translation>
+    </message>
+    <message>
+        <source>d = %1 mm is outside the stroke [%2, %3] mm that the θ range allows.</source>
+        <translation>d = %1 мм выходит за пределы хода [%2; %3] мм, допускаемого диапазоном θ.</translation>
+    </message>
+    <message>
+        <source>θ = %1° is outside the design range [%2, %3]°.</source>
+        <translation>θ = %1° выходит за пределы конструктивного диапазона [%2; %3]°.</translation>
+    </message>
+    <message>
+        <source>diagonal length</source>
+        <translation>длина диагонали</translation>
+    </message>
+    <message>
+        <source>passive angle of the diagonal</source>
+        <translation>пассивный угол диагонали</translation>
+    </message>
+    <message>
+        <source>transmission angle</source>
+        <translation>угол передачи</translation>
+    </message>
+    <message>
+        <source>Jacobian ḋ = J·θ̇</source>
+        <translation>якобиан ḋ = J·θ̇</translation>
+    </message>
+    <message>
+        <source>inverse Jacobian θ̇ = J⁻¹·ḋ</source>
+        <translation>обратный якобиан θ̇ = J⁻¹·ḋ</translation>
+    </message>
+    <message>
+        <source>J_d = 2d</source>
+        <translation>J_d = 2d</translation>
+    </message>
+    <message>
+        <source>J_θ = 2a²k·cos θ</source>
+        <translation>J_θ = 2a²k·cos θ</translation>
+    </message>
+    <message>
+        <source>derivative of J</source>
+        <translation>производная J</translation>
+    </message>
+    <message>
+        <source>output torque at F_max</source>
+        <translation>выходной момент при F_max</translation>
+    </message>
+    <message>
+        <source>output speed θ̇ at ḋ_max</source>
+        <translation>выходная скорость θ̇ при ḋ_max</translation>
+    </message>
+    <message>
+        <source>output resolution per step</source>
+        <translation>выходное разрешение на шаг</translation>
+    </message>
+    <message>
+        <source>motor torque at F_max</source>
+        <translation>момент двигателя при F_max</translation>
+    </message>
+    <message>
+        <source>diagonal at θ_min</source>
+        <translation>диагональ при θ_min</translation>
+    </message>
+    <message>
+        <source>diagonal at θ_max</source>
+        <translation>диагональ при θ_max</translation>
+    </message>
+    <message>
+        <source>actuator stroke</source>
+        <translation>ход привода</translation>
+    </message>
+    <message>
+        <source>recommended range from (J ≥ 60 % of best)</source>
+        <translation>рекомендуемый диапазон: от (J ≥ 60 % наибольшего)</translation>
+    </message>
+    <message>
+        <source>recommended range to (J ≥ 60 % of best)</source>
+        <translation>рекомендуемый диапазон: до (J ≥ 60 % наибольшего)</translation>
+    </message>
+    <message>
+        <source>motor body</source>
+        <translation>корпус двигателя</translation>
+    </message>
+    <message>
+        <source>screw</source>
+        <translation>винт</translation>
+    </message>
+    <message>
+        <source>O (motor)</source>
+        <translation>O (двигатель)</translation>
+    </message>
+    <message>
+        <source>A (screw)</source>
+        <translation>A (винт)</translation>
+    </message>
+    <message>
+        <source>active П-joint: hinged parallelogram OBAC with the telescopic diagonal OA (motor body and screw)</source>
+        <translation>активный П-шарнир: шарнирный параллелограмм OBAC с телескопической диагональю OA (корпус двигателя и винт)</translation>
+    </message>
+    <message>
+        <source>drag A to set θ</source>
+        <translation>перетащите A, чтобы задать θ</translation>
+    </message>
+    <message>
+        <source>drag C to set θ</source>
+        <translation>перетащите C, чтобы задать θ</translation>
+    </message>
+    <message>
+        <source>The pointer is on the pivot: θ is undefined there.</source>
+        <translation>Указатель находится на оси вращения: здесь угол θ не определён.</translation>
+    </message>
+    <message>
+        <source>Active П-joint</source>
+        <translation>Активный П-шарнир</translation>
+    </message>
+    <message>
+        <source>MOMA 2-axis parallel mechanism</source>
+        <translation>Двухкоординатный параллельный механизм MOMA</translation>
+    </message>
+    <message>
+        <source>O-X glide hybrid mechanism</source>
+        <translation>Гибридный механизм O-X glide</translation>
+    </message>
+    <message>
+        <source>Planar four-bar linkage</source>
+        <translation>Плоский шарнирный четырёхзвенник</translation>
+    </message>
+    <message>
+        <source>Planar five-bar linkage</source>
+        <translation>Плоский шарнирный пятизвенник</translation>
+    </message>
+    <message>
+        <source>Unknown mechanism kind &apos;%1&apos;.</source>
+        <translation>Неизвестный тип механизма «%1».</translation>
+    </message>
+    <message>
+        <source>A %1 has no parameter named &apos;%2&apos;.</source>
+        <translation>У механизма «%1» нет параметра «%2».</translation>
+    </message>
+    <message>
+        <source>link</source>
+        <translation>звено</translation>
+    </message>
+    <message>
+        <source>motor</source>
+        <translation>двигатель</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>двигатель %1</translation>
+    </message>
+    <message>
+        <source>screw %1</source>
+        <translation>винт %1</translation>
+    </message>
+    <message>
+        <source>guide</source>
+        <translation>направляющая</translation>
+    </message>
+    <message>
+        <source>end stop %1</source>
+        <translation>упор %1</translation>
+    </message>
+    <message>
+        <source>slider</source>
+        <translation>ползун</translation>
+    </message>
+    <message>
+        <source>support</source>
+        <translation>опора</translation>
+    </message>
+    <message>
+        <source>support %1</source>
+        <translation>опора %1</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>точка</translation>
+    </message>
+    <message>
+        <source>point %1</source>
+        <translation>точка %1</translation>
+    </message>
+    <message>
+        <source>joint</source>
+        <translation>шарнир</translation>
+    </message>
+    <message>
+        <source>joint %1</source>
+        <translation>шарнир %1</translation>
+    </message>
+    <message>
+        <source>one side</source>
+        <translation>одна сторона</translation>
+    </message>
+    <message>
+        <source>form</source>
+        <translation>форма</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Animation</name>
+    <message>
+        <source>The animation needs a pose variable of the mechanism.</source>
+        <translation>Для анимации нужна переменная положения механизма.</translation>
+    </message>
+    <message>
+        <source>An animation has %1 to %2 frames, not %3.</source>
+        <translation>Анимация должна содержать от %1 до %2 кадров, а не %3.</translation>
+    </message>
+    <message>
+        <source>Frame %1 (%2 = %3): %4</source>
+        <translation>Кадр %1 (%2 = %3): %4</translation>
+    </message>
+    <message>
+        <source>The animation was cancelled.</source>
+        <translation>Анимация отменена.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::AnimationDialog</name>
+    <message>
+        <source>Export Animation</source>
+        <translation>Экспорт анимации</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Переменная</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>От</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>До</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Число кадров</translation>
+    </message>
+    <message>
+        <source> ms per frame</source>
+        <translation> мс на кадр</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels</source>
+        <translation>%1 × %2 пикс.</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Размер</translation>
+    </message>
+    <message>
+        <source>Play back to the start (a smooth loop)</source>
+        <translation>Возвращаться к началу (плавный цикл)</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Экспорт…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Drawing %n frame(s)…</source>
+        <translation>
+            <numerusform>Отрисовка %n кадра…</numerusform>
+            <numerusform>Отрисовка %n кадров…</numerusform>
+            <numerusform>Отрисовка %n кадров…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>Не удаётся записать %1: %2.</translation>
+    </message>
+    <message>
+        <source>Animation export cancelled.</source>
+        <translation>Экспорт анимации отменён.</translation>
+    </message>
+    <message>
+        <source>Wrote %1 (%2 kB)</source>
+        <translation>Записан файл %1 (%2 КБ)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::BackgroundTask</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::DesignPanel</name>
+    <message>
+        <source>Geometry</source>
+        <translation>Геометрия</translation>
+    </message>
+    <message>
+        <source>Motion range</source>
+        <translation>Диапазон движения</translation>
+    </message>
+    <message>
+        <source>Actuator</source>
+        <translation>Привод</translation>
+    </message>
+    <message>
+        <source>Motor body (drawing)</source>
+        <translation>Корпус двигателя (чертёж)</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Режимы</translation>
+    </message>
+    <message>
+        <source>less</source>
+        <translation>свернуть</translation>
+    </message>
+    <message>
+        <source>more…</source>
+        <translation>подробнее…</translation>
+    </message>
+    <message>
+        <source>greater than %1</source>
+        <translation>больше %1</translation>
+    </message>
+    <message>
+        <source>between %1 and %2</source>
+        <translation>от %1 до %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.</source>
+        <translation>%1 (%2): %3 %4. Клавиши ↑/↓ или колесо мыши меняют значение с шагом %5.</translation>
+    </message>
+    <message>
+        <source>The last valid design is kept.</source>
+        <translation>Сохраняется последняя допустимая конструкция.</translation>
+    </message>
+    <message>
+        <source>%1 (%2): &apos;%3&apos; is not a number.</source>
+        <translation>%1 (%2): «%3» — не число.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::DesignSession</name>
+    <message>
+        <source>Untitled design</source>
+        <translation>Конструкция без названия</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>Не удаётся записать %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Document</name>
+    <message>
+        <source>Open %1</source>
+        <translation>Открыть %1</translation>
+    </message>
+    <message>
+        <source>Switch to %1</source>
+        <translation>Переход: %1</translation>
+    </message>
+    <message>
+        <source>%1 stops at its upper limit %2: %3.</source>
+        <translation>%1 упирается в верхнюю границу %2: %3.</translation>
+    </message>
+    <message>
+        <source>%1 stops at its lower limit %2: %3.</source>
+        <translation>%1 упирается в нижнюю границу %2: %3.</translation>
+    </message>
+    <message>
+        <source>%1 stops at its upper limit %2 (design range).</source>
+        <translation>%1 упирается в верхнюю границу %2 (заданный диапазон).</translation>
+    </message>
+    <message>
+        <source>%1 stops at its lower limit %2 (design range).</source>
+        <translation>%1 упирается в нижнюю границу %2 (заданный диапазон).</translation>
+    </message>
+    <message>
+        <source>Close to a singular pose: small input steps make large output jumps.</source>
+        <translation>Близко к особому положению: малые шаги на входе дают большие скачки на выходе.</translation>
+    </message>
+    <message>
+        <source>That mode is not available at this pose.</source>
+        <translation>Этот режим недоступен в данном положении.</translation>
+    </message>
+    <message>
+        <source>Singular pose (inverse): the mechanism cannot be driven here.</source>
+        <translation>Особое положение (обратной кинематики): здесь механизмом нельзя управлять.</translation>
+    </message>
+    <message>
+        <source>Singular pose (direct): the mechanism cannot be driven here.</source>
+        <translation>Особое положение (прямой кинематики): здесь механизмом нельзя управлять.</translation>
+    </message>
+    <message>
+        <source>Singular pose (combined): the mechanism cannot be driven here.</source>
+        <translation>Особое положение (комбинированное): здесь механизмом нельзя управлять.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::FormWorkspaceView</name>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (мм)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (мм)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>union, outlined: %1</source>
+        <translation>объединение (контур): %1</translation>
+    </message>
+    <message>
+        <source>Areas of the forms: exact (closed form). Union: counted on a %1 × %2 grid.</source>
+        <translation>Площади форм — точные (по формулам). Объединение — подсчитано на сетке %1 × %2.</translation>
+    </message>
+    <message>
+        <source>Areas counted on a %1 × %2 grid.</source>
+        <translation>Площади подсчитаны на сетке %1 × %2.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::FourBarPanel</name>
+    <message>
+        <source>Link lengths</source>
+        <translation>Длины звеньев</translation>
+    </message>
+    <message>
+        <source>AB crank</source>
+        <translation>AB кривошип</translation>
+    </message>
+    <message>
+        <source>BC coupler</source>
+        <translation>BC шатун</translation>
+    </message>
+    <message>
+        <source>CD rocker</source>
+        <translation>CD коромысло</translation>
+    </message>
+    <message>
+        <source>AD ground</source>
+        <translation>AD стойка</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Угол передачи γ в C</translation>
+    </message>
+    <message>
+        <source>The crank drives the rocker well when γ stays between %1° and %2°.</source>
+        <translation>Кривошип хорошо передаёт движение коромыслу, пока γ остаётся в пределах от %1° до %2°.</translation>
+    </message>
+    <message>
+        <source>The last valid design is kept.</source>
+        <translation>Сохраняется последняя допустимая конструкция.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the crank AB, the shortest link, turns fully; the rocker CD swings.</source>
+        <translation>кривошип AB, самое короткое звено, совершает полный оборот; коромысло CD качается.</translation>
+    </message>
+    <message>
+        <source>the rocker CD, the shortest link, could turn fully; the crank AB only swings.</source>
+        <translation>коромысло CD, самое короткое звено, могло бы совершать полный оборот; кривошип AB только качается.</translation>
+    </message>
+    <message>
+        <source>the ground AD is the shortest link: the crank and the rocker both turn fully (drag link).</source>
+        <translation>стойка AD — самое короткое звено: и кривошип, и коромысло совершают полный оборот (двухкривошипный механизм).</translation>
+    </message>
+    <message>
+        <source>the coupler BC is the shortest link: the crank and the rocker only swing.</source>
+        <translation>шатун BC — самое короткое звено: кривошип и коромысло только качаются.</translation>
+    </message>
+    <message>
+        <source>non-Grashof: no link turns fully.</source>
+        <translation>условие Грасгофа не выполнено: ни одно звено не совершает полного оборота.</translation>
+    </message>
+    <message>
+        <source>the links can fold flat in line, where the open and crossed branches meet.</source>
+        <translation>звенья могут сложиться в одну линию — там встречаются открытая и скрещенная ветви.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: s + l = %2 %3 p + q = %4; %5</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: s + l = %2 %3 p + q = %4; %5</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;α&lt;/b&gt;: the crank turns fully, %1 … %2</source>
+        <translation>&lt;b&gt;α&lt;/b&gt;: кривошип совершает полный оборот, %1 … %2</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;α&lt;/b&gt; assembles from %1 to %2 only: at the ends the coupler and the rocker are in line (dead points)</source>
+        <translation>&lt;b&gt;α&lt;/b&gt;: механизм собирается только в пределах от %1 до %2; на концах шатун и коромысло лежат на одной прямой (мёртвые точки)</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b3261e&apos;&gt;over the motion %1° … %2°: enters the poor band&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b3261e&apos;&gt;за цикл движения %1° … %2°: заходит в зону плохой передачи&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>over the motion %1° … %2°: inside %3° … %4°</source>
+        <translation>за цикл движения %1° … %2°: в пределах %3° … %4°</translation>
+    </message>
+    <message>
+        <source>%1 — poor: %2</source>
+        <translation>%1 — плохая передача: %2</translation>
+    </message>
+    <message>
+        <source>below %1°</source>
+        <translation>ниже %1°</translation>
+    </message>
+    <message>
+        <source>above %1°</source>
+        <translation>выше %1°</translation>
+    </message>
+    <message>
+        <source>α stops at its upper limit: %1.</source>
+        <translation>α упирается в верхнюю границу: %1.</translation>
+    </message>
+    <message>
+        <source>α stops at its lower limit: %1.</source>
+        <translation>α упирается в нижнюю границу: %1.</translation>
+    </message>
+    <message>
+        <source>Crank-rocker</source>
+        <translation>Кривошипно-коромысловый механизм</translation>
+    </message>
+    <message>
+        <source>Rocker-crank</source>
+        <translation>Коромыслово-кривошипный механизм</translation>
+    </message>
+    <message>
+        <source>Double-crank</source>
+        <translation>Двухкривошипный механизм</translation>
+    </message>
+    <message>
+        <source>Double-rocker</source>
+        <translation>Двухкоромысловый механизм</translation>
+    </message>
+    <message>
+        <source>Triple-rocker</source>
+        <translation>Трёхкоромысловый механизм</translation>
+    </message>
+    <message>
+        <source>Change-point</source>
+        <translation>Граничный случай Грасгофа</translation>
+    </message>
+    <message>
+        <source>%1. &lt;b&gt;δ&lt;/b&gt; swings over %2 … %3 (crossed branch).</source>
+        <translation>%1. &lt;b&gt;δ&lt;/b&gt; изменяется в пределах %2 … %3 (скрещенная ветвь).</translation>
+    </message>
+    <message>
+        <source>%1. &lt;b&gt;δ&lt;/b&gt; swings over %2 … %3 (open branch).</source>
+        <translation>%1. &lt;b&gt;δ&lt;/b&gt; изменяется в пределах %2 … %3 (открытая ветвь).</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::FourBarPlots</name>
+    <message>
+        <source>δ(α) — fig. 4</source>
+        <translation>δ(α) — рис. 4</translation>
+    </message>
+    <message>
+        <source>ω₃, ε₃ — fig. 6</source>
+        <translation>ω₃, ε₃ — рис. 6</translation>
+    </message>
+    <message>
+        <source>δ vs AB — fig. 5</source>
+        <translation>δ от AB — рис. 5</translation>
+    </message>
+    <message>
+        <source>The rocker angle δ over the crank&apos;s range (click to set α)</source>
+        <translation>Угол коромысла δ во всём диапазоне кривошипа (щелчок задаёт α)</translation>
+    </message>
+    <message>
+        <source>The rocker&apos;s angular velocity and acceleration at constant ω₁ (click to set α)</source>
+        <translation>Угловая скорость и угловое ускорение коромысла при постоянной ω₁ (щелчок задаёт α)</translation>
+    </message>
+    <message>
+        <source>The transmission angle at C; shaded where the crank drives the rocker poorly</source>
+        <translation>Угол передачи в шарнире C; затенены области, где кривошип плохо приводит коромысло</translation>
+    </message>
+    <message>
+        <source>δ at the current α as the crank length AB changes, the other links fixed</source>
+        <translation>δ при текущем α в зависимости от длины кривошипа AB, остальные звенья неизменны</translation>
+    </message>
+    <message>
+        <source>Click or drag to set the crank angle α</source>
+        <translation>Щёлкните или протяните, чтобы задать угол кривошипа α</translation>
+    </message>
+    <message>
+        <source>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 branch</source>
+        <translation>AB/BC/CD/AD = %1/%2/%3/%4 мм, %5 форма</translation>
+    </message>
+    <message>
+        <source>Fig. 4 — rocker angle δ(α)</source>
+        <translation>Рис. 4 — угол коромысла δ(α)</translation>
+    </message>
+    <message>
+        <source>Fig. 6 — rocker angular velocity ω₃ = dδ/dt</source>
+        <translation>Рис. 6 — угловая скорость коромысла ω₃ = dδ/dt</translation>
+    </message>
+    <message>
+        <source>Fig. 6 — rocker angular acceleration ε₃ = d²δ/dt²</source>
+        <translation>Рис. 6 — угловое ускорение коромысла ε₃ = d²δ/dt²</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ(α), (5)</source>
+        <translation>Угол передачи γ(α), (5)</translation>
+    </message>
+    <message>
+        <source>Fig. 5 — rocker angle δ against the crank length AB</source>
+        <translation>Рис. 5 — угол коромысла δ в зависимости от длины кривошипа AB</translation>
+    </message>
+    <message>
+        <source>ω₁ = %1 rad/s constant; exact (the document&apos;s (8) has the opposite sign)</source>
+        <translation>ω₁ = %1 рад/с = const; точно (в формуле (8) статьи знак противоположный)</translation>
+    </message>
+    <message>
+        <source>ω₁ = %1 rad/s constant; exact (not the document&apos;s (14))</source>
+        <translation>ω₁ = %1 рад/с = const; точно (не по формуле (14) статьи)</translation>
+    </message>
+    <message>
+        <source>at α = %1°; BC, CD, AD fixed</source>
+        <translation>при α = %1°; BC, CD, AD неизменны</translation>
+    </message>
+    <message>
+        <source>ω₃ (rad/s)</source>
+        <translation>ω₃ (рад/с)</translation>
+    </message>
+    <message>
+        <source>ε₃ (rad/s²)</source>
+        <translation>ε₃ (рад/с²)</translation>
+    </message>
+    <message>
+        <source>crank length AB (mm)</source>
+        <translation>длина кривошипа AB (мм)</translation>
+    </message>
+    <message>
+        <source>crank angle α (°)</source>
+        <translation>угол кривошипа α (°)</translation>
+    </message>
+    <message>
+        <source>poor transmission: |γ| &lt; %1° or &gt; %2°</source>
+        <translation>плохая передача: |γ| &lt; %1° или &gt; %2°</translation>
+    </message>
+    <message>
+        <source>δ at α = %1°</source>
+        <translation>δ при α = %1°</translation>
+    </message>
+    <message>
+        <source>largest AB that assembles: %1 mm</source>
+        <translation>наибольшая собираемая AB: %1 мм</translation>
+    </message>
+    <message>
+        <source>ω₃ = %1 rad/s</source>
+        <translation>ω₃ = %1 рад/с</translation>
+    </message>
+    <message>
+        <source>ε₃ = %1 rad/s²</source>
+        <translation>ε₃ = %1 рад/с²</translation>
+    </message>
+    <message>
+        <source>AB = %1 mm, δ = %2°</source>
+        <translation>AB = %1 мм, δ = %2°</translation>
+    </message>
+    <message>
+        <source>%1 → %2∞: dead point</source>
+        <translation>%1 → %2∞: мёртвая точка</translation>
+    </message>
+    <message>
+        <source>no pose</source>
+        <translation>положения нет</translation>
+    </message>
+    <message>
+        <source>crossed</source>
+        <comment>branch</comment>
+        <translation>скрещённая</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <comment>branch</comment>
+        <translation>открытая</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::GifWriter</name>
+    <message>
+        <source>An animation needs at least one frame.</source>
+        <translation>Для анимации нужен хотя бы один кадр.</translation>
+    </message>
+    <message>
+        <source>A GIF frame must be 1 to 65535 pixels on each side.</source>
+        <translation>Кадр GIF должен иметь от 1 до 65535 пикселей по каждой стороне.</translation>
+    </message>
+    <message>
+        <source>All frames of a GIF must have the same size.</source>
+        <translation>Все кадры GIF должны быть одного размера.</translation>
+    </message>
+    <message>
+        <source>giflib: out of memory.</source>
+        <translation>giflib: недостаточно памяти.</translation>
+    </message>
+    <message>
+        <source>giflib could not reduce a frame to 256 colours.</source>
+        <translation>giflib не удалось свести кадр к 256 цветам.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::LinkageView</name>
+    <message>
+        <source>Click to switch to: %1</source>
+        <translation>Щёлкните, чтобы переключиться: %1</translation>
+    </message>
+    <message>
+        <source>this pose</source>
+        <translation>это положение</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::LinkageView3D</name>
+    <message>
+        <source>3D view unavailable: OpenGL 3.3 could not be started.</source>
+        <translation>3D-вид недоступен: не удалось запустить OpenGL 3.3.</translation>
+    </message>
+    <message>
+        <source>A picture needs a size of at least one pixel.</source>
+        <translation>Размер изображения должен быть не меньше одного пикселя.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::MainWindow</name>
+    <message>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>The mechanism in 3D: drag to turn it, right-drag to pan, wheel to zoom</source>
+        <translation>Механизм в 3D: перетаскивание — поворот, правой кнопкой — сдвиг, колесо — масштаб</translation>
+    </message>
+    <message>
+        <source>Design</source>
+        <translation>Конструкция</translation>
+    </message>
+    <message>
+        <source>Values at this pose</source>
+        <translation>Значения в этом положении</translation>
+    </message>
+    <message>
+        <source>Mobility</source>
+        <translation>Подвижность</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Файл</translation>
+    </message>
+    <message>
+        <source>&amp;Open Design…</source>
+        <translation>&amp;Открыть конструкцию…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Недавние</translation>
+    </message>
+    <message>
+        <source>&amp;Save Design</source>
+        <translation>&amp;Сохранить конструкцию</translation>
+    </message>
+    <message>
+        <source>Save Design &amp;As…</source>
+        <translation>Сохранить конструкцию &amp;как…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF)…</source>
+        <translation>Экспорт &amp;анимации (GIF)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Drawing (DXF)…</source>
+        <translation>Экспорт &amp;чертежа (DXF)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Parameter Sheet…</source>
+        <translation>Экспорт &amp;листа параметров…</translation>
+    </message>
+    <message>
+        <source>Save 2D &amp;View Picture…</source>
+        <translation>Сохранить изображение &amp;2D-вида…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>В&amp;ыход</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Правка</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Отменить</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Повторить</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Примеры</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Вид</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Mechanism</source>
+        <translation>&amp;Вписать механизм</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>У&amp;величить</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>У&amp;меньшить</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Справка</translation>
+    </message>
+    <message>
+        <source>&amp;About PKM Studio</source>
+        <translation>&amp;О программе PKM Studio</translation>
+    </message>
+    <message>
+        <source>Switched to %1.</source>
+        <translation>Переключено: %1.</translation>
+    </message>
+    <message>
+        <source>Open Design</source>
+        <translation>Открыть конструкцию</translation>
+    </message>
+    <message>
+        <source>PKM Studio designs (*.pkm.json);;All files (*)</source>
+        <translation>Конструкции PKM Studio (*.pkm.json);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Save Design</source>
+        <translation>Сохранение конструкции</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
+    </message>
+    <message>
+        <source>Save Design As</source>
+        <translation>Сохранить конструкцию как</translation>
+    </message>
+    <message>
+        <source>PKM Studio designs (*.pkm.json)</source>
+        <translation>Конструкции PKM Studio (*.pkm.json)</translation>
+    </message>
+    <message>
+        <source>Export Animation</source>
+        <translation>Экспорт анимации</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Анимированный GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Несохранённые изменения</translation>
+    </message>
+    <message>
+        <source>The design “%1” has changes that are not saved. Save them?</source>
+        <translation>В конструкции «%1» есть несохранённые изменения. Сохранить их?</translation>
+    </message>
+    <message>
+        <source>Recover Design</source>
+        <translation>Восстановление конструкции</translation>
+    </message>
+    <message>
+        <source>PKM Studio closed unexpectedly while “%1” had unsaved changes (autosaved %2). Recover them?</source>
+        <translation>PKM Studio неожиданно закрылся, когда в «%1» были несохранённые изменения (автосохранение %2). Восстановить их?</translation>
+    </message>
+    <message>
+        <source>Recovered “%1”: save it to keep the changes.</source>
+        <translation>Восстановлено «%1»: сохраните, чтобы не потерять изменения.</translation>
+    </message>
+    <message>
+        <source>%1[*] — PKM Studio</source>
+        <translation>%1[*] — PKM Studio</translation>
+    </message>
+    <message>
+        <source>%1 no longer exists; removed from the recent files.</source>
+        <translation>%1 больше не существует; файл удалён из списка недавних.</translation>
+    </message>
+    <message>
+        <source>About PKM Studio</source>
+        <translation>О программе PKM Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;PKM Studio %1&lt;/h3&gt;&lt;p&gt;Design, analysis and teaching of parallel-kinematic mechanisms.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;PKM Studio %1&lt;/h3&gt;&lt;p&gt;Проектирование, анализ и преподавание механизмов параллельной кинематики.&lt;/p&gt;&lt;p&gt;Лицензия: GNU General Public License версии 3 или более поздней.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Export Drawing (DXF)</source>
+        <translation>Экспорт чертежа (DXF)</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf);;All files (*)</source>
+        <translation>Чертежи DXF (*.dxf);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Cannot write the drawing to %1: %2.</source>
+        <translation>Не удалось записать чертёж в %1: %2.</translation>
+    </message>
+    <message>
+        <source>Wrote the drawing to %1 (DXF R12, mm).</source>
+        <translation>Чертёж записан в %1 (DXF R12, мм).</translation>
+    </message>
+    <message>
+        <source>Export Parameter Sheet</source>
+        <translation>Экспорт листа параметров</translation>
+    </message>
+    <message>
+        <source>PDF parameter sheets (*.pdf);;JSON (*.json);;CSV (*.csv)</source>
+        <translation>Листы параметров PDF (*.pdf);;JSON (*.json);;CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Computing the parameter sheet…</source>
+        <translation>Вычисляется лист параметров…</translation>
+    </message>
+    <message>
+        <source>Wrote the parameter sheet to %1.</source>
+        <translation>Лист параметров записан в %1.</translation>
+    </message>
+    <message>
+        <source>Wrote the 2D view to %1.</source>
+        <translation>2D-вид записан в %1.</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Язык</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Основная панель инструментов</translation>
+    </message>
+    <message>
+        <source>The language “%1” is not available.</source>
+        <translation>Язык «%1» недоступен.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::MobilityPanel</name>
+    <message>
+        <source>✓ right</source>
+        <translation>✓ верно</translation>
+    </message>
+    <message>
+        <source>⚠ wrong</source>
+        <translation>⚠ неверно</translation>
+    </message>
+    <message numerus="yes">
+        <source>W = %1, but the rank gives M = %2: the formula counts %3 equations per loop, and %n of them are redundant.</source>
+        <translation>
+            <numerusform>W = %1, но по рангу M = %2: формула принимает число уравнений на контур равным %3, и %n из них избыточно.</numerusform>
+            <numerusform>W = %1, но по рангу M = %2: формула принимает число уравнений на контур равным %3, и %n из них избыточны.</numerusform>
+            <numerusform>W = %1, но по рангу M = %2: формула принимает число уравнений на контур равным %3, и %n из них избыточны.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A negative W rightly says “rigid”, but it is not the mobility: M = 0.</source>
+        <translation>Отрицательное W верно указывает на жёсткую цепь, но подвижностью не является: M = 0.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Classroom example: the spatial parallelogram.&lt;/b&gt; The П-joint prototype&apos;s hinged parallelogram (a = 170 mm, b = 68 mm): four parallel revolute axes, counted as a spatial chain.</source>
+        <translation>&lt;b&gt;Учебный пример: пространственный параллелограмм.&lt;/b&gt; Шарнирный параллелограмм прототипа П-шарнира (a = 170 мм, b = 68 мм): четыре параллельные оси вращательных пар, рассматриваемые как пространственная цепь.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Classroom example: the Bennett linkage.&lt;/b&gt; Four skew revolute axes, opposite links equal (a = 100 mm, b ≈ 188 mm) with twists α = 30°, β = 70° and a/sin α = b/sin β.</source>
+        <translation>&lt;b&gt;Учебный пример: механизм Беннетта.&lt;/b&gt; Четыре скрещивающиеся оси вращательных пар, противоположные звенья равны (a = 100 мм, b ≈ 188 мм), углы скрещивания α = 30°, β = 70° и a/sin α = b/sin β.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Classroom example: a general spatial 4R loop.&lt;/b&gt; Four revolute axes in general position, without Bennett&apos;s proportions: the same counts as the Bennett linkage.</source>
+        <translation>&lt;b&gt;Учебный пример: пространственный контур 4R общего вида.&lt;/b&gt; Четыре оси вращательных пар в общем положении, без пропорций Беннетта: подсчёт тот же, что и для механизма Беннетта.</translation>
+    </message>
+    <message>
+        <source>the %1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>the ground (%1)</source>
+        <translation>стойка (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;Links&lt;/b&gt;: %1 and %n moving link(s), n = %n: %2.</source>
+        <translation>
+            <numerusform>&lt;b&gt;Звенья&lt;/b&gt;: %1 и %n подвижное звено, n = %n: %2.</numerusform>
+            <numerusform>&lt;b&gt;Звенья&lt;/b&gt;: %1 и %n подвижных звена, n = %n: %2.</numerusform>
+            <numerusform>&lt;b&gt;Звенья&lt;/b&gt;: %1 и %n подвижных звеньев, n = %n: %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Pairs&lt;/b&gt;: %1.</source>
+        <translation>&lt;b&gt;Пары&lt;/b&gt;: %1.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>Actuated: %1.</source>
+        <translation>С приводом: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;Loops&lt;/b&gt;: %n independent loop(s), L = %n.</source>
+        <translation>
+            <numerusform>&lt;b&gt;Контуры&lt;/b&gt;: %n независимый контур, L = %n.</numerusform>
+            <numerusform>&lt;b&gt;Контуры&lt;/b&gt;: %n независимых контура, L = %n.</numerusform>
+            <numerusform>&lt;b&gt;Контуры&lt;/b&gt;: %n независимых контуров, L = %n.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;Idle freedoms&lt;/b&gt;: %n (a part spinning about its own axis), counted in every number below.</source>
+        <translation>
+            <numerusform>&lt;b&gt;Местные подвижности&lt;/b&gt;: %n (деталь, вращающаяся вокруг собственной оси); учтены во всех числах ниже.</numerusform>
+            <numerusform>&lt;b&gt;Местные подвижности&lt;/b&gt;: %n (деталь, вращающаяся вокруг собственной оси); учтены во всех числах ниже.</numerusform>
+            <numerusform>&lt;b&gt;Местные подвижности&lt;/b&gt;: %n (деталь, вращающаяся вокруг собственной оси); учтены во всех числах ниже.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>At this pose the mechanism gains an instantaneous freedom (singularity).</source>
+        <translation>В этом положении механизм получает мгновенную степень свободы (особое положение).</translation>
+    </message>
+    <message>
+        <source>The rank of the loop equations drops from %1 to %2: the instantaneous mobility is %3, the mobility next to this pose %4.</source>
+        <translation>Ранг уравнений замкнутости падает с %1 до %2: мгновенная подвижность равна %3, подвижность вблизи этого положения — %4.</translation>
+    </message>
+    <message>
+        <source>With the actuators locked the mechanism can still move instantaneously here: it gains a freedom the actuators do not control (a direct singularity).</source>
+        <translation>При застопоренных приводах механизм здесь всё ещё может мгновенно сдвинуться: он получает степень свободы, которой приводы не управляют (особое положение прямой кинематики).</translation>
+    </message>
+    <message>
+        <source>⚠ Singular pose</source>
+        <translation>⚠ Особое положение</translation>
+    </message>
+    <message>
+        <source>Chebyshev (planar chains)</source>
+        <translation>Чебышев (плоские цепи)</translation>
+    </message>
+    <message>
+        <source>Does not apply: the chain has pairs that do not move in its plane.</source>
+        <translation>Не применяется: в цепи есть пары, которые не движутся в её плоскости.</translation>
+    </message>
+    <message>
+        <source>Does not apply: a spatial chain.</source>
+        <translation>Не применяется: пространственная цепь.</translation>
+    </message>
+    <message>
+        <source>Somov–Malyshev (spatial chains)</source>
+        <translation>Сомов–Малышев (пространственные цепи)</translation>
+    </message>
+    <message>
+        <source>The source document prints the last term as “+ P₁”: a typo. A pair of class 1 takes away one freedom, so − P₁.</source>
+        <translation>В исходной статье последний член напечатан как «+ P₁» — это опечатка. Пара 1-го класса отнимает одну степень свободы, поэтому − P₁.</translation>
+    </message>
+    <message>
+        <source>⚠ Here it matters: with + P₁ the formula would give W = %1.</source>
+        <translation>⚠ Здесь это существенно: с + P₁ формула дала бы W = %1.</translation>
+    </message>
+    <message>
+        <source>No loop equation is redundant: the structural count holds.</source>
+        <translation>Ни одно уравнение замкнутости не избыточно: структурный подсчёт верен.</translation>
+    </message>
+    <message>
+        <source>Bennett&apos;s proportions (opposite links equal, a/sin α = b/sin β) make them depend on the others, so the linkage moves although the count says it cannot.</source>
+        <translation>пропорции Беннетта (противоположные звенья равны, a/sin α = b/sin β) делают их зависимыми от остальных, поэтому механизм движется, хотя подсчёт говорит, что не может.</translation>
+    </message>
+    <message>
+        <source>the joint axes are parallel, so each loop moves in a plane and imposes only 3 of its 6 equations.</source>
+        <translation>оси шарниров параллельны, поэтому каждый контур движется в плоскости и накладывает лишь 3 из своих 6 уравнений.</translation>
+    </message>
+    <message>
+        <source>%1 independent equations already hold all %1 freedoms of the pairs: a rigid chain with constraints to spare.</source>
+        <translation>независимых уравнений уже %1 — они удерживают все степени свободы пар (F = %1): жёсткая цепь с избыточными связями.</translation>
+    </message>
+    <message>
+        <source>the pairs&apos; axes lie in a special way (parallel, or meeting in a point), so some equations repeat others: an overconstrained chain.</source>
+        <translation>оси пар расположены особым образом (параллельны или пересекаются в одной точке), поэтому часть уравнений повторяет другие: цепь с избыточными связями.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n redundant loop equation(s): %1</source>
+        <translation>
+            <numerusform>%n избыточное уравнение замкнутости: %1</numerusform>
+            <numerusform>%n избыточных уравнения замкнутости: %1</numerusform>
+            <numerusform>%n избыточных уравнений замкнутости: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>From the rank of the constraint Jacobian</source>
+        <translation>По рангу матрицы Якоби уравнений связей</translation>
+    </message>
+    <message numerus="yes">
+        <source>An open chain, no loop: nothing holds the %n freedom(s) of its pairs, M = F = %n.</source>
+        <translation>
+            <numerusform>Открытая цепь, контуров нет: ничто не ограничивает %n степень свободы её пар, M = F = %n.</numerusform>
+            <numerusform>Открытая цепь, контуров нет: ничто не ограничивает %n степени свободы её пар, M = F = %n.</numerusform>
+            <numerusform>Открытая цепь, контуров нет: ничто не ограничивает %n степеней свободы её пар, M = F = %n.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>F = %1 freedoms of the pairs; 6L = %2 loop equations.</source>
+        <translation>F = %1 — число степеней свободы пар; 6L = %2 — число уравнений замкнутости.</translation>
+    </message>
+    <message>
+        <source>At this pose: rank %1 of %2 → %3 (instantaneous).</source>
+        <translation>В этом положении: ранг %1 из %2 → %3 (мгновенная).</translation>
+    </message>
+    <message>
+        <source>Next to it: rank %1 of %2 → %3.</source>
+        <translation>Вблизи него: ранг %1 из %2 → %3.</translation>
+    </message>
+    <message>
+        <source>rank %1 of %2 loop equations → %3</source>
+        <translation>ранг %1 из %2 уравнений замкнутости → %3</translation>
+    </message>
+    <message>
+        <source>Mobility M = %1</source>
+        <translation>Подвижность M = %1</translation>
+    </message>
+    <message>
+        <source>(%1 at this pose)</source>
+        <translation>(%1 в этом положении)</translation>
+    </message>
+    <message>
+        <source>Actuation</source>
+        <translation>Приводы</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s)</source>
+        <translation>
+            <numerusform>%n приводная степень свободы</numerusform>
+            <numerusform>%n приводные степени свободы</numerusform>
+            <numerusform>%n приводных степеней свободы</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No pair is actuated.</source>
+        <translation>Ни одна пара не имеет привода.</translation>
+    </message>
+    <message>
+        <source>⚠ Under-actuated by %1:</source>
+        <translation>⚠ Недостаёт приводов (%1):</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 for mobility %2; with the actuators locked, it keeps %n freedom(s).</source>
+        <translation>
+            <numerusform>%1 при подвижности %2; при застопоренных приводах у него остаётся %n степень свободы.</numerusform>
+            <numerusform>%1 при подвижности %2; при застопоренных приводах у него остаются %n степени свободы.</numerusform>
+            <numerusform>%1 при подвижности %2; при застопоренных приводах у него остаётся %n степеней свободы.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
+        <translation>Ранг учитывает x и y платформы, z каретки и наклон платформы (её качание вокруг продольной оси). Приводы задают x_AB, x_CD и z; наклон ими не удерживается. При шарнирах, описанных в статье (сферические у платформы, по одному шарниру на каждую тягу у ползуна, тяги одной пары одна за другой), платформа может наклоняться при застопоренных ползунах; кинематика статьи предполагает, что она остаётся горизонтальной.</translation>
+    </message>
+    <message>
+        <source>Redundantly actuated: %1 for mobility %2.</source>
+        <translation>Избыточное число приводов: %1 при подвижности %2.</translation>
+    </message>
+    <message>
+        <source>✓ Fully actuated:</source>
+        <translation>✓ Приводов достаточно:</translation>
+    </message>
+    <message>
+        <source>%1 for mobility %2.</source>
+        <translation>%1 при подвижности %2.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Verdict&lt;/b&gt;: %1</source>
+        <translation>&lt;b&gt;Вывод&lt;/b&gt;: %1</translation>
+    </message>
+    <message>
+        <source>Analyse:</source>
+        <translation>Анализ:</translation>
+    </message>
+    <message>
+        <source>This mechanism</source>
+        <translation>Этот механизм</translation>
+    </message>
+    <message>
+        <source>Example: spatial parallelogram</source>
+        <translation>Пример: пространственный параллелограмм</translation>
+    </message>
+    <message>
+        <source>Example: Bennett linkage</source>
+        <translation>Пример: механизм Беннетта</translation>
+    </message>
+    <message>
+        <source>Example: general spatial 4R (rigid)</source>
+        <translation>Пример: пространственный 4R общего вида (жёсткий)</translation>
+    </message>
+    <message>
+        <source>Classroom examples: chains where the structural formulas fail, and one where the counts predict the truth</source>
+        <translation>Учебные примеры: цепи, для которых структурные формулы ошибаются, и одна, для которой подсчёт даёт верный ответ</translation>
+    </message>
+    <message>
+        <source>No mechanism to analyse.</source>
+        <translation>Нет механизма для анализа.</translation>
+    </message>
+    <message>
+        <source>Analysing…</source>
+        <translation>Анализ…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n revolute</source>
+        <translation>
+            <numerusform>%n вращательная</numerusform>
+            <numerusform>%n вращательные</numerusform>
+            <numerusform>%n вращательных</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n prismatic</source>
+        <translation>
+            <numerusform>%n поступательная</numerusform>
+            <numerusform>%n поступательные</numerusform>
+            <numerusform>%n поступательных</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n screw</source>
+        <translation>
+            <numerusform>%n винтовая</numerusform>
+            <numerusform>%n винтовые</numerusform>
+            <numerusform>%n винтовых</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cylindrical</source>
+        <translation>
+            <numerusform>%n цилиндрическая</numerusform>
+            <numerusform>%n цилиндрические</numerusform>
+            <numerusform>%n цилиндрических</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n planar cam</source>
+        <translation>
+            <numerusform>%n плоская кулачковая</numerusform>
+            <numerusform>%n плоские кулачковые</numerusform>
+            <numerusform>%n плоских кулачковых</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spherical</source>
+        <translation>
+            <numerusform>%n сферическая</numerusform>
+            <numerusform>%n сферические</numerusform>
+            <numerusform>%n сферических</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>At this pose the mechanism gains %n instantaneous freedoms (singularity).</source>
+        <translation>
+            <numerusform>В этом положении механизм получает %n мгновенную степень свободы (особое положение).</numerusform>
+            <numerusform>В этом положении механизм получает %n мгновенные степени свободы (особое положение).</numerusform>
+            <numerusform>В этом положении механизм получает %n мгновенных степеней свободы (особое положение).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>pkm::ModeBar</name>
+    <message>
+        <source>Modes: %1</source>
+        <translation>Режимы: %1</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
+    </message>
+    <message>
+        <source>Switch to %1. The mechanism stays in its mode until you click here or on its ghost in the view.</source>
+        <translation>Переключиться: %1. Механизм остаётся в текущем режиме, пока вы не щёлкнете здесь или по его полупрозрачному силуэту на виде.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::OxGlidePanel</name>
+    <message>
+        <source>Form:</source>
+        <translation>Форма:</translation>
+    </message>
+    <message>
+        <source>O — extended</source>
+        <translation>O — вытянутая</translation>
+    </message>
+    <message>
+        <source>X — crossed</source>
+        <translation>X — скрещенная</translation>
+    </message>
+    <message>
+        <source>Work in the extended form: the rods splay outwards from the platform.</source>
+        <translation>Работа в вытянутой форме: стержни расходятся от платформы наружу.</translation>
+    </message>
+    <message>
+        <source>Work in the crossed form: the slider pairs pass each other and the rods cross.</source>
+        <translation>Работа в скрещенной форме: пары ползунов проходят друг мимо друга, а стержни перекрещиваются.</translation>
+    </message>
+    <message>
+        <source>Animate crossing</source>
+        <translation>Анимировать переход</translation>
+    </message>
+    <message>
+        <source>Raise the platform towards the O↔X crossing (y = l, x_CD − x_AB = s) and stop short of the singular pose there.</source>
+        <translation>Поднять платформу к переходу O↔X (y = l, x_CD − x_AB = s) и остановиться, не доходя до особого положения.</translation>
+    </message>
+    <message>
+        <source>Workspace O / X</source>
+        <translation>Рабочее пространство O / X</translation>
+    </message>
+    <message>
+        <source>Singularity map</source>
+        <translation>Карта особых положений</translation>
+    </message>
+    <message>
+        <source>The crossing stopped: the design changed.</source>
+        <translation>Переход остановлен: конструкция изменилась.</translation>
+    </message>
+    <message>
+        <source>Workspaces of the O and X forms (fig. 5)</source>
+        <translation>Рабочие пространства форм O и X (рис. 5)</translation>
+    </message>
+    <message>
+        <source>O↔X crossing y = l: singular</source>
+        <translation>Переход O↔X y = l: особое положение</translation>
+    </message>
+    <message>
+        <source>The crossing stopped: the pose was moved.</source>
+        <translation>Переход остановлен: положение было изменено.</translation>
+    </message>
+    <message>
+        <source>Crossing stopped.</source>
+        <translation>Переход остановлен.</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Стоп</translation>
+    </message>
+    <message>
+        <source>Raising the platform towards the O↔X crossing at y = l…</source>
+        <translation>Платформа поднимается к переходу O↔X при y = l…</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Stopped %1 short of the singular pose.&lt;/b&gt; At y = l = %2 the slider pairs stand at x_CD − x_AB = s: the rods are perpendicular to the guides and parallel to each other, so the platform can swing sideways while the sliders hold still (a combined singularity), and it may leave in either form. Here the rods are at %3° to the guides. Passing needs the platform guided through that point: choose the form to leave in.</source>
+        <translation>&lt;b&gt;Остановлено за %1 до особого положения.&lt;/b&gt; При y = l = %2 пары ползунов стоят в положении x_CD − x_AB = s: стержни перпендикулярны направляющим и параллельны друг другу, поэтому платформа может качаться в сторону при неподвижных ползунах (комбинированное особое положение) и выйти из него в любой форме. Здесь стержни расположены под углом %3° к направляющим. Для перехода платформу нужно провести через эту точку: выберите форму, в которой выйти.</translation>
+    </message>
+    <message>
+        <source>The crossing stopped %1 below y = l, short of the singular pose x_CD − x_AB = s.</source>
+        <translation>Переход остановлен на %1 ниже y = l, не доходя до особого положения x_CD − x_AB = s.</translation>
+    </message>
+    <message>
+        <source>Leave in the extended (O) form</source>
+        <translation>Выйти в вытянутой форме (O)</translation>
+    </message>
+    <message>
+        <source>Leave in the crossed (X) form</source>
+        <translation>Выйти в скрещенной форме (X)</translation>
+    </message>
+    <message>
+        <source>Go back in the crossed (X) form</source>
+        <translation>Вернуться в скрещенной форме (X)</translation>
+    </message>
+    <message>
+        <source>Go back in the extended (O) form</source>
+        <translation>Вернуться в вытянутой форме (O)</translation>
+    </message>
+    <message>
+        <source>Switched to the crossed (X) form at the same platform position.</source>
+        <translation>Выполнен переход в скрещенную форму (X) при том же положении платформы.</translation>
+    </message>
+    <message>
+        <source>Switched to the extended (O) form at the same platform position.</source>
+        <translation>Выполнен переход в вытянутую форму (O) при том же положении платформы.</translation>
+    </message>
+    <message>
+        <source>The crossed (X) form is not available at this pose.</source>
+        <translation>Скрещенная форма (X) недоступна в этом положении.</translation>
+    </message>
+    <message>
+        <source>The extended (O) form is not available at this pose.</source>
+        <translation>Вытянутая форма (O) недоступна в этом положении.</translation>
+    </message>
+    <message>
+        <source>The platform is back at y = %1, in the crossed (X) form.</source>
+        <translation>Платформа вернулась в y = %1, в скрещенной форме (X).</translation>
+    </message>
+    <message>
+        <source>The platform is back at y = %1, in the extended (O) form.</source>
+        <translation>Платформа вернулась в y = %1, в вытянутой форме (O).</translation>
+    </message>
+    <message>
+        <source>Lowering the platform in the crossed (X) form…</source>
+        <translation>Платформа опускается в скрещенной форме (X)…</translation>
+    </message>
+    <message>
+        <source>Lowering the platform in the extended (O) form…</source>
+        <translation>Платформа опускается в вытянутой форме (O)…</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::PJointPlots</name>
+    <message>
+        <source>Geometry</source>
+        <translation>Геометрия</translation>
+    </message>
+    <message>
+        <source>Jacobian</source>
+        <translation>Якобиан</translation>
+    </message>
+    <message>
+        <source>Actuator</source>
+        <translation>Привод</translation>
+    </message>
+    <message>
+        <source>Fig. 8 — diagonal length d(θ), (2)</source>
+        <translation>Рис. 8 — длина диагонали d(θ), (2)</translation>
+    </message>
+    <message>
+        <source>Fig. 9 — passive angle φ(θ)</source>
+        <translation>Рис. 9 — пассивный угол φ(θ)</translation>
+    </message>
+    <message>
+        <source>Fig. 10 — transmission angle μ(θ)</source>
+        <translation>Рис. 10 — угол передачи μ(θ)</translation>
+    </message>
+    <message>
+        <source>Fig. 11 — Jacobian J(θ) = ∂d/∂θ, (7)</source>
+        <translation>Рис. 11 — якобиан J(θ) = ∂d/∂θ, (7)</translation>
+    </message>
+    <message>
+        <source>Fig. 12 — inverse Jacobian J⁻¹(θ), (8)</source>
+        <translation>Рис. 12 — обратный якобиан J⁻¹(θ), (8)</translation>
+    </message>
+    <message>
+        <source>Fig. 15 — output resolution Δθ = Δd/J</source>
+        <translation>Рис. 15 — разрешение по выходу Δθ = Δd/J</translation>
+    </message>
+    <message>
+        <source>Fig. 16 — output speed θ̇ = ḋ_max/J</source>
+        <translation>Рис. 16 — скорость выходного звена θ̇ = ḋ_max/J</translation>
+    </message>
+    <message>
+        <source>Fig. 17 — output torque T = J·F_max, (13)</source>
+        <translation>Рис. 17 — выходной момент T = J·F_max, (13)</translation>
+    </message>
+    <message>
+        <source>a = %1 mm, k = %2, θ %3°…%4°; family at the same a</source>
+        <translation>a = %1 мм, k = %2, θ %3°…%4°; семейство при том же a</translation>
+    </message>
+    <message>
+        <source>diagonal OA from the base OB</source>
+        <translation>диагональ OA относительно основания OB</translation>
+    </message>
+    <message>
+        <source>at A, diagonal to crank; J = a·sin μ</source>
+        <translation>в точке A, между диагональю и кривошипом; J = a·sin μ</translation>
+    </message>
+    <message>
+        <source>ḋ = J·θ̇; a = %1 mm, k = %2</source>
+        <translation>ḋ = J·θ̇; a = %1 мм, k = %2</translation>
+    </message>
+    <message>
+        <source>θ̇ = J⁻¹·ḋ; J⁻¹ → ∞ at θ = ±90°</source>
+        <translation>θ̇ = J⁻¹·ḋ; J⁻¹ → ∞ при θ = ±90°</translation>
+    </message>
+    <message>
+        <source>one motor step Δd = %1 mm</source>
+        <translation>один шаг двигателя Δd = %1 мм</translation>
+    </message>
+    <message>
+        <source>at the maximum linear speed ḋ_max = %1 mm/s</source>
+        <translation>при максимальной линейной скорости ḋ_max = %1 мм/с</translation>
+    </message>
+    <message>
+        <source>F_max = %1 N; motor torque T_M = %2 N·m at any θ (15)</source>
+        <translation>F_max = %1 Н; момент двигателя T_M = %2 Н·м при любом θ (15)</translation>
+    </message>
+    <message>
+        <source>θ (°)</source>
+        <translation>θ (°)</translation>
+    </message>
+    <message>
+        <source>dθ/dt</source>
+        <translation>dθ/dt</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>this design (k = %1)</source>
+        <translation>эта конструкция (k = %1)</translation>
+    </message>
+    <message>
+        <source>beyond its θ range</source>
+        <translation>за пределами её диапазона θ</translation>
+    </message>
+    <message>
+        <source>k = %1</source>
+        <translation>k = %1</translation>
+    </message>
+    <message>
+        <source>recommended %1°…%2° (J ≥ %3 % of best)</source>
+        <translation>рекомендуемый %1°…%2° (J ≥ %3 % от наилучшего)</translation>
+    </message>
+    <message>
+        <source>steep region</source>
+        <translation>крутой участок</translation>
+    </message>
+    <message>
+        <source>μ &lt; %1°: force almost along the crank</source>
+        <translation>μ &lt; %1°: сила направлена почти вдоль кривошипа</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::PictureDialog</name>
+    <message>
+        <source>PNG pictures (*.png)</source>
+        <translation>Изображения PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>SVG drawings (*.svg)</source>
+        <translation>Рисунки SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>Документы PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels is not a picture size: each side must be from %3 to %4.</source>
+        <translation>%1 × %2 пикс. — недопустимый размер изображения: каждая сторона должна быть от %3 до %4.</translation>
+    </message>
+    <message>
+        <source>%1 dpi is not a resolution: it must be from %2 to %3 dpi.</source>
+        <translation>%1 dpi — недопустимое разрешение: оно должно быть от %2 до %3 dpi.</translation>
+    </message>
+    <message>
+        <source>The %1 picture could not be drawn.</source>
+        <translation>Не удалось нарисовать изображение %1.</translation>
+    </message>
+    <message>
+        <source>There is not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Недостаточно памяти для изображения %1 × %2 пикс.</translation>
+    </message>
+    <message>
+        <source>Drawn by %1</source>
+        <translation>Нарисовано в %1</translation>
+    </message>
+    <message>
+        <source>“%1” is not a picture format: the file name must end in .png, .svg or .pdf.</source>
+        <translation>«%1» — не формат изображения: имя файла должно оканчиваться на .png, .svg или .pdf.</translation>
+    </message>
+    <message>
+        <source>There is no plot to draw.</source>
+        <translation>Нет графика для рисования.</translation>
+    </message>
+    <message>
+        <source>“%1” could not be opened for writing: %2.</source>
+        <translation>Не удалось открыть «%1» для записи: %2.</translation>
+    </message>
+    <message>
+        <source>The picture could not be written to “%1”: %2.</source>
+        <translation>Не удалось записать изображение в «%1»: %2.</translation>
+    </message>
+    <message>
+        <source>“%1” could not be saved: %2.</source>
+        <translation>Не удалось сохранить «%1»: %2.</translation>
+    </message>
+    <message>
+        <source>Save picture…</source>
+        <translation>Сохранить изображение…</translation>
+    </message>
+    <message>
+        <source>Save this plot as a PNG picture, an SVG or a PDF drawing</source>
+        <translation>Сохранить этот график как изображение PNG или как рисунок SVG или PDF</translation>
+    </message>
+    <message>
+        <source>Save Picture</source>
+        <translation>Сохранение изображения</translation>
+    </message>
+    <message>
+        <source>Picture Size</source>
+        <translation>Размер изображения</translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <source>As shown — %1</source>
+        <translation>Как на экране — %1</translation>
+    </message>
+    <message>
+        <source>Twice as shown — %1</source>
+        <translation>Вдвое больше — %1</translation>
+    </message>
+    <message>
+        <source>Full HD — %1</source>
+        <translation>Full HD — %1</translation>
+    </message>
+    <message>
+        <source>4K UHD — %1</source>
+        <translation>4K UHD — %1</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Произвольный</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> пикс.</translation>
+    </message>
+    <message>
+        <source>%1 dpi</source>
+        <translation>%1 dpi</translation>
+    </message>
+    <message>
+        <source>An SVG drawing is scalable: its size is in CSS pixels.</source>
+        <translation>Рисунок SVG масштабируется: его размер задаётся в пикселях CSS.</translation>
+    </message>
+    <message>
+        <source>The PDF&apos;s page is the size in pixels at this resolution.</source>
+        <translation>Размер страницы PDF — размер в пикселях при этом разрешении.</translation>
+    </message>
+    <message>
+        <source>Stored in the PNG: the size it prints at.</source>
+        <translation>Записывается в PNG и задаёт размер при печати.</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>&amp;Размер:</translation>
+    </message>
+    <message>
+        <source>&amp;Width:</source>
+        <translation>&amp;Ширина:</translation>
+    </message>
+    <message>
+        <source>&amp;Height:</source>
+        <translation>&amp;Высота:</translation>
+    </message>
+    <message>
+        <source>&amp;Resolution:</source>
+        <translation>Ра&amp;зрешение:</translation>
+    </message>
+    <message>
+        <source>%1 × %2 mm</source>
+        <translation>%1 × %2 мм</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels</source>
+        <translation>%1 × %2 пикс.</translation>
+    </message>
+    <message>
+        <source>An SVG drawing of %1 (CSS pixels), lines and text as vectors.</source>
+        <translation>Рисунок SVG размером %1 (пиксели CSS), линии и текст — векторные.</translation>
+    </message>
+    <message>
+        <source>A PDF page of %1: %2 at %3 dpi, lines and text as vectors.</source>
+        <translation>Страница PDF размером %1: %2 при %3 dpi, линии и текст — векторные.</translation>
+    </message>
+    <message>
+        <source>A PNG picture of %1; it prints at %2 at %3 dpi.</source>
+        <translation>Изображение PNG размером %1; при печати — %2 при %3 dpi.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Renderer3D</name>
+    <message>
+        <source>No OpenGL context is current.</source>
+        <translation>Нет текущего контекста OpenGL.</translation>
+    </message>
+    <message>
+        <source>The driver offers OpenGL %1%2.%3; the 3D view needs OpenGL 3.3.</source>
+        <translation>Драйвер предоставляет OpenGL %1%2.%3, а для 3D-вида нужен OpenGL 3.3.</translation>
+    </message>
+    <message>
+        <source>The OpenGL 3.3 core functions could not be resolved.</source>
+        <translation>Не удалось получить функции ядра OpenGL 3.3.</translation>
+    </message>
+    <message>
+        <source>OpenGL %1.%2 (%3), %4</source>
+        <translation>OpenGL %1.%2 (%3), %4</translation>
+    </message>
+    <message>
+        <source>The 3D view&apos;s shaders could not be built: %1</source>
+        <translation>Не удалось собрать шейдеры 3D-вида: %1</translation>
+    </message>
+    <message>
+        <source>A picture of %1 × %2 pixels is not possible: the largest is %3 × %3.</source>
+        <translation>Изображение %1 × %2 пикселей невозможно: наибольший размер — %3 × %3.</translation>
+    </message>
+    <message>
+        <source>The OpenGL driver could not make a framebuffer of %1 × %2 pixels.</source>
+        <translation>Драйвер OpenGL не смог создать кадровый буфер %1 × %2 пикселей.</translation>
+    </message>
+    <message>
+        <source>No OpenGL context could be created on the “%1” display platform.</source>
+        <translation>Не удалось создать контекст OpenGL на платформе отображения «%1».</translation>
+    </message>
+    <message>
+        <source>The driver offers OpenGL %1%2.%3 only.</source>
+        <translation>Драйвер предоставляет только OpenGL %1%2.%3.</translation>
+    </message>
+    <message>
+        <source>The OpenGL context could not be made current on an offscreen surface.</source>
+        <translation>Не удалось сделать контекст OpenGL текущим на внеэкранной поверхности.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::SetParameterCommand</name>
+    <message>
+        <source>Change %1</source>
+        <translation>Изменить %1</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::ValuesTable</name>
+    <message>
+        <source>Pose</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <source>Jacobian</source>
+        <translation>Якобиан</translation>
+    </message>
+    <message>
+        <source>Derived</source>
+        <translation>Производные величины</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>inverse</source>
+        <translation>обратное</translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation>прямое</translation>
+    </message>
+    <message>
+        <source>combined</source>
+        <translation>комбинированное</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>Величина</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Описание</translation>
+    </message>
+    <message>
+        <source>Singularity</source>
+        <translation>Особое положение</translation>
+    </message>
+    <message>
+        <source>class</source>
+        <translation>класс</translation>
+    </message>
+    <message>
+        <source>none, inverse, direct or combined</source>
+        <translation>нет, обратное, прямое или комбинированное</translation>
+    </message>
+    <message>
+        <source>%1 (margin %2)</source>
+        <translation>%1 (запас %2)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VariablePanel</name>
+    <message>
+        <source>input, actuated</source>
+        <translation>вход, с приводом</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>выход</translation>
+    </message>
+    <message>
+        <source>Drag to set %1 (%2)</source>
+        <translation>Перетащите, чтобы задать %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::View3DPanel</name>
+    <message>
+        <source>Fit</source>
+        <translation>Вписать</translation>
+    </message>
+    <message>
+        <source>Show the whole mechanism (F, or double-click)</source>
+        <translation>Показать весь механизм (F или двойной щелчок)</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Спереди</translation>
+    </message>
+    <message>
+        <source>Look at the mechanism plane, as the 2D view does (1)</source>
+        <translation>Смотреть на плоскость механизма, как в 2D-виде (1)</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Сверху</translation>
+    </message>
+    <message>
+        <source>Look down from above (7)</source>
+        <translation>Смотреть сверху вниз (7)</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Сбоку</translation>
+    </message>
+    <message>
+        <source>Look from the right (3)</source>
+        <translation>Смотреть справа (3)</translation>
+    </message>
+    <message>
+        <source>Isometric</source>
+        <translation>Изометрия</translation>
+    </message>
+    <message>
+        <source>Look from the front, right and above at once</source>
+        <translation>Смотреть одновременно спереди, справа и сверху</translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Перспектива</translation>
+    </message>
+    <message>
+        <source>Perspective when on, orthographic (true to scale) when off (5)</source>
+        <translation>Включено — перспектива, выключено — ортогональная проекция (в масштабе) (5)</translation>
+    </message>
+    <message>
+        <source>Save picture…</source>
+        <translation>Сохранить изображение…</translation>
+    </message>
+    <message>
+        <source>Save the 3D view as a PNG picture at twice its size</source>
+        <translation>Сохранить 3D-вид как изображение PNG вдвое большего размера</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels is not a picture size: each side must be from 16 to 8000.</source>
+        <translation>%1 × %2 пикселей — недопустимый размер изображения: каждая сторона должна быть от 16 до 8000.</translation>
+    </message>
+    <message>
+        <source>The picture could not be rendered. %1</source>
+        <translation>Не удалось построить изображение. %1</translation>
+    </message>
+    <message>
+        <source>“%1” could not be opened for writing: %2</source>
+        <translation>Не удалось открыть «%1» для записи: %2</translation>
+    </message>
+    <message>
+        <source>The picture could not be written to “%1”.</source>
+        <translation>Не удалось записать изображение в «%1».</translation>
+    </message>
+    <message>
+        <source>“%1” could not be saved: %2</source>
+        <translation>Не удалось сохранить «%1»: %2</translation>
+    </message>
+    <message>
+        <source>Save picture</source>
+        <translation>Сохранить изображение</translation>
+    </message>
+    <message>
+        <source>PNG pictures (*.png)</source>
+        <translation>Изображения PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels</source>
+        <translation>%1 × %2 пикс.</translation>
+    </message>
+    <message>
+        <source>%1 (twice the view)</source>
+        <translation>%1 (вдвое больше вида)</translation>
+    </message>
+    <message>
+        <source>Picture size:</source>
+        <translation>Размер изображения:</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::ViewPicture</name>
+    <message>
+        <source>Save 2D View Picture</source>
+        <translation>Сохранить изображение 2D-вида</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::WorkspaceMapView</name>
+    <message>
+        <source>No mechanism.</source>
+        <translation>Механизм не задан.</translation>
+    </message>
+    <message>
+        <source>No planar workspace: the outputs of this mechanism are not a point of the plane, so there is no workspace map to show.</source>
+        <translation>Нет плоского рабочего пространства: выходные координаты этого механизма — не точка плоскости, поэтому карту рабочего пространства построить нельзя.</translation>
+    </message>
+    <message>
+        <source>Workspace map</source>
+        <translation>Карта рабочего пространства</translation>
+    </message>
+    <message>
+        <source>Workspace empty in the design&apos;s working and assembly modes</source>
+        <translation>Рабочее пространство пусто при рабочем режиме и варианте сборки конструкции</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4</source>
+        <translation>Рабочее пространство %1 · %2 от %3 до %4</translation>
+    </message>
+    <message>
+        <source>κ(J), log scale (colours end at %1)</source>
+        <translation>κ(J), логарифмическая шкала (цвета до %1)</translation>
+    </message>
+    <message>
+        <source>det J (colours clipped at ±%1)</source>
+        <translation>det J (цвета ограничены на ±%1)</translation>
+    </message>
+    <message>
+        <source>The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the singularities.</source>
+        <translation>Цветовая шкала заканчивается на 98-м процентиле κ(J) по рабочему пространству, %1; в особых положениях κ → ∞.</translation>
+    </message>
+    <message>
+        <source>The colours are clipped at ±%1, the larger of the 2nd and 98th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
+        <translation>Цвета ограничены на ±%1 — большем из 2-го и 98-го процентилей |det J| по рабочему пространству: в особых положениях обратной кинематики det J → ±∞, в особых положениях прямой кинематики det J = 0.</translation>
+    </message>
+    <message>
+        <source>workspace boundary</source>
+        <translation>граница рабочего пространства</translation>
+    </message>
+    <message>
+        <source>: none</source>
+        <translation>: нет</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>inverse singularity</source>
+        <translation>особое положение обратной кинематики</translation>
+    </message>
+    <message>
+        <source>direct singularity</source>
+        <translation>особое положение прямой кинематики</translation>
+    </message>
+    <message>
+        <source>%1: boundary, %2</source>
+        <translation>%1: граница, %2</translation>
+    </message>
+    <message>
+        <source> (%1%2 %)</source>
+        <translation> (%1%2 %)</translation>
+    </message>
+    <message>
+        <source>&amp;Map:</source>
+        <translation>&amp;Карта:</translation>
+    </message>
+    <message>
+        <source>condition number κ(J)</source>
+        <translation>число обусловленности κ(J)</translation>
+    </message>
+    <message>
+        <source>computing…</source>
+        <translation>вычисление…</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (мм)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (мм)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::WorkspacePanel</name>
+    <message>
+        <source>Compare workspace with:</source>
+        <translation>Сравнить рабочее пространство с:</translation>
+    </message>
+    <message>
+        <source>Pin this design</source>
+        <translation>Запомнить эту конструкцию</translation>
+    </message>
+    <message>
+        <source>Keep the current design&apos;s workspace as the comparison, then change the design and see both outlines.</source>
+        <translation>Оставить рабочее пространство текущей конструкции для сравнения, чтобы затем изменить конструкцию и увидеть оба контура.</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>ничем</translation>
+    </message>
+    <message>
+        <source>pinned: %1</source>
+        <translation>запомненная: %1</translation>
+    </message>
+    <message>
+        <source>pinned</source>
+        <translation>запомненная</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::designfile</name>
+    <message>
+        <source>%1 is not valid JSON (%2 at byte %3).</source>
+        <translation>%1 не является корректным JSON (%2 в байте %3).</translation>
+    </message>
+    <message>
+        <source>%1 is not a PKM Studio design file.</source>
+        <translation>%1 не является файлом конструкции PKM Studio.</translation>
+    </message>
+    <message>
+        <source>%1 was written by a newer PKM Studio (format version %2; this version reads up to %3).</source>
+        <translation>%1 записан более новой версией PKM Studio (версия формата %2; эта версия читает версии до %3).</translation>
+    </message>
+    <message>
+        <source>%1 has no valid format version.</source>
+        <translation>В %1 нет допустимой версии формата.</translation>
+    </message>
+    <message>
+        <source>%1 names an unknown mechanism kind &apos;%2&apos;.</source>
+        <translation>%1 указывает неизвестный тип механизма «%2».</translation>
+    </message>
+    <message>
+        <source>%1: unknown parameter &apos;%2&apos;.</source>
+        <translation>%1: неизвестный параметр «%2».</translation>
+    </message>
+    <message>
+        <source>%1: parameter &apos;%2&apos; is not a number.</source>
+        <translation>%1: параметр «%2» не является числом.</translation>
+    </message>
+    <message>
+        <source>%1: parameter &apos;%2&apos; must be a number or one of %3, not &apos;%4&apos;.</source>
+        <translation>%1: параметр «%2» должен быть числом или одним из значений %3, а не «%4».</translation>
+    </message>
+    <message>
+        <source>%1: pose value &apos;%2&apos; is not a number.</source>
+        <translation>%1: значение положения «%2» не является числом.</translation>
+    </message>
+    <message>
+        <source>the pose&apos;s %1 = %2 %4 does not agree with its inputs, which give %3 %4.</source>
+        <translation>значение положения %1 = %2 %4 не согласуется с входными координатами, которые дают %3 %4.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is neither a preset id (see &apos;pkm list&apos;) nor a design file.</source>
+        <translation>«%1» не является ни идентификатором предустановки (см. «pkm list»), ни файлом конструкции.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2.</source>
+        <translation>Не удаётся открыть %1: %2.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>Не удаётся записать %1: %2.</translation>
+    </message>
+    <message>
+        <source>Unknown parameter &apos;%1&apos; (see &apos;pkm show&apos;).</source>
+        <translation>Неизвестный параметр «%1» (см. «pkm show»).</translation>
+    </message>
+    <message>
+        <source>Unknown pose variable &apos;%1&apos;.</source>
+        <translation>Неизвестная переменная положения «%1».</translation>
+    </message>
+    <message>
+        <source>Give either the actuated inputs or the outputs of the pose, not both.</source>
+        <translation>Задайте либо приводные (входные), либо выходные координаты положения, но не те и другие вместе.</translation>
+    </message>
+</context>
+<context>
+    <name>presets</name>
+    <message>
+        <source>Planar five-bar linkage (example)</source>
+        <translation>Плоский пятизвенный механизм (пример)</translation>
+    </message>
+    <message>
+        <source>Four-bar linkage example (crank-rocker 40/120/100/140 mm)</source>
+        <translation>Пример четырёхзвенного механизма (кривошипно-коромысловый, 40/120/100/140 мм)</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3a (γ₁ = −5°, γ₂ = +5°)</source>
+        <translation>MOMA, конфигурация 3a (γ₁ = −5°, γ₂ = +5°)</translation>
+    </message>
+    <message>
+        <source>Configuration of fig. 3a: R₁ = (−100, 0) mm, R₂ = (100, 0) mm, guides turned from the vertical by γ₁ = −5° and γ₂ = +5° (α_i = 270° + γ_i), so they open downwards. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Both legs work with p_i = B_i − √(B_i² − C_i), the platform below the sliders. The document finds no direct singularities in this workspace.</source>
+        <translation>Конфигурация рис. 3a: R₁ = (−100, 0) мм, R₂ = (100, 0) мм, направляющие повёрнуты от вертикали на γ₁ = −5° и γ₂ = +5° (α_i = 270° + γ_i), так что они расходятся книзу. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Обе ветви работают с p_i = B_i − √(B_i² − C_i), платформа ниже ползунов. Документ не находит в этом рабочем пространстве особых положений прямой кинематики.</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3b (γ₁ = +5°, γ₂ = −5°)</source>
+        <translation>MOMA, конфигурация 3b (γ₁ = +5°, γ₂ = −5°)</translation>
+    </message>
+    <message>
+        <source>Configuration of fig. 3b: as 3a with the guides turned the other way, γ₁ = +5° and γ₂ = −5°, so they close downwards. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). The document finds no direct singularities in this workspace.</source>
+        <translation>Конфигурация рис. 3b: как 3a, но направляющие повёрнуты в другую сторону, γ₁ = +5° и γ₂ = −5°, так что они сходятся книзу. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Документ не находит в этом рабочем пространстве особых положений прямой кинематики.</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3c (interpreted)</source>
+        <translation>MOMA, конфигурация 3c (интерпретация)</translation>
+    </message>
+    <message>
+        <source>Interpreted: the document describes 3c in two ways that do not agree (the guides along the axes, or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this preset takes the first. Configuration of fig. 3c: R₁ = (250, 0) mm with α₁ = 180° and R₂ = (0, 250) mm with α₂ = 270°, the guides along the axes towards the corner. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Here both legs take the document&apos;s root p_i = B_i − √…; every inverse singularity lies on x = 195 mm or y = 195 mm (a link perpendicular to its guide), where the document puts them, at the edge of the other assembly mode&apos;s region near (195, 195) mm; the direct singularity needs both slider joints at the origin, beyond the strokes.</source>
+        <translation>Интерпретация: документ описывает 3c двумя несогласующимися способами (направляющие вдоль осей или α = 225°/315°, повёрнутые на β матрицами (15–16)), а рисунок отсутствует; эта предустановка берёт первый. Конфигурация рис. 3c: R₁ = (250, 0) мм с α₁ = 180° и R₂ = (0, 250) мм с α₂ = 270°, направляющие вдоль осей в сторону угла. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Здесь обе ветви берут корень из документа p_i = B_i − √…; все особые положения обратной кинематики лежат на x = 195 мм или y = 195 мм (звено перпендикулярно своей направляющей), где их и указывает документ, на границе области другого варианта сборки около (195, 195) мм; для особого положения прямой кинематики оба шарнира ползунов должны оказаться в начале координат, за пределами ходов.</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3d (interpreted)</source>
+        <translation>MOMA, конфигурация 3d (интерпретация)</translation>
+    </message>
+    <message>
+        <source>Interpreted: the document describes 3d in two ways that do not agree (the guides along the axes, or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this preset takes the first. Configuration of fig. 3d: R₁ = (117, 0) mm with α₁ = 0° and R₂ = (0, 117) mm with α₂ = 90°, the guides along the axes away from the corner, the platform between them near the origin. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Here both legs take the root p_i = B_i + √… that keeps the platform on the corner side of the sliders; the direct singularities (links stretched in line) bound the workspace on the far side.</source>
+        <translation>Интерпретация: документ описывает 3d двумя несогласующимися способами (направляющие вдоль осей или α = 225°/315°, повёрнутые на β матрицами (15–16)), а рисунок отсутствует; эта предустановка берёт первый. Конфигурация рис. 3d: R₁ = (117, 0) мм с α₁ = 0° и R₂ = (0, 117) мм с α₂ = 90°, направляющие вдоль осей в сторону от угла, платформа между ними около начала координат. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Здесь обе ветви берут корень p_i = B_i + √…, при котором платформа остаётся со стороны угла относительно ползунов; особые положения прямой кинематики (звенья вытянуты в линию) ограничивают рабочее пространство с дальней стороны.</translation>
+    </message>
+    <message>
+        <source>O-X glide prototype (l = 80 mm, s = 20 mm, L = 130 mm)</source>
+        <translation>Прототип механизма O-X glide (l = 80 мм, s = 20 мм, L = 130 мм)</translation>
+    </message>
+    <message>
+        <source>The rapid-prototyped O-X glide of the Novi Sad document: rods l = 80 mm, platform width s = 20 mm, transverse guides L = 130 mm (slider positions 0 to 130 mm), working in the extended (O) form. The guide spacing a = 15 mm and the longitudinal travel z = 0 to 150 mm are not given in the document and are chosen for the drawing; they do not change the planar workspace.</source>
+        <translation>Механизм O-X glide из новисадского документа, изготовленный методом быстрого прототипирования: стержни l = 80 мм, ширина платформы s = 20 мм, поперечные направляющие L = 130 мм (положения ползунов от 0 до 130 мм), работа в вытянутой форме (O). Расстояние между направляющими a = 15 мм и продольный ход z от 0 до 150 мм в документе не указаны и выбраны для чертежа; на плоское рабочее пространство они не влияют.</translation>
+    </message>
+    <message>
+        <source>П-joint laboratory prototype (a = 170 mm, k = 0.4)</source>
+        <translation>Лабораторный прототип П-шарнира (a = 170 мм, k = 0,4)</translation>
+    </message>
+    <message>
+        <source>The laboratory prototype of section 4.2: a = 170 mm, b = 68 mm (k = 0.4), θ = ±60°, driven by the hybrid stepper motor with integrated lead screw of Table 1 (lead 2.54 mm, 0.0127 mm/step, 50 mm/s, 130 N). The screw efficiency 0.4 is an assumption: Table 1 does not give it.</source>
+        <translation>Лабораторный прототип из раздела 4.2: a = 170 мм, b = 68 мм (k = 0,4), θ = ±60°, привод — гибридный шаговый двигатель со встроенным ходовым винтом из табл. 1 (ход винта 2,54 мм, 0,0127 мм/шаг, 50 мм/с, 130 Н). КПД винта 0,4 принят как допущение: в табл. 1 он не указан.</translation>
+    </message>
+    <message>
+        <source>П-joint design study k = 0.3 (a = 1 m)</source>
+        <translation>Проектное исследование П-шарнира, k = 0,3 (a = 1 м)</translation>
+    </message>
+    <message>
+        <source>Design study of figures 8–12: a = 1 m, k = 0.3, θ over ±75°, with the stepper motor of Table 1.</source>
+        <translation>Проектное исследование по рис. 8–12: a = 1 м, k = 0,3, θ в пределах ±75°, с шаговым двигателем из табл. 1.</translation>
+    </message>
+    <message>
+        <source>П-joint design study k = 0.4 (a = 1 m)</source>
+        <translation>Проектное исследование П-шарнира, k = 0,4 (a = 1 м)</translation>
+    </message>
+    <message>
+        <source>Design study of figures 8–12: a = 1 m, k = 0.4, θ over ±75°, with the stepper motor of Table 1.</source>
+        <translation>Проектное исследование по рис. 8–12: a = 1 м, k = 0,4, θ в пределах ±75°, с шаговым двигателем из табл. 1.</translation>
+    </message>
+    <message>
+        <source>П-joint design study k = 0.5 (a = 1 m)</source>
+        <translation>Проектное исследование П-шарнира, k = 0,5 (a = 1 м)</translation>
+    </message>
+    <message>
+        <source>Design study of figures 8–12: a = 1 m, k = 0.5, θ over ±75°, with the stepper motor of Table 1.</source>
+        <translation>Проектное исследование по рис. 8–12: a = 1 м, k = 0,5, θ в пределах ±75°, с шаговым двигателем из табл. 1.</translation>
+    </message>
+    <message>
+        <source>A classroom five-bar chosen for PKM Studio (the mobility document, seed 004, shows the planar five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. Chebyshev&apos;s count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out (B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by the legs stretched or folded in line and, low between A and E, by a direct singularity where BC and CD come in line.</source>
+        <translation>Учебный пятизвенный механизм, подобранный для PKM Studio (документ о подвижности, № 004, показывает плоский пятизвенный механизм на рис. 1 без размеров). Стойка AE = 100 мм; кривошипы AB = DE = 80 мм приводятся в A и в E и совершают полный оборот; дальние звенья BC = CD = 120 мм сходятся в выходной точке C. По формуле Чебышева W = 3·4 − 2·5 = 2: два угла кривошипов θ₁, θ₄ определяют положение C. Рабочие режимы «локтями наружу» (B слева от A→C, D справа от E→C), вариант сборки — C над BD (слева от B→D). При C = (50, 150) мм каждое дальнее звено почти перпендикулярно своему кривошипу, а дальние звенья почти перпендикулярны друг другу, поэтому κ(J) ≈ 1,11; рабочее пространство в этих режимах ограничено положениями, где ветви механизма вытянуты или сложены в линию, а внизу между A и E — особым положением прямой кинематики, где BC и CD оказываются на одной прямой.</translation>
+    </message>
+    <message>
+        <source>An example crank-rocker chosen for PKM Studio: the four-bar document (seed 004) gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>
+        <translation>Пример кривошипно-коромыслового механизма, подобранный для PKM Studio: документ о четырёхзвенном механизме (№ 004) не даёт длин звеньев, поэтому эти размеры взяты не из документа. Кривошип AB = 40 мм, шатун BC = 120 мм, коромысло CD = 100 мм, стойка AD = 140 мм: s + l = 180 мм &lt; p + q = 220 мм, и кривошип — самое короткое звено, поэтому кривошип совершает полный оборот (α от 0° до 360°), а коромысло качается; угол передачи остаётся в пределах от 53° до 110°. Открытая ветвь, ω₁ = 10 рад/с, точка шатуна M в середине BC.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,4611 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="sr_Latn_RS">
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>OK</source>
+        <translation>U redu</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Sačuvaj</translation>
+    </message>
+    <message>
+        <source>Save All</source>
+        <translation>Sačuvaj sve</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Otvori</translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation>&amp;Da</translation>
+    </message>
+    <message>
+        <source>Yes to &amp;All</source>
+        <translation>Da za &amp;sve</translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation>&amp;Ne</translation>
+    </message>
+    <message>
+        <source>N&amp;o to All</source>
+        <translation>N&amp;e za sve</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Prekini</translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation>Pokušaj ponovo</translation>
+    </message>
+    <message>
+        <source>Ignore</source>
+        <translation>Zanemari</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zatvori</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Otkaži</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Odbaci</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>Pomoć</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Primeni</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Poništi</translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation>Vrati podrazumevano</translation>
+    </message>
+</context>
+<context>
+    <name>Sheet</name>
+    <message>
+        <source>frame</source>
+        <translation>postolje</translation>
+    </message>
+    <message>
+        <source>crank</source>
+        <translation>poluga</translation>
+    </message>
+    <message>
+        <source>coupler</source>
+        <translation>spojka</translation>
+    </message>
+    <message>
+        <source>link</source>
+        <translation>član</translation>
+    </message>
+    <message>
+        <source>rod</source>
+        <translation>šipka</translation>
+    </message>
+    <message>
+        <source>platform</source>
+        <translation>platforma</translation>
+    </message>
+    <message>
+        <source>Design parameters</source>
+        <translation>Parametri konstrukcije</translation>
+    </message>
+    <message>
+        <source> (derived)</source>
+        <translation> (izvedena veličina)</translation>
+    </message>
+    <message>
+        <source>Derived dimensions</source>
+        <translation>Izvedene mere</translation>
+    </message>
+    <message>
+        <source>Links and guides (between joint centres)</source>
+        <translation>Članovi i vođice (između središta zglobova)</translation>
+    </message>
+    <message>
+        <source>between</source>
+        <translation>između</translation>
+    </message>
+    <message>
+        <source>part</source>
+        <translation>deo</translation>
+    </message>
+    <message>
+        <source>kind</source>
+        <translation>vrsta</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>dužina</translation>
+    </message>
+    <message>
+        <source>guide</source>
+        <translation>vođica</translation>
+    </message>
+    <message>
+        <source>guide (stroke)</source>
+        <translation>vođica (hod)</translation>
+    </message>
+    <message>
+        <source>Ranges of motion</source>
+        <translation>Opsezi kretanja</translation>
+    </message>
+    <message>
+        <source>variable</source>
+        <translation>promenljiva</translation>
+    </message>
+    <message>
+        <source>role</source>
+        <translation>uloga</translation>
+    </message>
+    <message>
+        <source>this pose</source>
+        <translation>ovaj položaj</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>maks</translation>
+    </message>
+    <message>
+        <source>travel</source>
+        <translation>hod</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>jedinica</translation>
+    </message>
+    <message>
+        <source>input (actuated)</source>
+        <translation>ulaz (pogonski)</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>izlaz</translation>
+    </message>
+    <message>
+        <source>pose</source>
+        <translation>položaj</translation>
+    </message>
+    <message>
+        <source>home</source>
+        <translation>početni položaj</translation>
+    </message>
+    <message>
+        <source>%1 max</source>
+        <translation>%1 maks</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>Every actuated input at the ends of its range with the others at the home pose, where the mechanism reaches it.</source>
+        <translation>Svaki pogonski ulaz na krajevima svog opsega, dok su ostali u početnom položaju — gde mehanizam može da dostigne taj položaj.</translation>
+    </message>
+    <message>
+        <source>No singular pose in the range of motion</source>
+        <translation>Nema singularnih položaja u opsegu kretanja</translation>
+    </message>
+    <message>
+        <source>singularity margin ≥ %1</source>
+        <translation>margina singulariteta ≥ %1</translation>
+    </message>
+    <message>
+        <source>least at %1 = %2</source>
+        <translation>najmanja pri %1 = %2</translation>
+    </message>
+    <message>
+        <source>%1 over %2</source>
+        <translation>%1 u zavisnosti od %2</translation>
+    </message>
+    <message>
+        <source>Dimensioned drawing</source>
+        <translation>Kotirani crtež</translation>
+    </message>
+    <message>
+        <source>The mechanism in the pose of this sheet, scale %1</source>
+        <translation>Mehanizam u položaju ove liste, razmera %1</translation>
+    </message>
+    <message>
+        <source>Pose: %1. Scale %2 on A4 (the scale bar holds on any print size). Lengths in mm, angles in degrees; the dimensions are those of the pose shown.</source>
+        <translation>Položaj: %1. Razmera %2 na formatu A4 (grafička razmera važi pri svakoj veličini štampe). Dužine u mm, uglovi u stepenima; mere važe za prikazani položaj.</translation>
+    </message>
+    <message>
+        <source>Design warnings</source>
+        <translation>Upozorenja o konstrukciji</translation>
+    </message>
+    <message>
+        <source>Key poses</source>
+        <translation>Karakteristični položaji</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Provere</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Dijagrami</translation>
+    </message>
+    <message>
+        <source>screw beyond the motor body at d_min</source>
+        <translation>deo vretena izvan tela motora pri d_min</translation>
+    </message>
+    <message>
+        <source>screw beyond the motor body at d_max (least free screw length)</source>
+        <translation>deo vretena izvan tela motora pri d_max (najmanja slobodna dužina vretena)</translation>
+    </message>
+    <message>
+        <source>motor steps per revolution of the screw</source>
+        <translation>koraka motora po obrtaju vretena</translation>
+    </message>
+    <message>
+        <source>motor speed at ḋ_max, 60·ḋ_max/h</source>
+        <translation>broj obrtaja motora pri ḋ_max, 60·ḋ_max/h</translation>
+    </message>
+    <message>
+        <source>step rate at ḋ_max, ḋ_max/Δd</source>
+        <translation>učestanost koraka pri ḋ_max, ḋ_max/Δd</translation>
+    </message>
+    <message>
+        <source>Key poses over the range and the recommended range</source>
+        <translation>Karakteristični položaji: opseg kretanja i preporučeni opseg</translation>
+    </message>
+    <message>
+        <source>θ_rec,min</source>
+        <translation>θ_rec,min</translation>
+    </message>
+    <message>
+        <source>θ_rec,max</source>
+        <translation>θ_rec,max</translation>
+    </message>
+    <message>
+        <source> (this pose)</source>
+        <translation> (ovaj položaj)</translation>
+    </message>
+    <message>
+        <source>T at F_max = %1 N, θ̇ at ḋ_max = %2 mm/s, Δθ per motor step Δd = %3 mm. The recommended range keeps J — and with it T, θ̇ and Δθ — within %4 % of its best over the range (the document: θ = −60°…40°).</source>
+        <translation>T pri F_max = %1 N, θ̇ pri ḋ_max = %2 mm/s, Δθ po koraku motora Δd = %3 mm. U preporučenom opsegu J — a s njim i T, θ̇ i Δθ — ostaje u granicama od %4 % svoje najbolje vrednosti u opsegu (u dokumentu: θ = −60°…40°).</translation>
+    </message>
+    <message>
+        <source>Actuator check</source>
+        <translation>Provera aktuatora</translation>
+    </message>
+    <message>
+        <source>The chosen motor: lead h = %1 mm, step Δd = %2 mm, ḋ_max = %3 mm/s, thrust F_max = %4 N, screw efficiency η = %5; body %6 mm long.</source>
+        <translation>Izabrani motor: uspon navoja h = %1 mm, korak Δd = %2 mm, ḋ_max = %3 mm/s, potisna sila F_max = %4 N, stepen iskorišćenja vretena η = %5; dužina tela %6 mm.</translation>
+    </message>
+    <message>
+        <source>Motor body fits the shortest diagonal</source>
+        <translation>Telo motora staje u najkraću dijagonalu</translation>
+    </message>
+    <message>
+        <source>stroke d_max − d_min = %1 mm</source>
+        <translation>hod d_max − d_min = %1 mm</translation>
+    </message>
+    <message>
+        <source>worst at θ = %1, best at θ = %2; recommended range %3…%4</source>
+        <translation>najlošije pri θ = %1, najbolje pri θ = %2; preporučeni opseg %3…%4</translation>
+    </message>
+    <message>
+        <source>Output torque T = J·F_max (13)</source>
+        <translation>Izlazni moment T = J·F_max (13)</translation>
+    </message>
+    <message>
+        <source>least T ≥ %1 % of the best</source>
+        <translation>najmanji T ≥ %1 % od najvećeg</translation>
+    </message>
+    <message>
+        <source>Output speed θ̇ = ḋ_max/J (8)</source>
+        <translation>Izlazna brzina θ̇ = ḋ_max/J (8)</translation>
+    </message>
+    <message>
+        <source>greatest θ̇ ≤ the least ÷ %1</source>
+        <translation>najveća θ̇ ≤ najmanja ÷ %1</translation>
+    </message>
+    <message>
+        <source>Output resolution Δθ = Δd/J</source>
+        <translation>Izlazna rezolucija Δθ = Δd/J</translation>
+    </message>
+    <message>
+        <source>coarsest Δθ ≤ the finest ÷ %1</source>
+        <translation>najgrublje Δθ ≤ najfinije ÷ %1</translation>
+    </message>
+    <message>
+        <source>No singular pose in the range (θ = ±90°)</source>
+        <translation>Nema singularnih položaja u opsegu (θ = ±90°)</translation>
+    </message>
+    <message>
+        <source>|cos θ| ≥ %1</source>
+        <translation>|cos θ| ≥ %1</translation>
+    </message>
+    <message>
+        <source>Motor torque to push F_max</source>
+        <translation>Moment motora potreban za silu F_max</translation>
+    </message>
+    <message>
+        <source>the motor must give it at %1 min⁻¹ (%2 steps/s)</source>
+        <translation>motor mora da ga daje pri %1 min⁻¹ (%2 koraka/s)</translation>
+    </message>
+    <message>
+        <source>FAIL above means that the range of θ reaches where J falls steeply: keep the joint in the recommended range %1…%2 where it must give its torque, speed and resolution.</source>
+        <translation>„NIJE ISPUNJENO“ iznad znači da opseg θ zalazi u oblast naglog pada J: tamo gde zglob mora da daje svoj moment, brzinu i rezoluciju, držite ga u preporučenom opsegu %1…%2.</translation>
+    </message>
+    <message>
+        <source>Diagonal length d(θ) (2), fig. 8</source>
+        <translation>Dužina dijagonale d(θ) (2), sl. 8</translation>
+    </message>
+    <message>
+        <source>Transmission angle μ(θ), fig. 10</source>
+        <translation>Ugao prenosa μ(θ), sl. 10</translation>
+    </message>
+    <message>
+        <source>Jacobian J(θ) = ∂d/∂θ (7), fig. 11</source>
+        <translation>Jakobijan J(θ) = ∂d/∂θ (7), sl. 11</translation>
+    </message>
+    <message>
+        <source>Output torque T = J·F_max (13), fig. 17</source>
+        <translation>Izlazni moment T = J·F_max (13), sl. 17</translation>
+    </message>
+    <message>
+        <source>Output speed θ̇ = ḋ_max/J, fig. 16</source>
+        <translation>Izlazna brzina θ̇ = ḋ_max/J, sl. 16</translation>
+    </message>
+    <message>
+        <source>Output resolution Δθ = Δd/J, fig. 15</source>
+        <translation>Izlazna rezolucija Δθ = Δd/J, sl. 15</translation>
+    </message>
+    <message>
+        <source>θ (°)</source>
+        <translation>θ (°)</translation>
+    </message>
+    <message>
+        <source>beyond the θ range</source>
+        <translation>izvan opsega θ</translation>
+    </message>
+    <message>
+        <source>this design (k = %1)</source>
+        <translation>ova konstrukcija (k = %1)</translation>
+    </message>
+    <message>
+        <source>recommended range</source>
+        <translation>preporučeni opseg</translation>
+    </message>
+    <message>
+        <source>steep region</source>
+        <translation>strma oblast</translation>
+    </message>
+    <message>
+        <source>a = %1 mm; the family k = 0.3 … 1.5 at the same a</source>
+        <translation>a = %1 mm; familija k = 0,3 … 1,5 pri istom a</translation>
+    </message>
+    <message>
+        <source>crank-rocker</source>
+        <translation>poluga–klackalica</translation>
+    </message>
+    <message>
+        <source>rocker-crank</source>
+        <translation>klackalica–poluga</translation>
+    </message>
+    <message>
+        <source>double-crank</source>
+        <translation>dvopolužni</translation>
+    </message>
+    <message>
+        <source>double-rocker</source>
+        <translation>dvoklackalni</translation>
+    </message>
+    <message>
+        <source>triple-rocker (non-Grashof)</source>
+        <translation>trostruka klackalica (nije Grashof)</translation>
+    </message>
+    <message>
+        <source>change-point</source>
+        <translation>prelazni</translation>
+    </message>
+    <message>
+        <source>class</source>
+        <translation>klasa</translation>
+    </message>
+    <message>
+        <source>Grashof class, s + l against p + q</source>
+        <translation>klasa po Grashofu: s + l u odnosu na p + q</translation>
+    </message>
+    <message>
+        <source>shortest + longest link</source>
+        <translation>najkraći + najduži član</translation>
+    </message>
+    <message>
+        <source>the other two links</source>
+        <translation>druga dva člana</translation>
+    </message>
+    <message>
+        <source>Key poses over the crank angle</source>
+        <translation>Karakteristični položaji po uglu poluge</translation>
+    </message>
+    <message>
+        <source>least μ</source>
+        <translation>najmanji μ</translation>
+    </message>
+    <message>
+        <source>At the constant crank speed ω₁ = %1 rad/s.</source>
+        <translation>Pri stalnoj ugaonoj brzini poluge ω₁ = %1 rad/s.</translation>
+    </message>
+    <message>
+        <source>Design check</source>
+        <translation>Provera konstrukcije</translation>
+    </message>
+    <message>
+        <source>Grashof class</source>
+        <translation>Klasa po Grashofu</translation>
+    </message>
+    <message>
+        <source>s + l = %1 mm, p + q = %2 mm</source>
+        <translation>s + l = %1 mm; p + q = %2 mm</translation>
+    </message>
+    <message>
+        <source>Crank angle range</source>
+        <translation>Opseg ugla poluge</translation>
+    </message>
+    <message>
+        <source>the crank AB turns fully</source>
+        <translation>poluga AB se obrće pun krug</translation>
+    </message>
+    <message>
+        <source>the crank AB cannot turn fully</source>
+        <translation>poluga AB ne može da se obrne pun krug</translation>
+    </message>
+    <message>
+        <source>Least transmission angle over the range</source>
+        <translation>Najmanji ugao prenosa u opsegu</translation>
+    </message>
+    <message>
+        <source>at α = %1°</source>
+        <translation>pri α = %1°</translation>
+    </message>
+    <message>
+        <source>Rocker angle δ(α)</source>
+        <translation>Ugao klackalice δ(α)</translation>
+    </message>
+    <message>
+        <source>Transmission angle μ(α)</source>
+        <translation>Ugao prenosa μ(α)</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity ω₃(α)</source>
+        <translation>Ugaona brzina klackalice ω₃(α)</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration ε₃(α)</source>
+        <translation>Ugaono ubrzanje klackalice ε₃(α)</translation>
+    </message>
+    <message>
+        <source>μ = %1°: poor below</source>
+        <translation>μ = %1°: ispod toga loš prenos</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nema</translation>
+    </message>
+    <message>
+        <source>inverse</source>
+        <translation>inverzni</translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation>direktni</translation>
+    </message>
+    <message>
+        <source>combined</source>
+        <translation>kombinovani</translation>
+    </message>
+    <message>
+        <source>PASS</source>
+        <translation>ISPUNJENO</translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation>NIJE ISPUNJENO</translation>
+    </message>
+    <message>
+        <source>INFO</source>
+        <translation>INFO</translation>
+    </message>
+    <message>
+        <source>singularity</source>
+        <translation>singularitet</translation>
+    </message>
+    <message>
+        <source>singularity class of the pose</source>
+        <translation>vrsta singulariteta u tom položaju</translation>
+    </message>
+    <message>
+        <source>PKM Studio · Parameter sheet</source>
+        <translation>PKM Studio · Lista parametara</translation>
+    </message>
+    <message>
+        <source>page %1 of %2</source>
+        <translation>strana %1 od %2</translation>
+    </message>
+    <message>
+        <source>Parameter sheet</source>
+        <translation>Lista parametara</translation>
+    </message>
+    <message>
+        <source>field</source>
+        <translation>polje</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>vrednost</translation>
+    </message>
+    <message>
+        <source>Design</source>
+        <translation>Konstrukcija</translation>
+    </message>
+    <message>
+        <source>Mechanism</source>
+        <translation>Mehanizam</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>Položaj</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Software</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>About</source>
+        <translation>Opis</translation>
+    </message>
+    <message>
+        <source>Units: lengths mm, angles degrees, forces N, torques N·m, times s, unless a column says otherwise.</source>
+        <translation>Jedinice: dužine u mm, uglovi u stepenima, sile u N, momenti u N·m, vreme u s, osim ako u koloni ne piše drugačije.</translation>
+    </message>
+    <message>
+        <source>Geometry</source>
+        <translation>Geometrija</translation>
+    </message>
+    <message>
+        <source>Range of motion</source>
+        <translation>Opseg kretanja</translation>
+    </message>
+    <message>
+        <source>Actuator</source>
+        <translation>Aktuator</translation>
+    </message>
+    <message>
+        <source>Drawing only</source>
+        <translation>Samo za crtež</translation>
+    </message>
+    <message>
+        <source>Working and assembly modes</source>
+        <translation>Radni modovi i načini sklapanja</translation>
+    </message>
+    <message>
+        <source>symbol</source>
+        <translation>oznaka</translation>
+    </message>
+    <message>
+        <source>quantity</source>
+        <translation>veličina</translation>
+    </message>
+    <message>
+        <source>key</source>
+        <translation>ključ</translation>
+    </message>
+    <message>
+        <source>check</source>
+        <translation>provera</translation>
+    </message>
+    <message>
+        <source>limit</source>
+        <translation>granica</translation>
+    </message>
+    <message>
+        <source>result</source>
+        <translation>rezultat</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>scale (A4)</source>
+        <translation>razmera (A4)</translation>
+    </message>
+    <message>
+        <source>scale bar</source>
+        <translation>grafička razmera</translation>
+    </message>
+    <message>
+        <source>units</source>
+        <translation>jedinice</translation>
+    </message>
+    <message>
+        <source>mm, degrees</source>
+        <translation>mm, stepeni</translation>
+    </message>
+    <message>
+        <source>design</source>
+        <translation>konstrukcija</translation>
+    </message>
+    <message>
+        <source>date</source>
+        <translation>datum</translation>
+    </message>
+    <message>
+        <source>Parameter sheet: %1</source>
+        <translation>Lista parametara: %1</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Radni prostor</translation>
+    </message>
+    <message>
+        <source>The platform positions reachable with every actuated input inside its range%1, on a grid of %2 × %3 square cells of %4 mm (as &apos;pkm workspace --grid %5&apos;).</source>
+        <translation>Položaji platforme dostižni kada je svaki pogonski ulaz unutar svog opsega%1, na mreži od %2 × %3 kvadratnih ćelija stranice %4 mm (kao &apos;pkm workspace --grid %5&apos;).</translation>
+    </message>
+    <message>
+        <source>area of this form&apos;s workspace (exact)</source>
+        <translation>površina radnog prostora ovog oblika (tačno)</translation>
+    </message>
+    <message>
+        <source>area of the extended (O) form (exact)</source>
+        <translation>površina za opruženi (O) oblik (tačno)</translation>
+    </message>
+    <message>
+        <source>area of the crossed (X) form (exact)</source>
+        <translation>površina za ukršteni (X) oblik (tačno)</translation>
+    </message>
+    <message>
+        <source>area of this form on the grid</source>
+        <translation>površina ovog oblika na mreži</translation>
+    </message>
+    <message>
+        <source>area of the workspace (grid)</source>
+        <translation>površina radnog prostora (po mreži)</translation>
+    </message>
+    <message>
+        <source>area in mode %1 (grid)</source>
+        <translation>površina u modu %1 (po mreži)</translation>
+    </message>
+    <message>
+        <source>area of the union of all modes (grid)</source>
+        <translation>površina unije svih modova (po mreži)</translation>
+    </message>
+    <message>
+        <source>travel of the carrying axis</source>
+        <translation>hod noseće ose</translation>
+    </message>
+    <message>
+        <source>volume: the area extruded over the travel</source>
+        <translation>zapremina: površina izvučena duž hoda</translation>
+    </message>
+    <message>
+        <source>reachable cells from x</source>
+        <translation>dostižne ćelije od x</translation>
+    </message>
+    <message>
+        <source>reachable cells to x</source>
+        <translation>dostižne ćelije do x</translation>
+    </message>
+    <message>
+        <source>reachable cells from y</source>
+        <translation>dostižne ćelije od y</translation>
+    </message>
+    <message>
+        <source>reachable cells to y</source>
+        <translation>dostižne ćelije do y</translation>
+    </message>
+    <message>
+        <source>cells</source>
+        <translation>ćelije</translation>
+    </message>
+    <message>
+        <source>reachable cells of the grid</source>
+        <translation>dostižne ćelije mreže</translation>
+    </message>
+    <message>
+        <source>Area per working and assembly mode</source>
+        <translation>Površina po radnim modovima i načinima sklapanja</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>mod</translation>
+    </message>
+    <message>
+        <source>area (grid)</source>
+        <translation>površina (po mreži)</translation>
+    </message>
+    <message>
+        <source>area (exact)</source>
+        <translation>površina (tačno)</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>napomena</translation>
+    </message>
+    <message>
+        <source>this design</source>
+        <translation>ova konstrukcija</translation>
+    </message>
+    <message>
+        <source>no workspace</source>
+        <translation>nema radnog prostora</translation>
+    </message>
+    <message>
+        <source>Workspaces of the modes</source>
+        <translation>Radni prostori modova</translation>
+    </message>
+    <message>
+        <source>As &apos;pkm workspace -o FILE.png&apos;: this design&apos;s mode dark blue over the others&apos; light blue, the outline of their union dark.</source>
+        <translation>Kao &apos;pkm workspace -o FILE.png&apos;: mod ove konstrukcije tamnoplavo preko ostalih (svetloplavo), obris njihove unije tamno.</translation>
+    </message>
+    <message>
+        <source>As &apos;pkm workspace -o FILE.png&apos;: the reachable cells light blue with a dark outline.</source>
+        <translation>Kao &apos;pkm workspace -o FILE.png&apos;: dostižne ćelije svetloplavo, sa tamnim obrisom.</translation>
+    </message>
+    <message>
+        <source>Singularity map: det J</source>
+        <translation>Mapa singulariteta: det J</translation>
+    </message>
+    <message>
+        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1.</source>
+        <translation>Kao &apos;pkm map -o FILE.png&apos;: det J plavo ispod 0, belo u 0 (direktni singularitet), crveno iznad 0, odsečeno na ±%1.</translation>
+    </message>
+    <message>
+        <source>Singular poses in the workspace</source>
+        <translation>Singularni položaji u radnom prostoru</translation>
+    </message>
+    <message>
+        <source>near-singular cells (margin &lt; %1, about 3° from a singular pose)</source>
+        <translation>ćelije blizu singulariteta (margina &lt; %1, oko 3° od singularnog položaja)</translation>
+    </message>
+    <message>
+        <source>their area</source>
+        <translation>njihova površina</translation>
+    </message>
+    <message>
+        <source>Singular curves, each with one of its poses</source>
+        <translation>Singularne krive, svaka sa jednim od svojih položaja</translation>
+    </message>
+    <message>
+        <source>where</source>
+        <translation>gde</translation>
+    </message>
+    <message>
+        <source>type</source>
+        <translation>vrsta</translation>
+    </message>
+    <message>
+        <source>curve length</source>
+        <translation>dužina krive</translation>
+    </message>
+    <message>
+        <source>Inverse: a leg loses a degree of freedom (a link perpendicular to its guide); direct: the platform gains one (the links in line). The pose given is the middle of each curve.</source>
+        <translation>Inverzni: kinematički lanac gubi jedan stepen slobode (član upravan na svoju vođicu); direktni: platforma dobija jedan stepen slobode (članovi u istoj liniji). Dati položaj je sredina svake krive.</translation>
+    </message>
+    <message>
+        <source>No singular curve lies inside the workspace.</source>
+        <translation>Nijedna singularna kriva ne leži unutar radnog prostora.</translation>
+    </message>
+    <message>
+        <source>Stroke of %1 the workspace uses</source>
+        <translation>Hod %1 koji koristi radni prostor</translation>
+    </message>
+    <message>
+        <source>within the guide %1 … %2</source>
+        <translation>unutar vođice %1 … %2</translation>
+    </message>
+    <message>
+        <source>within its range %1 … %2</source>
+        <translation>unutar svog opsega %1 … %2</translation>
+    </message>
+    <message>
+        <source>used from %1 to %2</source>
+        <translation>koristi se od %1 do %2</translation>
+    </message>
+    <message>
+        <source>Direct singular poses in the workspace</source>
+        <translation>Direktni singularni položaji u radnom prostoru</translation>
+    </message>
+    <message>
+        <source>Inverse singular poses in the workspace</source>
+        <translation>Inverzni singularni položaji u radnom prostoru</translation>
+    </message>
+    <message>
+        <source>none: the platform would move with the actuators locked</source>
+        <translation>ne sme ih biti: platforma bi se pomerala sa zakočenim aktuatorima</translation>
+    </message>
+    <message>
+        <source>where a leg reaches the end of its reach; keep away in use</source>
+        <translation>gde kinematički lanac dostiže kraj svog dometa; u radu se držati dalje od njih</translation>
+    </message>
+    <message>
+        <source>no singular curve of this kind</source>
+        <translation>nema singularnih krivih ove vrste</translation>
+    </message>
+    <message>
+        <source>α ∈ [%1°, %2°]</source>
+        <translation>α ∈ [%1°; %2°]</translation>
+    </message>
+    <message>
+        <source>min⁻¹</source>
+        <translation>min⁻¹</translation>
+    </message>
+    <message>
+        <source>steps/s</source>
+        <translation>koraka/s</translation>
+    </message>
+    <message>
+        <source>mm³</source>
+        <translation>mm³</translation>
+    </message>
+</context>
+<context>
+    <name>core</name>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>mm²</source>
+        <translation>mm²</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>N·m</source>
+        <translation>N·m</translation>
+    </message>
+    <message>
+        <source>mm/s</source>
+        <translation>mm/s</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <source>mm/rad</source>
+        <translation>mm/rad</translation>
+    </message>
+    <message>
+        <source>mm/rad²</source>
+        <translation>mm/rad²</translation>
+    </message>
+    <message>
+        <source>mm²/rad</source>
+        <translation>mm²/rad</translation>
+    </message>
+    <message>
+        <source>rad/mm</source>
+        <translation>rad/mm</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/obr</translation>
+    </message>
+    <message>
+        <source>mm/step</source>
+        <translation>mm/korak</translation>
+    </message>
+    <message>
+        <source>°/step</source>
+        <translation>°/korak</translation>
+    </message>
+    <message>
+        <source>N·m/rad</source>
+        <translation>N·m/rad</translation>
+    </message>
+    <message>
+        <source>mm⁴</source>
+        <translation>mm⁴</translation>
+    </message>
+    <message>
+        <source>rad²/mm²</source>
+        <translation>rad²/mm²</translation>
+    </message>
+    <message>
+        <source>(%1, %2) mm</source>
+        <translation>(%1; %2) mm</translation>
+    </message>
+    <message>
+        <source>[%1, %2]</source>
+        <translation>[%1; %2]</translation>
+    </message>
+    <message>
+        <source>%1 right of %2</source>
+        <translation>%1 desno od %2</translation>
+    </message>
+    <message>
+        <source>%1 left of %2</source>
+        <translation>%1 levo od %2</translation>
+    </message>
+    <message>
+        <source>length of crank 1, driven at A</source>
+        <translation>dužina poluge 1 (pogon u A)</translation>
+    </message>
+    <message>
+        <source>length of distal link 1, from B to C</source>
+        <translation>dužina spojke 1, od B do C</translation>
+    </message>
+    <message>
+        <source>length of distal link 2, from C to D</source>
+        <translation>dužina spojke 2, od C do D</translation>
+    </message>
+    <message>
+        <source>length of crank 2, driven at E</source>
+        <translation>dužina poluge 2 (pogon u E)</translation>
+    </message>
+    <message>
+        <source>length of the ground, from A to E along +x</source>
+        <translation>dužina postolja, od A do E duž +x</translation>
+    </message>
+    <message>
+        <source>lower limit of crank angle θ₁</source>
+        <translation>donja granica ugla poluge θ₁</translation>
+    </message>
+    <message>
+        <source>upper limit of crank angle θ₁</source>
+        <translation>gornja granica ugla poluge θ₁</translation>
+    </message>
+    <message>
+        <source>lower limit of crank angle θ₄</source>
+        <translation>donja granica ugla poluge θ₄</translation>
+    </message>
+    <message>
+        <source>upper limit of crank angle θ₄</source>
+        <translation>gornja granica ugla poluge θ₄</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>levo</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>desno</translation>
+    </message>
+    <message>
+        <source>working mode of leg 1: elbow B left (+1) or right (−1) of A→C</source>
+        <translation>radni mod noge 1: zglob B levo (+1) ili desno (−1) od A→C</translation>
+    </message>
+    <message>
+        <source>working mode of leg 2: elbow D left (+1) or right (−1) of E→C</source>
+        <translation>radni mod noge 2: zglob D levo (+1) ili desno (−1) od E→C</translation>
+    </message>
+    <message>
+        <source>assembly mode: C left (+1) or right (−1) of B→D</source>
+        <translation>način sklapanja: C levo (+1) ili desno (−1) od B→D</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is invalid: it must be +1 (left) or -1 (right).</source>
+        <translation>%1 = %2 nije dozvoljena vrednost: mora biti +1 (levo) ili -1 (desno).</translation>
+    </message>
+    <message>
+        <source>The five-bar linkage has no parameter named &apos;%1&apos;.</source>
+        <translation>Zglobni petougao nema parametar „%1“.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must be less than %3 = %4.</source>
+        <translation>%1 = %2 mora biti manje od %3 = %4.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 lies %3 above %4 = %5: a crank&apos;s range may span one turn (360°) at most.</source>
+        <translation>%1 = %2 je za %3 iznad %4 = %5: opseg poluge može da obuhvati najviše jedan obrt (360°).</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is not shorter than %3 = %4: the links cannot close the loop ABCDE for any crank angles (each link must be shorter than the other four together).</source>
+        <translation>%1 = %2 nije kraće od %3 = %4: članovi ne mogu da zatvore konturu ABCDE ni za koje uglove poluga (svaki član mora biti kraći od zbira ostala četiri).</translation>
+    </message>
+    <message>
+        <source>This five-bar has no workspace: with %1 the loop ABCDE never closes. Change a mode, a range or a length.</source>
+        <translation>Ovaj zglobni petougao nema radni prostor: sa %1 kontura ABCDE se nikada ne zatvara. Promenite mod, opseg ili dužinu.</translation>
+    </message>
+    <message>
+        <source>This five-bar has no workspace: with %1 and the crank ranges %2 the loop ABCDE never closes. Change a mode, a range or a length.</source>
+        <translation>Ovaj zglobni petougao nema radni prostor: sa %1 i opsezima poluga %2 kontura ABCDE se nikada ne zatvara. Promenite mod, opseg ili dužinu.</translation>
+    </message>
+    <message>
+        <source>The workspace of these modes reaches direct singularities (the curves where the distal links BC and CD come in line, marked on the map): there C can move with both cranks held and the mechanism may switch its assembly mode. Keep the path of C away from them.</source>
+        <translation>Radni prostor ovih modova doseže singularitete direktne kinematike (krive na kojima spojke BC i CD dolaze na istu pravu, označene na mapi): tu se C može pomerati i kad su obe poluge zakočene, a mehanizam može da promeni način sklapanja. Držite putanju tačke C dalje od njih.</translation>
+    </message>
+    <message>
+        <source>crank AB angle at A, from +x counter-clockwise (actuated)</source>
+        <translation>ugao poluge AB u A, od +x suprotno smeru kazaljke na satu (pogonska koordinata)</translation>
+    </message>
+    <message>
+        <source>crank ED angle at E, from +x counter-clockwise (actuated)</source>
+        <translation>ugao poluge ED u E, od +x suprotno smeru kazaljke na satu (pogonska koordinata)</translation>
+    </message>
+    <message>
+        <source>output point C, x</source>
+        <translation>izlazna tačka C, x</translation>
+    </message>
+    <message>
+        <source>output point C, y</source>
+        <translation>izlazna tačka C, y</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 the distal links cannot meet: |BD| = %3 is more than BC + CD = %4 (past the dead point where BC and CD are stretched in line, a direct singularity).</source>
+        <translation>Pri theta1 = %1, theta4 = %2 spojke ne mogu da se spoje: |BD| = %3 je veće od BC + CD = %4 (iza mrtve tačke u kojoj su BC i CD opružene na istoj pravoj, singulariteta direktne kinematike).</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 the distal links cannot meet: |BD| = %3 is less than |BC − CD| = %4 (past the dead point where BC and CD fold in line, a direct singularity).</source>
+        <translation>Pri theta1 = %1, theta4 = %2 spojke ne mogu da se spoje: |BD| = %3 je manje od |BC − CD| = %4 (iza mrtve tačke u kojoj se BC i CD presavijaju na istoj pravoj, singulariteta direktne kinematike).</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 the elbows B and D coincide and BC = CD: the position of C is undetermined.</source>
+        <translation>Pri theta1 = %1, theta4 = %2 zglobovi B i D se poklapaju, a BC = CD: položaj C nije određen.</translation>
+    </message>
+    <message>
+        <source>At theta1 = %1, theta4 = %2 leg %3 would be in its other working mode (%4): crank %5 and link %6 pass through in line (an inverse singularity) on the way; switch %7 to go on.</source>
+        <translation>Pri theta1 = %1, theta4 = %2 noga %3 bi bila u drugom radnom modu (%4): poluga %5 i spojka %6 usput prolaze kroz položaj na istoj pravoj (singularitet inverzne kinematike); promenite %7 da biste nastavili.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1: it lies %2 from %3, more than %4 + %5 = %6.</source>
+        <translation>C ne može da stigne do tačke %1: ona je na %2 od %3, više od %4 + %5 = %6.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1: it lies %2 from %3, less than |%4 − %5| = %6.</source>
+        <translation>C ne može da stigne do tačke %1: ona je na %2 od %3, manje od |%4 − %5| = %6.</translation>
+    </message>
+    <message>
+        <source>C = %1 lies on %2 and %3 = %4: the crank angle %5 is undetermined.</source>
+        <translation>C = %1 se poklapa sa %2, a %3 = %4: ugao poluge %5 nije određen.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1: crank %2 would have to be at %3 = %4, outside its range %5.</source>
+        <translation>C ne može da stigne do tačke %1: poluga %2 bi morala da bude na %3 = %4, van svog opsega %5.</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch assembly to go on.</source>
+        <translation>C ne može da stigne do tačke %1 u ovom načinu sklapanja (%2): prešla bi pravu BD, na kojoj su spojke na istoj pravoj (singularitet direktne kinematike); promenite način sklapanja (assembly) da biste nastavili.</translation>
+    </message>
+    <message>
+        <source>No failure.</source>
+        <translation>Nema greške.</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number.</source>
+        <translation>%1 mora biti konačan broj.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range of crank %3, %4: the crank turns fully, give its angle within it.</source>
+        <translation>%1 = %2 je van opsega poluge %3, %4: poluga se okreće punim krugom, zadajte ugao unutar tog opsega.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range of crank %3, %4.</source>
+        <translation>%1 = %2 je van opsega poluge %3, %4.</translation>
+    </message>
+    <message>
+        <source>crank AB angle at A, from +x counter-clockwise</source>
+        <translation>ugao poluge AB u A, od +x suprotno smeru kazaljke na satu</translation>
+    </message>
+    <message>
+        <source>crank ED angle at E, from +x counter-clockwise</source>
+        <translation>ugao poluge ED u E, od +x suprotno smeru kazaljke na satu</translation>
+    </message>
+    <message>
+        <source>J_x rows (C − B)ᵀ, (C − D)ᵀ</source>
+        <translation>vrste J_x: (C − B)ᵀ, (C − D)ᵀ</translation>
+    </message>
+    <message>
+        <source>determinant of J (0: direct, ∞: inverse singularity)</source>
+        <translation>determinanta J (0: singularitet direktne, ∞: inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>0 at an inverse singularity (a leg stretched or folded)</source>
+        <translation>0 u singularitetu inverzne kinematike (noga opružena ili presavijena)</translation>
+    </message>
+    <message>
+        <source>0 at a direct singularity (the distal links in line)</source>
+        <translation>0 u singularitetu direktne kinematike (spojke na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>condition number of J</source>
+        <translation>broj uslovljenosti J</translation>
+    </message>
+    <message>
+        <source>angle ABC between crank AB and link BC (0°, 180°: inverse singularity)</source>
+        <translation>ugao ABC između poluge AB i spojke BC (0°, 180°: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>angle EDC between crank ED and link DC (0°, 180°: inverse singularity)</source>
+        <translation>ugao EDC između poluge ED i spojke DC (0°, 180°: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>angle BCD between the distal links (0°, 180°: direct singularity)</source>
+        <translation>ugao BCD između spojki (0°, 180°: singularitet direktne kinematike)</translation>
+    </message>
+    <message>
+        <source>transmission angle between the distal links, min(ψ, 180° − ψ)</source>
+        <translation>ugao prenosa između spojki, min(ψ, 180° − ψ)</translation>
+    </message>
+    <message>
+        <source>distance from the inverse singularities, min |sin φ_i| (0 … 1)</source>
+        <translation>udaljenost od singulariteta inverzne kinematike, min |sin φ_i| (0 … 1)</translation>
+    </message>
+    <message>
+        <source>distance from the direct singularities, |sin ψ| (0 … 1)</source>
+        <translation>udaljenost od singulariteta direktne kinematike, |sin ψ| (0 … 1)</translation>
+    </message>
+    <message>
+        <source>distance from the nearest singularity (0 … 1)</source>
+        <translation>udaljenost od najbližeg singulariteta (0 … 1)</translation>
+    </message>
+    <message>
+        <source>other assembly mode (C right of B→D, same crank angles)</source>
+        <translation>drugi način sklapanja (C desno od B→D, isti uglovi poluga)</translation>
+    </message>
+    <message>
+        <source>other assembly mode (C left of B→D, same crank angles)</source>
+        <translation>drugi način sklapanja (C levo od B→D, isti uglovi poluga)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (B left of A→C, same C)</source>
+        <translation>noga 1: drugi radni mod (B levo od A→C, ista tačka C)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (B right of A→C, same C)</source>
+        <translation>noga 1: drugi radni mod (B desno od A→C, ista tačka C)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (D left of E→C, same C)</source>
+        <translation>noga 2: drugi radni mod (D levo od E→C, ista tačka C)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (D right of E→C, same C)</source>
+        <translation>noga 2: drugi radni mod (D desno od E→C, ista tačka C)</translation>
+    </message>
+    <message>
+        <source>ground</source>
+        <translation>postolje</translation>
+    </message>
+    <message>
+        <source>crank AB</source>
+        <translation>poluga AB</translation>
+    </message>
+    <message>
+        <source>link BC</source>
+        <translation>spojka BC</translation>
+    </message>
+    <message>
+        <source>link CD</source>
+        <translation>spojka CD</translation>
+    </message>
+    <message>
+        <source>crank DE</source>
+        <translation>poluga DE</translation>
+    </message>
+    <message>
+        <source>planar five-bar: ground AE, cranks AB and DE (driven at A and E), distal links BC and CD</source>
+        <translation>ravanski zglobni petougao: postolje AE, poluge AB i DE (pogon u A i E), spojke BC i CD</translation>
+    </message>
+    <message>
+        <source>drag to move C (inverse kinematics)</source>
+        <translation>prevucite da biste pomerili C (inverzna kinematika)</translation>
+    </message>
+    <message>
+        <source>drag to turn crank AB (sets θ₁, direct kinematics)</source>
+        <translation>prevucite da biste zaokrenuli polugu AB (zadaje θ₁, direktna kinematika)</translation>
+    </message>
+    <message>
+        <source>drag to turn crank DE (sets θ₄, direct kinematics)</source>
+        <translation>prevucite da biste zaokrenuli polugu DE (zadaje θ₄, direktna kinematika)</translation>
+    </message>
+    <message>
+        <source>No handle with that index.</source>
+        <translation>Nema ručice sa tim indeksom.</translation>
+    </message>
+    <message>
+        <source>crank and distal link in line</source>
+        <translation>poluga i spojka na istoj pravoj</translation>
+    </message>
+    <message>
+        <source>distal links in line</source>
+        <translation>spojke na istoj pravoj</translation>
+    </message>
+    <message>
+        <source>leg 1 stretched (AB, BC in line)</source>
+        <translation>noga 1 opružena (AB, BC na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 1 folded (AB, BC in line)</source>
+        <translation>noga 1 presavijena (AB, BC na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 2 stretched (DE, CD in line)</source>
+        <translation>noga 2 opružena (DE, CD na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 2 folded (DE, CD in line)</source>
+        <translation>noga 2 presavijena (DE, CD na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>rad/s²</source>
+        <translation>rad/s²</translation>
+    </message>
+    <message>
+        <source>crossed</source>
+        <translation>ukrštena</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>otvorena</translation>
+    </message>
+    <message>
+        <source>crank-rocker</source>
+        <translation>poluga–klackalica</translation>
+    </message>
+    <message>
+        <source>rocker-crank</source>
+        <translation>klackalica–poluga</translation>
+    </message>
+    <message>
+        <source>double-crank</source>
+        <translation>dvopolužni</translation>
+    </message>
+    <message>
+        <source>double-rocker</source>
+        <translation>dvoklackalni</translation>
+    </message>
+    <message>
+        <source>triple-rocker</source>
+        <translation>troklackalni</translation>
+    </message>
+    <message>
+        <source>change-point</source>
+        <translation>prelazni</translation>
+    </message>
+    <message>
+        <source>crank (input link) length</source>
+        <translation>dužina poluge (ulaznog člana)</translation>
+    </message>
+    <message>
+        <source>coupler length</source>
+        <translation>dužina spojke</translation>
+    </message>
+    <message>
+        <source>rocker (output link) length</source>
+        <translation>dužina klackalice (izlaznog člana)</translation>
+    </message>
+    <message>
+        <source>ground (frame) length</source>
+        <translation>dužina postolja (nepokretnog člana)</translation>
+    </message>
+    <message>
+        <source>crank angular velocity, constant (positive: α grows, counter-clockwise)</source>
+        <translation>ugaona brzina poluge, konstantna (pozitivna: α raste, suprotno od kazaljke na satu)</translation>
+    </message>
+    <message>
+        <source>coupler point M on BC: BM/BC (0 at B, 1 at C)</source>
+        <translation>tačka M spojke na BC: BM/BC (0 u B, 1 u C)</translation>
+    </message>
+    <message>
+        <source>assembly branch: +1 open (C left of B→D), −1 crossed</source>
+        <translation>grana sklapanja: +1 otvorena (C levo od B→D), −1 ukrštena</translation>
+    </message>
+    <message>
+        <source>branch = %1 is invalid: it must be +1 (open) or -1 (crossed).</source>
+        <translation>branch = %1 nije dopuštena vrednost: mora biti +1 (otvorena) ili -1 (ukrštena).</translation>
+    </message>
+    <message>
+        <source>The four-bar linkage has no parameter named &apos;%1&apos;.</source>
+        <translation>Zglobni četvorougao nema parametar „%1“.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is not shorter than %3 = %4: the links cannot close the loop ABCD for any crank angle α (each link must be shorter than the other three together).</source>
+        <translation>%1 = %2 nije kraće od %3 = %4: članovi ne mogu da zatvore konturu ABCD ni za jedan ugao poluge α (svaki član mora biti kraći od zbira ostala tri).</translation>
+    </message>
+    <message>
+        <source>at α = %1 the diagonal |BD| reaches BC + CD = %2: the coupler and the rocker are stretched in line (a dead point), and beyond it they cannot reach each other</source>
+        <translation>pri α = %1 dijagonala |BD| dostiže BC + CD = %2: spojka i klackalica su opružene u liniju (mrtva tačka), a dalje ne mogu da se spoje</translation>
+    </message>
+    <message>
+        <source>at α = %1 the diagonal |BD| falls to |BC − CD| = %2: the coupler and the rocker are folded in line (a dead point), and beyond it they cannot close the loop</source>
+        <translation>pri α = %1 dijagonala |BD| pada na |BC − CD| = %2: spojka i klackalica su sklopljene u liniju (mrtva tačka), a dalje ne mogu da zatvore konturu</translation>
+    </message>
+    <message>
+        <source>s + l = p + q (a change-point linkage): the links fold flat in line somewhere in the motion, where the open and crossed branches meet and a real linkage may switch branch.</source>
+        <translation>s + l = p + q (prelazni mehanizam): u nekom položaju članovi se sklapaju u liniju; tu se susreću otvorena i ukrštena grana i stvarni mehanizam može da pređe na drugu granu.</translation>
+    </message>
+    <message>
+        <source>The crank cannot turn fully: α is limited to [%1, %2], at whose ends the coupler and the rocker are in line (dead points where the crank cannot drive the rocker).</source>
+        <translation>Poluga ne može da se okreće pun krug: α je ograničen na [%1, %2], a na krajevima tog intervala spojka i klackalica su u liniji (mrtve tačke u kojima poluga ne može da pokreće klackalicu).</translation>
+    </message>
+    <message>
+        <source>The transmission angle falls to %1 at α = %2 (below %3°): the crank drives the rocker poorly there.</source>
+        <translation>Ugao prenosa pada na %1 pri α = %2 (ispod %3°): tu poluga loše pokreće klackalicu.</translation>
+    </message>
+    <message>
+        <source>crank angle at A, from AD counter-clockwise (actuated)</source>
+        <translation>ugao poluge u A, od AD suprotno od kazaljke na satu (pogonjen)</translation>
+    </message>
+    <message>
+        <source>rocker angle at D, from DA clockwise (output)</source>
+        <translation>ugao klackalice u D, od DA u smeru kazaljke na satu (izlaz)</translation>
+    </message>
+    <message>
+        <source>alpha must be a finite number.</source>
+        <translation>Vrednost alpha mora biti konačan broj.</translation>
+    </message>
+    <message>
+        <source>alpha = %1 is outside [0°, 360°]: the crank turns fully, give its angle within one turn.</source>
+        <translation>alpha = %1 je van [0°, 360°]: poluga se okreće pun krug, zadajte njen ugao unutar jednog obrtaja.</translation>
+    </message>
+    <message>
+        <source>alpha = %1 is outside the range of the crank of this %2 linkage, [%3, %4]: %5.</source>
+        <translation>alpha = %1 je van opsega poluge ovog mehanizma (tip po Grashofu: %2), [%3, %4]: %5.</translation>
+    </message>
+    <message>
+        <source>At alpha = %1 the crank joint B lies on D: the rocker&apos;s angle is undetermined.</source>
+        <translation>Pri alpha = %1 zglob poluge B pada u D: ugao klackalice nije određen.</translation>
+    </message>
+    <message>
+        <source>The loop ABCD does not close at alpha = %1.</source>
+        <translation>Kontura ABCD se ne zatvara pri alpha = %1.</translation>
+    </message>
+    <message>
+        <source>delta must be a finite number.</source>
+        <translation>Vrednost delta mora biti konačan broj.</translation>
+    </message>
+    <message>
+        <source>delta = %1 is outside the range the rocker reaches in the crossed branch, [%2, %3]: at its ends the crank and the coupler are in line, or the crank is at its own limit.</source>
+        <translation>delta = %1 je van opsega koji klackalica dostiže u ukrštenoj grani, [%2, %3]: na njegovim krajevima poluga i spojka su u liniji ili je poluga na sopstvenoj granici.</translation>
+    </message>
+    <message>
+        <source>delta = %1 is outside the range the rocker reaches in the open branch, [%2, %3]: at its ends the crank and the coupler are in line, or the crank is at its own limit.</source>
+        <translation>delta = %1 je van opsega koji klackalica dostiže u otvorenoj grani, [%2, %3]: na njegovim krajevima poluga i spojka su u liniji ili je poluga na sopstvenoj granici.</translation>
+    </message>
+    <message>
+        <source>At delta = %1 the rocker joint C lies on A: the crank angle is undetermined.</source>
+        <translation>Pri delta = %1 zglob klackalice C pada u A: ugao poluge nije određen.</translation>
+    </message>
+    <message>
+        <source>The crank cannot reach the coupler at delta = %1: |AC| = %2 is not between |AB − BC| and AB + BC.</source>
+        <translation>Pri delta = %1 poluga ne može da dosegne spojku: |AC| = %2 nije između |AB − BC| i AB + BC.</translation>
+    </message>
+    <message>
+        <source>The rocker reaches delta = %1 only in the other assembly branch; this design is crossed.</source>
+        <translation>Klackalica dostiže delta = %1 samo u drugoj grani sklapanja; ova konstrukcija je sklopljena u ukrštenoj grani.</translation>
+    </message>
+    <message>
+        <source>The rocker reaches delta = %1 only in the other assembly branch; this design is open.</source>
+        <translation>Klackalica dostiže delta = %1 samo u drugoj grani sklapanja; ova konstrukcija je sklopljena u otvorenoj grani.</translation>
+    </message>
+    <message>
+        <source>crank angle at A, from AD counter-clockwise</source>
+        <translation>ugao poluge u A, od AD suprotno od kazaljke na satu</translation>
+    </message>
+    <message>
+        <source>rocker angle at D, from DA clockwise</source>
+        <translation>ugao klackalice u D, od DA u smeru kazaljke na satu</translation>
+    </message>
+    <message>
+        <source>transmission angle at C, from CB to CD counter-clockwise (&lt; 0: crossed)</source>
+        <translation>ugao prenosa u C, od CB ka CD suprotno od kazaljke na satu (&lt; 0: ukrštena grana)</translation>
+    </message>
+    <message>
+        <source>angle at D from DA to DB (4)</source>
+        <translation>ugao u D od DA ka DB (4)</translation>
+    </message>
+    <message>
+        <source>angle at B from BA to BC, 360° − (α + γ + δ)</source>
+        <translation>ugao u B od BA ka BC, 360° − (α + γ + δ)</translation>
+    </message>
+    <message>
+        <source>J_q = ∂F/∂α = 2·AB·BC·sin β (0: inverse singularity)</source>
+        <translation>J_q = ∂F/∂α = 2·AB·BC·sin β (0: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>J_x = −∂F/∂δ = −2·BC·CD·sin γ (0: direct singularity)</source>
+        <translation>J_x = −∂F/∂δ = −2·BC·CD·sin γ (0: singularitet direktne kinematike)</translation>
+    </message>
+    <message>
+        <source>α̇ = J·δ̇, J = J_q⁻¹·J_x = dα/dδ</source>
+        <translation>α̇ = J·δ̇, J = J_q⁻¹·J_x = dα/dδ</translation>
+    </message>
+    <message>
+        <source>transfer function dδ/dα = ω₃/ω₁ = −(9)</source>
+        <translation>prenosna funkcija dδ/dα = ω₃/ω₁ = −(9)</translation>
+    </message>
+    <message>
+        <source>crank angular velocity (constant)</source>
+        <translation>ugaona brzina poluge (konstantna)</translation>
+    </message>
+    <message>
+        <source>coupler angular velocity, counter-clockwise</source>
+        <translation>ugaona brzina spojke, suprotno od kazaljke na satu</translation>
+    </message>
+    <message>
+        <source>dδ/dt, exact (the document&apos;s (8) with the opposite sign)</source>
+        <translation>dδ/dt, tačna vrednost (formula (8) iz rada sa suprotnim znakom)</translation>
+    </message>
+    <message>
+        <source>coupler angular acceleration, counter-clockwise</source>
+        <translation>ugaono ubrzanje spojke, suprotno od kazaljke na satu</translation>
+    </message>
+    <message>
+        <source>d²δ/dt² at constant ω₁, exact (not the document&apos;s (14))</source>
+        <translation>d²δ/dt² pri konstantnoj ω₁, tačna vrednost (ne formula (14) iz rada)</translation>
+    </message>
+    <message>
+        <source>acute transmission angle min(|γ|, 180° − |γ|) (below 40°: poor)</source>
+        <translation>oštar ugao prenosa min(|γ|, 180° − |γ|) (ispod 40°: loš prenos)</translation>
+    </message>
+    <message>
+        <source>distance from the nearest singularity, min(|sin β|, |sin γ|)</source>
+        <translation>udaljenost od najbližeg singulariteta, min(|sin β|, |sin γ|)</translation>
+    </message>
+    <message>
+        <source>diagonal |BD|</source>
+        <translation>dijagonala |BD|</translation>
+    </message>
+    <message>
+        <source>coupler point M, x</source>
+        <translation>tačka spojke M, x</translation>
+    </message>
+    <message>
+        <source>coupler point M, y</source>
+        <translation>tačka spojke M, y</translation>
+    </message>
+    <message>
+        <source>instantaneous centre P of the coupler, x (none: AB ∥ DC)</source>
+        <translation>trenutni pol brzina P spojke, x (nema: AB ∥ DC)</translation>
+    </message>
+    <message>
+        <source>instantaneous centre P of the coupler, y (none: AB ∥ DC)</source>
+        <translation>trenutni pol brzina P spojke, y (nema: AB ∥ DC)</translation>
+    </message>
+    <message>
+        <source>assembly branch: open (C left of B→D) or crossed</source>
+        <translation>grana sklapanja: otvorena (C levo od B→D) ili ukrštena</translation>
+    </message>
+    <message>
+        <source>Grashof class from s + l against p + q</source>
+        <translation>tip po Grashofu: s + l u poređenju sa p + q</translation>
+    </message>
+    <message>
+        <source>crossed branch (same crank angle)</source>
+        <translation>ukrštena grana (isti ugao poluge)</translation>
+    </message>
+    <message>
+        <source>open branch (same crank angle)</source>
+        <translation>otvorena grana (isti ugao poluge)</translation>
+    </message>
+    <message>
+        <source>ground AD</source>
+        <translation>postolje AD</translation>
+    </message>
+    <message>
+        <source>coupler BC</source>
+        <translation>spojka BC</translation>
+    </message>
+    <message>
+        <source>rocker CD</source>
+        <translation>klackalica CD</translation>
+    </message>
+    <message>
+        <source>planar four-bar: ground AD, crank AB (driven at A), coupler BC, rocker CD</source>
+        <translation>ravanski zglobni četvorougao: postolje AD, poluga AB (pogon u A), spojka BC, klackalica CD</translation>
+    </message>
+    <message>
+        <source>BC (P at infinity: AB ∥ DC, the coupler translates)</source>
+        <translation>BC (P u beskonačnosti: AB ∥ DC, spojka se kreće translatorno)</translation>
+    </message>
+    <message>
+        <source>drag to turn the crank (sets α, direct kinematics)</source>
+        <translation>prevucite da okrenete polugu (zadaje α, direktna kinematika)</translation>
+    </message>
+    <message>
+        <source>drag to swing the rocker (sets δ, inverse kinematics)</source>
+        <translation>prevucite da pomerite klackalicu (zadaje δ, inverzna kinematika)</translation>
+    </message>
+    <message>
+        <source>coupler curve of M (crossed branch)</source>
+        <translation>spojna kriva tačke M (ukrštena grana)</translation>
+    </message>
+    <message>
+        <source>coupler curve of M (open branch)</source>
+        <translation>spojna kriva tačke M (otvorena grana)</translation>
+    </message>
+    <message>
+        <source>No joint variable with that index.</source>
+        <translation>Ne postoji zglobna koordinata sa tim brojem.</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>nije broj</translation>
+    </message>
+    <message>
+        <source>%1 (%2) = %3 is invalid: it must be greater than %4.</source>
+        <translation>%1 (%2) = %3 nije dozvoljena vrednost: mora biti veće od %4.</translation>
+    </message>
+    <message>
+        <source>%1 (%2) = %3 is invalid: it must be at least %4.</source>
+        <translation>%1 (%2) = %3 nije dozvoljena vrednost: mora biti najmanje %4.</translation>
+    </message>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <source>(%1, %2]</source>
+        <translation>(%1; %2]</translation>
+    </message>
+    <message>
+        <source>[%1, %2)</source>
+        <translation>[%1; %2)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) = %3 is invalid: it must be %4.</source>
+        <translation>%1 (%2) = %3 nije dozvoljena vrednost: mora biti u opsegu %4.</translation>
+    </message>
+    <message>
+        <source>no kinematic chain is described for this mechanism</source>
+        <translation>za ovaj mehanizam nije opisan kinematički lanac</translation>
+    </message>
+    <message>
+        <source>pair &apos;%1&apos; does not join two different links of the chain</source>
+        <translation>par „%1“ ne spaja dva različita člana lanca</translation>
+    </message>
+    <message>
+        <source>pair &apos;%1&apos; has a point or an axis that is not finite</source>
+        <translation>par „%1“ ima tačku ili osu koja nije konačna</translation>
+    </message>
+    <message>
+        <source>pair &apos;%1&apos; has no axis</source>
+        <translation>par „%1“ nema osu</translation>
+    </message>
+    <message>
+        <source>the chain is marked planar (the plane z = 0) but pair &apos;%1&apos; is not</source>
+        <translation>lanac je označen kao ravanski (ravan z = 0), ali par „%1“ nije</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n moving link(s)</source>
+        <translation>
+            <numerusform>%n pokretni član</numerusform>
+            <numerusform>%n pokretna člana</numerusform>
+            <numerusform>%n pokretnih članova</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pair(s)</source>
+        <translation>
+            <numerusform>%n kinematički par</numerusform>
+            <numerusform>%n kinematička para</numerusform>
+            <numerusform>%n kinematičkih parova</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n loop(s)</source>
+        <translation>
+            <numerusform>%n zatvorena kontura</numerusform>
+            <numerusform>%n zatvorene konture</numerusform>
+            <numerusform>%n zatvorenih kontura</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Planar chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
+        <translation>Ravanski lanac (%1, %2 i %3): rang njegove Jakobijan matrice veza daje pokretljivost %4</translation>
+    </message>
+    <message>
+        <source>Spatial chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
+        <translation>Prostorni lanac (%1, %2 i %3): rang njegove Jakobijan matrice veza daje pokretljivost %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>Chebyshev&apos;s W = %1 is wrong: %n planar loop equation(s) is/are redundant (an overconstrained planar chain)</source>
+        <translation>
+            <numerusform>Čebiševljeva formula daje W = %1, što je pogrešno: %n jednačina ravnih kontura je suvišna (ravanski lanac sa suvišnim vezama)</numerusform>
+            <numerusform>Čebiševljeva formula daje W = %1, što je pogrešno: %n jednačine ravnih kontura su suvišne (ravanski lanac sa suvišnim vezama)</numerusform>
+            <numerusform>Čebiševljeva formula daje W = %1, što je pogrešno: %n jednačina ravnih kontura je suvišno (ravanski lanac sa suvišnim vezama)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Chebyshev&apos;s W = %1 is right</source>
+        <translation>Čebiševljeva formula daje W = %1, što je tačno</translation>
+    </message>
+    <message>
+        <source>Somov–Malyshev&apos;s W = %1 is right</source>
+        <translation>formula Somova–Mališeva daje W = %1, što je tačno</translation>
+    </message>
+    <message>
+        <source>(parallel axes: a planar loop imposes only 3)</source>
+        <translation>(paralelne ose: ravanska kontura nameće samo 3)</translation>
+    </message>
+    <message>
+        <source>(an overconstrained, &quot;paradoxical&quot; chain: it moves)</source>
+        <translation>(„paradoksalan“ lanac sa suvišnim vezama: pokretan je)</translation>
+    </message>
+    <message>
+        <source>(an overconstrained chain)</source>
+        <translation>(lanac sa suvišnim vezama)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Somov–Malyshev&apos;s W = %1 is wrong: it counts 6 equations per loop and %n is/are redundant %2</source>
+        <translation>
+            <numerusform>formula Somova–Mališeva daje W = %1, što je pogrešno: ona računa 6 jednačina po konturi, a %n od njih je suvišna %2</numerusform>
+            <numerusform>formula Somova–Mališeva daje W = %1, što je pogrešno: ona računa 6 jednačina po konturi, a %n od njih su suvišne %2</numerusform>
+            <numerusform>formula Somova–Mališeva daje W = %1, što je pogrešno: ona računa 6 jednačina po konturi, a %n od njih je suvišno %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>at this pose the rank drops: the instantaneous mobility is %1, a singular pose</source>
+        <translation>u ovom položaju rang opada: trenutna pokretljivost je %1, singularan položaj</translation>
+    </message>
+    <message>
+        <source>no pair is actuated</source>
+        <translation>nijedan par nije pogonjen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n freedom(s)</source>
+        <translation>
+            <numerusform>%n stepen slobode</numerusform>
+            <numerusform>%n stepena slobode</numerusform>
+            <numerusform>%n stepeni slobode</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s) leave(s) %1 uncontrolled (under-actuated)</source>
+        <translation>
+            <numerusform>%n pogonjeni stepen slobode: bez upravljanja ostaje %1 (nedovoljno pogona)</numerusform>
+            <numerusform>%n pogonjena stepena slobode: bez upravljanja ostaje %1 (nedovoljno pogona)</numerusform>
+            <numerusform>%n pogonjenih stepeni slobode: bez upravljanja ostaje %1 (nedovoljno pogona)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s) for mobility %1: redundantly actuated</source>
+        <translation>
+            <numerusform>%n pogonjeni stepen slobode za pokretljivost %1: suvišan broj pogona</numerusform>
+            <numerusform>%n pogonjena stepena slobode za pokretljivost %1: suvišan broj pogona</numerusform>
+            <numerusform>%n pogonjenih stepeni slobode za pokretljivost %1: suvišan broj pogona</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s): fully actuated</source>
+        <translation>
+            <numerusform>%n pogonjeni stepen slobode: mehanizam je potpuno pogonjen</numerusform>
+            <numerusform>%n pogonjena stepena slobode: mehanizam je potpuno pogonjen</numerusform>
+            <numerusform>%n pogonjenih stepeni slobode: mehanizam je potpuno pogonjen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>with the actuators locked it can still move instantaneously here (a direct singularity)</source>
+        <translation>sa zakočenim pogonima lanac se ovde još može trenutno pomeriti (singularitet direktne kinematike)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n idle freedom(s) is/are included</source>
+        <translation>
+            <numerusform>uključujući lokalne stepene slobode: %n</numerusform>
+            <numerusform>uključujući lokalne stepene slobode: %n</numerusform>
+            <numerusform>uključujući lokalne stepene slobode: %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>link %1</source>
+        <translation>član %1</translation>
+    </message>
+    <message>
+        <source>ground OB</source>
+        <translation>postolje OB</translation>
+    </message>
+    <message>
+        <source>crank OC</source>
+        <translation>poluga OC</translation>
+    </message>
+    <message>
+        <source>coupler CA</source>
+        <translation>spojka CA</translation>
+    </message>
+    <message>
+        <source>spatial parallelogram: four parallel revolute axes taken as a spatial chain</source>
+        <translation>prostorni paralelogram: četiri paralelne ose obrtnih parova, posmatrane kao prostorni lanac</translation>
+    </message>
+    <message>
+        <source>Bennett linkage: four revolute axes, opposite links equal, a/sin α = b/sin β</source>
+        <translation>Benetov mehanizam: četiri ose obrtnih parova, naspramni članovi jednaki, a/sin α = b/sin β</translation>
+    </message>
+    <message>
+        <source>spatial 4R loop with random axes (not a Bennett linkage)</source>
+        <translation>prostorna kontura 4R sa slučajnim osama (nije Benetov mehanizam)</translation>
+    </message>
+    <message>
+        <source>ground AE</source>
+        <translation>postolje AE</translation>
+    </message>
+    <message>
+        <source>link DC</source>
+        <translation>spojka DC</translation>
+    </message>
+    <message>
+        <source>crank ED</source>
+        <translation>poluga ED</translation>
+    </message>
+    <message>
+        <source>planar five-bar: ground, two driven cranks, two distal links</source>
+        <translation>ravanski petočlani mehanizam: postolje, dve pogonjene poluge, dve spojke</translation>
+    </message>
+    <message>
+        <source>Cannot analyse the mobility: %1.</source>
+        <translation>Pokretljivost ne može da se odredi: %1.</translation>
+    </message>
+    <message>
+        <source>crank BA</source>
+        <translation>poluga BA</translation>
+    </message>
+    <message>
+        <source>%1 (back)</source>
+        <translation>%1 (pozadi)</translation>
+    </message>
+    <message>
+        <source>%1 (front)</source>
+        <translation>%1 (napred)</translation>
+    </message>
+    <message>
+        <source>base</source>
+        <translation>osnova</translation>
+    </message>
+    <message>
+        <source>clevis</source>
+        <translation>viljuška</translation>
+    </message>
+    <message>
+        <source>stepper motor</source>
+        <translation>koračni motor</translation>
+    </message>
+    <message>
+        <source>lead screw</source>
+        <translation>zavojno vreteno</translation>
+    </message>
+    <message>
+        <source>rod end</source>
+        <translation>zglobni završetak vretena</translation>
+    </message>
+    <message>
+        <source>guide %1</source>
+        <translation>vođica %1</translation>
+    </message>
+    <message>
+        <source>end stop</source>
+        <translation>graničnik</translation>
+    </message>
+    <message>
+        <source>carriage %1</source>
+        <translation>kolica %1</translation>
+    </message>
+    <message>
+        <source>platform</source>
+        <translation>platforma</translation>
+    </message>
+    <message>
+        <source>guide 1 reference point, x</source>
+        <translation>referentna tačka vođice 1, x</translation>
+    </message>
+    <message>
+        <source>guide 1 reference point, y</source>
+        <translation>referentna tačka vođice 1, y</translation>
+    </message>
+    <message>
+        <source>guide 2 reference point, x</source>
+        <translation>referentna tačka vođice 2, x</translation>
+    </message>
+    <message>
+        <source>guide 2 reference point, y</source>
+        <translation>referentna tačka vođice 2, y</translation>
+    </message>
+    <message>
+        <source>direction of guide 1</source>
+        <translation>orijentacija vođice 1</translation>
+    </message>
+    <message>
+        <source>direction of guide 2</source>
+        <translation>orijentacija vođice 2</translation>
+    </message>
+    <message>
+        <source>turn of guide 1 from the vertical (α₁ = 270° + γ₁)</source>
+        <translation>zaokret vođice 1 od vertikale (α₁ = 270° + γ₁)</translation>
+    </message>
+    <message>
+        <source>turn of guide 2 from the vertical (α₂ = 270° + γ₂)</source>
+        <translation>zaokret vođice 2 od vertikale (α₂ = 270° + γ₂)</translation>
+    </message>
+    <message>
+        <source>length of link S₁</source>
+        <translation>dužina spojke S₁</translation>
+    </message>
+    <message>
+        <source>length of link S₂</source>
+        <translation>dužina spojke S₂</translation>
+    </message>
+    <message>
+        <source>start of the stroke</source>
+        <translation>početak hoda</translation>
+    </message>
+    <message>
+        <source>end of the stroke</source>
+        <translation>kraj hoda</translation>
+    </message>
+    <message>
+        <source>working mode of leg 1: sign in p₁ = B₁ ± √…</source>
+        <translation>radni mod noge 1: znak u p₁ = B₁ ± √…</translation>
+    </message>
+    <message>
+        <source>working mode of leg 2: sign in p₂ = B₂ ± √…</source>
+        <translation>radni mod noge 2: znak u p₂ = B₂ ± √…</translation>
+    </message>
+    <message>
+        <source>assembly mode: +1 platform left of Z₁→Z₂</source>
+        <translation>način sklapanja: +1 platforma levo od Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>links kept on the inner side of the guides (1: on)</source>
+        <translation>spojke samo sa unutrašnje strane vođica (1: uključeno)</translation>
+    </message>
+    <message>
+        <source>drawn width of a guide</source>
+        <translation>širina vođice na crtežu</translation>
+    </message>
+    <message>
+        <source>MOMA has no parameter named &apos;%1&apos;.</source>
+        <translation>MOMA nema parametar „%1“.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 both turn guide %3: give one of them.</source>
+        <translation>%1 i %2 oba zakreću vođicu %3: zadajte samo jedan od njih.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is invalid: it must be -1 or +1.</source>
+        <translation>%1 = %2 nije dozvoljena vrednost: mora biti -1 ili +1.</translation>
+    </message>
+    <message>
+        <source>one_side = %1 is invalid: it must be 0 (off) or 1 (on).</source>
+        <translation>one_side = %1 nije dozvoljena vrednost: mora biti 0 (isključeno) ili 1 (uključeno).</translation>
+    </message>
+    <message>
+        <source>p_min = %1 mm must be less than p_max = %2 mm.</source>
+        <translation>p_min = %1 mm mora biti manje od p_max = %2 mm.</translation>
+    </message>
+    <message>
+        <source>The guides lie on one line and their strokes overlap: the slider joints Z₁ and Z₂ could coincide. Move R₂ or turn a guide.</source>
+        <translation>Vođice leže na istoj pravoj i hodovi im se preklapaju: zglobovi klizača Z₁ i Z₂ mogu da se poklope. Pomerite R₂ ili zaokrenite vođicu.</translation>
+    </message>
+    <message>
+        <source>This configuration has no workspace: with l₁ = %1 mm, l₂ = %2 mm and strokes [%3, %4] mm the links cannot meet in the chosen working and assembly modes.</source>
+        <translation>Ova konfiguracija nema radni prostor: sa l₁ = %1 mm, l₂ = %2 mm i hodom [%3; %4] mm spojke ne mogu da se spoje u izabranim radnim modovima i načinu sklapanja.</translation>
+    </message>
+    <message>
+        <source>The guides cross inside their strokes: the sliders can collide there.</source>
+        <translation>Vođice se seku unutar hoda: tu klizači mogu da se sudare.</translation>
+    </message>
+    <message>
+        <source>slider 1 position (actuated)</source>
+        <translation>položaj klizača 1 (pogonska koordinata)</translation>
+    </message>
+    <message>
+        <source>slider 2 position (actuated)</source>
+        <translation>položaj klizača 2 (pogonska koordinata)</translation>
+    </message>
+    <message>
+        <source>platform x</source>
+        <translation>platforma, x</translation>
+    </message>
+    <message>
+        <source>platform y</source>
+        <translation>platforma, y</translation>
+    </message>
+    <message>
+        <source>link S%1 would lie on the outer side of guide %2 (the one-side constraint is on)</source>
+        <translation>spojka S%1 bi se našla sa spoljašnje strane vođice %2 (uključeno je ograničenje na jednu stranu)</translation>
+    </message>
+    <message>
+        <source>The slider joints Z₁ and Z₂ coincide at p₁ = %1 mm, p₂ = %2 mm: the platform position is undetermined.</source>
+        <translation>Zglobovi klizača Z₁ i Z₂ se poklapaju pri p₁ = %1 mm, p₂ = %2 mm: položaj platforme nije određen.</translation>
+    </message>
+    <message>
+        <source>The links cannot meet at p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm is more than l₁ + l₂ = %4 mm.</source>
+        <translation>Spojke ne mogu da se spoje pri p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm je veće od l₁ + l₂ = %4 mm.</translation>
+    </message>
+    <message>
+        <source>The links cannot meet at p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm is less than |l₁ − l₂| = %4 mm.</source>
+        <translation>Spojke ne mogu da se spoje pri p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm je manje od |l₁ − l₂| = %4 mm.</translation>
+    </message>
+    <message>
+        <source>At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past perpendicular to its guide, in its other working mode (an inverse singularity lies between); switch the mode to go on.</source>
+        <translation>Pri p₁ = %1 mm, p₂ = %2 mm noga %3 bi prešla preko položaja upravnog na svoju vođicu, u drugi radni mod (između je singularitet inverzne kinematike); promenite mod da biste nastavili.</translation>
+    </message>
+    <message>
+        <source>At p₁ = %1 mm, p₂ = %2 mm %3.</source>
+        <translation>Pri p₁ = %1 mm, p₂ = %2 mm %3.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: it lies more than l%2 = %3 mm from guide %4.</source>
+        <translation>Platforma ne može da stigne do tačke %1: tačka je od vođice %4 udaljena više od l%2 = %3 mm.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: slider %2 would have to be at p%3 = %4 mm, outside its stroke [%5, %6] mm.</source>
+        <translation>Platforma ne može da stigne do tačke %1: klizač %2 bi morao da bude na p%3 = %4 mm, van svog hoda [%5; %6] mm.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1 in this assembly mode: it would cross the line Z₁Z₂, where the links are collinear (a direct singularity); switch the assembly mode to go on.</source>
+        <translation>Platforma ne može da stigne do tačke %1 u ovom načinu sklapanja: prešla bi pravu Z₁Z₂, na kojoj su spojke kolinearne (singularitet direktne kinematike); promenite način sklapanja da biste nastavili.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: %2.</source>
+        <translation>Platforma ne može da stigne do tačke %1: %2.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 mm is outside the stroke [%3, %4] mm.</source>
+        <translation>%1 = %2 mm je van hoda [%3; %4] mm.</translation>
+    </message>
+    <message>
+        <source>slider 1 position</source>
+        <translation>položaj klizača 1</translation>
+    </message>
+    <message>
+        <source>slider 2 position</source>
+        <translation>položaj klizača 2</translation>
+    </message>
+    <message>
+        <source>J_x rows 2(P − Z_i) (20)</source>
+        <translation>vrste J_x: 2(P − Z_i) (20)</translation>
+    </message>
+    <message>
+        <source>ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)</source>
+        <translation>ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) do na znak)</translation>
+    </message>
+    <message>
+        <source>0 at an inverse singularity</source>
+        <translation>0 u singularitetu inverzne kinematike</translation>
+    </message>
+    <message>
+        <source>0 at a direct singularity</source>
+        <translation>0 u singularitetu direktne kinematike</translation>
+    </message>
+    <message>
+        <source>angle between link S₁ and guide 1 (90°: inverse singularity)</source>
+        <translation>ugao između spojke S₁ i vođice 1 (90°: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>angle between link S₂ and guide 2 (90°: inverse singularity)</source>
+        <translation>ugao između spojke S₂ i vođice 2 (90°: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>angle between the links (0°, 180°: direct singularity)</source>
+        <translation>ugao između spojki (0°, 180°: singularitet direktne kinematike)</translation>
+    </message>
+    <message>
+        <source>other assembly mode (same slider positions)</source>
+        <translation>drugi način sklapanja (isti položaji klizača)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (same platform position)</source>
+        <translation>noga 1: drugi radni mod (isti položaj platforme)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (same platform position)</source>
+        <translation>noga 2: drugi radni mod (isti položaj platforme)</translation>
+    </message>
+    <message>
+        <source>slider K₁</source>
+        <translation>klizač K₁</translation>
+    </message>
+    <message>
+        <source>slider K₂</source>
+        <translation>klizač K₂</translation>
+    </message>
+    <message>
+        <source>link S₁</source>
+        <translation>spojka S₁</translation>
+    </message>
+    <message>
+        <source>link S₂</source>
+        <translation>spojka S₂</translation>
+    </message>
+    <message>
+        <source>guide PO₁</source>
+        <translation>vođica PO₁</translation>
+    </message>
+    <message>
+        <source>guide PO₂</source>
+        <translation>vođica PO₂</translation>
+    </message>
+    <message>
+        <source>MOMA: two sliders on powered guides, two links meeting at the platform joint P</source>
+        <translation>MOMA: dva klizača na pogonskim vođicama i dve spojke spojene u zglobu platforme P</translation>
+    </message>
+    <message>
+        <source>drag to move the platform (inverse kinematics)</source>
+        <translation>prevucite da biste pomerili platformu (inverzna kinematika)</translation>
+    </message>
+    <message>
+        <source>drag along guide 1 to set p₁ (direct kinematics)</source>
+        <translation>prevucite duž vođice 1 da biste zadali p₁ (direktna kinematika)</translation>
+    </message>
+    <message>
+        <source>drag along guide 2 to set p₂ (direct kinematics)</source>
+        <translation>prevucite duž vođice 2 da biste zadali p₂ (direktna kinematika)</translation>
+    </message>
+    <message>
+        <source>link ⟂ guide</source>
+        <translation>spojka ⟂ vođici</translation>
+    </message>
+    <message>
+        <source>links collinear</source>
+        <translation>spojke kolinearne</translation>
+    </message>
+    <message>
+        <source>link 1 ⟂ guide 1</source>
+        <translation>spojka 1 ⟂ vođici 1</translation>
+    </message>
+    <message>
+        <source>link 2 ⟂ guide 2</source>
+        <translation>spojka 2 ⟂ vođici 2</translation>
+    </message>
+    <message>
+        <source>crossed (X)</source>
+        <translation>ukršteni (X)</translation>
+    </message>
+    <message>
+        <source>extended (O)</source>
+        <translation>opruženi (O)</translation>
+    </message>
+    <message>
+        <source>rod length</source>
+        <translation>dužina štapa</translation>
+    </message>
+    <message>
+        <source>platform width</source>
+        <translation>širina platforme</translation>
+    </message>
+    <message>
+        <source>transverse guide length (slider positions 0…L)</source>
+        <translation>dužina poprečnih vođica (položaji klizača 0…L)</translation>
+    </message>
+    <message>
+        <source>spacing of the transverse guides</source>
+        <translation>razmak poprečnih vođica</translation>
+    </message>
+    <message>
+        <source>start of the longitudinal travel</source>
+        <translation>početak uzdužnog hoda</translation>
+    </message>
+    <message>
+        <source>end of the longitudinal travel</source>
+        <translation>kraj uzdužnog hoda</translation>
+    </message>
+    <message>
+        <source>+1 extended (O), −1 crossed (X)</source>
+        <translation>+1 opruženi (O), −1 ukršteni (X)</translation>
+    </message>
+    <message>
+        <source>The O-X glide has no parameter named &apos;%1&apos;.</source>
+        <translation>Mehanizam O-X glide nema parametar „%1”.</translation>
+    </message>
+    <message>
+        <source>mode = %1 is invalid: it must be +1 (O, extended) or -1 (X, crossed).</source>
+        <translation>mode = %1 nije dozvoljena vrednost: mora biti +1 (O, opruženi oblik) ili -1 (X, ukršteni).</translation>
+    </message>
+    <message>
+        <source>mode must be +1 (O, extended) or -1 (X, crossed).</source>
+        <translation>mode mora biti +1 (O, opruženi oblik) ili -1 (X, ukršteni).</translation>
+    </message>
+    <message>
+        <source>s = %1 must be less than 2l = %2: a platform that wide keeps the rods from ever crossing, so there is no X form.</source>
+        <translation>s = %1 mora biti manje od 2l = %2: sa tako širokom platformom štapovi se nikada ne ukrštaju, pa ukršteni (X) oblik ne postoji.</translation>
+    </message>
+    <message>
+        <source>L = %1 must be more than the platform width s = %2: with guides that short the extended (O) form has no workspace.</source>
+        <translation>L = %1 mora biti veće od širine platforme s = %2: sa tako kratkim vođicama opruženi (O) oblik nema radni prostor.</translation>
+    </message>
+    <message>
+        <source>z_min = %1 must be less than z_max = %2.</source>
+        <translation>z_min = %1 mora biti manje od z_max = %2.</translation>
+    </message>
+    <message>
+        <source>The crossed (X) form has no workspace with L = %1, s = %2 and l = %3.</source>
+        <translation>Ukršteni (X) oblik nema radni prostor za L = %1, s = %2 i l = %3.</translation>
+    </message>
+    <message>
+        <source>The extended (O) form has no workspace with L = %1, s = %2 and l = %3.</source>
+        <translation>Opruženi (O) oblik nema radni prostor za L = %1, s = %2 i l = %3.</translation>
+    </message>
+    <message>
+        <source>slider pair AB position (actuated)</source>
+        <translation>položaj para klizača AB (pogonski)</translation>
+    </message>
+    <message>
+        <source>slider pair CD position (actuated)</source>
+        <translation>položaj para klizača CD (pogonski)</translation>
+    </message>
+    <message>
+        <source>longitudinal position (actuated serial axis)</source>
+        <translation>uzdužni položaj (pogonska serijska osa)</translation>
+    </message>
+    <message>
+        <source>platform centre T, x</source>
+        <translation>centar platforme T, x</translation>
+    </message>
+    <message>
+        <source>platform centre T, y</source>
+        <translation>centar platforme T, y</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: y is more than the rod length l = %2.</source>
+        <translation>Platforma ne može da dostigne %1: y je veće od dužine štapa l = %2.</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1: it would pass the rod joints&apos; plane y = 0, where the rods lie along the guides (a direct singularity).</source>
+        <translation>Platforma ne može da dostigne %1: prešla bi ravan zglobova štapova y = 0, gde štapovi leže duž vođica (singularitet direktne kinematike).</translation>
+    </message>
+    <message>
+        <source>The crossed (X) form cannot reach %1: slider pair %2 would have to be at %3 = %4, off its guides (0…%5 mm).</source>
+        <translation>Ukršteni (X) oblik ne može da dostigne %1: par klizača %2 morao bi da bude na %3 = %4, van svojih vođica (0…%5 mm).</translation>
+    </message>
+    <message>
+        <source>The extended (O) form cannot reach %1: slider pair %2 would have to be at %3 = %4, off its guides (0…%5 mm).</source>
+        <translation>Opruženi (O) oblik ne može da dostigne %1: par klizača %2 morao bi da bude na %3 = %4, van svojih vođica (0…%5 mm).</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is off the guides (%3…%4 mm).</source>
+        <translation>%1 = %2 je van vođica (%3…%4 mm).</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the travel (%3…%4 mm).</source>
+        <translation>%1 = %2 je van hoda (%3…%4 mm).</translation>
+    </message>
+    <message>
+        <source>The rods cannot reach the platform at x_AB = %1, x_CD = %2: |x_CD − x_AB − s| = %3 is more than 2l = %4.</source>
+        <translation>Štapovi ne mogu da dosegnu platformu za x_AB = %1, x_CD = %2: |x_CD − x_AB − s| = %3 je veće od 2l = %4.</translation>
+    </message>
+    <message>
+        <source>x_CD − x_AB = %1 is less than s = %2: these slider positions hold the crossed (X) form, and the mechanism is extended (O). At x_CD − x_AB = s the rods are parallel and the platform can swing (a singularity), so the pairs do not pass it on their own: switch the form to go on.</source>
+        <translation>x_CD − x_AB = %1 je manje od s = %2: ovi položaji klizača odgovaraju ukrštenom (X) obliku, a mehanizam je u opruženom (O). Za x_CD − x_AB = s štapovi su paralelni i platforma može da se njiše (singularitet), pa ga parovi klizača sami ne prelaze: promenite oblik da biste nastavili.</translation>
+    </message>
+    <message>
+        <source>x_CD − x_AB = %1 is more than s = %2: these slider positions hold the extended (O) form, and the mechanism is crossed (X). At x_CD − x_AB = s the rods are parallel and the platform can swing (a singularity), so the pairs do not pass it on their own: switch the form to go on.</source>
+        <translation>x_CD − x_AB = %1 je veće od s = %2: ovi položaji klizača odgovaraju opruženom (O) obliku, a mehanizam je u ukrštenom (X). Za x_CD − x_AB = s štapovi su paralelni i platforma može da se njiše (singularitet), pa ga parovi klizača sami ne prelaze: promenite oblik da biste nastavili.</translation>
+    </message>
+    <message>
+        <source>slider pair AB position</source>
+        <translation>položaj para klizača AB</translation>
+    </message>
+    <message>
+        <source>slider pair CD position</source>
+        <translation>položaj para klizača CD</translation>
+    </message>
+    <message>
+        <source>longitudinal position</source>
+        <translation>uzdužni položaj</translation>
+    </message>
+    <message>
+        <source>J_q = diag(−2u₁, −2u₂), u_i the rods&apos; runs along the guides</source>
+        <translation>J_q = diag(−2u₁, −2u₂), u_i — projekcije štapova na vođice</translation>
+    </message>
+    <message>
+        <source>J_x rows (2u_i, 2y)</source>
+        <translation>vrste J_x: (2u_i, 2y)</translation>
+    </message>
+    <message>
+        <source>q̇ = J·ẋ of the planar part, J = −J_q⁻¹·J_x</source>
+        <translation>q̇ = J·ẋ ravanskog dela, J = −J_q⁻¹·J_x</translation>
+    </message>
+    <message>
+        <source>angle between the rods and the guides (90°: the O↔X crossing)</source>
+        <translation>ugao između štapova i vođica (90°: prelaz O↔X)</translation>
+    </message>
+    <message>
+        <source>distance from the O↔X crossing (0 there; &gt; 0 O, &lt; 0 X)</source>
+        <translation>rastojanje od prelaza O↔X (0 na njemu; &gt; 0 O, &lt; 0 X)</translation>
+    </message>
+    <message>
+        <source>form of the pose: O extended, X crossed</source>
+        <translation>oblik položaja: O opruženi, X ukršteni</translation>
+    </message>
+    <message>
+        <source>crossed (X) form (same platform position)</source>
+        <translation>ukršteni (X) oblik (isti položaj platforme)</translation>
+    </message>
+    <message>
+        <source>extended (O) form (same platform position)</source>
+        <translation>opruženi (O) oblik (isti položaj platforme)</translation>
+    </message>
+    <message>
+        <source>rods ⟂ guides: the O↔X crossing</source>
+        <translation>štapovi ⟂ vođicama: prelaz O↔X</translation>
+    </message>
+    <message>
+        <source>rods parallel: the platform can swing</source>
+        <translation>štapovi paralelni: platforma može da se njiše</translation>
+    </message>
+    <message>
+        <source>rods along the guides</source>
+        <translation>štapovi duž vođica</translation>
+    </message>
+    <message>
+        <source>rods ⟂ guides</source>
+        <translation>štapovi ⟂ vođicama</translation>
+    </message>
+    <message>
+        <source>drag to move the platform (inverse kinematics, in the current form)</source>
+        <translation>prevucite da biste pomerili platformu (inverzna kinematika, u trenutnom obliku)</translation>
+    </message>
+    <message>
+        <source>drag along the guides to set x_AB (direct kinematics)</source>
+        <translation>prevucite duž vođica da biste zadali x_AB (direktna kinematika)</translation>
+    </message>
+    <message>
+        <source>drag along the guides to set x_CD (direct kinematics)</source>
+        <translation>prevucite duž vođica da biste zadali x_CD (direktna kinematika)</translation>
+    </message>
+    <message>
+        <source>longitudinal carriage</source>
+        <translation>uzdužna kolica</translation>
+    </message>
+    <message>
+        <source>end plate</source>
+        <translation>čeona ploča</translation>
+    </message>
+    <message>
+        <source>longitudinal guide</source>
+        <translation>uzdužna vođica</translation>
+    </message>
+    <message>
+        <source>slider %1</source>
+        <translation>klizač %1</translation>
+    </message>
+    <message>
+        <source>compensation element %1</source>
+        <translation>kompenzacioni element %1</translation>
+    </message>
+    <message>
+        <source>rod joint %1</source>
+        <translation>zglob štapa %1</translation>
+    </message>
+    <message>
+        <source>pair AB</source>
+        <translation>par AB</translation>
+    </message>
+    <message>
+        <source>pair CD</source>
+        <translation>par CD</translation>
+    </message>
+    <message>
+        <source>rod %1</source>
+        <translation>štap %1</translation>
+    </message>
+    <message>
+        <source>spherical joint %1</source>
+        <translation>sferni zglob %1</translation>
+    </message>
+    <message>
+        <source>carriage</source>
+        <translation>kolica</translation>
+    </message>
+    <message>
+        <source>slider pair AB</source>
+        <translation>par klizača AB</translation>
+    </message>
+    <message>
+        <source>slider pair CD</source>
+        <translation>par klizača CD</translation>
+    </message>
+    <message>
+        <source>O-X glide: carriage on the longitudinal guides, slider pairs AB and CD, four rods (revolute at the sliders, spherical at the platform), platform</source>
+        <translation>O-X glide: kolica na uzdužnim vođicama, parovi klizača AB i CD, četiri štapa (obrtni zglobovi na klizačima, sferni na platformi), platforma</translation>
+    </message>
+    <message>
+        <source>crank (lever) length</source>
+        <translation>dužina poluge</translation>
+    </message>
+    <message>
+        <source>base and coupler length</source>
+        <translation>dužina osnove i spojke</translation>
+    </message>
+    <message>
+        <source>ratio k = b/a</source>
+        <translation>odnos k = b/a</translation>
+    </message>
+    <message>
+        <source>lower limit of θ</source>
+        <translation>donja granica θ</translation>
+    </message>
+    <message>
+        <source>upper limit of θ</source>
+        <translation>gornja granica θ</translation>
+    </message>
+    <message>
+        <source>lead of the screw</source>
+        <translation>korak zavojnog vretena</translation>
+    </message>
+    <message>
+        <source>linear step</source>
+        <translation>linearni korak</translation>
+    </message>
+    <message>
+        <source>max. linear speed</source>
+        <translation>maks. linearna brzina</translation>
+    </message>
+    <message>
+        <source>max. thrust force</source>
+        <translation>maks. pogonska sila</translation>
+    </message>
+    <message>
+        <source>screw efficiency</source>
+        <translation>stepen iskorišćenja zavojnog vretena</translation>
+    </message>
+    <message>
+        <source>motor body length</source>
+        <translation>dužina kućišta motora</translation>
+    </message>
+    <message>
+        <source>motor body width</source>
+        <translation>širina kućišta motora</translation>
+    </message>
+    <message>
+        <source>screw diameter</source>
+        <translation>prečnik zavojnog vretena</translation>
+    </message>
+    <message>
+        <source>k = b/a = %1 is out of proportion: it must lie between 1e-6 and 1e6.</source>
+        <translation>k = b/a = %1 je van svake mere: mora biti između 1e-6 i 1e6.</translation>
+    </message>
+    <message>
+        <source>theta_min = %1° must be less than theta_max = %2°.</source>
+        <translation>theta_min = %1° mora biti manje od theta_max = %2°.</translation>
+    </message>
+    <message>
+        <source>k = %1 and b = %2 mm both set the coupler: give b or k, not both.</source>
+        <translation>k = %1 i b = %2 mm oba određuju spojku: zadajte b ili k, ne oba.</translation>
+    </message>
+    <message>
+        <source>The П-joint has no parameter named &apos;%1&apos;.</source>
+        <translation>P-zglob nema parametar „%1”.</translation>
+    </message>
+    <message>
+        <source>theta_max = %1° must be greater than theta_min = %2°.</source>
+        <translation>theta_max = %1° mora biti veće od theta_min = %2°.</translation>
+    </message>
+    <message>
+        <source>The motor body (%1 mm) is longer than d_min = %2 mm: the diagonal cannot retract that far.</source>
+        <translation>Kućište motora (%1 mm) duže je od d_min = %2 mm: dijagonala ne može toliko da se skrati.</translation>
+    </message>
+    <message>
+        <source>diagonal length (actuated)</source>
+        <translation>dužina dijagonale (pogonska)</translation>
+    </message>
+    <message>
+        <source>output angle</source>
+        <translation>izlazni ugao</translation>
+    </message>
+    <message>
+        <source>d = %1 mm is outside the stroke [%2, %3] mm that the θ range allows.</source>
+        <translation>d = %1 mm je van hoda [%2; %3] mm koji dopušta opseg θ.</translation>
+    </message>
+    <message>
+        <source>θ = %1° is outside the design range [%2, %3]°.</source>
+        <translation>θ = %1° je van projektovanog opsega [%2; %3]°.</translation>
+    </message>
+    <message>
+        <source>diagonal length</source>
+        <translation>dužina dijagonale</translation>
+    </message>
+    <message>
+        <source>passive angle of the diagonal</source>
+        <translation>pasivni ugao dijagonale</translation>
+    </message>
+    <message>
+        <source>transmission angle</source>
+        <translation>ugao prenosa</translation>
+    </message>
+    <message>
+        <source>Jacobian ḋ = J·θ̇</source>
+        <translation>Jakobijan ḋ = J·θ̇</translation>
+    </message>
+    <message>
+        <source>inverse Jacobian θ̇ = J⁻¹·ḋ</source>
+        <translation>inverzni Jakobijan θ̇ = J⁻¹·ḋ</translation>
+    </message>
+    <message>
+        <source>J_d = 2d</source>
+        <translation>J_d = 2d</translation>
+    </message>
+    <message>
+        <source>J_θ = 2a²k·cos θ</source>
+        <translation>J_θ = 2a²k·cos θ</translation>
+    </message>
+    <message>
+        <source>derivative of J</source>
+        <translation>izvod J</translation>
+    </message>
+    <message>
+        <source>output torque at F_max</source>
+        <translation>izlazni moment pri F_max</translation>
+    </message>
+    <message>
+        <source>output speed θ̇ at ḋ_max</source>
+        <translation>izlazna ugaona brzina θ̇ pri ḋ_max</translation>
+    </message>
+    <message>
+        <source>output resolution per step</source>
+        <translation>izlazna rezolucija po koraku</translation>
+    </message>
+    <message>
+        <source>motor torque at F_max</source>
+        <translation>moment motora pri F_max</translation>
+    </message>
+    <message>
+        <source>diagonal at θ_min</source>
+        <translation>dijagonala pri θ_min</translation>
+    </message>
+    <message>
+        <source>diagonal at θ_max</source>
+        <translation>dijagonala pri θ_max</translation>
+    </message>
+    <message>
+        <source>actuator stroke</source>
+        <translation>hod aktuatora</translation>
+    </message>
+    <message>
+        <source>recommended range from (J ≥ 60 % of best)</source>
+        <translation>preporučeni opseg: od (J ≥ 60 % najvećeg)</translation>
+    </message>
+    <message>
+        <source>recommended range to (J ≥ 60 % of best)</source>
+        <translation>preporučeni opseg: do (J ≥ 60 % najvećeg)</translation>
+    </message>
+    <message>
+        <source>motor body</source>
+        <translation>kućište motora</translation>
+    </message>
+    <message>
+        <source>screw</source>
+        <translation>vreteno</translation>
+    </message>
+    <message>
+        <source>O (motor)</source>
+        <translation>O (motor)</translation>
+    </message>
+    <message>
+        <source>A (screw)</source>
+        <translation>A (vreteno)</translation>
+    </message>
+    <message>
+        <source>active П-joint: hinged parallelogram OBAC with the telescopic diagonal OA (motor body and screw)</source>
+        <translation>aktivni P-zglob: zglobni paralelogram OBAC sa teleskopskom dijagonalom OA (kućište motora i vreteno)</translation>
+    </message>
+    <message>
+        <source>drag A to set θ</source>
+        <translation>prevucite A da biste zadali θ</translation>
+    </message>
+    <message>
+        <source>drag C to set θ</source>
+        <translation>prevucite C da biste zadali θ</translation>
+    </message>
+    <message>
+        <source>The pointer is on the pivot: θ is undefined there.</source>
+        <translation>Pokazivač je na osi obrtanja: tu ugao θ nije određen.</translation>
+    </message>
+    <message>
+        <source>Active П-joint</source>
+        <translation>Aktivni P-zglob</translation>
+    </message>
+    <message>
+        <source>MOMA 2-axis parallel mechanism</source>
+        <translation>Dvoosni paralelni mehanizam MOMA</translation>
+    </message>
+    <message>
+        <source>O-X glide hybrid mechanism</source>
+        <translation>Hibridni mehanizam O-X glide</translation>
+    </message>
+    <message>
+        <source>Planar four-bar linkage</source>
+        <translation>Ravanski zglobni četvorougao</translation>
+    </message>
+    <message>
+        <source>Planar five-bar linkage</source>
+        <translation>Ravanski zglobni petočlani mehanizam</translation>
+    </message>
+    <message>
+        <source>Unknown mechanism kind &apos;%1&apos;.</source>
+        <translation>Nepoznat tip mehanizma „%1”.</translation>
+    </message>
+    <message>
+        <source>A %1 has no parameter named &apos;%2&apos;.</source>
+        <translation>Mehanizam „%1” nema parametar „%2”.</translation>
+    </message>
+    <message>
+        <source>link</source>
+        <translation>član</translation>
+    </message>
+    <message>
+        <source>motor</source>
+        <translation>motor</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>motor %1</translation>
+    </message>
+    <message>
+        <source>screw %1</source>
+        <translation>vreteno %1</translation>
+    </message>
+    <message>
+        <source>guide</source>
+        <translation>vođica</translation>
+    </message>
+    <message>
+        <source>end stop %1</source>
+        <translation>graničnik %1</translation>
+    </message>
+    <message>
+        <source>slider</source>
+        <translation>klizač</translation>
+    </message>
+    <message>
+        <source>support</source>
+        <translation>oslonac</translation>
+    </message>
+    <message>
+        <source>support %1</source>
+        <translation>oslonac %1</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>tačka</translation>
+    </message>
+    <message>
+        <source>point %1</source>
+        <translation>tačka %1</translation>
+    </message>
+    <message>
+        <source>joint</source>
+        <translation>zglob</translation>
+    </message>
+    <message>
+        <source>joint %1</source>
+        <translation>zglob %1</translation>
+    </message>
+    <message>
+        <source>one side</source>
+        <translation>jedna strana</translation>
+    </message>
+    <message>
+        <source>form</source>
+        <translation>oblik</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Animation</name>
+    <message>
+        <source>The animation needs a pose variable of the mechanism.</source>
+        <translation>Za animaciju je potrebna promenljiva položaja mehanizma.</translation>
+    </message>
+    <message>
+        <source>An animation has %1 to %2 frames, not %3.</source>
+        <translation>Animacija mora imati od %1 do %2 kadrova, a ne %3.</translation>
+    </message>
+    <message>
+        <source>Frame %1 (%2 = %3): %4</source>
+        <translation>Kadar %1 (%2 = %3): %4</translation>
+    </message>
+    <message>
+        <source>The animation was cancelled.</source>
+        <translation>Animacija je otkazana.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::AnimationDialog</name>
+    <message>
+        <source>Export Animation</source>
+        <translation>Izvoz animacije</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Promenljiva</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Od</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>Do</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Broj kadrova</translation>
+    </message>
+    <message>
+        <source> ms per frame</source>
+        <translation> ms po kadru</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Brzina</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels</source>
+        <translation>%1 × %2 piksela</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Veličina</translation>
+    </message>
+    <message>
+        <source>Play back to the start (a smooth loop)</source>
+        <translation>Vraćanje na početak (glatka petlja)</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Izvezi…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Drawing %n frame(s)…</source>
+        <translation>
+            <numerusform>Crtanje %n kadra…</numerusform>
+            <numerusform>Crtanje %n kadra…</numerusform>
+            <numerusform>Crtanje %n kadrova…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>Nije moguće upisati %1: %2.</translation>
+    </message>
+    <message>
+        <source>Animation export cancelled.</source>
+        <translation>Izvoz animacije je otkazan.</translation>
+    </message>
+    <message>
+        <source>Wrote %1 (%2 kB)</source>
+        <translation>Upisano %1 (%2 kB)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::BackgroundTask</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Otkaži</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::DesignPanel</name>
+    <message>
+        <source>Geometry</source>
+        <translation>Geometrija</translation>
+    </message>
+    <message>
+        <source>Motion range</source>
+        <translation>Opseg kretanja</translation>
+    </message>
+    <message>
+        <source>Actuator</source>
+        <translation>Aktuator</translation>
+    </message>
+    <message>
+        <source>Motor body (drawing)</source>
+        <translation>Kućište motora (crtež)</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Modovi</translation>
+    </message>
+    <message>
+        <source>less</source>
+        <translation>manje</translation>
+    </message>
+    <message>
+        <source>more…</source>
+        <translation>više…</translation>
+    </message>
+    <message>
+        <source>greater than %1</source>
+        <translation>veće od %1</translation>
+    </message>
+    <message>
+        <source>between %1 and %2</source>
+        <translation>između %1 i %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.</source>
+        <translation>%1 (%2): %3 %4. Tasteri ↑/↓ ili točkić miša menjaju vrednost u koracima od %5.</translation>
+    </message>
+    <message>
+        <source>The last valid design is kept.</source>
+        <translation>Zadržava se poslednja ispravna konstrukcija.</translation>
+    </message>
+    <message>
+        <source>%1 (%2): &apos;%3&apos; is not a number.</source>
+        <translation>%1 (%2): „%3“ nije broj.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::DesignSession</name>
+    <message>
+        <source>Untitled design</source>
+        <translation>Konstrukcija bez naziva</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>Nije moguće upisati %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Document</name>
+    <message>
+        <source>Open %1</source>
+        <translation>Otvori %1</translation>
+    </message>
+    <message>
+        <source>Switch to %1</source>
+        <translation>Prelaz: %1</translation>
+    </message>
+    <message>
+        <source>%1 stops at its upper limit %2: %3.</source>
+        <translation>%1 se zaustavlja na gornjoj granici %2: %3.</translation>
+    </message>
+    <message>
+        <source>%1 stops at its lower limit %2: %3.</source>
+        <translation>%1 se zaustavlja na donjoj granici %2: %3.</translation>
+    </message>
+    <message>
+        <source>%1 stops at its upper limit %2 (design range).</source>
+        <translation>%1 se zaustavlja na gornjoj granici %2 (projektovani opseg).</translation>
+    </message>
+    <message>
+        <source>%1 stops at its lower limit %2 (design range).</source>
+        <translation>%1 se zaustavlja na donjoj granici %2 (projektovani opseg).</translation>
+    </message>
+    <message>
+        <source>Close to a singular pose: small input steps make large output jumps.</source>
+        <translation>Blizu singularnog položaja: mali koraci na ulazu daju velike skokove na izlazu.</translation>
+    </message>
+    <message>
+        <source>That mode is not available at this pose.</source>
+        <translation>Taj mod nije dostupan u ovom položaju.</translation>
+    </message>
+    <message>
+        <source>Singular pose (inverse): the mechanism cannot be driven here.</source>
+        <translation>Singularan položaj (inverzne kinematike): mehanizmom se ovde ne može upravljati.</translation>
+    </message>
+    <message>
+        <source>Singular pose (direct): the mechanism cannot be driven here.</source>
+        <translation>Singularan položaj (direktne kinematike): mehanizmom se ovde ne može upravljati.</translation>
+    </message>
+    <message>
+        <source>Singular pose (combined): the mechanism cannot be driven here.</source>
+        <translation>Singularan položaj (kombinovani): mehanizmom se ovde ne može upravljati.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::FormWorkspaceView</name>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>union, outlined: %1</source>
+        <translation>unija (kontura): %1</translation>
+    </message>
+    <message>
+        <source>Areas of the forms: exact (closed form). Union: counted on a %1 × %2 grid.</source>
+        <translation>Površine oblika: tačne (po formulama). Unija: prebrojana na mreži %1 × %2.</translation>
+    </message>
+    <message>
+        <source>Areas counted on a %1 × %2 grid.</source>
+        <translation>Površine prebrojane na mreži %1 × %2.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::FourBarPanel</name>
+    <message>
+        <source>Link lengths</source>
+        <translation>Dužine članova</translation>
+    </message>
+    <message>
+        <source>AB crank</source>
+        <translation>AB poluga</translation>
+    </message>
+    <message>
+        <source>BC coupler</source>
+        <translation>BC spojka</translation>
+    </message>
+    <message>
+        <source>CD rocker</source>
+        <translation>CD klackalica</translation>
+    </message>
+    <message>
+        <source>AD ground</source>
+        <translation>AD postolje</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Ugao prenosa γ u C</translation>
+    </message>
+    <message>
+        <source>The crank drives the rocker well when γ stays between %1° and %2°.</source>
+        <translation>Poluga dobro pokreće klackalicu dok je γ između %1° i %2°.</translation>
+    </message>
+    <message>
+        <source>The last valid design is kept.</source>
+        <translation>Zadržava se poslednja ispravna konstrukcija.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the crank AB, the shortest link, turns fully; the rocker CD swings.</source>
+        <translation>poluga AB, najkraći član, okreće se punim krugom; klackalica CD osciluje.</translation>
+    </message>
+    <message>
+        <source>the rocker CD, the shortest link, could turn fully; the crank AB only swings.</source>
+        <translation>klackalica CD, najkraći član, mogla bi da se okreće punim krugom; poluga AB samo osciluje.</translation>
+    </message>
+    <message>
+        <source>the ground AD is the shortest link: the crank and the rocker both turn fully (drag link).</source>
+        <translation>postolje AD je najkraći član: i poluga i klackalica okreću se punim krugom (dvopolužni mehanizam).</translation>
+    </message>
+    <message>
+        <source>the coupler BC is the shortest link: the crank and the rocker only swing.</source>
+        <translation>spojka BC je najkraći član: poluga i klackalica samo osciluju.</translation>
+    </message>
+    <message>
+        <source>non-Grashof: no link turns fully.</source>
+        <translation>Grashofov uslov nije ispunjen: nijedan član se ne okreće punim krugom.</translation>
+    </message>
+    <message>
+        <source>the links can fold flat in line, where the open and crossed branches meet.</source>
+        <translation>članovi mogu da se slože u jednu liniju, gde se susreću otvorena i ukrštena grana.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: s + l = %2 %3 p + q = %4; %5</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: s + l = %2 %3 p + q = %4; %5</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;α&lt;/b&gt;: the crank turns fully, %1 … %2</source>
+        <translation>&lt;b&gt;α&lt;/b&gt;: poluga se okreće punim krugom, %1 … %2</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;α&lt;/b&gt; assembles from %1 to %2 only: at the ends the coupler and the rocker are in line (dead points)</source>
+        <translation>&lt;b&gt;α&lt;/b&gt;: mehanizam se može sklopiti samo od %1 do %2; na krajevima su spojka i klackalica u istoj liniji (mrtve tačke)</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b3261e&apos;&gt;over the motion %1° … %2°: enters the poor band&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b3261e&apos;&gt;tokom kretanja %1° … %2°: ulazi u zonu lošeg prenosa&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>over the motion %1° … %2°: inside %3° … %4°</source>
+        <translation>tokom kretanja %1° … %2°: unutar %3° … %4°</translation>
+    </message>
+    <message>
+        <source>%1 — poor: %2</source>
+        <translation>%1 — loš prenos: %2</translation>
+    </message>
+    <message>
+        <source>below %1°</source>
+        <translation>ispod %1°</translation>
+    </message>
+    <message>
+        <source>above %1°</source>
+        <translation>iznad %1°</translation>
+    </message>
+    <message>
+        <source>α stops at its upper limit: %1.</source>
+        <translation>α se zaustavlja na gornjoj granici: %1.</translation>
+    </message>
+    <message>
+        <source>α stops at its lower limit: %1.</source>
+        <translation>α se zaustavlja na donjoj granici: %1.</translation>
+    </message>
+    <message>
+        <source>Crank-rocker</source>
+        <translation>Mehanizam poluga–klackalica</translation>
+    </message>
+    <message>
+        <source>Rocker-crank</source>
+        <translation>Mehanizam klackalica–poluga</translation>
+    </message>
+    <message>
+        <source>Double-crank</source>
+        <translation>Dvopolužni mehanizam</translation>
+    </message>
+    <message>
+        <source>Double-rocker</source>
+        <translation>Dvoklackalni mehanizam</translation>
+    </message>
+    <message>
+        <source>Triple-rocker</source>
+        <translation>Troklackalni mehanizam</translation>
+    </message>
+    <message>
+        <source>Change-point</source>
+        <translation>Granični Grashofov slučaj</translation>
+    </message>
+    <message>
+        <source>%1. &lt;b&gt;δ&lt;/b&gt; swings over %2 … %3 (crossed branch).</source>
+        <translation>%1. &lt;b&gt;δ&lt;/b&gt; se menja u opsegu %2 … %3 (ukrštena grana).</translation>
+    </message>
+    <message>
+        <source>%1. &lt;b&gt;δ&lt;/b&gt; swings over %2 … %3 (open branch).</source>
+        <translation>%1. &lt;b&gt;δ&lt;/b&gt; se menja u opsegu %2 … %3 (otvorena grana).</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::FourBarPlots</name>
+    <message>
+        <source>δ(α) — fig. 4</source>
+        <translation>δ(α) — sl. 4</translation>
+    </message>
+    <message>
+        <source>ω₃, ε₃ — fig. 6</source>
+        <translation>ω₃, ε₃ — sl. 6</translation>
+    </message>
+    <message>
+        <source>δ vs AB — fig. 5</source>
+        <translation>δ u zavisnosti od AB — sl. 5</translation>
+    </message>
+    <message>
+        <source>The rocker angle δ over the crank&apos;s range (click to set α)</source>
+        <translation>Ugao klackalice δ u celom opsegu poluge (klikom se zadaje α)</translation>
+    </message>
+    <message>
+        <source>The rocker&apos;s angular velocity and acceleration at constant ω₁ (click to set α)</source>
+        <translation>Ugaona brzina i ugaono ubrzanje klackalice pri stalnoj ω₁ (klikom se zadaje α)</translation>
+    </message>
+    <message>
+        <source>The transmission angle at C; shaded where the crank drives the rocker poorly</source>
+        <translation>Ugao prenosa u zglobu C; osenčeno je tamo gde poluga loše pokreće klackalicu</translation>
+    </message>
+    <message>
+        <source>δ at the current α as the crank length AB changes, the other links fixed</source>
+        <translation>δ pri trenutnom α u zavisnosti od dužine poluge AB, ostali članovi nepromenjeni</translation>
+    </message>
+    <message>
+        <source>Click or drag to set the crank angle α</source>
+        <translation>Kliknite ili prevucite da zadate ugao poluge α</translation>
+    </message>
+    <message>
+        <source>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 branch</source>
+        <translation>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 oblik</translation>
+    </message>
+    <message>
+        <source>Fig. 4 — rocker angle δ(α)</source>
+        <translation>Sl. 4 — ugao klackalice δ(α)</translation>
+    </message>
+    <message>
+        <source>Fig. 6 — rocker angular velocity ω₃ = dδ/dt</source>
+        <translation>Sl. 6 — ugaona brzina klackalice ω₃ = dδ/dt</translation>
+    </message>
+    <message>
+        <source>Fig. 6 — rocker angular acceleration ε₃ = d²δ/dt²</source>
+        <translation>Sl. 6 — ugaono ubrzanje klackalice ε₃ = d²δ/dt²</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ(α), (5)</source>
+        <translation>Ugao prenosa γ(α), (5)</translation>
+    </message>
+    <message>
+        <source>Fig. 5 — rocker angle δ against the crank length AB</source>
+        <translation>Sl. 5 — ugao klackalice δ u zavisnosti od dužine poluge AB</translation>
+    </message>
+    <message>
+        <source>ω₁ = %1 rad/s constant; exact (the document&apos;s (8) has the opposite sign)</source>
+        <translation>ω₁ = %1 rad/s = const; tačno (formula (8) iz rada ima suprotan znak)</translation>
+    </message>
+    <message>
+        <source>ω₁ = %1 rad/s constant; exact (not the document&apos;s (14))</source>
+        <translation>ω₁ = %1 rad/s = const; tačno (ne po formuli (14) iz rada)</translation>
+    </message>
+    <message>
+        <source>at α = %1°; BC, CD, AD fixed</source>
+        <translation>pri α = %1°; BC, CD, AD nepromenjeni</translation>
+    </message>
+    <message>
+        <source>ω₃ (rad/s)</source>
+        <translation>ω₃ (rad/s)</translation>
+    </message>
+    <message>
+        <source>ε₃ (rad/s²)</source>
+        <translation>ε₃ (rad/s²)</translation>
+    </message>
+    <message>
+        <source>crank length AB (mm)</source>
+        <translation>dužina poluge AB (mm)</translation>
+    </message>
+    <message>
+        <source>crank angle α (°)</source>
+        <translation>ugao poluge α (°)</translation>
+    </message>
+    <message>
+        <source>poor transmission: |γ| &lt; %1° or &gt; %2°</source>
+        <translation>loš prenos: |γ| &lt; %1° ili &gt; %2°</translation>
+    </message>
+    <message>
+        <source>δ at α = %1°</source>
+        <translation>δ pri α = %1°</translation>
+    </message>
+    <message>
+        <source>largest AB that assembles: %1 mm</source>
+        <translation>najveća AB koja se može sklopiti: %1 mm</translation>
+    </message>
+    <message>
+        <source>ω₃ = %1 rad/s</source>
+        <translation>ω₃ = %1 rad/s</translation>
+    </message>
+    <message>
+        <source>ε₃ = %1 rad/s²</source>
+        <translation>ε₃ = %1 rad/s²</translation>
+    </message>
+    <message>
+        <source>AB = %1 mm, δ = %2°</source>
+        <translation>AB = %1 mm, δ = %2°</translation>
+    </message>
+    <message>
+        <source>%1 → %2∞: dead point</source>
+        <translation>%1 → %2∞: mrtva tačka</translation>
+    </message>
+    <message>
+        <source>no pose</source>
+        <translation>nema položaja</translation>
+    </message>
+    <message>
+        <source>crossed</source>
+        <comment>branch</comment>
+        <translation>ukršteni</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <comment>branch</comment>
+        <translation>otvoreni</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::GifWriter</name>
+    <message>
+        <source>An animation needs at least one frame.</source>
+        <translation>Animaciji je potreban bar jedan kadar.</translation>
+    </message>
+    <message>
+        <source>A GIF frame must be 1 to 65535 pixels on each side.</source>
+        <translation>GIF kadar mora imati od 1 do 65535 piksela po svakoj stranici.</translation>
+    </message>
+    <message>
+        <source>All frames of a GIF must have the same size.</source>
+        <translation>Svi kadrovi GIF-a moraju biti iste veličine.</translation>
+    </message>
+    <message>
+        <source>giflib: out of memory.</source>
+        <translation>giflib: nema dovoljno memorije.</translation>
+    </message>
+    <message>
+        <source>giflib could not reduce a frame to 256 colours.</source>
+        <translation>giflib nije uspeo da svede kadar na 256 boja.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::LinkageView</name>
+    <message>
+        <source>Click to switch to: %1</source>
+        <translation>Kliknite da prebacite: %1</translation>
+    </message>
+    <message>
+        <source>this pose</source>
+        <translation>ovaj položaj</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::LinkageView3D</name>
+    <message>
+        <source>3D view unavailable: OpenGL 3.3 could not be started.</source>
+        <translation>3D prikaz nije dostupan: OpenGL 3.3 nije mogao da se pokrene.</translation>
+    </message>
+    <message>
+        <source>A picture needs a size of at least one pixel.</source>
+        <translation>Slika mora biti velika bar jedan piksel.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::MainWindow</name>
+    <message>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>The mechanism in 3D: drag to turn it, right-drag to pan, wheel to zoom</source>
+        <translation>Mehanizam u 3D: prevucite da ga okrenete, desnim tasterom da ga pomerite, točkićem za uvećanje</translation>
+    </message>
+    <message>
+        <source>Design</source>
+        <translation>Konstrukcija</translation>
+    </message>
+    <message>
+        <source>Values at this pose</source>
+        <translation>Vrednosti u ovom položaju</translation>
+    </message>
+    <message>
+        <source>Mobility</source>
+        <translation>Pokretljivost</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datoteka</translation>
+    </message>
+    <message>
+        <source>&amp;Open Design…</source>
+        <translation>&amp;Otvori konstrukciju…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Otvori &amp;skorašnje</translation>
+    </message>
+    <message>
+        <source>&amp;Save Design</source>
+        <translation>&amp;Sačuvaj konstrukciju</translation>
+    </message>
+    <message>
+        <source>Save Design &amp;As…</source>
+        <translation>Sačuvaj konstrukciju &amp;kao…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF)…</source>
+        <translation>Izvezi &amp;animaciju (GIF)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Drawing (DXF)…</source>
+        <translation>Izvezi &amp;crtež (DXF)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Parameter Sheet…</source>
+        <translation>Izvezi &amp;listu parametara…</translation>
+    </message>
+    <message>
+        <source>Save 2D &amp;View Picture…</source>
+        <translation>Sačuvaj sliku &amp;2D prikaza…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Izlaz</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Uređivanje</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Opozovi</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Ponovi</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Opozovi</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Ponovi</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Primeri</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Prikaz</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Mechanism</source>
+        <translation>&amp;Uklopi mehanizam</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>&amp;Uvećaj</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>&amp;Umanji</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Pomoć</translation>
+    </message>
+    <message>
+        <source>&amp;About PKM Studio</source>
+        <translation>&amp;O programu PKM Studio</translation>
+    </message>
+    <message>
+        <source>Switched to %1.</source>
+        <translation>Prelazak na: %1.</translation>
+    </message>
+    <message>
+        <source>Open Design</source>
+        <translation>Otvaranje konstrukcije</translation>
+    </message>
+    <message>
+        <source>PKM Studio designs (*.pkm.json);;All files (*)</source>
+        <translation>Konstrukcije PKM Studio (*.pkm.json);;Sve datoteke (*)</translation>
+    </message>
+    <message>
+        <source>Save Design</source>
+        <translation>Čuvanje konstrukcije</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Sačuvano: %1</translation>
+    </message>
+    <message>
+        <source>Save Design As</source>
+        <translation>Čuvanje konstrukcije kao</translation>
+    </message>
+    <message>
+        <source>PKM Studio designs (*.pkm.json)</source>
+        <translation>Konstrukcije PKM Studio (*.pkm.json)</translation>
+    </message>
+    <message>
+        <source>Export Animation</source>
+        <translation>Izvoz animacije</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Animirani GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Nesačuvane izmene</translation>
+    </message>
+    <message>
+        <source>The design “%1” has changes that are not saved. Save them?</source>
+        <translation>Konstrukcija „%1“ ima nesačuvane izmene. Da li da ih sačuvam?</translation>
+    </message>
+    <message>
+        <source>Recover Design</source>
+        <translation>Vraćanje konstrukcije</translation>
+    </message>
+    <message>
+        <source>PKM Studio closed unexpectedly while “%1” had unsaved changes (autosaved %2). Recover them?</source>
+        <translation>PKM Studio se neočekivano zatvorio dok je „%1“ imala nesačuvane izmene (automatski sačuvano %2). Da li da ih vratim?</translation>
+    </message>
+    <message>
+        <source>Recovered “%1”: save it to keep the changes.</source>
+        <translation>Vraćeno „%1“: sačuvajte da biste zadržali izmene.</translation>
+    </message>
+    <message>
+        <source>%1[*] — PKM Studio</source>
+        <translation>%1[*] — PKM Studio</translation>
+    </message>
+    <message>
+        <source>%1 no longer exists; removed from the recent files.</source>
+        <translation>%1 više ne postoji; uklonjena je sa spiska skorašnjih datoteka.</translation>
+    </message>
+    <message>
+        <source>About PKM Studio</source>
+        <translation>O programu PKM Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;PKM Studio %1&lt;/h3&gt;&lt;p&gt;Design, analysis and teaching of parallel-kinematic mechanisms.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;PKM Studio %1&lt;/h3&gt;&lt;p&gt;Projektovanje, analiza i nastava mehanizama paralelne kinematike.&lt;/p&gt;&lt;p&gt;Licenca: GNU General Public License, verzija 3 ili novija.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Export Drawing (DXF)</source>
+        <translation>Izvoz crteža (DXF)</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf);;All files (*)</source>
+        <translation>DXF crteži (*.dxf);;Sve datoteke (*)</translation>
+    </message>
+    <message>
+        <source>Cannot write the drawing to %1: %2.</source>
+        <translation>Crtež nije moguće upisati u %1: %2.</translation>
+    </message>
+    <message>
+        <source>Wrote the drawing to %1 (DXF R12, mm).</source>
+        <translation>Crtež je upisan u %1 (DXF R12, mm).</translation>
+    </message>
+    <message>
+        <source>Export Parameter Sheet</source>
+        <translation>Izvoz liste parametara</translation>
+    </message>
+    <message>
+        <source>PDF parameter sheets (*.pdf);;JSON (*.json);;CSV (*.csv)</source>
+        <translation>Liste parametara PDF (*.pdf);;JSON (*.json);;CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Computing the parameter sheet…</source>
+        <translation>Računam listu parametara…</translation>
+    </message>
+    <message>
+        <source>Wrote the parameter sheet to %1.</source>
+        <translation>Lista parametara je upisana u %1.</translation>
+    </message>
+    <message>
+        <source>Wrote the 2D view to %1.</source>
+        <translation>2D prikaz je upisan u %1.</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Jezik</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Glavna traka alata</translation>
+    </message>
+    <message>
+        <source>The language “%1” is not available.</source>
+        <translation>Jezik „%1“ nije dostupan.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::MobilityPanel</name>
+    <message>
+        <source>✓ right</source>
+        <translation>✓ tačno</translation>
+    </message>
+    <message>
+        <source>⚠ wrong</source>
+        <translation>⚠ netačno</translation>
+    </message>
+    <message numerus="yes">
+        <source>W = %1, but the rank gives M = %2: the formula counts %3 equations per loop, and %n of them are redundant.</source>
+        <translation>
+            <numerusform>W = %1, ali rang daje M = %2: formula uzima %3 kao broj jednačina po konturi, a %n od njih je suvišna.</numerusform>
+            <numerusform>W = %1, ali rang daje M = %2: formula uzima %3 kao broj jednačina po konturi, a %n od njih su suvišne.</numerusform>
+            <numerusform>W = %1, ali rang daje M = %2: formula uzima %3 kao broj jednačina po konturi, a %n od njih je suvišno.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A negative W rightly says “rigid”, but it is not the mobility: M = 0.</source>
+        <translation>Negativno W s pravom kaže „krut“, ali to nije pokretljivost: M = 0.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Classroom example: the spatial parallelogram.&lt;/b&gt; The П-joint prototype&apos;s hinged parallelogram (a = 170 mm, b = 68 mm): four parallel revolute axes, counted as a spatial chain.</source>
+        <translation>&lt;b&gt;Primer za nastavu: prostorni paralelogram.&lt;/b&gt; Zglobni paralelogram prototipa P-zgloba (a = 170 mm, b = 68 mm): četiri paralelne ose obrtnih parova, posmatrane kao prostorni lanac.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Classroom example: the Bennett linkage.&lt;/b&gt; Four skew revolute axes, opposite links equal (a = 100 mm, b ≈ 188 mm) with twists α = 30°, β = 70° and a/sin α = b/sin β.</source>
+        <translation>&lt;b&gt;Primer za nastavu: Benetov mehanizam.&lt;/b&gt; Četiri mimoilazne ose obrtnih parova, naspramni članovi jednaki (a = 100 mm, b ≈ 188 mm), sa uglovima uvijanja α = 30°, β = 70° i a/sin α = b/sin β.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Classroom example: a general spatial 4R loop.&lt;/b&gt; Four revolute axes in general position, without Bennett&apos;s proportions: the same counts as the Bennett linkage.</source>
+        <translation>&lt;b&gt;Primer za nastavu: opšta prostorna kontura 4R.&lt;/b&gt; Četiri ose obrtnih parova u opštem položaju, bez Benetovih proporcija: isto brojanje kao kod Benetovog mehanizma.</translation>
+    </message>
+    <message>
+        <source>the %1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>the ground (%1)</source>
+        <translation>postolje (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;Links&lt;/b&gt;: %1 and %n moving link(s), n = %n: %2.</source>
+        <translation>
+            <numerusform>&lt;b&gt;Članovi&lt;/b&gt;: %1 i %n pokretni član, n = %n: %2.</numerusform>
+            <numerusform>&lt;b&gt;Članovi&lt;/b&gt;: %1 i %n pokretna člana, n = %n: %2.</numerusform>
+            <numerusform>&lt;b&gt;Članovi&lt;/b&gt;: %1 i %n pokretnih članova, n = %n: %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Pairs&lt;/b&gt;: %1.</source>
+        <translation>&lt;b&gt;Parovi&lt;/b&gt;: %1.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nema</translation>
+    </message>
+    <message>
+        <source>Actuated: %1.</source>
+        <translation>Pogonjeni: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;Loops&lt;/b&gt;: %n independent loop(s), L = %n.</source>
+        <translation>
+            <numerusform>&lt;b&gt;Konture&lt;/b&gt;: %n nezavisna kontura, L = %n.</numerusform>
+            <numerusform>&lt;b&gt;Konture&lt;/b&gt;: %n nezavisne konture, L = %n.</numerusform>
+            <numerusform>&lt;b&gt;Konture&lt;/b&gt;: %n nezavisnih kontura, L = %n.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;Idle freedoms&lt;/b&gt;: %n (a part spinning about its own axis), counted in every number below.</source>
+        <translation>
+            <numerusform>&lt;b&gt;Pasivni stepeni slobode&lt;/b&gt;: %n (deo koji se okreće oko sopstvene ose); uračunati u svaki broj ispod.</numerusform>
+            <numerusform>&lt;b&gt;Pasivni stepeni slobode&lt;/b&gt;: %n (deo koji se okreće oko sopstvene ose); uračunati u svaki broj ispod.</numerusform>
+            <numerusform>&lt;b&gt;Pasivni stepeni slobode&lt;/b&gt;: %n (deo koji se okreće oko sopstvene ose); uračunati u svaki broj ispod.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>At this pose the mechanism gains an instantaneous freedom (singularity).</source>
+        <translation>U ovom položaju mehanizam dobija trenutni stepen slobode (singularitet).</translation>
+    </message>
+    <message>
+        <source>The rank of the loop equations drops from %1 to %2: the instantaneous mobility is %3, the mobility next to this pose %4.</source>
+        <translation>Rang jednačina zatvaranja pada sa %1 na %2: trenutna pokretljivost je %3, pokretljivost u blizini ovog položaja %4.</translation>
+    </message>
+    <message>
+        <source>With the actuators locked the mechanism can still move instantaneously here: it gains a freedom the actuators do not control (a direct singularity).</source>
+        <translation>Sa zakočenim pogonima mehanizam ovde i dalje može trenutno da se pomeri: dobija stepen slobode koji pogoni ne kontrolišu (singularitet direktne kinematike).</translation>
+    </message>
+    <message>
+        <source>⚠ Singular pose</source>
+        <translation>⚠ Singularan položaj</translation>
+    </message>
+    <message>
+        <source>Chebyshev (planar chains)</source>
+        <translation>Čebišev (ravanski lanci)</translation>
+    </message>
+    <message>
+        <source>Does not apply: the chain has pairs that do not move in its plane.</source>
+        <translation>Ne primenjuje se: lanac ima parove koji se ne kreću u njegovoj ravni.</translation>
+    </message>
+    <message>
+        <source>Does not apply: a spatial chain.</source>
+        <translation>Ne primenjuje se: prostorni lanac.</translation>
+    </message>
+    <message>
+        <source>Somov–Malyshev (spatial chains)</source>
+        <translation>Somov–Mališev (prostorni lanci)</translation>
+    </message>
+    <message>
+        <source>The source document prints the last term as “+ P₁”: a typo. A pair of class 1 takes away one freedom, so − P₁.</source>
+        <translation>Izvorni rad poslednji član štampa kao „+ P₁“: to je štamparska greška. Par klase 1 oduzima jedan stepen slobode, dakle − P₁.</translation>
+    </message>
+    <message>
+        <source>⚠ Here it matters: with + P₁ the formula would give W = %1.</source>
+        <translation>⚠ Ovde je to bitno: sa + P₁ formula bi dala W = %1.</translation>
+    </message>
+    <message>
+        <source>No loop equation is redundant: the structural count holds.</source>
+        <translation>Nijedna jednačina zatvaranja nije suvišna: strukturno brojanje važi.</translation>
+    </message>
+    <message>
+        <source>Bennett&apos;s proportions (opposite links equal, a/sin α = b/sin β) make them depend on the others, so the linkage moves although the count says it cannot.</source>
+        <translation>Benetove proporcije (naspramni članovi jednaki, a/sin α = b/sin β) čine ih zavisnim od ostalih, pa se mehanizam kreće iako brojanje kaže da ne može.</translation>
+    </message>
+    <message>
+        <source>the joint axes are parallel, so each loop moves in a plane and imposes only 3 of its 6 equations.</source>
+        <translation>ose zglobova su paralelne, pa se svaka kontura kreće u ravni i nameće samo 3 od svojih 6 jednačina.</translation>
+    </message>
+    <message>
+        <source>%1 independent equations already hold all %1 freedoms of the pairs: a rigid chain with constraints to spare.</source>
+        <translation>nezavisnih jednačina već ima %1 — one drže sve stepene slobode parova (F = %1): krut lanac sa suvišnim vezama.</translation>
+    </message>
+    <message>
+        <source>the pairs&apos; axes lie in a special way (parallel, or meeting in a point), so some equations repeat others: an overconstrained chain.</source>
+        <translation>ose parova leže na poseban način (paralelne su ili se seku u jednoj tački), pa neke jednačine ponavljaju druge: lanac sa suvišnim vezama.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n redundant loop equation(s): %1</source>
+        <translation>
+            <numerusform>%n suvišna jednačina zatvaranja: %1</numerusform>
+            <numerusform>%n suvišne jednačine zatvaranja: %1</numerusform>
+            <numerusform>%n suvišnih jednačina zatvaranja: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>From the rank of the constraint Jacobian</source>
+        <translation>Iz ranga Jakobijan matrice veza</translation>
+    </message>
+    <message numerus="yes">
+        <source>An open chain, no loop: nothing holds the %n freedom(s) of its pairs, M = F = %n.</source>
+        <translation>
+            <numerusform>Otvoren lanac, bez kontura: ništa ne ograničava %n stepen slobode njegovih parova, M = F = %n.</numerusform>
+            <numerusform>Otvoren lanac, bez kontura: ništa ne ograničava %n stepena slobode njegovih parova, M = F = %n.</numerusform>
+            <numerusform>Otvoren lanac, bez kontura: ništa ne ograničava %n stepeni slobode njegovih parova, M = F = %n.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>F = %1 freedoms of the pairs; 6L = %2 loop equations.</source>
+        <translation>F = %1 — broj stepeni slobode parova; 6L = %2 — broj jednačina zatvaranja.</translation>
+    </message>
+    <message>
+        <source>At this pose: rank %1 of %2 → %3 (instantaneous).</source>
+        <translation>U ovom položaju: rang %1 od %2 → %3 (trenutna).</translation>
+    </message>
+    <message>
+        <source>Next to it: rank %1 of %2 → %3.</source>
+        <translation>U blizini: rang %1 od %2 → %3.</translation>
+    </message>
+    <message>
+        <source>rank %1 of %2 loop equations → %3</source>
+        <translation>rang %1 od %2 jednačina zatvaranja → %3</translation>
+    </message>
+    <message>
+        <source>Mobility M = %1</source>
+        <translation>Pokretljivost M = %1</translation>
+    </message>
+    <message>
+        <source>(%1 at this pose)</source>
+        <translation>(%1 u ovom položaju)</translation>
+    </message>
+    <message>
+        <source>Actuation</source>
+        <translation>Pogoni</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n actuated freedom(s)</source>
+        <translation>
+            <numerusform>%n pogonjen stepen slobode</numerusform>
+            <numerusform>%n pogonjena stepena slobode</numerusform>
+            <numerusform>%n pogonjenih stepeni slobode</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No pair is actuated.</source>
+        <translation>Nijedan par nije pogonjen.</translation>
+    </message>
+    <message>
+        <source>⚠ Under-actuated by %1:</source>
+        <translation>⚠ Nedostaje pogona (%1):</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 for mobility %2; with the actuators locked, it keeps %n freedom(s).</source>
+        <translation>
+            <numerusform>%1 za pokretljivost %2; sa zakočenim pogonima zadržava %n stepen slobode.</numerusform>
+            <numerusform>%1 za pokretljivost %2; sa zakočenim pogonima zadržava %n stepena slobode.</numerusform>
+            <numerusform>%1 za pokretljivost %2; sa zakočenim pogonima zadržava %n stepeni slobode.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
+        <translation>Rang obuhvata x i y platforme, z kolica i nagib platforme (njeno ljuljanje oko podužne ose). Pogoni zadaju x_AB, x_CD i z; nagib oni ne drže. Sa zglobovima koje rad opisuje (sferni kod platforme, po jedan zglob za svaki štap kod klizača, štapovi jednog para jedan iza drugog) platforma može da se nagne sa zakočenim klizačima; kinematika iz rada pretpostavlja da platforma ostaje vodoravna.</translation>
+    </message>
+    <message>
+        <source>Redundantly actuated: %1 for mobility %2.</source>
+        <translation>Suvišan broj pogona: %1 za pokretljivost %2.</translation>
+    </message>
+    <message>
+        <source>✓ Fully actuated:</source>
+        <translation>✓ Potpuno pogonjen:</translation>
+    </message>
+    <message>
+        <source>%1 for mobility %2.</source>
+        <translation>%1 za pokretljivost %2.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Verdict&lt;/b&gt;: %1</source>
+        <translation>&lt;b&gt;Zaključak&lt;/b&gt;: %1</translation>
+    </message>
+    <message>
+        <source>Analyse:</source>
+        <translation>Analiza:</translation>
+    </message>
+    <message>
+        <source>This mechanism</source>
+        <translation>Ovaj mehanizam</translation>
+    </message>
+    <message>
+        <source>Example: spatial parallelogram</source>
+        <translation>Primer: prostorni paralelogram</translation>
+    </message>
+    <message>
+        <source>Example: Bennett linkage</source>
+        <translation>Primer: Benetov mehanizam</translation>
+    </message>
+    <message>
+        <source>Example: general spatial 4R (rigid)</source>
+        <translation>Primer: opšti prostorni 4R (krut)</translation>
+    </message>
+    <message>
+        <source>Classroom examples: chains where the structural formulas fail, and one where the counts predict the truth</source>
+        <translation>Primeri za nastavu: lanci za koje strukturne formule greše i jedan za koji brojanje daje tačan odgovor</translation>
+    </message>
+    <message>
+        <source>No mechanism to analyse.</source>
+        <translation>Nema mehanizma za analizu.</translation>
+    </message>
+    <message>
+        <source>Analysing…</source>
+        <translation>Analiziram…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n revolute</source>
+        <translation>
+            <numerusform>%n obrtni</numerusform>
+            <numerusform>%n obrtna</numerusform>
+            <numerusform>%n obrtnih</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n prismatic</source>
+        <translation>
+            <numerusform>%n prizmatični</numerusform>
+            <numerusform>%n prizmatična</numerusform>
+            <numerusform>%n prizmatičnih</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n screw</source>
+        <translation>
+            <numerusform>%n zavojni</numerusform>
+            <numerusform>%n zavojna</numerusform>
+            <numerusform>%n zavojnih</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cylindrical</source>
+        <translation>
+            <numerusform>%n cilindrični</numerusform>
+            <numerusform>%n cilindrična</numerusform>
+            <numerusform>%n cilindričnih</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n planar cam</source>
+        <translation>
+            <numerusform>%n ravanski bregasti</numerusform>
+            <numerusform>%n ravanska bregasta</numerusform>
+            <numerusform>%n ravanskih bregastih</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spherical</source>
+        <translation>
+            <numerusform>%n sferni</numerusform>
+            <numerusform>%n sferna</numerusform>
+            <numerusform>%n sfernih</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>At this pose the mechanism gains %n instantaneous freedoms (singularity).</source>
+        <translation>
+            <numerusform>U ovom položaju mehanizam dobija %n trenutni stepen slobode (singularitet).</numerusform>
+            <numerusform>U ovom položaju mehanizam dobija %n trenutna stepena slobode (singularitet).</numerusform>
+            <numerusform>U ovom položaju mehanizam dobija %n trenutnih stepeni slobode (singularitet).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>pkm::ModeBar</name>
+    <message>
+        <source>Modes: %1</source>
+        <translation>Modovi: %1</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
+    </message>
+    <message>
+        <source>Switch to %1. The mechanism stays in its mode until you click here or on its ghost in the view.</source>
+        <translation>Prebaci: %1. Mehanizam ostaje u trenutnom modu dok ne kliknete ovde ili na njegov providni obris u prikazu.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::OxGlidePanel</name>
+    <message>
+        <source>Form:</source>
+        <translation>Oblik:</translation>
+    </message>
+    <message>
+        <source>O — extended</source>
+        <translation>O — opruženi</translation>
+    </message>
+    <message>
+        <source>X — crossed</source>
+        <translation>X — ukršteni</translation>
+    </message>
+    <message>
+        <source>Work in the extended form: the rods splay outwards from the platform.</source>
+        <translation>Rad u opruženom obliku: štapovi se od platforme šire ka spolja.</translation>
+    </message>
+    <message>
+        <source>Work in the crossed form: the slider pairs pass each other and the rods cross.</source>
+        <translation>Rad u ukrštenom obliku: parovi klizača se mimoilaze, a štapovi se ukrštaju.</translation>
+    </message>
+    <message>
+        <source>Animate crossing</source>
+        <translation>Animiraj prelaz</translation>
+    </message>
+    <message>
+        <source>Raise the platform towards the O↔X crossing (y = l, x_CD − x_AB = s) and stop short of the singular pose there.</source>
+        <translation>Podiže platformu ka prelazu O↔X (y = l, x_CD − x_AB = s) i zaustavlja se pre singularnog položaja.</translation>
+    </message>
+    <message>
+        <source>Workspace O / X</source>
+        <translation>Radni prostor O / X</translation>
+    </message>
+    <message>
+        <source>Singularity map</source>
+        <translation>Mapa singulariteta</translation>
+    </message>
+    <message>
+        <source>The crossing stopped: the design changed.</source>
+        <translation>Prelaz je zaustavljen: konstrukcija je promenjena.</translation>
+    </message>
+    <message>
+        <source>Workspaces of the O and X forms (fig. 5)</source>
+        <translation>Radni prostori oblika O i X (sl. 5)</translation>
+    </message>
+    <message>
+        <source>O↔X crossing y = l: singular</source>
+        <translation>Prelaz O↔X y = l: singularitet</translation>
+    </message>
+    <message>
+        <source>The crossing stopped: the pose was moved.</source>
+        <translation>Prelaz je zaustavljen: položaj je pomeren.</translation>
+    </message>
+    <message>
+        <source>Crossing stopped.</source>
+        <translation>Prelaz je zaustavljen.</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Zaustavi</translation>
+    </message>
+    <message>
+        <source>Raising the platform towards the O↔X crossing at y = l…</source>
+        <translation>Platforma se podiže ka prelazu O↔X na y = l…</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Stopped %1 short of the singular pose.&lt;/b&gt; At y = l = %2 the slider pairs stand at x_CD − x_AB = s: the rods are perpendicular to the guides and parallel to each other, so the platform can swing sideways while the sliders hold still (a combined singularity), and it may leave in either form. Here the rods are at %3° to the guides. Passing needs the platform guided through that point: choose the form to leave in.</source>
+        <translation>&lt;b&gt;Zaustavljeno %1 pre singularnog položaja.&lt;/b&gt; Na y = l = %2 parovi klizača stoje na x_CD − x_AB = s: štapovi su upravni na vođice i paralelni međusobno, pa platforma može da se njiše u stranu dok klizači miruju (kombinovani singularitet) i da izađe u bilo kom obliku. Ovde su štapovi pod uglom od %3° prema vođicama. Za prolaz platforma mora biti vođena kroz tu tačku: izaberite oblik u kome će izaći.</translation>
+    </message>
+    <message>
+        <source>The crossing stopped %1 below y = l, short of the singular pose x_CD − x_AB = s.</source>
+        <translation>Prelaz je zaustavljen %1 ispod y = l, pre singularnog položaja x_CD − x_AB = s.</translation>
+    </message>
+    <message>
+        <source>Leave in the extended (O) form</source>
+        <translation>Izađi u opruženom obliku (O)</translation>
+    </message>
+    <message>
+        <source>Leave in the crossed (X) form</source>
+        <translation>Izađi u ukrštenom obliku (X)</translation>
+    </message>
+    <message>
+        <source>Go back in the crossed (X) form</source>
+        <translation>Vrati se u ukrštenom obliku (X)</translation>
+    </message>
+    <message>
+        <source>Go back in the extended (O) form</source>
+        <translation>Vrati se u opruženom obliku (O)</translation>
+    </message>
+    <message>
+        <source>Switched to the crossed (X) form at the same platform position.</source>
+        <translation>Prešlo se na ukršteni oblik (X) u istom položaju platforme.</translation>
+    </message>
+    <message>
+        <source>Switched to the extended (O) form at the same platform position.</source>
+        <translation>Prešlo se na opruženi oblik (O) u istom položaju platforme.</translation>
+    </message>
+    <message>
+        <source>The crossed (X) form is not available at this pose.</source>
+        <translation>Ukršteni oblik (X) nije dostupan u ovom položaju.</translation>
+    </message>
+    <message>
+        <source>The extended (O) form is not available at this pose.</source>
+        <translation>Opruženi oblik (O) nije dostupan u ovom položaju.</translation>
+    </message>
+    <message>
+        <source>The platform is back at y = %1, in the crossed (X) form.</source>
+        <translation>Platforma je vraćena na y = %1, u ukrštenom obliku (X).</translation>
+    </message>
+    <message>
+        <source>The platform is back at y = %1, in the extended (O) form.</source>
+        <translation>Platforma je vraćena na y = %1, u opruženom obliku (O).</translation>
+    </message>
+    <message>
+        <source>Lowering the platform in the crossed (X) form…</source>
+        <translation>Platforma se spušta u ukrštenom obliku (X)…</translation>
+    </message>
+    <message>
+        <source>Lowering the platform in the extended (O) form…</source>
+        <translation>Platforma se spušta u opruženom obliku (O)…</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::PJointPlots</name>
+    <message>
+        <source>Geometry</source>
+        <translation>Geometrija</translation>
+    </message>
+    <message>
+        <source>Jacobian</source>
+        <translation>Jakobijan</translation>
+    </message>
+    <message>
+        <source>Actuator</source>
+        <translation>Aktuator</translation>
+    </message>
+    <message>
+        <source>Fig. 8 — diagonal length d(θ), (2)</source>
+        <translation>Sl. 8 — dužina dijagonale d(θ), (2)</translation>
+    </message>
+    <message>
+        <source>Fig. 9 — passive angle φ(θ)</source>
+        <translation>Sl. 9 — pasivni ugao φ(θ)</translation>
+    </message>
+    <message>
+        <source>Fig. 10 — transmission angle μ(θ)</source>
+        <translation>Sl. 10 — ugao prenosa μ(θ)</translation>
+    </message>
+    <message>
+        <source>Fig. 11 — Jacobian J(θ) = ∂d/∂θ, (7)</source>
+        <translation>Sl. 11 — Jakobijan J(θ) = ∂d/∂θ, (7)</translation>
+    </message>
+    <message>
+        <source>Fig. 12 — inverse Jacobian J⁻¹(θ), (8)</source>
+        <translation>Sl. 12 — inverzni Jakobijan J⁻¹(θ), (8)</translation>
+    </message>
+    <message>
+        <source>Fig. 15 — output resolution Δθ = Δd/J</source>
+        <translation>Sl. 15 — rezolucija izlaza Δθ = Δd/J</translation>
+    </message>
+    <message>
+        <source>Fig. 16 — output speed θ̇ = ḋ_max/J</source>
+        <translation>Sl. 16 — brzina izlaza θ̇ = ḋ_max/J</translation>
+    </message>
+    <message>
+        <source>Fig. 17 — output torque T = J·F_max, (13)</source>
+        <translation>Sl. 17 — izlazni moment T = J·F_max, (13)</translation>
+    </message>
+    <message>
+        <source>a = %1 mm, k = %2, θ %3°…%4°; family at the same a</source>
+        <translation>a = %1 mm, k = %2, θ %3°…%4°; familija pri istom a</translation>
+    </message>
+    <message>
+        <source>diagonal OA from the base OB</source>
+        <translation>dijagonala OA u odnosu na osnovicu OB</translation>
+    </message>
+    <message>
+        <source>at A, diagonal to crank; J = a·sin μ</source>
+        <translation>u tački A, između dijagonale i poluge; J = a·sin μ</translation>
+    </message>
+    <message>
+        <source>ḋ = J·θ̇; a = %1 mm, k = %2</source>
+        <translation>ḋ = J·θ̇; a = %1 mm, k = %2</translation>
+    </message>
+    <message>
+        <source>θ̇ = J⁻¹·ḋ; J⁻¹ → ∞ at θ = ±90°</source>
+        <translation>θ̇ = J⁻¹·ḋ; J⁻¹ → ∞ pri θ = ±90°</translation>
+    </message>
+    <message>
+        <source>one motor step Δd = %1 mm</source>
+        <translation>jedan korak motora Δd = %1 mm</translation>
+    </message>
+    <message>
+        <source>at the maximum linear speed ḋ_max = %1 mm/s</source>
+        <translation>pri najvećoj linijskoj brzini ḋ_max = %1 mm/s</translation>
+    </message>
+    <message>
+        <source>F_max = %1 N; motor torque T_M = %2 N·m at any θ (15)</source>
+        <translation>F_max = %1 N; moment motora T_M = %2 N·m za svako θ (15)</translation>
+    </message>
+    <message>
+        <source>θ (°)</source>
+        <translation>θ (°)</translation>
+    </message>
+    <message>
+        <source>dθ/dt</source>
+        <translation>dθ/dt</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>this design (k = %1)</source>
+        <translation>ova konstrukcija (k = %1)</translation>
+    </message>
+    <message>
+        <source>beyond its θ range</source>
+        <translation>izvan njenog opsega θ</translation>
+    </message>
+    <message>
+        <source>k = %1</source>
+        <translation>k = %1</translation>
+    </message>
+    <message>
+        <source>recommended %1°…%2° (J ≥ %3 % of best)</source>
+        <translation>preporučeno %1°…%2° (J ≥ %3 % od najboljeg)</translation>
+    </message>
+    <message>
+        <source>steep region</source>
+        <translation>strma oblast</translation>
+    </message>
+    <message>
+        <source>μ &lt; %1°: force almost along the crank</source>
+        <translation>μ &lt; %1°: sila deluje skoro duž poluge</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::PictureDialog</name>
+    <message>
+        <source>PNG pictures (*.png)</source>
+        <translation>PNG slike (*.png)</translation>
+    </message>
+    <message>
+        <source>SVG drawings (*.svg)</source>
+        <translation>SVG crteži (*.svg)</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>PDF dokumenti (*.pdf)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels is not a picture size: each side must be from %3 to %4.</source>
+        <translation>%1 × %2 piksela nije veličina slike: svaka stranica mora biti od %3 do %4.</translation>
+    </message>
+    <message>
+        <source>%1 dpi is not a resolution: it must be from %2 to %3 dpi.</source>
+        <translation>%1 dpi nije rezolucija: mora biti od %2 do %3 dpi.</translation>
+    </message>
+    <message>
+        <source>The %1 picture could not be drawn.</source>
+        <translation>Slika %1 nije mogla da se nacrta.</translation>
+    </message>
+    <message>
+        <source>There is not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Nema dovoljno memorije za sliku od %1 × %2 piksela.</translation>
+    </message>
+    <message>
+        <source>Drawn by %1</source>
+        <translation>Nacrtano u programu %1</translation>
+    </message>
+    <message>
+        <source>“%1” is not a picture format: the file name must end in .png, .svg or .pdf.</source>
+        <translation>„%1“ nije format slike: ime datoteke mora da se završava sa .png, .svg ili .pdf.</translation>
+    </message>
+    <message>
+        <source>There is no plot to draw.</source>
+        <translation>Nema grafikona za crtanje.</translation>
+    </message>
+    <message>
+        <source>“%1” could not be opened for writing: %2.</source>
+        <translation>„%1“ nije moguće otvoriti za upis: %2.</translation>
+    </message>
+    <message>
+        <source>The picture could not be written to “%1”: %2.</source>
+        <translation>Sliku nije moguće upisati u „%1“: %2.</translation>
+    </message>
+    <message>
+        <source>“%1” could not be saved: %2.</source>
+        <translation>„%1“ nije moguće sačuvati: %2.</translation>
+    </message>
+    <message>
+        <source>Save picture…</source>
+        <translation>Sačuvaj sliku…</translation>
+    </message>
+    <message>
+        <source>Save this plot as a PNG picture, an SVG or a PDF drawing</source>
+        <translation>Sačuvaj ovaj grafikon kao PNG sliku ili kao SVG ili PDF crtež</translation>
+    </message>
+    <message>
+        <source>Save Picture</source>
+        <translation>Čuvanje slike</translation>
+    </message>
+    <message>
+        <source>Picture Size</source>
+        <translation>Veličina slike</translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <source>As shown — %1</source>
+        <translation>Kao na ekranu — %1</translation>
+    </message>
+    <message>
+        <source>Twice as shown — %1</source>
+        <translation>Dvostruko veće — %1</translation>
+    </message>
+    <message>
+        <source>Full HD — %1</source>
+        <translation>Full HD — %1</translation>
+    </message>
+    <message>
+        <source>4K UHD — %1</source>
+        <translation>4K UHD — %1</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Proizvoljna</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>%1 dpi</source>
+        <translation>%1 dpi</translation>
+    </message>
+    <message>
+        <source>An SVG drawing is scalable: its size is in CSS pixels.</source>
+        <translation>SVG crtež je skalabilan: veličina mu je u CSS pikselima.</translation>
+    </message>
+    <message>
+        <source>The PDF&apos;s page is the size in pixels at this resolution.</source>
+        <translation>Stranica PDF-a ima veličinu u pikselima pri ovoj rezoluciji.</translation>
+    </message>
+    <message>
+        <source>Stored in the PNG: the size it prints at.</source>
+        <translation>Upisuje se u PNG i određuje veličinu pri štampi.</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>&amp;Veličina:</translation>
+    </message>
+    <message>
+        <source>&amp;Width:</source>
+        <translation>&amp;Širina:</translation>
+    </message>
+    <message>
+        <source>&amp;Height:</source>
+        <translation>V&amp;isina:</translation>
+    </message>
+    <message>
+        <source>&amp;Resolution:</source>
+        <translation>&amp;Rezolucija:</translation>
+    </message>
+    <message>
+        <source>%1 × %2 mm</source>
+        <translation>%1 × %2 mm</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels</source>
+        <translation>%1 × %2 piksela</translation>
+    </message>
+    <message>
+        <source>An SVG drawing of %1 (CSS pixels), lines and text as vectors.</source>
+        <translation>SVG crtež od %1 (CSS pikseli), linije i tekst kao vektori.</translation>
+    </message>
+    <message>
+        <source>A PDF page of %1: %2 at %3 dpi, lines and text as vectors.</source>
+        <translation>PDF stranica od %1: %2 pri %3 dpi, linije i tekst kao vektori.</translation>
+    </message>
+    <message>
+        <source>A PNG picture of %1; it prints at %2 at %3 dpi.</source>
+        <translation>PNG slika od %1; štampa se kao %2 pri %3 dpi.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Renderer3D</name>
+    <message>
+        <source>No OpenGL context is current.</source>
+        <translation>Nema tekućeg OpenGL konteksta.</translation>
+    </message>
+    <message>
+        <source>The driver offers OpenGL %1%2.%3; the 3D view needs OpenGL 3.3.</source>
+        <translation>Drajver nudi OpenGL %1%2.%3, a 3D prikazu je potreban OpenGL 3.3.</translation>
+    </message>
+    <message>
+        <source>The OpenGL 3.3 core functions could not be resolved.</source>
+        <translation>Funkcije jezgra OpenGL 3.3 nisu mogle da se učitaju.</translation>
+    </message>
+    <message>
+        <source>OpenGL %1.%2 (%3), %4</source>
+        <translation>OpenGL %1.%2 (%3), %4</translation>
+    </message>
+    <message>
+        <source>The 3D view&apos;s shaders could not be built: %1</source>
+        <translation>Šejderi 3D prikaza nisu mogli da se izgrade: %1</translation>
+    </message>
+    <message>
+        <source>A picture of %1 × %2 pixels is not possible: the largest is %3 × %3.</source>
+        <translation>Slika od %1 × %2 piksela nije moguća: najveća je %3 × %3.</translation>
+    </message>
+    <message>
+        <source>The OpenGL driver could not make a framebuffer of %1 × %2 pixels.</source>
+        <translation>OpenGL drajver nije mogao da napravi bafer kadra od %1 × %2 piksela.</translation>
+    </message>
+    <message>
+        <source>No OpenGL context could be created on the “%1” display platform.</source>
+        <translation>OpenGL kontekst nije mogao da se napravi na platformi prikaza „%1“.</translation>
+    </message>
+    <message>
+        <source>The driver offers OpenGL %1%2.%3 only.</source>
+        <translation>Drajver nudi samo OpenGL %1%2.%3.</translation>
+    </message>
+    <message>
+        <source>The OpenGL context could not be made current on an offscreen surface.</source>
+        <translation>OpenGL kontekst nije mogao da postane tekući na površini van ekrana.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::SetParameterCommand</name>
+    <message>
+        <source>Change %1</source>
+        <translation>Promeni %1</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::ValuesTable</name>
+    <message>
+        <source>Pose</source>
+        <translation>Položaj</translation>
+    </message>
+    <message>
+        <source>Jacobian</source>
+        <translation>Jakobijan</translation>
+    </message>
+    <message>
+        <source>Derived</source>
+        <translation>Izvedene veličine</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nema</translation>
+    </message>
+    <message>
+        <source>inverse</source>
+        <translation>inverzni</translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation>direktni</translation>
+    </message>
+    <message>
+        <source>combined</source>
+        <translation>kombinovani</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>Veličina</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Vrednost</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Opis</translation>
+    </message>
+    <message>
+        <source>Singularity</source>
+        <translation>Singularitet</translation>
+    </message>
+    <message>
+        <source>class</source>
+        <translation>klasa</translation>
+    </message>
+    <message>
+        <source>none, inverse, direct or combined</source>
+        <translation>nema, inverzni, direktni ili kombinovani</translation>
+    </message>
+    <message>
+        <source>%1 (margin %2)</source>
+        <translation>%1 (udaljenost %2)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VariablePanel</name>
+    <message>
+        <source>input, actuated</source>
+        <translation>ulaz, sa pogonom</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>izlaz</translation>
+    </message>
+    <message>
+        <source>Drag to set %1 (%2)</source>
+        <translation>Prevucite da biste zadali %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::View3DPanel</name>
+    <message>
+        <source>Fit</source>
+        <translation>Uklopi</translation>
+    </message>
+    <message>
+        <source>Show the whole mechanism (F, or double-click)</source>
+        <translation>Prikaži ceo mehanizam (F ili dvostruki klik)</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Spreda</translation>
+    </message>
+    <message>
+        <source>Look at the mechanism plane, as the 2D view does (1)</source>
+        <translation>Pogled na ravan mehanizma, kao u 2D prikazu (1)</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Odozgo</translation>
+    </message>
+    <message>
+        <source>Look down from above (7)</source>
+        <translation>Pogled odozgo nadole (7)</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Sa strane</translation>
+    </message>
+    <message>
+        <source>Look from the right (3)</source>
+        <translation>Pogled zdesna (3)</translation>
+    </message>
+    <message>
+        <source>Isometric</source>
+        <translation>Izometrija</translation>
+    </message>
+    <message>
+        <source>Look from the front, right and above at once</source>
+        <translation>Pogled istovremeno spreda, zdesna i odozgo</translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Perspektiva</translation>
+    </message>
+    <message>
+        <source>Perspective when on, orthographic (true to scale) when off (5)</source>
+        <translation>Uključeno — perspektiva, isključeno — ortogonalna projekcija (u razmeri) (5)</translation>
+    </message>
+    <message>
+        <source>Save picture…</source>
+        <translation>Sačuvaj sliku…</translation>
+    </message>
+    <message>
+        <source>Save the 3D view as a PNG picture at twice its size</source>
+        <translation>Sačuvaj 3D prikaz kao PNG sliku dvostruke veličine</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels is not a picture size: each side must be from 16 to 8000.</source>
+        <translation>%1 × %2 piksela nije ispravna veličina slike: svaka stranica mora biti od 16 do 8000.</translation>
+    </message>
+    <message>
+        <source>The picture could not be rendered. %1</source>
+        <translation>Slika nije mogla da se iscrta. %1</translation>
+    </message>
+    <message>
+        <source>“%1” could not be opened for writing: %2</source>
+        <translation>Datoteka „%1“ nije mogla da se otvori za upis: %2</translation>
+    </message>
+    <message>
+        <source>The picture could not be written to “%1”.</source>
+        <translation>Slika nije mogla da se upiše u „%1“.</translation>
+    </message>
+    <message>
+        <source>“%1” could not be saved: %2</source>
+        <translation>Datoteka „%1“ nije mogla da se sačuva: %2</translation>
+    </message>
+    <message>
+        <source>Save picture</source>
+        <translation>Sačuvaj sliku</translation>
+    </message>
+    <message>
+        <source>PNG pictures (*.png)</source>
+        <translation>PNG slike (*.png)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels</source>
+        <translation>%1 × %2 piksela</translation>
+    </message>
+    <message>
+        <source>%1 (twice the view)</source>
+        <translation>%1 (dvostruko veća od prikaza)</translation>
+    </message>
+    <message>
+        <source>Picture size:</source>
+        <translation>Veličina slike:</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::ViewPicture</name>
+    <message>
+        <source>Save 2D View Picture</source>
+        <translation>Sačuvaj sliku 2D prikaza</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::WorkspaceMapView</name>
+    <message>
+        <source>No mechanism.</source>
+        <translation>Nema mehanizma.</translation>
+    </message>
+    <message>
+        <source>No planar workspace: the outputs of this mechanism are not a point of the plane, so there is no workspace map to show.</source>
+        <translation>Nema ravnog radnog prostora: izlazne koordinate ovog mehanizma nisu tačka ravni, pa nema mape radnog prostora za prikaz.</translation>
+    </message>
+    <message>
+        <source>Workspace map</source>
+        <translation>Mapa radnog prostora</translation>
+    </message>
+    <message>
+        <source>Workspace empty in the design&apos;s working and assembly modes</source>
+        <translation>Radni prostor je prazan u radnom modu i načinu sklapanja ove konstrukcije</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4</source>
+        <translation>Radni prostor %1 · %2 od %3 do %4</translation>
+    </message>
+    <message>
+        <source>κ(J), log scale (colours end at %1)</source>
+        <translation>κ(J), logaritamska skala (boje do %1)</translation>
+    </message>
+    <message>
+        <source>det J (colours clipped at ±%1)</source>
+        <translation>det J (boje ograničene na ±%1)</translation>
+    </message>
+    <message>
+        <source>The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the singularities.</source>
+        <translation>Skala boja se završava na 98. percentilu κ(J) u radnom prostoru, %1; u singularitetima κ → ∞.</translation>
+    </message>
+    <message>
+        <source>The colours are clipped at ±%1, the larger of the 2nd and 98th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
+        <translation>Boje su ograničene na ±%1, veći od 2. i 98. percentila |det J| u radnom prostoru: u singularitetima inverzne kinematike det J → ±∞, u singularitetima direktne kinematike 0.</translation>
+    </message>
+    <message>
+        <source>workspace boundary</source>
+        <translation>granica radnog prostora</translation>
+    </message>
+    <message>
+        <source>: none</source>
+        <translation>: nema</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>inverse singularity</source>
+        <translation>singularitet inverzne kinematike</translation>
+    </message>
+    <message>
+        <source>direct singularity</source>
+        <translation>singularitet direktne kinematike</translation>
+    </message>
+    <message>
+        <source>%1: boundary, %2</source>
+        <translation>%1: granica, %2</translation>
+    </message>
+    <message>
+        <source> (%1%2 %)</source>
+        <translation> (%1%2 %)</translation>
+    </message>
+    <message>
+        <source>&amp;Map:</source>
+        <translation>&amp;Mapa:</translation>
+    </message>
+    <message>
+        <source>condition number κ(J)</source>
+        <translation>broj uslovljenosti κ(J)</translation>
+    </message>
+    <message>
+        <source>computing…</source>
+        <translation>računam…</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::WorkspacePanel</name>
+    <message>
+        <source>Compare workspace with:</source>
+        <translation>Uporedi radni prostor sa:</translation>
+    </message>
+    <message>
+        <source>Pin this design</source>
+        <translation>Zapamti ovu konstrukciju</translation>
+    </message>
+    <message>
+        <source>Keep the current design&apos;s workspace as the comparison, then change the design and see both outlines.</source>
+        <translation>Zadržava radni prostor trenutne konstrukcije za poređenje, pa možete da promenite konstrukciju i vidite obe konture.</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>ničim</translation>
+    </message>
+    <message>
+        <source>pinned: %1</source>
+        <translation>zapamćena: %1</translation>
+    </message>
+    <message>
+        <source>pinned</source>
+        <translation>zapamćena</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::designfile</name>
+    <message>
+        <source>%1 is not valid JSON (%2 at byte %3).</source>
+        <translation>%1 nije ispravan JSON (%2 na bajtu %3).</translation>
+    </message>
+    <message>
+        <source>%1 is not a PKM Studio design file.</source>
+        <translation>%1 nije datoteka konstrukcije programa PKM Studio.</translation>
+    </message>
+    <message>
+        <source>%1 was written by a newer PKM Studio (format version %2; this version reads up to %3).</source>
+        <translation>%1 je zapisan novijom verzijom programa PKM Studio (verzija formata %2; ova verzija čita do %3).</translation>
+    </message>
+    <message>
+        <source>%1 has no valid format version.</source>
+        <translation>%1 nema ispravnu verziju formata.</translation>
+    </message>
+    <message>
+        <source>%1 names an unknown mechanism kind &apos;%2&apos;.</source>
+        <translation>%1 navodi nepoznatu vrstu mehanizma „%2“.</translation>
+    </message>
+    <message>
+        <source>%1: unknown parameter &apos;%2&apos;.</source>
+        <translation>%1: nepoznat parametar „%2“.</translation>
+    </message>
+    <message>
+        <source>%1: parameter &apos;%2&apos; is not a number.</source>
+        <translation>%1: parametar „%2“ nije broj.</translation>
+    </message>
+    <message>
+        <source>%1: parameter &apos;%2&apos; must be a number or one of %3, not &apos;%4&apos;.</source>
+        <translation>%1: parametar „%2“ mora biti broj ili jedna od vrednosti %3, a ne „%4“.</translation>
+    </message>
+    <message>
+        <source>%1: pose value &apos;%2&apos; is not a number.</source>
+        <translation>%1: vrednost položaja „%2“ nije broj.</translation>
+    </message>
+    <message>
+        <source>the pose&apos;s %1 = %2 %4 does not agree with its inputs, which give %3 %4.</source>
+        <translation>vrednost položaja %1 = %2 %4 ne slaže se sa ulaznim koordinatama, koje daju %3 %4.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is neither a preset id (see &apos;pkm list&apos;) nor a design file.</source>
+        <translation>„%1“ nije ni oznaka šablona (videti „pkm list“) ni datoteka konstrukcije.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2.</source>
+        <translation>Nije moguće otvoriti %1: %2.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>Nije moguće upisati %1: %2.</translation>
+    </message>
+    <message>
+        <source>Unknown parameter &apos;%1&apos; (see &apos;pkm show&apos;).</source>
+        <translation>Nepoznat parametar „%1“ (videti „pkm show“).</translation>
+    </message>
+    <message>
+        <source>Unknown pose variable &apos;%1&apos;.</source>
+        <translation>Nepoznata promenljiva položaja „%1“.</translation>
+    </message>
+    <message>
+        <source>Give either the actuated inputs or the outputs of the pose, not both.</source>
+        <translation>Zadajte ili pogonske (ulazne) ili izlazne koordinate položaja, ali ne obe.</translation>
+    </message>
+</context>
+<context>
+    <name>presets</name>
+    <message>
+        <source>Planar five-bar linkage (example)</source>
+        <translation>Ravanski petočlani mehanizam (primer)</translation>
+    </message>
+    <message>
+        <source>Four-bar linkage example (crank-rocker 40/120/100/140 mm)</source>
+        <translation>Primer zglobnog četvorougla (poluga–klackalica 40/120/100/140 mm)</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3a (γ₁ = −5°, γ₂ = +5°)</source>
+        <translation>MOMA, konfiguracija 3a (γ₁ = −5°, γ₂ = +5°)</translation>
+    </message>
+    <message>
+        <source>Configuration of fig. 3a: R₁ = (−100, 0) mm, R₂ = (100, 0) mm, guides turned from the vertical by γ₁ = −5° and γ₂ = +5° (α_i = 270° + γ_i), so they open downwards. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Both legs work with p_i = B_i − √(B_i² − C_i), the platform below the sliders. The document finds no direct singularities in this workspace.</source>
+        <translation>Konfiguracija sa sl. 3a: R₁ = (−100, 0) mm, R₂ = (100, 0) mm, vođice zaokrenute od vertikale za γ₁ = −5° i γ₂ = +5° (α_i = 270° + γ_i), tako da se šire naniže. Spojke l₁ = l₂ = 195 mm, hodovi h = 200 mm (p od 0 do 200 mm, mereno od R_i duž vođice). Obe grane rade sa p_i = B_i − √(B_i² − C_i), platforma je ispod klizača. Dokument ne nalazi singularitete direktne kinematike u ovom radnom prostoru.</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3b (γ₁ = +5°, γ₂ = −5°)</source>
+        <translation>MOMA, konfiguracija 3b (γ₁ = +5°, γ₂ = −5°)</translation>
+    </message>
+    <message>
+        <source>Configuration of fig. 3b: as 3a with the guides turned the other way, γ₁ = +5° and γ₂ = −5°, so they close downwards. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). The document finds no direct singularities in this workspace.</source>
+        <translation>Konfiguracija sa sl. 3b: kao 3a, sa vođicama zaokrenutim na drugu stranu, γ₁ = +5° i γ₂ = −5°, tako da se sužavaju naniže. Spojke l₁ = l₂ = 195 mm, hodovi h = 200 mm (p od 0 do 200 mm, mereno od R_i duž vođice). Dokument ne nalazi singularitete direktne kinematike u ovom radnom prostoru.</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3c (interpreted)</source>
+        <translation>MOMA, konfiguracija 3c (tumačenje)</translation>
+    </message>
+    <message>
+        <source>Interpreted: the document describes 3c in two ways that do not agree (the guides along the axes, or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this preset takes the first. Configuration of fig. 3c: R₁ = (250, 0) mm with α₁ = 180° and R₂ = (0, 250) mm with α₂ = 270°, the guides along the axes towards the corner. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Here both legs take the document&apos;s root p_i = B_i − √…; every inverse singularity lies on x = 195 mm or y = 195 mm (a link perpendicular to its guide), where the document puts them, at the edge of the other assembly mode&apos;s region near (195, 195) mm; the direct singularity needs both slider joints at the origin, beyond the strokes.</source>
+        <translation>Tumačenje: dokument opisuje 3c na dva načina koji se ne slažu (vođice duž osa, ili α = 225°/315° zaokrenute za β matricama (15–16)), a slika nedostaje; ovaj šablon uzima prvi. Konfiguracija sa sl. 3c: R₁ = (250, 0) mm sa α₁ = 180° i R₂ = (0, 250) mm sa α₂ = 270°, vođice duž osa ka uglu. Spojke l₁ = l₂ = 195 mm, hodovi h = 200 mm (p od 0 do 200 mm, mereno od R_i duž vođice). Ovde obe grane uzimaju koren iz dokumenta p_i = B_i − √…; svi singulariteti inverzne kinematike leže na x = 195 mm ili y = 195 mm (spojka upravna na svoju vođicu), gde ih dokument i postavlja, na ivici oblasti drugog načina sklapanja blizu (195, 195) mm; singularitet direktne kinematike zahteva da oba zgloba klizača budu u koordinatnom početku, izvan hodova.</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3d (interpreted)</source>
+        <translation>MOMA, konfiguracija 3d (tumačenje)</translation>
+    </message>
+    <message>
+        <source>Interpreted: the document describes 3d in two ways that do not agree (the guides along the axes, or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this preset takes the first. Configuration of fig. 3d: R₁ = (117, 0) mm with α₁ = 0° and R₂ = (0, 117) mm with α₂ = 90°, the guides along the axes away from the corner, the platform between them near the origin. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Here both legs take the root p_i = B_i + √… that keeps the platform on the corner side of the sliders; the direct singularities (links stretched in line) bound the workspace on the far side.</source>
+        <translation>Tumačenje: dokument opisuje 3d na dva načina koji se ne slažu (vođice duž osa, ili α = 225°/315° zaokrenute za β matricama (15–16)), a slika nedostaje; ovaj šablon uzima prvi. Konfiguracija sa sl. 3d: R₁ = (117, 0) mm sa α₁ = 0° i R₂ = (0, 117) mm sa α₂ = 90°, vođice duž osa u smeru od ugla, platforma između njih blizu koordinatnog početka. Spojke l₁ = l₂ = 195 mm, hodovi h = 200 mm (p od 0 do 200 mm, mereno od R_i duž vođice). Ovde obe grane uzimaju koren p_i = B_i + √… koji drži platformu sa strane ugla u odnosu na klizače; singulariteti direktne kinematike (spojke opružene u liniju) ograničavaju radni prostor sa udaljene strane.</translation>
+    </message>
+    <message>
+        <source>O-X glide prototype (l = 80 mm, s = 20 mm, L = 130 mm)</source>
+        <translation>Prototip mehanizma O-X glide (l = 80 mm, s = 20 mm, L = 130 mm)</translation>
+    </message>
+    <message>
+        <source>The rapid-prototyped O-X glide of the Novi Sad document: rods l = 80 mm, platform width s = 20 mm, transverse guides L = 130 mm (slider positions 0 to 130 mm), working in the extended (O) form. The guide spacing a = 15 mm and the longitudinal travel z = 0 to 150 mm are not given in the document and are chosen for the drawing; they do not change the planar workspace.</source>
+        <translation>Brzo prototipizovani O-X glide mehanizam iz novosadskog dokumenta: štapovi l = 80 mm, širina platforme s = 20 mm, poprečne vođice L = 130 mm (položaji klizača od 0 do 130 mm), rad u opruženom (O) obliku. Rastojanje između vođica a = 15 mm i uzdužni hod z od 0 do 150 mm nisu dati u dokumentu i izabrani su za crtež; oni ne menjaju ravanski radni prostor.</translation>
+    </message>
+    <message>
+        <source>П-joint laboratory prototype (a = 170 mm, k = 0.4)</source>
+        <translation>Laboratorijski prototip P-zgloba (a = 170 mm, k = 0,4)</translation>
+    </message>
+    <message>
+        <source>The laboratory prototype of section 4.2: a = 170 mm, b = 68 mm (k = 0.4), θ = ±60°, driven by the hybrid stepper motor with integrated lead screw of Table 1 (lead 2.54 mm, 0.0127 mm/step, 50 mm/s, 130 N). The screw efficiency 0.4 is an assumption: Table 1 does not give it.</source>
+        <translation>Laboratorijski prototip iz odeljka 4.2: a = 170 mm, b = 68 mm (k = 0,4), θ = ±60°, pokretan hibridnim koračnim motorom sa ugrađenim zavojnim vretenom iz tabele 1 (korak 2,54 mm, 0,0127 mm/korak, 50 mm/s, 130 N). Stepen iskorišćenja vretena 0,4 je pretpostavka: tabela 1 ga ne navodi.</translation>
+    </message>
+    <message>
+        <source>П-joint design study k = 0.3 (a = 1 m)</source>
+        <translation>Projektna studija P-zgloba, k = 0,3 (a = 1 m)</translation>
+    </message>
+    <message>
+        <source>Design study of figures 8–12: a = 1 m, k = 0.3, θ over ±75°, with the stepper motor of Table 1.</source>
+        <translation>Projektna studija sa slika 8–12: a = 1 m, k = 0,3, θ u opsegu ±75°, sa koračnim motorom iz tabele 1.</translation>
+    </message>
+    <message>
+        <source>П-joint design study k = 0.4 (a = 1 m)</source>
+        <translation>Projektna studija P-zgloba, k = 0,4 (a = 1 m)</translation>
+    </message>
+    <message>
+        <source>Design study of figures 8–12: a = 1 m, k = 0.4, θ over ±75°, with the stepper motor of Table 1.</source>
+        <translation>Projektna studija sa slika 8–12: a = 1 m, k = 0,4, θ u opsegu ±75°, sa koračnim motorom iz tabele 1.</translation>
+    </message>
+    <message>
+        <source>П-joint design study k = 0.5 (a = 1 m)</source>
+        <translation>Projektna studija P-zgloba, k = 0,5 (a = 1 m)</translation>
+    </message>
+    <message>
+        <source>Design study of figures 8–12: a = 1 m, k = 0.5, θ over ±75°, with the stepper motor of Table 1.</source>
+        <translation>Projektna studija sa slika 8–12: a = 1 m, k = 0,5, θ u opsegu ±75°, sa koračnim motorom iz tabele 1.</translation>
+    </message>
+    <message>
+        <source>A classroom five-bar chosen for PKM Studio (the mobility document, seed 004, shows the planar five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. Chebyshev&apos;s count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out (B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by the legs stretched or folded in line and, low between A and E, by a direct singularity where BC and CD come in line.</source>
+        <translation>Nastavni petočlani mehanizam izabran za PKM Studio (dokument o pokretljivosti, br. 004, prikazuje ravanski petočlani mehanizam na sl. 1 bez dimenzija). Postolje AE = 100 mm; poluge AB = DE = 80 mm, pogonjene u A i u E, okreću se punim krugom; krajnje spojke BC = CD = 120 mm spajaju se u izlaznoj tački C. Po Čebiševljevoj formuli W = 3·4 − 2·5 = 2: dva ugla poluga θ₁, θ₄ određuju položaj C. Radni modovi „laktovi ka spolja“ (B levo od A→C, D desno od E→C), način sklapanja C iznad BD (levo od B→D). Za C = (50, 150) mm svaka krajnja spojka je skoro upravna na svoju polugu, a krajnje spojke skoro upravne jedna na drugu, pa je κ(J) ≈ 1,11; radni prostor ovih modova ograničen je položajima u kojima su grane opružene ili sklopljene u liniju i, nisko između A i E, singularitetom direktne kinematike gde BC i CD dolaze u istu liniju.</translation>
+    </message>
+    <message>
+        <source>An example crank-rocker chosen for PKM Studio: the four-bar document (seed 004) gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>
+        <translation>Primer mehanizma poluga–klackalica izabran za PKM Studio: dokument o zglobnom četvorouglu (br. 004) ne daje dužine članova, pa ove vrednosti nisu iz dokumenta. Poluga AB = 40 mm, spojka BC = 120 mm, klackalica CD = 100 mm, postolje AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm, a poluga je najkraći član, pa se poluga okreće punim krugom (α od 0° do 360°), a klackalica osciluje; ugao prenosa ostaje između 53° i 110°. Otvorena grana, ω₁ = 10 rad/s, tačka spojke M na sredini BC.</translation>
+    </message>
+</context>
+</TS>
