@@ -1,5 +1,6 @@
 #include "fourbarpanel.h"
 
+#include "designfile.h"
 #include "document.h"
 #include "fourbar.h"
 #include "fourbarplots.h"
@@ -242,6 +243,11 @@ void FourBarPanel::retranslate()
     m_transmissionGroup->setToolTip(tr("The crank drives the rocker well when γ stays between %1° and %2°.")
                                         .arg(limitText(FourBar::poorTransmission),
                                             limitText(180.0 - FourBar::poorTransmission)));
+    // The reason for a refused length came from the core in the old language: ask again.
+    if (!m_linkFailure.isEmpty() && m_mechanism) {
+        if (auto again = designfile::setDisplayParameter(m_mechanism, m_refusedLink, m_refusedValue); !again)
+            m_linkFailure = QString::fromStdString(again.failure().message);
+    }
     showLinkMessage();
     if (!fourbarOf(m_mechanism))
         return;
@@ -274,6 +280,8 @@ bool FourBarPanel::requestLength(const QString &link, double value, bool continu
     if (changed)
         return true;
     m_linkFailure = QString::fromStdString(changed.failure().message);
+    m_refusedLink = link;
+    m_refusedValue = value;
     showLinkMessage();
     showLengths(false); // the controls go back to the design
     emit statusMessage(m_linkFailure, true);

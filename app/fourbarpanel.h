@@ -86,6 +86,8 @@ private:
     QGroupBox *m_transmissionGroup = nullptr;
     QLabel *m_linkMessage = nullptr;
     QString m_linkFailure; ///< the core's reason for the last refused length
+    QString m_refusedLink; ///< that length, asked again for its reason in a new language
+    double m_refusedValue = 0.0;
     QLabel *m_grashof = nullptr;
     QLabel *m_range = nullptr;
     QLabel *m_limit = nullptr;

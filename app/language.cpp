@@ -119,7 +119,9 @@ bool apply(const QString &code)
     text::Hooks hooks;
     hooks.translate = translateHook;
     hooks.decimalPoint = language->locale.decimalPoint().toStdString();
-    hooks.minusSign = language->locale.negativeSign().toStdString();
+    // The minus sign of typography (U+2212) in every language, as the plots' tick labels and
+    // the titles write it: in drawings and sentences "−5°" reads better than "-5°".
+    hooks.minusSign = "\u2212";
     text::install(std::move(hooks));
     // Last: installing sends LanguageChange, and the widgets re-translate with the new locale.
     if (state.qt)

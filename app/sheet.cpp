@@ -1,6 +1,7 @@
 #include "sheet.h"
 
 #include "clireport.h"
+#include "designfile.h"
 #include "fourbar.h"
 #include "oxglide.h"
 #include "pjoint.h"
@@ -83,8 +84,14 @@ QString poseText(const Mechanism &mechanism, const Pose &pose)
                     info.unit.symbol);
     }
     for (const ReportText &word : mechanism.reportText(pose)) {
-        if (word.group == ReportGroup::Pose)
-            parts << utf8(word.name) + QLatin1Char(' ') + coreLabel(word.text);
+        if (word.group != ReportGroup::Pose)
+            continue;
+        // a mode by its symbol, as the window's mode bar shows it: "σ = open"
+        const auto &parameters = mechanism.parameterInfo();
+        const auto info = std::find_if(parameters.cbegin(), parameters.cend(),
+                                       [&word](const ParameterInfo &p) { return p.name == word.name; });
+        parts << (info != parameters.cend() ? coreLabel(info->symbol) : utf8(word.name)) + QStringLiteral(" = ")
+                + coreLabel(word.text);
     }
     return parts.join(QStringLiteral(", "));
 }
@@ -596,8 +603,9 @@ Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source)
 {
     Sheet sheet;
     sheet.design = source.design;
-    sheet.title = source.title;
-    sheet.description = source.description;
+    // a preset's title and description in the sheet's language (a design of one's own as written)
+    sheet.title = designfile::presetText(source.title);
+    sheet.description = designfile::presetText(source.description);
     sheet.kind = std::string(mechanism.kind());
     const MechanismKind *kind = findMechanismKind(mechanism.kind());
     sheet.kindTitle = kind ? coreLabel(kind->title) : utf8(mechanism.kind());

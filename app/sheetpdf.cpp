@@ -156,10 +156,21 @@ private:
         QString left = m_sheet.date;
         if (!m_sheet.version.empty())
             left += QStringLiteral(" · PKM Studio ") + QString::fromStdString(m_sheet.version);
+        const QString right = QCoreApplication::translate("Sheet", "page %1 of %2").arg(m_page).arg(std::max(m_pages, m_page));
         text(foot, small, grey, Qt::AlignLeft | Qt::AlignVCenter, left);
-        text(foot, small, grey, Qt::AlignHCenter | Qt::AlignVCenter, m_sheet.title);
-        text(foot, small, grey, Qt::AlignRight | Qt::AlignVCenter,
-            QCoreApplication::translate("Sheet", "page %1 of %2").arg(m_page).arg(std::max(m_pages, m_page)));
+        text(foot, small, grey, Qt::AlignRight | Qt::AlignVCenter, right);
+        // The title between them: centred on the page where it fits, else in the room left
+        // between the date and the page number, shortened with "…" if it is longer still (a
+        // long title, a longer language).
+        const QFontMetricsF measure = metrics(small);
+        const double gap = mm(4.0);
+        const double leftWidth = measure.horizontalAdvance(left) + gap, rightWidth = measure.horizontalAdvance(right) + gap;
+        const double side = std::max(leftWidth, rightWidth);
+        QRectF middle(foot.left() + side, foot.top(), foot.width() - 2.0 * side, foot.height());
+        if (measure.horizontalAdvance(m_sheet.title) > middle.width())
+            middle = QRectF(foot.left() + leftWidth, foot.top(), foot.width() - leftWidth - rightWidth, foot.height());
+        text(middle, small, grey, Qt::AlignHCenter | Qt::AlignVCenter,
+            measure.elidedText(m_sheet.title, Qt::ElideRight, middle.width()));
     }
 
     void newPage()

@@ -98,12 +98,12 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
     Section &section = parts.workspace;
     section.key = "workspace";
     section.title = QCoreApplication::translate("Sheet", "Workspace");
-    // "branch1 = -1, assembly = +1", a named choice in the current language ("σ = left")
+    // "β₁ = −1, σ = +1" or a named choice in the current language ("σ = open"), as the mode bar
     QStringList modeWords;
     for (const ParameterInfo *info : modes) {
         const auto it = parameters.find(info->name);
         if (it != parameters.end())
-            modeWords << utf8(info->name) + QStringLiteral(" = ")
+            modeWords << coreLabel(info->symbol) + QStringLiteral(" = ")
                     + coreLabel(cli::modeValueText(*info, info->unit.toDisplay(it->second)));
     }
     const QString modeNow = modeWords.join(QStringLiteral(", "));
@@ -178,7 +178,7 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
             QStringList label;
             for (std::size_t i = 0; i < modes.size(); ++i) {
                 const std::string text = cli::modeValueText(*modes[i], mode.values[i]);
-                label << utf8(modes[i]->name) + QStringLiteral(" = ") + coreLabel(text);
+                label << coreLabel(modes[i]->symbol) + QStringLiteral(" = ") + coreLabel(text);
                 Cell cell = numberCell(mode.values[i], 0);
                 cell.shown = coreLabel(text);
                 row.cells.push_back(cell);

@@ -2,6 +2,356 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sr_RS">
 <context>
+    <name>QAbstractSpinBox</name>
+    <message>
+        <source>Step &amp;down</source>
+        <translation>Корак на&amp;доле</translation>
+    </message>
+    <message>
+        <source>&amp;Step up</source>
+        <translation>Корак на&amp;горе</translation>
+    </message>
+    <message>
+        <source>&amp;Select All</source>
+        <translation>&amp;Изабери све</translation>
+    </message>
+</context>
+<context>
+    <name>QDockWidget</name>
+    <message>
+        <source>Close</source>
+        <translation>Затвори</translation>
+    </message>
+    <message>
+        <source>Float</source>
+        <translation>Одвоји</translation>
+    </message>
+    <message>
+        <source>Undocks and re-attaches the dock widget</source>
+        <translation>Одваја панел и враћа га на место</translation>
+    </message>
+    <message>
+        <source>Closes the dock widget</source>
+        <translation>Затвара панел</translation>
+    </message>
+</context>
+<context>
+    <name>QFileDialog</name>
+    <message>
+        <source>Back</source>
+        <translation>Назад</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Датотека</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Отвори</translation>
+    </message>
+    <message>
+        <source>&amp;Open</source>
+        <translation>&amp;Отвори</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Сачувај</translation>
+    </message>
+    <message>
+        <source>Alias</source>
+        <translation>Алијас</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Диск</translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation>Датотеке</translation>
+    </message>
+    <message>
+        <source>Show </source>
+        <translation>Прикажи </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is write protected.
+Do you want to delete it anyway?</source>
+        <translation>„%1“ је заштићена од уписа.
+Да ли ипак желите да је обришете?</translation>
+    </message>
+    <message>
+        <source>Are you sure you want to delete &apos;%1&apos;?</source>
+        <translation>Да ли сигурно желите да обришете „%1“?</translation>
+    </message>
+    <message>
+        <source>List of places and bookmarks</source>
+        <translation>Списак места и обележивача</translation>
+    </message>
+    <message>
+        <source>File &amp;name:</source>
+        <translation>&amp;Име датотеке:</translation>
+    </message>
+    <message>
+        <source>File Folder</source>
+        <translation>Фасцикла</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Обриши</translation>
+    </message>
+    <message>
+        <source>New Folder</source>
+        <translation>Нова фасцикла</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation>Фасцикла</translation>
+    </message>
+    <message>
+        <source>Parent Directory</source>
+        <translation>Надређена фасцикла</translation>
+    </message>
+    <message>
+        <source>&amp;New Folder</source>
+        <translation>&amp;Нова фасцикла</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Уклони</translation>
+    </message>
+    <message>
+        <source>My Computer</source>
+        <translation>Мој рачунар</translation>
+    </message>
+    <message>
+        <source>Look in:</source>
+        <translation>Фасцикла:</translation>
+    </message>
+    <message>
+        <source>Create a New Folder</source>
+        <translation>Направи нову фасциклу</translation>
+    </message>
+    <message>
+        <source>%1 File</source>
+        <translation>%1 датотека</translation>
+    </message>
+    <message>
+        <source>Files of type:</source>
+        <translation>Врста датотека:</translation>
+    </message>
+    <message>
+        <source>Find Directory</source>
+        <translation>Избор фасцикле</translation>
+    </message>
+    <message>
+        <source>Show &amp;hidden files</source>
+        <translation>Прикажи &amp;скривене датотеке</translation>
+    </message>
+    <message>
+        <source>Save As</source>
+        <translation>Сачувај као</translation>
+    </message>
+    <message>
+        <source>%1
+Directory not found.
+Please verify the correct directory name was given.</source>
+        <translation>%1
+Фасцикла није пронађена.
+Проверите да ли је име фасцикле тачно.</translation>
+    </message>
+    <message>
+        <source>Sidebar</source>
+        <translation>Бочна трака</translation>
+    </message>
+    <message>
+        <source>List View</source>
+        <translation>Списак</translation>
+    </message>
+    <message>
+        <source>&amp;Choose</source>
+        <translation>&amp;Изабери</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Обриши</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Све датотеке (*)</translation>
+    </message>
+    <message>
+        <source>All Files (*)</source>
+        <translation>Све датотеке (*)</translation>
+    </message>
+    <message>
+        <source>Directories</source>
+        <translation>Фасцикле</translation>
+    </message>
+    <message>
+        <source>&amp;Rename</source>
+        <translation>&amp;Преименуј</translation>
+    </message>
+    <message>
+        <source>Could not delete directory.</source>
+        <translation>Фасцикла није могла да се обрише.</translation>
+    </message>
+    <message>
+        <source>Directory:</source>
+        <translation>Фасцикла:</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Непознато</translation>
+    </message>
+    <message>
+        <source>%1 already exists.
+Do you want to replace it?</source>
+        <translation>%1 већ постоји.
+Да ли желите да је замените?</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Напред</translation>
+    </message>
+    <message>
+        <source>Go forward</source>
+        <translation>Иди напред</translation>
+    </message>
+    <message>
+        <source>Go to the parent directory</source>
+        <translation>Иди у надређену фасциклу</translation>
+    </message>
+    <message>
+        <source>Recent Places</source>
+        <translation>Недавна места</translation>
+    </message>
+    <message>
+        <source>Go back</source>
+        <translation>Иди назад</translation>
+    </message>
+    <message>
+        <source>Change to detail view mode</source>
+        <translation>Пређи на детаљан приказ</translation>
+    </message>
+    <message>
+        <source>Create New Folder</source>
+        <translation>Направи фасциклу</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Пречица</translation>
+    </message>
+    <message>
+        <source>Detail View</source>
+        <translation>Детаљан приказ</translation>
+    </message>
+    <message>
+        <source>%1
+File not found.
+Please verify the correct file name was given.</source>
+        <translation>%1
+Датотека није пронађена.
+Проверите да ли је име датотеке тачно.</translation>
+    </message>
+    <message>
+        <source>Change to list view mode</source>
+        <translation>Пређи на приказ у облику списка</translation>
+    </message>
+</context>
+<context>
+    <name>QFileSystemModel</name>
+    <message>
+        <source>Kind</source>
+        <translation>Врста</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Име</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Величина</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Тип</translation>
+    </message>
+    <message>
+        <source>My Computer</source>
+        <translation>Мој рачунар</translation>
+    </message>
+    <message>
+        <source>Computer</source>
+        <translation>Рачунар</translation>
+    </message>
+    <message>
+        <source>Invalid filename</source>
+        <translation>Неисправно име датотеке</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The name &quot;%1&quot; cannot be used.&lt;/b&gt;&lt;p&gt;Try using another name, with fewer characters or no punctuation marks.</source>
+        <translation>&lt;b&gt;Име „%1“ не може да се употреби.&lt;/b&gt;&lt;p&gt;Покушајте са другим именом, краћим или без знакова интерпункције.</translation>
+    </message>
+    <message>
+        <source>Date Modified</source>
+        <translation>Измењено</translation>
+    </message>
+</context>
+<context>
+    <name>QGnomeTheme</name>
+    <message>
+        <source>&amp;OK</source>
+        <translation>&amp;У реду</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Сачувај</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Затвори</translation>
+    </message>
+    <message>
+        <source>Close without Saving</source>
+        <translation>Затвори без чувања</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Откажи</translation>
+    </message>
+</context>
+<context>
+    <name>QLineEdit</name>
+    <message>
+        <source>Cu&amp;t</source>
+        <translation>Исе&amp;ци</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Копирај</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Понови</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Опозови</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>&amp;Налепи</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Обриши</translation>
+    </message>
+    <message>
+        <source>Select All</source>
+        <translation>Изабери све</translation>
+    </message>
+</context>
+<context>
     <name>QPlatformTheme</name>
     <message>
         <source>OK</source>
@@ -74,6 +424,107 @@
     <message>
         <source>Restore Defaults</source>
         <translation>Врати подразумевано</translation>
+    </message>
+</context>
+<context>
+    <name>QScrollBar</name>
+    <message>
+        <source>Top</source>
+        <translation>На врх</translation>
+    </message>
+    <message>
+        <source>Scroll down</source>
+        <translation>Помери надоле</translation>
+    </message>
+    <message>
+        <source>Scroll here</source>
+        <translation>Помери овде</translation>
+    </message>
+    <message>
+        <source>Scroll left</source>
+        <translation>Помери улево</translation>
+    </message>
+    <message>
+        <source>Bottom</source>
+        <translation>На дно</translation>
+    </message>
+    <message>
+        <source>Page up</source>
+        <translation>Страна нагоре</translation>
+    </message>
+    <message>
+        <source>Page right</source>
+        <translation>Страна удесно</translation>
+    </message>
+    <message>
+        <source>Scroll up</source>
+        <translation>Помери нагоре</translation>
+    </message>
+    <message>
+        <source>Scroll right</source>
+        <translation>Помери удесно</translation>
+    </message>
+    <message>
+        <source>Left edge</source>
+        <translation>До леве ивице</translation>
+    </message>
+    <message>
+        <source>Page down</source>
+        <translation>Страна надоле</translation>
+    </message>
+    <message>
+        <source>Page left</source>
+        <translation>Страна улево</translation>
+    </message>
+    <message>
+        <source>Right edge</source>
+        <translation>До десне ивице</translation>
+    </message>
+</context>
+<context>
+    <name>QTabBar</name>
+    <message>
+        <source>Scroll Left</source>
+        <translation>Помери улево</translation>
+    </message>
+    <message>
+        <source>Scroll Right</source>
+        <translation>Помери удесно</translation>
+    </message>
+</context>
+<context>
+    <name>QWidgetTextControl</name>
+    <message>
+        <source>Cu&amp;t</source>
+        <translation>Исе&amp;ци</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Копирај</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Понови</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Опозови</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>&amp;Налепи</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Обриши</translation>
+    </message>
+    <message>
+        <source>Select All</source>
+        <translation>Изабери све</translation>
+    </message>
+    <message>
+        <source>Copy &amp;Link Location</source>
+        <translation>Копирај &amp;адресу везе</translation>
     </message>
 </context>
 <context>
@@ -408,15 +859,15 @@
     </message>
     <message>
         <source>double-crank</source>
-        <translation>двополужни</translation>
+        <translation>двострука полуга</translation>
     </message>
     <message>
         <source>double-rocker</source>
-        <translation>двоклацкални</translation>
+        <translation>двострука клацкалица</translation>
     </message>
     <message>
         <source>triple-rocker (non-Grashof)</source>
-        <translation>трострука клацкалица (није Грасхоф)</translation>
+        <translation>трострука клацкалица (није по Грасхофу)</translation>
     </message>
     <message>
         <source>change-point</source>
@@ -1279,15 +1730,15 @@
     </message>
     <message>
         <source>double-crank</source>
-        <translation>двополужни</translation>
+        <translation>двострука полуга</translation>
     </message>
     <message>
         <source>double-rocker</source>
-        <translation>двоклацкални</translation>
+        <translation>двострука клацкалица</translation>
     </message>
     <message>
         <source>triple-rocker</source>
-        <translation>троклацкални</translation>
+        <translation>трострука клацкалица</translation>
     </message>
     <message>
         <source>change-point</source>
@@ -2742,16 +3193,20 @@
         <translation>између %1 и %2</translation>
     </message>
     <message>
-        <source>%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.</source>
-        <translation>%1 (%2): %3 %4. Тастери ↑/↓ или точкић миша мењају вредност у корацима од %5.</translation>
-    </message>
-    <message>
         <source>The last valid design is kept.</source>
         <translation>Задржава се последња исправна конструкција.</translation>
     </message>
     <message>
         <source>%1 (%2): &apos;%3&apos; is not a number.</source>
         <translation>%1 (%2): „%3“ није број.</translation>
+    </message>
+    <message>
+        <source>%1: %2. Up/Down or the mouse wheel step by %3.</source>
+        <translation>%1: %2. Тастери ↑/↓ или точкић миша мењају вредност у корацима од %3.</translation>
+    </message>
+    <message>
+        <source>Name in design files and on the command line: %1</source>
+        <translation>Име у датотекама конструкција и у командној линији: %1</translation>
     </message>
 </context>
 <context>
@@ -2887,7 +3342,7 @@
     </message>
     <message>
         <source>the ground AD is the shortest link: the crank and the rocker both turn fully (drag link).</source>
-        <translation>постоље AD је најкраћи члан: и полуга и клацкалица окрећу се пуним кругом (двополужни механизам).</translation>
+        <translation>постоље AD је најкраћи члан: и полуга и клацкалица окрећу се пуним кругом (двострука полуга).</translation>
     </message>
     <message>
         <source>the coupler BC is the shortest link: the crank and the rocker only swing.</source>
@@ -2951,15 +3406,15 @@
     </message>
     <message>
         <source>Double-crank</source>
-        <translation>Двополужни механизам</translation>
+        <translation>Двострука полуга</translation>
     </message>
     <message>
         <source>Double-rocker</source>
-        <translation>Двоклацкални механизам</translation>
+        <translation>Двострука клацкалица</translation>
     </message>
     <message>
         <source>Triple-rocker</source>
-        <translation>Троклацкални механизам</translation>
+        <translation>Трострука клацкалица</translation>
     </message>
     <message>
         <source>Change-point</source>
@@ -3010,7 +3465,7 @@
     </message>
     <message>
         <source>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 branch</source>
-        <translation>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 облик</translation>
+        <translation>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 грана</translation>
     </message>
     <message>
         <source>Fig. 4 — rocker angle δ(α)</source>
@@ -3095,12 +3550,12 @@
     <message>
         <source>crossed</source>
         <comment>branch</comment>
-        <translation>укрштени</translation>
+        <translation>укрштена</translation>
     </message>
     <message>
         <source>open</source>
         <comment>branch</comment>
-        <translation>отворени</translation>
+        <translation>отворена</translation>
     </message>
 </context>
 <context>

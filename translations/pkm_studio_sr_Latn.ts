@@ -2,6 +2,356 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sr_Latn_RS">
 <context>
+    <name>QAbstractSpinBox</name>
+    <message>
+        <source>Step &amp;down</source>
+        <translation>Korak na&amp;dole</translation>
+    </message>
+    <message>
+        <source>&amp;Step up</source>
+        <translation>Korak na&amp;gore</translation>
+    </message>
+    <message>
+        <source>&amp;Select All</source>
+        <translation>&amp;Izaberi sve</translation>
+    </message>
+</context>
+<context>
+    <name>QDockWidget</name>
+    <message>
+        <source>Close</source>
+        <translation>Zatvori</translation>
+    </message>
+    <message>
+        <source>Float</source>
+        <translation>Odvoji</translation>
+    </message>
+    <message>
+        <source>Undocks and re-attaches the dock widget</source>
+        <translation>Odvaja panel i vraća ga na mesto</translation>
+    </message>
+    <message>
+        <source>Closes the dock widget</source>
+        <translation>Zatvara panel</translation>
+    </message>
+</context>
+<context>
+    <name>QFileDialog</name>
+    <message>
+        <source>Back</source>
+        <translation>Nazad</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datoteka</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Otvori</translation>
+    </message>
+    <message>
+        <source>&amp;Open</source>
+        <translation>&amp;Otvori</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Sačuvaj</translation>
+    </message>
+    <message>
+        <source>Alias</source>
+        <translation>Alijas</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Disk</translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation>Datoteke</translation>
+    </message>
+    <message>
+        <source>Show </source>
+        <translation>Prikaži </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is write protected.
+Do you want to delete it anyway?</source>
+        <translation>„%1“ je zaštićena od upisa.
+Da li ipak želite da je obrišete?</translation>
+    </message>
+    <message>
+        <source>Are you sure you want to delete &apos;%1&apos;?</source>
+        <translation>Da li sigurno želite da obrišete „%1“?</translation>
+    </message>
+    <message>
+        <source>List of places and bookmarks</source>
+        <translation>Spisak mesta i obeleživača</translation>
+    </message>
+    <message>
+        <source>File &amp;name:</source>
+        <translation>&amp;Ime datoteke:</translation>
+    </message>
+    <message>
+        <source>File Folder</source>
+        <translation>Fascikla</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Obriši</translation>
+    </message>
+    <message>
+        <source>New Folder</source>
+        <translation>Nova fascikla</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation>Fascikla</translation>
+    </message>
+    <message>
+        <source>Parent Directory</source>
+        <translation>Nadređena fascikla</translation>
+    </message>
+    <message>
+        <source>&amp;New Folder</source>
+        <translation>&amp;Nova fascikla</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Ukloni</translation>
+    </message>
+    <message>
+        <source>My Computer</source>
+        <translation>Moj računar</translation>
+    </message>
+    <message>
+        <source>Look in:</source>
+        <translation>Fascikla:</translation>
+    </message>
+    <message>
+        <source>Create a New Folder</source>
+        <translation>Napravi novu fasciklu</translation>
+    </message>
+    <message>
+        <source>%1 File</source>
+        <translation>%1 datoteka</translation>
+    </message>
+    <message>
+        <source>Files of type:</source>
+        <translation>Vrsta datoteka:</translation>
+    </message>
+    <message>
+        <source>Find Directory</source>
+        <translation>Izbor fascikle</translation>
+    </message>
+    <message>
+        <source>Show &amp;hidden files</source>
+        <translation>Prikaži &amp;skrivene datoteke</translation>
+    </message>
+    <message>
+        <source>Save As</source>
+        <translation>Sačuvaj kao</translation>
+    </message>
+    <message>
+        <source>%1
+Directory not found.
+Please verify the correct directory name was given.</source>
+        <translation>%1
+Fascikla nije pronađena.
+Proverite da li je ime fascikle tačno.</translation>
+    </message>
+    <message>
+        <source>Sidebar</source>
+        <translation>Bočna traka</translation>
+    </message>
+    <message>
+        <source>List View</source>
+        <translation>Spisak</translation>
+    </message>
+    <message>
+        <source>&amp;Choose</source>
+        <translation>&amp;Izaberi</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Obriši</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Sve datoteke (*)</translation>
+    </message>
+    <message>
+        <source>All Files (*)</source>
+        <translation>Sve datoteke (*)</translation>
+    </message>
+    <message>
+        <source>Directories</source>
+        <translation>Fascikle</translation>
+    </message>
+    <message>
+        <source>&amp;Rename</source>
+        <translation>&amp;Preimenuj</translation>
+    </message>
+    <message>
+        <source>Could not delete directory.</source>
+        <translation>Fascikla nije mogla da se obriše.</translation>
+    </message>
+    <message>
+        <source>Directory:</source>
+        <translation>Fascikla:</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Nepoznato</translation>
+    </message>
+    <message>
+        <source>%1 already exists.
+Do you want to replace it?</source>
+        <translation>%1 već postoji.
+Da li želite da je zamenite?</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Napred</translation>
+    </message>
+    <message>
+        <source>Go forward</source>
+        <translation>Idi napred</translation>
+    </message>
+    <message>
+        <source>Go to the parent directory</source>
+        <translation>Idi u nadređenu fasciklu</translation>
+    </message>
+    <message>
+        <source>Recent Places</source>
+        <translation>Nedavna mesta</translation>
+    </message>
+    <message>
+        <source>Go back</source>
+        <translation>Idi nazad</translation>
+    </message>
+    <message>
+        <source>Change to detail view mode</source>
+        <translation>Pređi na detaljan prikaz</translation>
+    </message>
+    <message>
+        <source>Create New Folder</source>
+        <translation>Napravi fasciklu</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Prečica</translation>
+    </message>
+    <message>
+        <source>Detail View</source>
+        <translation>Detaljan prikaz</translation>
+    </message>
+    <message>
+        <source>%1
+File not found.
+Please verify the correct file name was given.</source>
+        <translation>%1
+Datoteka nije pronađena.
+Proverite da li je ime datoteke tačno.</translation>
+    </message>
+    <message>
+        <source>Change to list view mode</source>
+        <translation>Pređi na prikaz u obliku spiska</translation>
+    </message>
+</context>
+<context>
+    <name>QFileSystemModel</name>
+    <message>
+        <source>Kind</source>
+        <translation>Vrsta</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Ime</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Veličina</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tip</translation>
+    </message>
+    <message>
+        <source>My Computer</source>
+        <translation>Moj računar</translation>
+    </message>
+    <message>
+        <source>Computer</source>
+        <translation>Računar</translation>
+    </message>
+    <message>
+        <source>Invalid filename</source>
+        <translation>Neispravno ime datoteke</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The name &quot;%1&quot; cannot be used.&lt;/b&gt;&lt;p&gt;Try using another name, with fewer characters or no punctuation marks.</source>
+        <translation>&lt;b&gt;Ime „%1“ ne može da se upotrebi.&lt;/b&gt;&lt;p&gt;Pokušajte sa drugim imenom, kraćim ili bez znakova interpunkcije.</translation>
+    </message>
+    <message>
+        <source>Date Modified</source>
+        <translation>Izmenjeno</translation>
+    </message>
+</context>
+<context>
+    <name>QGnomeTheme</name>
+    <message>
+        <source>&amp;OK</source>
+        <translation>&amp;U redu</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Sačuvaj</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Zatvori</translation>
+    </message>
+    <message>
+        <source>Close without Saving</source>
+        <translation>Zatvori bez čuvanja</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Otkaži</translation>
+    </message>
+</context>
+<context>
+    <name>QLineEdit</name>
+    <message>
+        <source>Cu&amp;t</source>
+        <translation>Ise&amp;ci</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopiraj</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Ponovi</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Opozovi</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>&amp;Nalepi</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Obriši</translation>
+    </message>
+    <message>
+        <source>Select All</source>
+        <translation>Izaberi sve</translation>
+    </message>
+</context>
+<context>
     <name>QPlatformTheme</name>
     <message>
         <source>OK</source>
@@ -74,6 +424,107 @@
     <message>
         <source>Restore Defaults</source>
         <translation>Vrati podrazumevano</translation>
+    </message>
+</context>
+<context>
+    <name>QScrollBar</name>
+    <message>
+        <source>Top</source>
+        <translation>Na vrh</translation>
+    </message>
+    <message>
+        <source>Scroll down</source>
+        <translation>Pomeri nadole</translation>
+    </message>
+    <message>
+        <source>Scroll here</source>
+        <translation>Pomeri ovde</translation>
+    </message>
+    <message>
+        <source>Scroll left</source>
+        <translation>Pomeri ulevo</translation>
+    </message>
+    <message>
+        <source>Bottom</source>
+        <translation>Na dno</translation>
+    </message>
+    <message>
+        <source>Page up</source>
+        <translation>Strana nagore</translation>
+    </message>
+    <message>
+        <source>Page right</source>
+        <translation>Strana udesno</translation>
+    </message>
+    <message>
+        <source>Scroll up</source>
+        <translation>Pomeri nagore</translation>
+    </message>
+    <message>
+        <source>Scroll right</source>
+        <translation>Pomeri udesno</translation>
+    </message>
+    <message>
+        <source>Left edge</source>
+        <translation>Do leve ivice</translation>
+    </message>
+    <message>
+        <source>Page down</source>
+        <translation>Strana nadole</translation>
+    </message>
+    <message>
+        <source>Page left</source>
+        <translation>Strana ulevo</translation>
+    </message>
+    <message>
+        <source>Right edge</source>
+        <translation>Do desne ivice</translation>
+    </message>
+</context>
+<context>
+    <name>QTabBar</name>
+    <message>
+        <source>Scroll Left</source>
+        <translation>Pomeri ulevo</translation>
+    </message>
+    <message>
+        <source>Scroll Right</source>
+        <translation>Pomeri udesno</translation>
+    </message>
+</context>
+<context>
+    <name>QWidgetTextControl</name>
+    <message>
+        <source>Cu&amp;t</source>
+        <translation>Ise&amp;ci</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopiraj</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Ponovi</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Opozovi</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>&amp;Nalepi</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Obriši</translation>
+    </message>
+    <message>
+        <source>Select All</source>
+        <translation>Izaberi sve</translation>
+    </message>
+    <message>
+        <source>Copy &amp;Link Location</source>
+        <translation>Kopiraj &amp;adresu veze</translation>
     </message>
 </context>
 <context>
@@ -408,15 +859,15 @@
     </message>
     <message>
         <source>double-crank</source>
-        <translation>dvopolužni</translation>
+        <translation>dvostruka poluga</translation>
     </message>
     <message>
         <source>double-rocker</source>
-        <translation>dvoklackalni</translation>
+        <translation>dvostruka klackalica</translation>
     </message>
     <message>
         <source>triple-rocker (non-Grashof)</source>
-        <translation>trostruka klackalica (nije Grashof)</translation>
+        <translation>trostruka klackalica (nije po Grashofu)</translation>
     </message>
     <message>
         <source>change-point</source>
@@ -1279,15 +1730,15 @@
     </message>
     <message>
         <source>double-crank</source>
-        <translation>dvopolužni</translation>
+        <translation>dvostruka poluga</translation>
     </message>
     <message>
         <source>double-rocker</source>
-        <translation>dvoklackalni</translation>
+        <translation>dvostruka klackalica</translation>
     </message>
     <message>
         <source>triple-rocker</source>
-        <translation>troklackalni</translation>
+        <translation>trostruka klackalica</translation>
     </message>
     <message>
         <source>change-point</source>
@@ -2742,16 +3193,20 @@
         <translation>između %1 i %2</translation>
     </message>
     <message>
-        <source>%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.</source>
-        <translation>%1 (%2): %3 %4. Tasteri ↑/↓ ili točkić miša menjaju vrednost u koracima od %5.</translation>
-    </message>
-    <message>
         <source>The last valid design is kept.</source>
         <translation>Zadržava se poslednja ispravna konstrukcija.</translation>
     </message>
     <message>
         <source>%1 (%2): &apos;%3&apos; is not a number.</source>
         <translation>%1 (%2): „%3“ nije broj.</translation>
+    </message>
+    <message>
+        <source>%1: %2. Up/Down or the mouse wheel step by %3.</source>
+        <translation>%1: %2. Tasteri ↑/↓ ili točkić miša menjaju vrednost u koracima od %3.</translation>
+    </message>
+    <message>
+        <source>Name in design files and on the command line: %1</source>
+        <translation>Ime u datotekama konstrukcija i u komandnoj liniji: %1</translation>
     </message>
 </context>
 <context>
@@ -2887,7 +3342,7 @@
     </message>
     <message>
         <source>the ground AD is the shortest link: the crank and the rocker both turn fully (drag link).</source>
-        <translation>postolje AD je najkraći član: i poluga i klackalica okreću se punim krugom (dvopolužni mehanizam).</translation>
+        <translation>postolje AD je najkraći član: i poluga i klackalica okreću se punim krugom (dvostruka poluga).</translation>
     </message>
     <message>
         <source>the coupler BC is the shortest link: the crank and the rocker only swing.</source>
@@ -2951,15 +3406,15 @@
     </message>
     <message>
         <source>Double-crank</source>
-        <translation>Dvopolužni mehanizam</translation>
+        <translation>Dvostruka poluga</translation>
     </message>
     <message>
         <source>Double-rocker</source>
-        <translation>Dvoklackalni mehanizam</translation>
+        <translation>Dvostruka klackalica</translation>
     </message>
     <message>
         <source>Triple-rocker</source>
-        <translation>Troklackalni mehanizam</translation>
+        <translation>Trostruka klackalica</translation>
     </message>
     <message>
         <source>Change-point</source>
@@ -3010,7 +3465,7 @@
     </message>
     <message>
         <source>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 branch</source>
-        <translation>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 oblik</translation>
+        <translation>AB/BC/CD/AD = %1/%2/%3/%4 mm, %5 grana</translation>
     </message>
     <message>
         <source>Fig. 4 — rocker angle δ(α)</source>
@@ -3095,12 +3550,12 @@
     <message>
         <source>crossed</source>
         <comment>branch</comment>
-        <translation>ukršteni</translation>
+        <translation>ukrštena</translation>
     </message>
     <message>
         <source>open</source>
         <comment>branch</comment>
-        <translation>otvoreni</translation>
+        <translation>otvorena</translation>
     </message>
 </context>
 <context>

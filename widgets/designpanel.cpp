@@ -3,7 +3,7 @@
 #include "quantityformat.h"
 
 #include <QEvent>
-#include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QKeyEvent>
 #include <QLabel>
@@ -103,6 +103,7 @@ DesignPanel::DesignPanel(QWidget *parent)
     m_message->hide();
     layout->addWidget(m_message);
     m_note = new QLabel(this);
+    m_note->setObjectName(QStringLiteral("designNote"));
     m_note->setWordWrap(true);
     m_note->setTextFormat(Qt::RichText);
     m_note->setStyleSheet(QStringLiteral("QLabel { background: #eef3f8; border: 1px solid #c5d3e0; padding: 4px; }"));
@@ -139,10 +140,10 @@ void DesignPanel::showNote()
     }
     // The first sentence says what the design is (and whether it is interpreted); the rest
     // opens on request, so the fields stay in sight.
-    // the first full stop that ends a sentence, not an abbreviation ("fig. 3a")
+    // The first full stop that ends a sentence: one followed by a capital letter, so that
+    // abbreviations before a number ("fig. 3a", "рис. 3a", "сл. 3a", "табл. 1") do not split.
     qsizetype end = m_noteText.indexOf(QStringLiteral(". "));
-    while (end > 0 && (m_noteText.left(end).endsWith(QLatin1String("fig"), Qt::CaseInsensitive)
-                       || m_noteText.left(end).endsWith(QLatin1String("eq"), Qt::CaseInsensitive)))
+    while (end > 0 && (end + 2 >= m_noteText.size() || !m_noteText.at(end + 2).isUpper()))
         end = m_noteText.indexOf(QStringLiteral(". "), end + 2);
     const bool longer = end > 0 && end + 2 < m_noteText.size();
     QString text = m_noteExpanded || !longer ? m_noteText : m_noteText.left(end + 1);
@@ -178,15 +179,17 @@ void DesignPanel::rebuild()
     m_fields.clear();
     m_rows.clear();
     m_boxes.clear();
-    QHash<int, QFormLayout *> forms;
+    // A grid rather than a form: the label column takes all the width the fields leave, so
+    // long labels (Russian, Serbian) wrap into as few lines as the dock allows.
+    QHash<int, QGridLayout *> forms;
     const std::vector<ParameterInfo> &infos = m_mechanism->parameterInfo();
     for (int i = 0; i < static_cast<int>(infos.size()); ++i) {
         const ParameterInfo &info = infos[std::size_t(i)];
         const int group = static_cast<int>(info.group);
         if (!forms.contains(group)) {
             auto *box = new QGroupBox(groupTitle(info.group), this);
-            auto *form = new QFormLayout(box);
-            form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+            auto *form = new QGridLayout(box);
+            form->setColumnStretch(0, 1);
             m_groups->addWidget(box);
             forms.insert(group, form);
             m_boxes.insert(group, box);
@@ -201,10 +204,11 @@ void DesignPanel::rebuild()
         row.edit->setObjectName(QStringLiteral("parameter_") + name);
         row.edit->setProperty(nameProperty, name);
         row.edit->setAlignment(Qt::AlignRight);
-        row.edit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0000.00000")));
+        // The values are short; a narrow field leaves the width to the label, which wraps less.
+        row.edit->setFixedWidth(fontMetrics().horizontalAdvance(QStringLiteral("−0000.0000")) + 2 * fontMetrics().averageCharWidth());
         row.edit->installEventFilter(this);
         connect(row.edit, &QLineEdit::editingFinished, this, [this, name] { commit(name, false); });
-        rowLayout->addWidget(row.edit, 1);
+        rowLayout->addWidget(row.edit);
         row.unit = new QLabel(rowWidget);
         row.unit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")));
         rowLayout->addWidget(row.unit);
@@ -212,7 +216,10 @@ void DesignPanel::rebuild()
         row.label->setWordWrap(true); // long labels wrap rather than push the fields out of the dock
         row.label->setBuddy(row.edit);
         describe(row);
-        forms.value(group)->addRow(row.label, rowWidget);
+        QGridLayout *form = forms.value(group);
+        const int line = form->rowCount() - (form->count() == 0 ? 1 : 0);
+        form->addWidget(row.label, line, 0);
+        form->addWidget(rowWidget, line, 1);
         m_fields.insert(name, row.edit);
         m_rows.append(row);
     }
@@ -229,9 +236,12 @@ void DesignPanel::describe(const Row &row)
                             : tr("between %1 and %2")
                                   .arg(QLocale().toString(info.unit.toDisplay(info.domain.min)),
                                        QLocale().toString(info.unit.toDisplay(info.domain.max)));
-    const QString help = tr("%1 (%2): %3 %4. Up/Down or the mouse wheel step by %5.")
-                             .arg(label, name, range, unit)
-                             .arg(QLocale().toString(info.displayStep));
+    // The name is the key of design files and of "pkm … --set NAME=VALUE", the same in every
+    // language, so it comes on a line of its own.
+    const QString help = tr("%1: %2. Up/Down or the mouse wheel step by %3.")
+                             .arg(label, unit.isEmpty() ? range : range + QLatin1Char(' ') + unit,
+                                  QLocale().toString(info.displayStep))
+        + QLatin1Char('\n') + tr("Name in design files and on the command line: %1").arg(name);
     row.edit->setProperty(helpProperty, help);
     if (row.edit->styleSheet().isEmpty()) // an invalid field's tooltip says why
         row.edit->setToolTip(help);

@@ -1,6 +1,7 @@
 #include "formworkspaceview.h"
 
 #include "plotfont.h"
+#include "plotfit.h"
 #include "plotticker.h"
 #include "quantityformat.h"
 
@@ -276,10 +277,8 @@ void FormWorkspaceView::fitView()
     Eigen::Vector2d size = 1.1 * m_bounds.sizes();
     const double perPixel = std::max(size.x() / rect.width(), size.y() / rect.height());
     size = perPixel * Eigen::Vector2d(rect.width(), rect.height());
-    m_plot->xAxis->setRange(centre.x() - 0.5 * size.x(), centre.x() + 0.5 * size.x());
-    m_plot->yAxis->setRange(centre.y() - 0.5 * size.y(), centre.y() + 0.5 * size.y());
-    m_plot->xAxis2->setRange(m_plot->xAxis->range());
-    m_plot->yAxis2->setRange(m_plot->yAxis->range());
+    applyFittedRanges(m_plot, QCPRange(centre.x() - 0.5 * size.x(), centre.x() + 0.5 * size.x()),
+                      QCPRange(centre.y() - 0.5 * size.y(), centre.y() + 0.5 * size.y()), m_refits);
 }
 
 void FormWorkspaceView::mouseReleased(QMouseEvent *event)

@@ -85,6 +85,7 @@ private:
     double m_unionShown = 0.0;        ///< mm²
     bool m_exactAreas = false;
     Eigen::AlignedBox2d m_bounds;
+    int m_refits = 0; ///< relayouts in a row asked by fitView(), to stop a ping-pong of margins
     QPoint m_pressPosition;
 };
 

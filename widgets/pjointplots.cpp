@@ -271,8 +271,10 @@ bool PJointPlots::eventFilter(QObject *watched, QEvent *event)
         for (int i = 0; i < PlotCount; ++i) {
             if (m_panels[i].plot != watched)
                 continue;
-            if (event->type() == QEvent::Resize)
+            if (event->type() == QEvent::Resize) {
                 fitToWidth(i);
+                plotstyle::fitText(m_panels[i].subtitle);
+            }
             else
                 refresh(i, true); // its tab became visible: catch up with what it missed
             break;
@@ -449,7 +451,7 @@ void PJointPlots::retranslate()
         if (p.plot->locale() != tickLocale)
             p.plot->setLocale(tickLocale);
         p.title->setText(titles[size_t(i)]);
-        p.subtitle->setText(subtitles[size_t(i)]);
+        plotstyle::setFittedText(p.subtitle, subtitles[size_t(i)]);
         p.plot->xAxis->setLabel(tr("θ (°)"));
         // The dot of θ̇ is lost in a rotated label at this size: spell the derivative out.
         const QString symbol = i == SpeedPlot ? tr("dθ/dt") : symbolOf(i);

@@ -2,6 +2,10 @@
 
 #include "plotfont.h"
 
+#include <QFontMetrics>
+
+#include <algorithm>
+
 namespace pkm::plotstyle {
 
 Header apply(QCustomPlot *plot, const QFont &base)
@@ -80,6 +84,46 @@ Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer)
         item->setSelectable(false);
     }
     return cursor;
+}
+
+namespace {
+const char *fullTextProperty = "pkmFullText"; ///< the text before it was broken into lines
+} // namespace
+
+void setFittedText(QCPTextElement *element, const QString &text)
+{
+    element->setProperty(fullTextProperty, text);
+    fitText(element);
+}
+
+void fitText(QCPTextElement *element)
+{
+    const QString text = element->property(fullTextProperty).toString();
+    const QFontMetrics metrics(element->font());
+    const int width = element->parentPlot()->width() - 16; // a little air at both ends
+    const auto fits = [&metrics, width](const QString &line) { return metrics.horizontalAdvance(line) <= width; };
+    if (width <= 0 || fits(text)) {
+        element->setText(text);
+        return;
+    }
+    const QStringList clauses = text.split(QStringLiteral("; "));
+    if (clauses.size() > 1 && std::all_of(clauses.cbegin(), clauses.cend(), fits)) {
+        element->setText(clauses.join(QStringLiteral(";\n")));
+        return;
+    }
+    QStringList lines;
+    QString line;
+    for (const QString &word : text.split(QLatin1Char(' '))) {
+        const QString longer = line.isEmpty() ? word : line + QLatin1Char(' ') + word;
+        if (!line.isEmpty() && !fits(longer)) {
+            lines << line;
+            line = word;
+        } else {
+            line = longer;
+        }
+    }
+    lines << line;
+    element->setText(lines.join(QLatin1Char('\n')));
 }
 
 } // namespace pkm::plotstyle

@@ -36,4 +36,10 @@ Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer);
 /// buffered "cursor" layer; the legend is visible, in the row under the subtitle.
 Header apply(QCustomPlot *plot, const QFont &base);
 
+/// Sets the text of a title or subtitle, broken into lines where it is wider than its plot —
+/// after "; " if that is enough, else between words — so that no end is cut off in a narrow
+/// plot or a longer language. fitText() breaks it again for a new width (on a resize).
+void setFittedText(QCPTextElement *element, const QString &text);
+void fitText(QCPTextElement *element);
+
 } // namespace pkm::plotstyle

@@ -119,15 +119,18 @@ void ValuesTable::setPose(const Pose &pose)
         if (entry.rows * entry.cols == 1) {
             text = formatQuantity(m_values[entry.offset], entry.unit, entry.decimals);
         } else {
-            // a matrix row by row, "[a, b; c, d] mm": the unit once, so it fits the dock
+            // a matrix row by row, "[a, b; c, d] mm": the unit once, so it fits the dock; where
+            // the comma is the decimal point the elements part with ";" and the rows with "|",
+            // "[80,0; 138,6 | −80,0; 138,6]"
+            const bool comma = QLocale().decimalPoint() == QStringLiteral(",");
             QStringList rows;
             for (int r = 0; r < entry.rows; ++r) {
                 QStringList row;
                 for (int c = 0; c < entry.cols; ++c)
                     row << formatQuantity(m_values[entry.offset + r * entry.cols + c], units::none, entry.decimals);
-                rows << row.join(QStringLiteral(", "));
+                rows << row.join(comma ? QStringLiteral("; ") : QStringLiteral(", "));
             }
-            text = QLatin1Char('[') + rows.join(QStringLiteral("; ")) + QLatin1Char(']');
+            text = QLatin1Char('[') + rows.join(comma ? QStringLiteral(" | ") : QStringLiteral("; ")) + QLatin1Char(']');
             if (!entry.unit.symbol.empty())
                 text += QLatin1Char(' ') + unitText(entry.unit);
         }

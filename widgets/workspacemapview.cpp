@@ -1,6 +1,7 @@
 #include "workspacemapview.h"
 
 #include "plotfont.h"
+#include "plotfit.h"
 #include "plotticker.h"
 #include "quantityformat.h"
 
@@ -889,20 +890,7 @@ void WorkspaceMapView::fitView()
         return;
     const QCPRange xRange(centre.x() - 0.5 * mmPerPixel * pixels.width(), centre.x() + 0.5 * mmPerPixel * pixels.width());
     const QCPRange yRange(centre.y() - 0.5 * mmPerPixel * pixels.height(), centre.y() + 0.5 * mmPerPixel * pixels.height());
-    const double tolerance = 1e-6 * xRange.size();
-    auto differs = [tolerance](const QCPRange &a, const QCPRange &b) {
-        return std::abs(a.lower - b.lower) > tolerance || std::abs(a.upper - b.upper) > tolerance;
-    };
-    if (!differs(x->range(), xRange) && !differs(y->range(), yRange)) {
-        m_refits = 0;
-        return;
-    }
-    x->setRange(xRange);
-    y->setRange(yRange);
-    // The tick labels of the new ranges may want other margins: lay out once more (a few
-    // times at most, should two layouts keep trading a pixel).
-    if (++m_refits <= 3)
-        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    applyFittedRanges(m_plot, xRange, yRange, m_refits);
 }
 
 void WorkspaceMapView::resetView()

@@ -4,6 +4,7 @@
 // sees — formats numbers by the language's locale, and exports (the parameter sheet) follow.
 #include "designpanel.h"
 #include "document.h"
+#include "fourbarpanel.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "pjointplots.h"
@@ -14,11 +15,15 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QApplication>
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
 #include <QMenuBar>
 #include <QProcess>
 #include <QRegularExpression>
@@ -29,6 +34,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
+
+#include <memory>
 
 using namespace pkm;
 
@@ -53,6 +60,12 @@ QStringList visibleTexts(QWidget *root)
             add(w->toolTip());
         }
     }
+    for (QWidget *w : root->findChildren<QWidget *>()) { // every tooltip a pointer can find
+        if (w->isVisibleTo(root))
+            add(w->toolTip());
+    }
+    for (QAction *a : root->findChildren<QAction *>())
+        add(a->toolTip());
     for (QGroupBox *w : root->findChildren<QGroupBox *>()) {
         if (w->isVisibleTo(root))
             add(w->title());
@@ -95,6 +108,13 @@ QStringList visibleTexts(QWidget *root)
     return texts;
 }
 
+/// The line of a field's tooltip that gives the parameter's key ("lead"), in the language.
+QRegularExpression parameterKey()
+{
+    const QString line = QCoreApplication::translate("pkm::DesignPanel", "Name in design files and on the command line: %1");
+    return QRegularExpression(QRegularExpression::escape(line.section(QStringLiteral("%1"), 0, 0)) + QStringLiteral("\\w+"));
+}
+
 /// English words left in a Russian window: runs of three or more Latin letters, bar names
 /// and symbols that are the same in every language.
 QStringList englishWords(const QStringList &texts)
@@ -115,6 +135,7 @@ QStringList englishWords(const QStringList &texts)
     for (const QString &t : texts) {
         QString plain = t;
         plain.remove(QRegularExpression(QStringLiteral("<[^>]*>"))); // markup is not text
+        plain.remove(parameterKey()); // a key of files and the CLI, the same in every language
         for (auto it = word.globalMatch(plain); it.hasNext();) {
             const QString w = it.next().captured();
             if (!same.contains(w, Qt::CaseInsensitive))
@@ -211,11 +232,19 @@ private slots:
             for (QLabel *label : window.designPanel()->findChildren<QLabel *>())
                 found = found || label->text().contains(crank);
             QVERIFY2(found, qPrintable(code));
-            // most of what was English reads differently now
-            int same = 0;
-            for (const QString &t : now)
-                same += english.contains(t) && t.contains(QRegularExpression(QStringLiteral("[A-Za-z]{4,}"))) ? 1 : 0;
-            QVERIFY2(same <= 3, qPrintable(code + QStringLiteral(": ") + QString::number(same)));
+            // everything that was English reads differently now, but for the languages' own
+            // names in the Language menu
+            QStringList kept;
+            for (const QString &t : now) {
+                if (!english.contains(t) || !t.contains(QRegularExpression(QStringLiteral("[A-Za-z]{4,}"))))
+                    continue;
+                bool ownName = false;
+                for (const language::Language &l : language::all())
+                    ownName = ownName || t == l.nativeName;
+                if (!ownName)
+                    kept << t;
+            }
+            QVERIFY2(kept.isEmpty(), qPrintable(code + QStringLiteral(": ") + kept.join(QStringLiteral(" / "))));
         }
         switchTo(window, QStringLiteral("en"));
         QCOMPARE(fileMenuText(window), QStringLiteral("&File"));
@@ -250,6 +279,33 @@ private slots:
         QVERIFY(comma);
     }
 
+    // The design note shows its first sentence whole in every language: the abbreviations
+    // before a figure number ("fig. 3a", "рис. 3a", "сл. 3a") do not end it.
+    void noteShowsTheWholeFirstSentence_data()
+    {
+        QTest::addColumn<QString>("code");
+        for (const char *code : {"en", "ru", "sr", "sr_Latn"})
+            QTest::newRow(code) << QString::fromLatin1(code);
+    }
+    void noteShowsTheWholeFirstSentence()
+    {
+        QFETCH(QString, code);
+        QVERIFY(language::apply(code));
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openDesign(QStringLiteral("moma-3a")));
+        auto *note = window.designPanel()->findChild<QLabel *>(QStringLiteral("designNote"));
+        QVERIFY(note);
+        QVERIFY(note->isVisibleTo(&window));
+        QString shown = note->text();
+        shown.remove(QRegularExpression(QStringLiteral("<[^>]*>")));
+        // the first sentence names the figure, both reference points and both turns
+        for (const char *part : {"3a", "R₁ = (−100, 0)", "R₂ = (100, 0)", "γ₁ = −5°", "γ₂ = +5°"})
+            QVERIFY2(shown.contains(QString::fromUtf8(part)), qPrintable(code + QStringLiteral(": ") + shown));
+        // and only the first: the rest opens on request
+        QVERIFY2(!shown.contains(QStringLiteral("195")), qPrintable(shown));
+    }
+
     // Core's sentences come in the language too, with its numbers.
     void coreSentencesFollow()
     {
@@ -263,6 +319,58 @@ private slots:
         QVERIFY2(message.contains(QRegularExpression(QStringLiteral("[а-яА-Я]{4,}"))), qPrintable(message));
         QVERIFY2(!message.contains(QStringLiteral("must")), qPrintable(message));
         QVERIFY2(message.contains(QStringLiteral("1,5")), qPrintable(message)); // the number the Russian way
+    }
+
+    // A length the four-bar panel refused keeps its reason on screen; a switch of language
+    // gives the reason in the new language.
+    void refusedLengthFollows()
+    {
+        QVERIFY(language::apply(QStringLiteral("en")));
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openDesign(QStringLiteral("fourbar-example")));
+        FourBarPanel *panel = window.fourbarPanel();
+        panel->lengthSpinBox(QStringLiteral("AB"))->setValue(400.0); // longer than BC + CD + AD
+        QVERIFY(panel->linkMessage()->text().contains(QStringLiteral("cannot close the loop")));
+        switchTo(window, QStringLiteral("ru"));
+        const QString message = panel->linkMessage()->text();
+        QVERIFY2(!message.contains(QStringLiteral("cannot")), qPrintable(message));
+        QVERIFY2(message.contains(QRegularExpression(QStringLiteral("[а-я]{4,}"))), qPrintable(message));
+        QVERIFY2(message.startsWith(QStringLiteral("AB = 400")), qPrintable(message));
+    }
+
+    // Qt's own widgets speak the language too, Serbian included, for which Debian ships no Qt
+    // catalogue: the file dialog Qt draws where the desktop offers none, and the context menu
+    // of a field.
+    void qtWidgetsFollow_data()
+    {
+        QTest::addColumn<QString>("code");
+        for (const char *code : {"ru", "sr", "sr_Latn"})
+            QTest::newRow(code) << QString::fromLatin1(code);
+    }
+    void qtWidgetsFollow()
+    {
+        QFETCH(QString, code);
+        QVERIFY(language::apply(code));
+        QFileDialog dialog(nullptr, QStringLiteral("PKM Studio"));
+        dialog.setOption(QFileDialog::DontUseNativeDialog);
+        dialog.setAcceptMode(QFileDialog::AcceptSave);
+        QStringList texts;
+        for (QLabel *label : dialog.findChildren<QLabel *>())
+            texts << label->text();
+        for (QAbstractButton *button : dialog.findChildren<QAbstractButton *>())
+            texts << button->text() << button->toolTip();
+        QLineEdit field;
+        std::unique_ptr<QMenu> menu(field.createStandardContextMenu());
+        for (QAction *action : menu->actions())
+            texts << action->text().section(QLatin1Char('\t'), 0, 0); // without the shortcut
+        texts.removeAll(QString());
+        for (const char *english : {"Look in:", "File &name:", "Files of type:", "&Save", "Cancel", "Create New Folder",
+                                    "&Copy", "&Paste", "Select All"})
+            QVERIFY2(!texts.contains(QString::fromLatin1(english)), qPrintable(code + QStringLiteral(": ") + QString::fromLatin1(english)));
+        const QString fileName = QCoreApplication::translate("QFileDialog", "File &name:");
+        QVERIFY2(texts.contains(fileName), qPrintable(texts.join(QStringLiteral(" | "))));
+        QVERIFY(texts.contains(QCoreApplication::translate("QLineEdit", "&Copy")));
     }
 
     // A sheet exported in Russian has Russian headings; its JSON keys and numbers stay

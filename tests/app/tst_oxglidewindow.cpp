@@ -12,6 +12,8 @@
 #include "oxglidepanel.h"
 #include "variablepanel.h"
 
+#include <qcustomplot.h>
+
 #include <QAction>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -134,6 +136,23 @@ private slots:
         }
         const double ratio = double(dark) / double(dark + light); // ≈ area_O / area_X
         QVERIFY2(std::abs(ratio - 753.3 / 2125.3) < 0.03, qPrintable(QString::number(ratio)));
+    }
+
+    // The plot keeps equal scales by fitting its ranges after each layout; the ticks drawn are
+    // those of the fitted ranges, none left over below or beside the axes.
+    void ticksStayOnTheAxes()
+    {
+        QCustomPlot *plot = panel()->formView()->plot();
+        for (const int width : {1500, 1800}) { // another width, another aspect of the plot
+            m_window->resize(width, 1000);
+            QTest::qWait(100);
+            for (QCPAxis *axis : {plot->xAxis, plot->yAxis}) {
+                QVERIFY(!axis->tickVector().isEmpty());
+                for (const double tick : axis->tickVector())
+                    QVERIFY2(axis->range().contains(tick),
+                             qPrintable(QStringLiteral("tick %1 outside %2…%3").arg(tick).arg(axis->range().lower).arg(axis->range().upper)));
+            }
+        }
     }
 
     void dragsThePlatform()

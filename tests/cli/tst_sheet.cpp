@@ -18,12 +18,14 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QTranslator>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -218,6 +220,7 @@ private slots:
     void englishIsTheDefault();
     void languageKeepsKeysAndNumbers();
     void russianPdfNumbers();
+    void footerWordsDoNotOverlap();
     void russianSheet();
     void inProcessLanguageIsRestored();
 
@@ -889,20 +892,64 @@ void TestSheet::languageKeepsKeysAndNumbers()
             QVERIFY(run.out.startsWith("Wrote " + json.toUtf8() + " (parameter sheet of ")); // the CLI stays English
             const QString why = differenceBeyondTexts(reference, readJson(json));
             QVERIFY2(why.isEmpty(), qPrintable(design + QLatin1Char(' ') + code + QStringLiteral(": ") + why));
+            // the preset's title and description are in the language
+            const QJsonObject translated = readJson(json);
+            for (const char *key : {"title", "description"}) {
+                const QString text = translated.value(QLatin1String(key)).toString();
+                QVERIFY2(!text.isEmpty() && text != reference.value(QLatin1String(key)).toString(), qPrintable(text));
+            }
         }
-        // the CSV has the same values: only the texts of the title block, figures and notes may differ
+        // the CSV has the same values: only the texts of the title block (a preset's title and
+        // description are translated too), figures and notes may differ
         const QString csv = path(design + QStringLiteral("-ru.csv"));
         QCOMPARE(sheet(design, QStringLiteral("ru"), csv).exitCode, 0);
         const QList<QStringList> a = readCsv(englishCsv), b = readCsv(csv);
         QCOMPARE(a.size(), b.size());
         for (qsizetype i = 0; i < a.size(); ++i) {
-            const bool text = (a[i][0] == QLatin1String("sheet")
-                                  && (a[i][2] == QLatin1String("mechanism_title") || a[i][2] == QLatin1String("pose")))
+            static const QStringList sheetTexts = {QStringLiteral("title"), QStringLiteral("description"),
+                                                   QStringLiteral("mechanism_title"), QStringLiteral("pose")};
+            const bool text = (a[i][0] == QLatin1String("sheet") && sheetTexts.contains(a[i][2]))
                 || a[i][3] == QLatin1String("title") || a[i][3] == QLatin1String("text");
             if (text)
                 QCOMPARE(b[i].mid(0, 4), a[i].mid(0, 4));
             else
                 QCOMPARE(b[i], a[i]);
+        }
+    }
+}
+
+void TestSheet::footerWordsDoNotOverlap()
+{
+    if (m_pdftotext.isEmpty())
+        QSKIP("pdftotext (poppler-utils) is not installed");
+    // The foot of every page: the date, the title and the page number side by side, none
+    // written over another however long the title is in the language.
+    static const QRegularExpression word(QStringLiteral(
+        "<word xMin=\"([0-9.]+)\" yMin=\"([0-9.]+)\" xMax=\"([0-9.]+)\" yMax=\"[0-9.]+\">([^<]*)</word>"));
+    for (const QString &code : {QStringLiteral("en"), QStringLiteral("sr"), QStringLiteral("ru")}) {
+        const QString pdf = path(QStringLiteral("foot-") + code + QStringLiteral(".pdf"));
+        const Run run = runPkm({QStringLiteral("sheet"), QStringLiteral("fourbar-example"), QStringLiteral("--lang"), code,
+                                QStringLiteral("-o"), pdf});
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QProcess process;
+        process.start(m_pdftotext, {QStringLiteral("-bbox"), pdf, QStringLiteral("-")});
+        QVERIFY(process.waitForFinished(30000));
+        const QStringList pages = QString::fromUtf8(process.readAllStandardOutput()).split(QStringLiteral("<page "));
+        QVERIFY(pages.size() > 2);
+        for (const QString &page : pages.mid(1)) {
+            QList<std::pair<double, double>> foot; // the words below 790 pt of the 842 pt page
+            QString line;
+            for (auto it = word.globalMatch(page); it.hasNext();) {
+                const auto match = it.next();
+                if (match.captured(2).toDouble() > 790.0) {
+                    foot.append({match.captured(1).toDouble(), match.captured(3).toDouble()});
+                    line += match.captured(4) + QLatin1Char(' ');
+                }
+            }
+            QVERIFY2(foot.size() >= 5, qPrintable(code + QStringLiteral(": ") + line));
+            std::sort(foot.begin(), foot.end());
+            for (qsizetype i = 1; i < foot.size(); ++i)
+                QVERIFY2(foot[i - 1].second <= foot[i].first + 0.5, qPrintable(code + QStringLiteral(": ") + line));
         }
     }
 }

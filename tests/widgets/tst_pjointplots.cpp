@@ -5,9 +5,11 @@
 #include "pjoint.h"
 #include "pjointcurves.h"
 #include "pjointplots.h"
+#include "plotstyle.h"
 
 #include <qcustomplot.h>
 
+#include <QFontMetrics>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTest>
@@ -121,6 +123,7 @@ private slots:
     void clipEndsAtTheEdge();
     void valueRangeSkipsNearSingularSamples();
     void valueText();
+    void subtitleWrapsInANarrowPlot();
 };
 
 void TestPJointPlots::plotsAndTabs()
@@ -516,6 +519,32 @@ void TestPJointPlots::valueText()
     QCOMPARE(pjointcurves::valueText(PJointPlots::SpeedPlot, std::numeric_limits<double>::infinity()),
         QStringLiteral("θ̇ = ∞ rad/s"));
     QLocale::setDefault(saved);
+}
+
+// A subtitle wider than its plot is broken into lines, at "; " where that is enough, and joins
+// again when the plot grows; every line fits, so no end is cut off.
+void TestPJointPlots::subtitleWrapsInANarrowPlot()
+{
+    QCustomPlot plot;
+    plot.resize(260, 300);
+    auto *subtitle = new QCPTextElement(&plot, QString());
+    plot.plotLayout()->insertRow(0);
+    plot.plotLayout()->addElement(0, 0, subtitle);
+    const QString text = QStringLiteral("a = 170 mm, k = 0.40, θ −60°…60°; family at the same a");
+    const QFontMetrics metrics(subtitle->font());
+    QVERIFY(metrics.horizontalAdvance(text) > 260 - 16);
+    plotstyle::setFittedText(subtitle, text);
+    QCOMPARE(subtitle->text(), QStringLiteral("a = 170 mm, k = 0.40, θ −60°…60°;\nfamily at the same a"));
+    plot.resize(160, 300); // narrower still: between words
+    plotstyle::fitText(subtitle);
+    const QStringList lines = subtitle->text().split(QLatin1Char('\n'));
+    QVERIFY(lines.size() >= 3);
+    for (const QString &line : lines)
+        QVERIFY2(metrics.horizontalAdvance(line) <= 160 - 16, qPrintable(line));
+    QCOMPARE(lines.join(QLatin1Char(' ')), text);
+    plot.resize(1200, 300);
+    plotstyle::fitText(subtitle);
+    QCOMPARE(subtitle->text(), text);
 }
 
 QTEST_MAIN(TestPJointPlots)
