@@ -1,7 +1,8 @@
 #include "modebar.h"
 
+#include "flowlayout.h"
+
 #include <QEvent>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 
@@ -10,14 +11,13 @@ namespace pkm {
 ModeBar::ModeBar(QWidget *parent)
     : QWidget(parent)
 {
-    auto *layout = new QHBoxLayout(this);
-    layout->setContentsMargins(6, 2, 6, 2);
+    // The label and the buttons in rows that wrap: in a longer language they take a second
+    // row rather than widen the window's middle and squeeze the docks.
+    m_layout = new FlowLayout(this);
+    m_layout->setContentsMargins(6, 2, 6, 2);
     m_current = new QLabel(this);
     m_current->setTextFormat(Qt::PlainText);
-    layout->addWidget(m_current);
-    m_buttons = new QHBoxLayout;
-    layout->addLayout(m_buttons);
-    layout->addStretch(1);
+    m_layout->addWidget(m_current);
     setVisible(false);
 }
 
@@ -33,7 +33,7 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
             auto *button = new QPushButton(this);
             button->setObjectName(QStringLiteral("modeButton%1").arg(i));
             connect(button, &QPushButton::clicked, this, [this, i] { emit switchRequested(i); });
-            m_buttons->addWidget(button);
+            m_layout->addWidget(button);
             m_buttonList.append(button);
         }
     }

@@ -6,11 +6,12 @@
 #include <QStringList>
 #include <QWidget>
 
-class QHBoxLayout;
 class QLabel;
 class QPushButton;
 
 namespace pkm {
+
+class FlowLayout;
 
 class ModeBar : public QWidget
 {
@@ -37,7 +38,7 @@ private:
 
     QLabel *m_current = nullptr;
     QString m_currentText;
-    QHBoxLayout *m_buttons = nullptr;
+    FlowLayout *m_layout = nullptr;
     QStringList m_labels;
     QList<QPushButton *> m_buttonList;
 };

@@ -4,7 +4,9 @@
 
 #include <QEvent>
 #include <QHeaderView>
+#include <QResizeEvent>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -46,6 +48,23 @@ ValuesTable::ValuesTable(QWidget *parent)
     // sized when the values first appear and widen only when a longer text comes.
     header()->setSectionResizeMode(QHeaderView::Interactive);
     header()->setStretchLastSection(true);
+}
+
+void ValuesTable::fitColumns()
+{
+    resizeColumnToContents(0);
+    resizeColumnToContents(1);
+    const int room = viewport()->width() - columnWidth(0) - 4 * fontMetrics().averageCharWidth();
+    const int least = fontMetrics().horizontalAdvance(QStringLiteral("−0000.00 mm²"));
+    if (columnWidth(1) > room)
+        setColumnWidth(1, std::max(room, least));
+}
+
+void ValuesTable::resizeEvent(QResizeEvent *event)
+{
+    QTreeWidget::resizeEvent(event);
+    if (m_widestValue > 0)
+        fitColumns();
 }
 
 void ValuesTable::changeEvent(QEvent *event)
@@ -136,6 +155,8 @@ void ValuesTable::setPose(const Pose &pose)
         }
         widest = std::max(widest, text.size());
         m_items[i]->setText(1, text);
+        if (entry.rows * entry.cols > 1)
+            m_items[i]->setToolTip(1, text); // the column may cut a matrix
     }
     QString text = singularityText(singularity.type);
     if (singularity.type == SingularityType::None)
@@ -144,8 +165,7 @@ void ValuesTable::setPose(const Pose &pose)
     widest = std::max(widest, text.size());
     if (widest > m_widestValue) {
         m_widestValue = widest;
-        resizeColumnToContents(0);
-        resizeColumnToContents(1);
+        fitColumns();
     }
     m_singularity->setForeground(1, singularity.type == SingularityType::None ? palette().text().color()
                                                                             : QColor(0xb3, 0x26, 0x1e));

@@ -26,8 +26,13 @@ public:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
+    /// Sizes the quantity and value columns to their texts, the value column no wider than
+    /// the view leaves: a long matrix is cut with "…" (its tooltip has it whole) rather than
+    /// push the short values, aligned right, out of sight.
+    void fitColumns();
     void rebuild();
 
     MechanismPtr m_mechanism;

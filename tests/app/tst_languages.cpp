@@ -7,9 +7,11 @@
 #include "fourbarpanel.h"
 #include "language.h"
 #include "mainwindow.h"
+#include "modebar.h"
 #include "pjointplots.h"
 #include "sheet.h"
 #include "text.h"
+#include "valuestable.h"
 
 #include <qcustomplot.h>
 
@@ -26,6 +28,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QProcess>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
@@ -371,6 +374,42 @@ private slots:
         const QString fileName = QCoreApplication::translate("QFileDialog", "File &name:");
         QVERIFY2(texts.contains(fileName), qPrintable(texts.join(QStringLiteral(" | "))));
         QVERIFY(texts.contains(QCoreApplication::translate("QLineEdit", "&Copy")));
+    }
+
+    // Longer texts do not push the window apart: at 1920 × 1080 in Russian the five-bar's three
+    // mode buttons wrap into a second row inside the middle, the docks keep their widths, and
+    // the values table shows its values whole, a long matrix cut with "…" instead.
+    void longerTextsFitTheWindow()
+    {
+        QVERIFY(language::apply(QStringLiteral("en")));
+        MainWindow window;
+        window.resize(1920, 1080);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openDesign(QStringLiteral("fivebar-example")));
+        QTest::qWait(50);
+        const int englishDock = window.valuesTable()->width();
+        switchTo(window, QStringLiteral("ru"));
+        QTest::qWait(50);
+        ModeBar *bar = window.modeBar();
+        QCOMPARE(bar->labels().size(), 3);
+        const QRect inside = bar->rect();
+        int rows = 0, lastTop = -1;
+        for (int i = 0; i < 3; ++i) {
+            QPushButton *button = bar->button(i);
+            const QRect where(button->mapTo(bar, QPoint(0, 0)), button->size());
+            QVERIFY2(inside.contains(where), qPrintable(button->text()));
+            QVERIFY(button->width() >= button->sizeHint().width()); // the whole text
+            rows += where.top() != lastTop ? 1 : 0;
+            lastTop = where.top();
+        }
+        QVERIFY(rows >= 2);
+        QVERIFY2(window.valuesTable()->width() >= englishDock - 2,
+                 qPrintable(QStringLiteral("%1 < %2").arg(window.valuesTable()->width()).arg(englishDock)));
+        ValuesTable *table = window.valuesTable();
+        QVERIFY(table->columnWidth(0) + table->columnWidth(1) <= table->viewport()->width());
+        const QTreeWidgetItem *theta = table->topLevelItem(1); // θ₁, under "Pose"
+        QVERIFY(table->fontMetrics().horizontalAdvance(theta->text(1)) < table->columnWidth(1));
     }
 
     // A sheet exported in Russian has Russian headings; its JSON keys and numbers stay
