@@ -1,5 +1,6 @@
 #include "sheet.h"
 
+#include "clidesign.h"
 #include "clireport.h"
 #include "designfile.h"
 #include "fourbar.h"
@@ -87,11 +88,8 @@ QString poseText(const Mechanism &mechanism, const Pose &pose)
         if (word.group != ReportGroup::Pose)
             continue;
         // a mode by its symbol, as the window's mode bar shows it: "σ = open"
-        const auto &parameters = mechanism.parameterInfo();
-        const auto info = std::find_if(parameters.cbegin(), parameters.cend(),
-                                       [&word](const ParameterInfo &p) { return p.name == word.name; });
-        parts << (info != parameters.cend() ? coreLabel(info->symbol) : utf8(word.name)) + QStringLiteral(" = ")
-                + coreLabel(word.text);
+        const ParameterInfo *info = cli::findParameter(mechanism, word.name);
+        parts << (info ? coreLabel(info->symbol) : utf8(word.name)) + QStringLiteral(" = ") + coreLabel(word.text);
     }
     return parts.join(QStringLiteral(", "));
 }
