@@ -13,14 +13,14 @@
 // software renderer) the 3D tab is shown instead of the 2D view: each step includes building
 // the solid model, tessellating, uploading and drawing it, and waiting for the GL frame to
 // finish (issue: 3D view).
-#include "document.h"
+#include "document/document.h"
 #include "linkageview.h"
 #include "linkageview3d.h"
-#include "mainwindow.h"
-#include "moma.h"
-#include "pjoint.h"
+#include "gui/mainwindow.h"
+#include "kinds/moma/moma.h"
+#include "kinds/pjoint/pjoint.h"
 #include "workspacemapview.h"
-#include "workspacepanel.h"
+#include "gui/workspacepanel.h"
 
 #include <QApplication>
 #include <QOpenGLContext>

@@ -9,7 +9,7 @@
 //               unreachable (what bench/moma_map_numpy.py compares its own map with).
 // --json FILE:  the grid, the design and the timings, so that the NumPy script computes the same
 //               map: Moma's bounds come from sampling, so they are handed over, not recomputed.
-#include "moma.h"
+#include "kinds/moma/moma.h"
 
 #include <algorithm>
 #include <cerrno>

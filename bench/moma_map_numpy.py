@@ -3,7 +3,7 @@
 
 Reads the grid and the design from the JSON side file bench_map writes (--json): Moma's
 workspace bounds come from sampling, so they are handed over rather than recomputed. Computes
-the same map as core/momamaps.cpp (DOMAIN.md §2: inverse kinematics (7–9) of both legs per
+the same map as core/momamaps.cpp (the MOMA document: inverse kinematics (7–9) of both legs per
 cell, det J = β₁β₂·(L₁×L₂)/(√D₁·√D₂), NaN where the design cannot reach), vectorised over the
 whole grid, times --runs runs, and prints the speed ratio C++/NumPy (best to best). With
 --compare it checks that its map agrees with bench_map's (--write): the same reachable cells

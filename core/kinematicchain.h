@@ -1,7 +1,7 @@
 #pragma once
 /// The structure of a mechanism as links and kinematic pairs, with each pair's axis at a pose:
 /// what the mobility analysis counts (Chebyshev, Somov–Malyshev) and what it ranks (the screw
-/// constraint Jacobian of the loops). See mobility.h and DOMAIN.md §4.
+/// constraint Jacobian of the loops). See mobility.h and docs/mathematics.md.
 ///
 /// Units: mm. Axes are in the mechanism's 3D frame (the frame of scene3d(); planar mechanisms
 /// lie in the plane z = 0 with their revolute axes along z).

@@ -87,6 +87,15 @@ int Mechanism::outputCount() const
     return static_cast<int>(variableInfo().size()) - inputCount();
 }
 
+const ParameterInfo *Mechanism::findParameter(std::string_view name) const
+{
+    for (const ParameterInfo &info : parameterInfo()) {
+        if (info.name == name)
+            return &info;
+    }
+    return nullptr;
+}
+
 int Mechanism::variableIndex(std::string_view name) const
 {
     const auto &infos = variableInfo();

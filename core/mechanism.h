@@ -194,6 +194,8 @@ public:
     Result<Pose> solveWith(const Pose &current, int variable, double value) const;
     /// Index into variableInfo() of the named variable, or -1.
     int variableIndex(std::string_view name) const;
+    /// The design parameter called `name` (parameterInfo()), or nullptr.
+    const ParameterInfo *findParameter(std::string_view name) const;
     double variableValue(const Pose &pose, int variable) const;
 
     // -- analysis -------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 #pragma once
-/// Mobility (degrees of freedom) of a kinematic chain (DOMAIN.md §4), two ways:
+/// Mobility (degrees of freedom) of a kinematic chain (docs/mathematics.md), two ways:
 ///
 /// Structural formulas, from the numbers of links and pairs alone:
 ///   Chebyshev (planar chains):  W = 3n − 2P₅ − P₄
@@ -7,7 +7,7 @@
 ///     pairs (CamPlanar: two freedoms in the plane).
 ///   Somov–Malyshev (spatial):   W = 6n − 5P₅ − 4P₄ − 3P₃ − 2P₂ − P₁
 ///     P_c the pairs of class c (a pair of class c leaves 6 − c freedoms: R, P, screw are P₅,
-///     cylindrical P₄, spherical P₃). Seed 004 prints "+P₁", a typo (DOMAIN.md §5.2):
+///     cylindrical P₄, spherical P₃). The four-bar and mobility document prints "+P₁", a typo (docs/mathematics.md):
 ///     documentSomovMalyshev() keeps it for the test that shows it wrong.
 ///   Both count 6 (or 3) independent constraints per loop, so both fail for overconstrained
 ///   ("paradoxical") chains whose loops impose fewer: the spatial parallelogram, the Bennett
@@ -113,7 +113,7 @@ int chebyshev(int movingLinks, int lowerPairs, int higherPairs);
 std::optional<int> chebyshev(const KinematicChain &chain);
 /// Somov–Malyshev: W = 6n − 5P₅ − 4P₄ − 3P₃ − 2P₂ − P₁.
 int somovMalyshev(int movingLinks, const PairClassCounts &pairs);
-/// Seed 004 as printed: W = 6n − 5P₅ − 4P₄ − 3P₃ − 2P₂ + P₁ — wrong (DOMAIN.md §5.2).
+/// The four-bar and mobility document as printed: W = 6n − 5P₅ − 4P₄ − 3P₃ − 2P₂ + P₁ — wrong (docs/mathematics.md).
 int documentSomovMalyshev(int movingLinks, const PairClassCounts &pairs);
 
 /// The constraint Jacobian of a chain at its pose, in the scaled frame (see above).

@@ -1,5 +1,5 @@
 #pragma once
-/// Live plots of the planar four-bar (DOMAIN.md §4, seed 004) for the current design, with a
+/// Live plots of the planar four-bar (the four-bar and mobility document; docs/mathematics.md) for the current design, with a
 /// cursor at the current pose. Laid out for a classroom projector, like PJointPlots.
 ///
 /// Four tabs: "δ(α)" (fig. 4), "ω₃, ε₃" (fig. 6: the rocker's angular velocity dδ/dt and
@@ -13,7 +13,7 @@
 /// the curve and the samples are clipped to four axis heights beyond it.
 /// Every curve is a few hundred closed-form samples: recomputed on the GUI thread.
 
-#include "fourbar.h"
+#include "kinds/fourbar/fourbar.h"
 
 #include <QWidget>
 

@@ -17,7 +17,7 @@
 #include <QStringList>
 #include <QWidget>
 
-// Here, not in core: core stays free of Qt (ARCHITECTURE.md).
+// Here, not in core: core stays free of Qt (docs/architecture.md).
 Q_DECLARE_METATYPE(Eigen::Vector2d)
 
 namespace pkm {

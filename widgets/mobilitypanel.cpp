@@ -33,7 +33,7 @@ constexpr const char *noteBackground = "#eef3f8";
 constexpr const char *noteBorder = "#c5d3e0";
 constexpr const char *quietColour = "#555555";
 
-/// The classroom examples (DOMAIN.md §4): the П-joint prototype's parallelogram (a = 170 mm,
+/// The classroom examples (docs/mathematics.md): the П-joint prototype's parallelogram (a = 170 mm,
 /// b = 68 mm) taken as a spatial chain, a Bennett linkage and four general revolute axes.
 KinematicChain exampleChain(MobilityPanel::Subject subject)
 {
@@ -387,7 +387,7 @@ private:
         return out;
     }
 
-    /// The seed's "+P₁" (DOMAIN.md §5.2).
+    /// The document's "+P₁" (docs/mathematics.md).
     QString note() const
     {
         QString text = tr("The source document prints the last term as “+ P₁”: a typo. A pair of class 1 takes "
@@ -484,7 +484,7 @@ private:
                     tr("%1 for mobility %2; with the actuators locked, it keeps %n freedom(s).", nullptr, uncontrolled),
                     uncontrolled)
                       .arg(actuators, integer(useful));
-            // The O-X glide (DOMAIN.md §3): the joints the document describes let the platform
+            // The O-X glide (docs/mathematics.md): the joints the document describes let the platform
             // tilt with the sliders locked (tst_mobility: the planar part alone keeps its swing).
             if (kind == "oxglide" && uncontrolled == 1 && useful == 4 && r.actuators == 3) {
                 text += QStringLiteral("</p><p>")

@@ -1,5 +1,5 @@
 #pragma once
-/// The mobility of the current mechanism, for the classroom (DOMAIN.md §4): the chain in
+/// The mobility of the current mechanism, for the classroom (docs/mathematics.md): the chain in
 /// words, Chebyshev's and Somov–Malyshev's formulas with the numbers put in, the mobility from
 /// the rank of the constraint Jacobian at the pose, the verdict, singular poses and the
 /// actuation; and classroom examples (the spatial parallelogram, the Bennett linkage, a general

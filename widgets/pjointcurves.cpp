@@ -103,7 +103,7 @@ Range valueRange(const std::vector<const Curve *> &curves, double guard)
 
 Curve clip(const Curve &curve, double lower, double upper)
 {
-    // Done here rather than by the axis rect: QSvgGenerator writes no clip path (ARCHITECTURE.md).
+    // Done here rather than by the axis rect: QSvgGenerator writes no clip path (docs/architecture.md).
     Curve out;
     out.reserve(curve.size());
     auto inside = [&](const Point &p) { return p.value >= lower && p.value <= upper; };

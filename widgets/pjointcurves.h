@@ -1,11 +1,11 @@
 #pragma once
-/// The curves behind PJointPlots (DOMAIN.md §1, the document's figs. 8–17), without a widget:
+/// The curves behind PJointPlots (the П-joint document's figs. 8–17), without a widget:
 /// what each plot shows, its samples over θ, its axis ranges and the clipping to them. Pure
 /// functions of the design, so the tests check them without drawing anything.
 ///
 /// Units: θ in degrees (the plots' θ axis); every value in its quantity's display unit.
 
-#include "pjoint.h"
+#include "kinds/pjoint/pjoint.h"
 
 #include <QString>
 

@@ -1,5 +1,5 @@
 #pragma once
-/// Live plots of the active П-joint (DOMAIN.md §1): the document's figures 8–17 for the
+/// Live plots of the active П-joint (docs/mathematics.md): the document's figures 8–17 for the
 /// current design, with a cursor at the current pose. Laid out for a classroom projector
 /// (1920×1080): large fonts, thick lines, legends outside the curves.
 ///
@@ -10,7 +10,7 @@
 /// graph(0) of every plot is the current design's curve over its θ range [θ_min, θ_max]; the
 /// other graphs are the same design beyond that range and, on the Geometry tab, the k-family.
 
-#include "pjoint.h"
+#include "kinds/pjoint/pjoint.h"
 
 #include <QString>
 #include <QWidget>

@@ -1,5 +1,5 @@
 #pragma once
-/// The singularity map of a planar mechanism over its workspace (DOMAIN.md §2, MOMA's fig. 7):
+/// The singularity map of a planar mechanism over its workspace (the MOMA document's fig. 7):
 /// det J or the condition number κ(J) as a colour map, the workspace boundary, the inverse and
 /// direct singular curves, the current pose as a marker, and optionally a second design's
 /// boundary to compare workspaces. Laid out for a classroom projector: large fonts, thick

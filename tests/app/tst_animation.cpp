@@ -1,11 +1,12 @@
 // Animated GIFs of a sweep: the poses follow the swept variable, the frames are drawn, the GIF
 // decodes (with an independent reader, Qt's) to the right number of frames, size and timing,
 // and the GUI writes one without blocking.
-#include "animation.h"
-#include "cli.h"
-#include "document.h"
-#include "gifwriter.h"
-#include "mainwindow.h"
+#include "export/animation.h"
+#include "cli/cli.h"
+#include "cli/drawingcommands.h"
+#include "document/document.h"
+#include "export/gifwriter.h"
+#include "gui/mainwindow.h"
 #include "registry.h"
 
 #include <QBuffer>
@@ -142,6 +143,7 @@ private slots:
 
     void commandLineWritesAGif()
     {
+        cli::registerDrawingCommands(); // runCli() in-process runs `pkm render`, as pkm-draw does
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("crank.gif"));
         const auto run = [](const QStringList &arguments) {

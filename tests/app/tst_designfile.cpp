@@ -1,6 +1,6 @@
 // Design files and presets: every preset loads, save → load is exact, bad files are refused
 // with a message naming the file.
-#include "designfile.h"
+#include "document/designfile.h"
 
 #include <cmath>
 

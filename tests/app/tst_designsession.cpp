@@ -1,9 +1,9 @@
 // The file side of a session, through the main window as a user meets it: save and reopen,
 // the unsaved-changes question, recent files, autosave and recovery after a crash.
 #include "designpanel.h"
-#include "designsession.h"
-#include "document.h"
-#include "mainwindow.h"
+#include "document/designsession.h"
+#include "document/document.h"
+#include "gui/mainwindow.h"
 
 #include <QAction>
 #include <QDir>

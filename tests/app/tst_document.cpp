@@ -1,8 +1,8 @@
 // The document: the only writer of the design and the pose; undo/redo of design edits.
-#include "document.h"
+#include "document/document.h"
 
-#include "moma.h"
-#include "pjoint.h"
+#include "kinds/moma/moma.h"
+#include "kinds/pjoint/pjoint.h"
 
 #include <QSignalSpy>
 #include <QTest>

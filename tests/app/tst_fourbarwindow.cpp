@@ -2,16 +2,16 @@
 // Presets menu, drag a link-length slider (one undo step), try a length that cannot close the
 // loop, read δ(α), ω₃, ε₃ and γ off the plots (figs. 4 and 6) and the largest crank off the
 // sweep (fig. 5), see the transmission warning, and push α against its assembly limit.
-#include "mainwindow.h"
+#include "gui/mainwindow.h"
 
-#include "document.h"
-#include "fourbar.h"
-#include "fourbarpanel.h"
+#include "document/document.h"
+#include "kinds/fourbar/fourbar.h"
+#include "gui/fourbarpanel.h"
 #include "fourbarplots.h"
-#include "oxglidepanel.h"
+#include "gui/oxglidepanel.h"
 #include "pjointplots.h"
 #include "variablepanel.h"
-#include "workspacepanel.h"
+#include "gui/workspacepanel.h"
 
 #include <qcustomplot.h>
 

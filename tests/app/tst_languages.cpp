@@ -3,13 +3,13 @@
 // the real widgets at once — menus, docks, the design panel, the plots, every text a person
 // sees — formats numbers by the language's locale, and exports (the parameter sheet) follow.
 #include "designpanel.h"
-#include "document.h"
-#include "fourbarpanel.h"
-#include "language.h"
-#include "mainwindow.h"
+#include "document/document.h"
+#include "gui/fourbarpanel.h"
+#include "document/language.h"
+#include "gui/mainwindow.h"
 #include "modebar.h"
 #include "pjointplots.h"
-#include "sheet.h"
+#include "export/sheet.h"
 #include "text.h"
 #include "valuestable.h"
 

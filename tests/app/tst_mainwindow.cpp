@@ -1,12 +1,12 @@
 // The main window driven as a person would: spin boxes, sliders, the design panel, dragging in
 // the view, undo. Checks that d, the view, the values and the plot cursors follow.
-#include "mainwindow.h"
-#include "workspacepanel.h"
+#include "gui/mainwindow.h"
+#include "gui/workspacepanel.h"
 
 #include "designpanel.h"
-#include "document.h"
+#include "document/document.h"
 #include "linkageview.h"
-#include "pjoint.h"
+#include "kinds/pjoint/pjoint.h"
 #include "pjointplots.h"
 #include "valuestable.h"
 #include "variablepanel.h"

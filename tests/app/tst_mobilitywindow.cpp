@@ -4,9 +4,9 @@
 //
 // With PKM_GRAB_DIR set, the window with the dock raised is written there
 // (mobility-window.png).
-#include "mainwindow.h"
+#include "gui/mainwindow.h"
 
-#include "document.h"
+#include "document/document.h"
 #include "mobilitypanel.h"
 
 #include <QDir>

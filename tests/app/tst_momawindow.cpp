@@ -1,16 +1,16 @@
 // MOMA in the main window, driven as a person would: open 3a from the Presets menu, drag the
 // platform across the workspace, switch to 3b, turn a guide and watch the map follow, click
 // the map, switch modes only by clicking — and the CLI gives the same numbers.
-#include "mainwindow.h"
+#include "gui/mainwindow.h"
 
-#include "document.h"
+#include "document/document.h"
 #include "linkageview.h"
 #include "modebar.h"
-#include "moma.h"
+#include "kinds/moma/moma.h"
 #include "valuestable.h"
 #include "variablepanel.h"
 #include "workspacemapview.h"
-#include "workspacepanel.h"
+#include "gui/workspacepanel.h"
 
 #include <QAction>
 #include <QComboBox>

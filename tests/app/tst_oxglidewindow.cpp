@@ -2,14 +2,14 @@
 // the Presets menu, drag the platform, switch O↔X with the form selector, run the crossing
 // animation and watch it stop short of the singular pose with an explanation, read both areas
 // — and the CLI reports the same areas and the same pose.
-#include "mainwindow.h"
+#include "gui/mainwindow.h"
 
-#include "document.h"
+#include "document/document.h"
 #include "formworkspaceview.h"
 #include "linkageview.h"
 #include "linkageview3d.h"
-#include "oxglide.h"
-#include "oxglidepanel.h"
+#include "kinds/oxglide/oxglide.h"
+#include "gui/oxglidepanel.h"
 #include "variablepanel.h"
 
 #include <qcustomplot.h>

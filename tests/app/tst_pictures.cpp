@@ -3,16 +3,16 @@
 // View Picture… writes the linkage as PNG (size, DPI), SVG (the joints' names as text) and PDF
 // (the page from the pixels and the DPI).
 
-#include "mainwindow.h"
+#include "gui/mainwindow.h"
 
-#include "clirender.h"
-#include "designsession.h"
-#include "document.h"
+#include "export/scenepicture.h"
+#include "document/designsession.h"
+#include "document/document.h"
 #include "linkageview.h"
 #include "pictureexport.h"
-#include "viewpicture.h"
+#include "gui/viewpicture.h"
 #include "workspacemapview.h"
-#include "workspacepanel.h"
+#include "gui/workspacepanel.h"
 
 #include <qcustomplot.h>
 
@@ -260,7 +260,7 @@ private slots:
         const Mechanism &mechanism = *m_window->document()->mechanism();
         const Pose &pose = m_window->document()->pose();
         const QString name = m_window->session()->displayName();
-        const QString caption = cli::poseCaption(mechanism, pose, name);
+        const QString caption = pictures::poseCaption(mechanism, pose, name);
         const SceneStyle style = m_window->linkageView()->sceneStyle();
         const QSize shown = m_window->linkageView()->size();
         PictureOptions options;

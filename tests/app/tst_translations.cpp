@@ -1,8 +1,8 @@
 // The catalogues themselves: complete (no unfinished, vanished or obsolete entries), up to date
 // with the sources (lupdate run again finds nothing new), faithful (every placeholder and tag
 // of the source kept, %n in every plural form), in the right alphabet, with the glossary's
-// terms (DOMAIN.md §6), Serbian Latin letter for letter the Serbian Cyrillic, and loadable.
-#include "language.h"
+// terms (those of the source documents), Serbian Latin letter for letter the Serbian Cyrillic, and loadable.
+#include "document/language.h"
 #include "text.h"
 
 #include <QCoreApplication>
@@ -170,7 +170,8 @@ private slots:
             const QString copy = dir.filePath(QFileInfo(tsPath(code)).fileName());
             QVERIFY(QFile::copy(tsPath(code), copy));
             QStringList arguments = {QStringLiteral(PKM_SOURCE_DIR "/core"), QStringLiteral(PKM_SOURCE_DIR "/widgets"),
-                                     QStringLiteral(PKM_SOURCE_DIR "/app"), QStringLiteral("-no-obsolete"),
+                                     QStringLiteral(PKM_SOURCE_DIR "/app"), QStringLiteral(PKM_PRESET_TEXTS),
+                                     QStringLiteral("-no-obsolete"),
                                      QStringLiteral("-locations"), QStringLiteral("none"),
                                      QStringLiteral("-no-ui-lines"), QStringLiteral("-silent")};
             if (code == QStringLiteral("en"))
@@ -219,7 +220,7 @@ private slots:
         QVERIFY2(check.exitCode() == 0, check.readAllStandardError().constData());
     }
 
-    // The field's own words (DOMAIN.md §6) wherever the English names the thing.
+    // The field's own words (those of the source documents) wherever the English names the thing.
     void glossary_data()
     {
         QTest::addColumn<QString>("code");

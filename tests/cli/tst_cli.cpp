@@ -1,10 +1,12 @@
-// Tests of the `pkm` command against the contract in CLI.md: the real binary run through
+// Tests of the `pkm` command against the reference in docs/cli.md: the real binary run through
 // QProcess (exit codes, stdout/stderr separation, JSON keys, CSV shape, the prototype's
 // published numbers), plus in-process checks of runCli() and the number formatter.
 
-#include "cli.h"
-#include "cliworkspace.h"
-#include "numberformat.h"
+#include "cli/cli.h"
+#include "cli/drawingcommands.h"
+#include "cli/cliworkspace.h"
+#include "export/workspacepictures.h"
+#include "report/numberformat.h"
 #include "scenepainter.h"
 
 #include <QImage>
@@ -332,6 +334,8 @@ private slots:
     void renderErrors_data();
     void renderErrors();
     void renderInProcessNeedsGui();
+    void lightProgramLoadsNoGuiLibrary();
+    void drawingWithoutPkmDrawFailsClearly();
 
     void sweepCsv_data();
     void sweepCsv();
@@ -358,6 +362,7 @@ private:
 
 void TestCli::initTestCase()
 {
+    cli::registerDrawingCommands(); // runCli() in-process runs every command, as pkm-draw does
     QVERIFY(QFileInfo::exists(QStringLiteral(PKM_BINARY_DIR "/pkm")));
     QVERIFY(m_temporary.isValid());
     m_brokenFile = m_temporary.filePath(QStringLiteral("broken.pkm.json"));
@@ -366,7 +371,7 @@ void TestCli::initTestCase()
     file.write(R"({"format": "pkm-studio-design", "version": 1, "mechanism": "pjoint", "parameters": {"a": 17)");
 }
 
-// -- eval --json: the keys CLI.md requires for pjoint ----------------------------------------
+// -- eval --json: the keys docs/cli.md gives for pjoint ----------------------------------------
 
 void TestCli::evalJsonHasContractKeys_data()
 {
@@ -1387,16 +1392,16 @@ void TestCli::mapColourLimitIgnoresSpikes()
         values.push_back(-1e9f);
     values.push_back(-std::numeric_limits<float>::infinity());
     values.push_back(std::numeric_limits<float>::quiet_NaN());
-    const double limit = cli::mapColourLimit(values, MapQuantity::Determinant);
+    const double limit = report::mapColourLimit(values, MapQuantity::Determinant);
     QVERIFY2(limit > 1.9 && limit <= 2.0, qPrintable(number(limit)));
-    QCOMPARE(cli::mapColourLimit(values, MapQuantity::Condition), 100.0);
+    QCOMPARE(report::mapColourLimit(values, MapQuantity::Condition), 100.0);
 
     MapGrid grid;
     grid.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 1));
     grid.columns = 2;
     grid.rows = 1;
     const std::vector<float> cells = {-1.0f, std::numeric_limits<float>::quiet_NaN()};
-    const QImage image = cli::mapImage(grid, cells, MapQuantity::Determinant, 1.0);
+    const QImage image = pictures::mapImage(grid, cells, MapQuantity::Determinant, 1.0);
     QCOMPARE(image.size(), QSize(2, 1));
     QCOMPARE(qAlpha(image.pixel(1, 0)), 0);
     QVERIFY(qBlue(image.pixel(0, 0)) > qRed(image.pixel(0, 0)));
@@ -1732,6 +1737,66 @@ void TestCli::renderErrors()
         QCOMPARE(fileBytes(output), old);
 }
 
+void TestCli::lightProgramLoadsNoGuiLibrary()
+{
+    // `pkm` links only QtCore: eval, sweep, workspace --json and map --json start without the
+    // GUI libraries; the commands that draw run in pkm-draw, which has them all.
+    const auto libraries = [](const QString &program) {
+        QProcess ldd;
+        ldd.start(QStringLiteral("ldd"), {program});
+        if (!ldd.waitForFinished(30000))
+            return QByteArray();
+        return ldd.readAllStandardOutput();
+    };
+    const QByteArray light = libraries(QStringLiteral(PKM_BINARY_DIR "/pkm"));
+    QVERIFY2(light.contains("libQt6Core"), light.constData());
+    for (const char *heavy : {"libQt6Gui", "libQt6Widgets", "libQt6OpenGL", "libQCustomPlot", "libGL", "libEGL", "libX11"})
+        QVERIFY2(!light.contains(heavy), heavy);
+    const QByteArray drawing = libraries(QStringLiteral(PKM_BINARY_DIR "/pkm-draw"));
+    QVERIFY2(drawing.contains("libQt6Widgets") && drawing.contains("libQCustomPlot"), drawing.constData());
+    // …and the drawing commands still work through `pkm`
+    QTemporaryDir directory;
+    const QString picture = directory.filePath(QStringLiteral("ws.png"));
+    const Run run = runPkm({QStringLiteral("workspace"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
+                            QStringLiteral("100"), QStringLiteral("-o"), picture});
+    QCOMPARE(run.exitCode, 0);
+    const QImage image(picture);
+    QVERIFY(std::max(image.width(), image.height()) >= 400);
+}
+
+void TestCli::drawingWithoutPkmDrawFailsClearly()
+{
+    // A `pkm` copied away from pkm-draw answers every command that does not draw, and refuses
+    // the drawing ones with one sentence, writing no file.
+    QTemporaryDir directory;
+    const QString lone = directory.filePath(QStringLiteral("pkm"));
+    QVERIFY(QFile::copy(QStringLiteral(PKM_BINARY_DIR "/pkm"), lone));
+    const auto run = [&](const QStringList &arguments) {
+        QProcess process;
+        process.start(lone, arguments);
+        Run result;
+        if (!process.waitForFinished(30000))
+            return result;
+        result.exitCode = process.exitCode();
+        result.out = process.readAllStandardOutput();
+        result.err = process.readAllStandardError();
+        return result;
+    };
+    QCOMPARE(run({QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--json")}).exitCode, 0);
+    const QString picture = directory.filePath(QStringLiteral("x.png"));
+    const Run render = run({QStringLiteral("render"), QStringLiteral("pjoint-prototype"), QStringLiteral("-o"), picture});
+    QCOMPARE(render.exitCode, int(CliUsageError));
+    QVERIFY(render.out.isEmpty());
+    QCOMPARE(render.err.count('\n'), 1);
+    QVERIFY2(render.err.contains("pkm-draw"), render.err.constData());
+    const Run map = run({QStringLiteral("map"), QStringLiteral("moma-3a"), QStringLiteral("--grid"), QStringLiteral("50"),
+                         QStringLiteral("-o"), picture});
+    QCOMPARE(map.exitCode, int(CliOutputError));
+    QVERIFY(map.out.isEmpty());
+    QVERIFY2(map.err.contains("pkm-draw"), map.err.constData());
+    QVERIFY(!QFileInfo::exists(picture));
+}
+
 void TestCli::renderInProcessNeedsGui()
 {
     // runCli() in a QCoreApplication (this test) cannot draw: a clear failure, no file.
@@ -2054,7 +2119,7 @@ void TestCli::numbersAreGeneral15()
     QFETCH(double, value);
     QFETCH(QString, expected);
     std::string text;
-    cli::appendNumber(text, value);
+    report::appendNumber(text, value);
     QCOMPARE(QString::fromStdString(text), expected);
 }
 
@@ -2063,9 +2128,9 @@ void TestCli::fastNumbersMatchToChars()
     // writeNumber() takes a fast path for most values; it must give std::to_chars' text.
     std::mt19937_64 random(20240601);
     std::uniform_real_distribution<double> exponent(-8.0, 18.0);
-    char buffer[cli::maxNumberLength];
+    char buffer[report::maxNumberLength];
     const auto check = [&](double value) {
-        const std::string text(buffer, cli::writeNumber(buffer, value));
+        const std::string text(buffer, report::writeNumber(buffer, value));
         if (text != referenceGeneral15(value)) {
             QFAIL(qPrintable(QStringLiteral("%1: %2 instead of %3")
                                  .arg(number(value), QString::fromStdString(text),

@@ -1,12 +1,13 @@
 // Tests of the DXF drawings: the R12 writer itself (number format, text escapes, the file's
 // structure), the drawing of a scene (lengths, dimension texts, undefined points), `pkm dxf`
 // for every preset, read back by an independent reader (tests/cli/check_dxf.py with ezdxf),
-// its failures (nothing written, the exit status of CLI.md), and the GUI's File ▸ Export
+// its failures (nothing written, the exit status of docs/cli.md), and the GUI's File ▸ Export
 // Drawing (DXF)….
 
-#include "cli.h"
-#include "dxfwriter.h"
-#include "mainwindow.h"
+#include "cli/cli.h"
+#include "cli/drawingcommands.h"
+#include "export/dxfwriter.h"
+#include "gui/mainwindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -200,6 +201,7 @@ private:
 
 void TestDxf::initTestCase()
 {
+    cli::registerDrawingCommands(); // runCli() in-process runs `pkm dxf`, as pkm-draw does
     QVERIFY(m_dir.isValid());
     m_python = pythonWithEzdxf(&m_noPython);
     QStandardPaths::setTestModeEnabled(true);

@@ -1,10 +1,11 @@
-// Tests of `pkm sheet` (CLI.md, issue 7): every format of every preset is written and read
+// Tests of `pkm sheet` (docs/cli.md): every format of every preset is written and read
 // back — the PDF's text through pdftotext, the JSON, the CSV — and its numbers are those of
 // `pkm eval --json` and `pkm workspace --json`; bad extensions and failing writes leave no file.
 
-#include "cli.h"
-#include "language.h"
-#include "mainwindow.h"
+#include "cli/cli.h"
+#include "cli/drawingcommands.h"
+#include "document/language.h"
+#include "gui/mainwindow.h"
 #include "text.h"
 
 #include <QApplication>
@@ -235,6 +236,7 @@ private:
 
 void TestSheet::initTestCase()
 {
+    pkm::cli::registerDrawingCommands(); // runCli() in-process runs `pkm sheet`, as pkm-draw does
     QVERIFY(m_dir.isValid());
     QVERIFY2(QFile::exists(QStringLiteral(PKM_BINARY_DIR "/pkm")), "build the pkm target first");
     m_pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
@@ -547,7 +549,7 @@ void TestSheet::momaWorkspaceAndStrokes()
     }
     const QJsonObject p1 = tableRow(sheet, QStringLiteral("ranges"), QStringLiteral("variables"), QStringLiteral("p1"));
     QCOMPARE(p1[QStringLiteral("values")][QStringLiteral("travel")].toDouble(), 200.0);
-    // configuration 3a has no direct singularity (DOMAIN.md §2)
+    // configuration 3a has no direct singularity (docs/mathematics.md)
     QCOMPARE(checks[QStringLiteral("direct_singular_poses")][QStringLiteral("result")].toString(), QStringLiteral("PASS"));
     QVERIFY(sheet[QStringLiteral("sections")].toObject().contains(QStringLiteral("singular")));
     const QJsonArray figures = section(sheet, QStringLiteral("workspace"))[QStringLiteral("figures")].toArray();
@@ -568,7 +570,7 @@ void TestSheet::oxglideExactAreas()
     const QString json = path(QStringLiteral("oxglide.json"));
     QCOMPARE(runPkm({QStringLiteral("sheet"), QStringLiteral("oxglide-prototype"), QStringLiteral("-o"), json}).exitCode, 0);
     const QJsonObject sheet = readJson(json);
-    // DOMAIN.md §3: the X workspace is the larger; exactly 753.33 and 2125.33 mm²
+    // docs/mathematics.md: the X workspace is the larger; exactly 753.33 and 2125.33 mm²
     QVERIFY(std::abs(value(sheet, QStringLiteral("workspace"), QStringLiteral("area_O")) - 753.33) < 0.01);
     QVERIFY(std::abs(value(sheet, QStringLiteral("workspace"), QStringLiteral("area_X")) - 2125.33) < 0.01);
     QCOMPARE(value(sheet, QStringLiteral("workspace"), QStringLiteral("area")), value(sheet, QStringLiteral("workspace"), QStringLiteral("area_O")));

@@ -1,10 +1,10 @@
-// The planar five-bar linkage (DOMAIN.md §4) against constructions made again here: elbows and
+// The planar five-bar linkage (docs/mathematics.md) against constructions made again here: elbows and
 // the output point by the law of cosines, round trips over the example and random designs in
 // all eight mode combinations, the Jacobians against central finite differences, singular
 // poses built by hand, the mode policy (no silent switch, refusals that name the mode), the
 // maps against the pose solver, the kinematic chain and its mobility, failures that name
 // their culprit, dragging, the drawing and the preset.
-#include "fivebar.h"
+#include "kinds/fivebar/fivebar.h"
 #include "registry.h"
 
 #include <QFile>

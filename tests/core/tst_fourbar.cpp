@@ -1,10 +1,10 @@
-// The planar four-bar linkage (DOMAIN.md §4, §5.5) against constructions made again here: the
+// The planar four-bar linkage (docs/mathematics.md) against constructions made again here: the
 // rocker angle from circles intersected independently, both branches, round trips, velocities
 // and accelerations against finite differences of δ(α), the document's (5), (8), (9) (which
 // hold up to the sign of ω₃) and its (14) (which does not), Grashof's classes, the assembly
 // limits of α by the law of cosines, the instantaneous centre, singular poses, failures that
 // name their culprit, the other branch, dragging and the drawing.
-#include "fourbar.h"
+#include "kinds/fourbar/fourbar.h"
 
 #include <QTest>
 
@@ -291,7 +291,7 @@ void TestFourBar::documentOmega3HoldsUpToSign()
 
 void TestFourBar::documentEpsilon3IsWrong()
 {
-    // DOMAIN.md §5.5. For the example (40/120/100/140 mm, ω₁ = 10 rad/s) the printed (14) follows
+    // docs/mathematics.md. For the example (40/120/100/140 mm, ω₁ = 10 rad/s) the printed (14) follows
     // d²δ/dt² only roughly: it is exact where sin α = 0 (its second term vanishes) and off
     // elsewhere, by 7 % at α = 60° and by a factor of 3.7 at α = 330°. It matches neither sign
     // (the document's (8) is −dδ/dt, so its own derivative would be −d²δ/dt²).

@@ -1,15 +1,15 @@
-// Mobility (DOMAIN.md §4, §5.2): the structural formulas of Chebyshev and Somov–Malyshev
+// Mobility (docs/mathematics.md): the structural formulas of Chebyshev and Somov–Malyshev
 // against the rank of the loop-closure Jacobian, for every mechanism and for the classroom's
 // paradoxical chains (the spatial parallelogram, the Bennett linkage, whose closure is checked
-// here with Denavit–Hartenberg matrices), a random spatial 4R that cannot move, the seed's
+// here with Denavit–Hartenberg matrices), a random spatial 4R that cannot move, the document's
 // "+P₁" shown wrong, singular poses (four-bar dead point and change point, MOMA with its links
 // in line) where the instantaneous mobility rises, and the independence of the unit of length.
-#include "fivebar.h"
-#include "fourbar.h"
+#include "kinds/fivebar/fivebar.h"
+#include "kinds/fourbar/fourbar.h"
 #include "mobility.h"
-#include "moma.h"
-#include "oxglide.h"
-#include "pjoint.h"
+#include "kinds/moma/moma.h"
+#include "kinds/oxglide/oxglide.h"
+#include "kinds/pjoint/pjoint.h"
 #include "registry.h"
 
 #include <QTest>
@@ -118,8 +118,8 @@ private slots:
         QCOMPARE(mobility::pairFreedoms(PairType::Screw), 1);
     }
 
-    /// DOMAIN.md §5.2: a body on a spherical joint at O touching a plane at K (a point contact,
-    /// class 1: five freedoms) moves with 2 freedoms. −P₁ gives 2, the seed's +P₁ gives 4. The
+    /// docs/mathematics.md: a body on a spherical joint at O touching a plane at K (a point contact,
+    /// class 1: five freedoms) moves with 2 freedoms. −P₁ gives 2, the document's +P₁ gives 4. The
     /// rank confirms 2 on the equivalent chain that replaces the contact by two prismatic pairs
     /// in the plane and a spherical pair at K.
     void somovMalyshevPlusP1IsWrong()
@@ -484,7 +484,7 @@ private slots:
     }
 
     /// MOMA 3b (guides closing downwards) with links of 100 mm: at p₁ = p₂ = 0 the links lie
-    /// in line along the base, P = (0, 0): a direct singularity (DOMAIN.md §2, det J_x = 0).
+    /// in line along the base, P = (0, 0): a direct singularity (det J_x = 0; docs/mathematics.md).
     void momaDirectSingularity()
     {
         MomaDesign d;

@@ -1,8 +1,8 @@
-// MOMA (DOMAIN.md §2, §5.4) against its own closed forms: kinematics both ways for the presets
+// MOMA (docs/mathematics.md) against its own closed forms: kinematics both ways for the presets
 // and for random designs in every mode, the Jacobians against finite differences of the
 // constraint, singular poses built by hand, the maps against the pose solver, the document's
 // statements about configurations 3a–3c, and failures that name their culprit.
-#include "moma.h"
+#include "kinds/moma/moma.h"
 
 #include <QTest>
 
@@ -522,7 +522,7 @@ private slots:
         const double across = std::sqrt(195.0 * 195.0 - 150.0 * 150.0);
         for (double p : {0.0, 37.5, 100.0, 163.0, 200.0}) {
             const Eigen::Vector2d z1 = moma::sliderJoint(d, 0, p), z2 = moma::sliderJoint(d, 1, p);
-            QCOMPARE(z2.x() - z1.x(), 0.0); // the seed's divisor
+            QCOMPARE(z2.x() - z1.x(), 0.0); // the document's divisor
             auto pose = m->solveDirect(pair(p, p));
             QVERIFY2(pose.ok(), pose ? "" : pose.failure().message.c_str());
             QVERIFY(finite(*pose));

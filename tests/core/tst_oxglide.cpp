@@ -1,10 +1,10 @@
-// The O-X glide (DOMAIN.md §3, §5.3) against its own closed forms, derived again here: the
-// kinematics both ways in both forms for the prototype and for random designs, the seed's
+// The O-X glide (docs/mathematics.md) against its own closed forms, derived again here: the
+// kinematics both ways in both forms for the prototype and for random designs, the document's
 // "+ s" in the X form's direct kinematics, the form the direct kinematics reports and the
 // refusal to cross it, the Jacobians against finite differences, the workspace areas against
 // an independent integration, the maps against the pose solver, failures that name their
 // culprit, the neighbouring form, dragging, the drawings and the independent z axis.
-#include "oxglide.h"
+#include "kinds/oxglide/oxglide.h"
 
 #include <QTest>
 
@@ -495,16 +495,16 @@ private slots:
         QVERIFY(m.solveInverse(m.homePose().outputs).ok());
     }
 
-    // -- the seed's error ------------------------------------------------------------------------
+    // -- the printed X-form formula's error ----------------------------------------------
 
-    void seedXFormDirectKinematicsIsWrong()
+    void printedXFormDirectKinematicsIsWrong()
     {
         // DOMAIN §5.3: the document writes y = ½√(4l² − (x_CD − x_AB + s)²) for the X form. Its
         // own X inverse kinematics, x_AB = x − s/2 + w, x_CD = x + s/2 − w, gives
         // x_CD − x_AB = s − 2w, so "+ s" leaves 2s − 2w where −2w belongs.
         const OxGlideDesign d = prototype(formX);
         const double l = d.rod, s = d.width;
-        auto seed = [&](double xAB, double xCD) {
+        auto printed = [&](double xAB, double xCD) {
             const double e = xCD - xAB + s;
             return 0.5 * std::sqrt(4 * l * l - e * e);
         };
@@ -514,8 +514,8 @@ private slots:
         QVERIFY(pose.ok());
         const double xAB = pose->inputs[0], xCD = pose->inputs[1];
         QVERIFY(std::abs(xAB - (55 + std::sqrt(2800.0))) < 1e-12);
-        const double wrong = seed(xAB, xCD);
-        qInfo("X form, T = (65, 60): the seed's direct kinematics gives y = %.3f mm", wrong);
+        const double wrong = printed(xAB, xCD);
+        qInfo("X form, T = (65, 60): the document's direct kinematics gives y = %.3f mm", wrong);
         QVERIFY2(std::abs(wrong - 60) > 12, qPrintable(QString::number(wrong))); // ≈ 72.9 mm: off by 12.9 mm
         const auto right = oxglide::direct(l, s, xAB, xCD);
         QVERIFY(right.valid);
@@ -524,13 +524,13 @@ private slots:
         auto back = m->solveDirect(pose->inputs);
         QVERIFY(back.ok());
         QVERIFY((platformOf(*back) - Eigen::Vector2d(65, 60)).norm() < 1e-12 * 130);
-        // at the crossing (rods parallel and upright, y = l) the seed's formula says √(l² − s²)
-        QCOMPARE(seed(40, 60), std::sqrt(l * l - s * s));
+        // at the crossing (rods parallel and upright, y = l) the document's formula says √(l² − s²)
+        QCOMPARE(printed(40, 60), std::sqrt(l * l - s * s));
         QCOMPARE(oxglide::direct(l, s, 40, 60).platform.y(), l);
 
-        // Over the X workspace the seed misses every pose but those with (2s − 2w)² = (2w)²,
+        // Over the X workspace the document's formula misses every pose but those with (2s − 2w)² = (2w)²,
         // i.e. w = s/2 (the rods cross at the platform joints).
-        double worstSeed = 0, worstOurs = 0;
+        double worstPrinted = 0, worstOurs = 0;
         int poses = 0;
         for (double y = 1; y < l; y += 1.5) {
             const Slice slice = sliceOf(d, formX, y);
@@ -539,21 +539,21 @@ private slots:
                 const Eigen::Vector2d q = inverseOf(d, formX, x, y);
                 const double e = q[1] - q[0] + s;
                 if (4 * l * l - e * e >= 0)
-                    worstSeed = std::max(worstSeed, std::abs(seed(q[0], q[1]) - y));
+                    worstPrinted = std::max(worstPrinted, std::abs(printed(q[0], q[1]) - y));
                 else
-                    worstSeed = infinity; // the seed's rods cannot even reach
+                    worstPrinted = infinity; // the printed formula's rods cannot even reach
                 worstOurs = std::max(worstOurs, std::abs(oxglide::direct(l, s, q[0], q[1]).platform.y() - y));
                 ++poses;
             }
         }
-        qInfo("over %d X poses of the prototype: the seed's y is off by up to %g mm, the corrected one by %.2g mm",
-            poses, worstSeed, worstOurs);
-        QVERIFY(worstSeed > 30);
+        qInfo("over %d X poses of the prototype: the document's y is off by up to %g mm, the corrected one by %.2g mm",
+            poses, worstPrinted, worstOurs);
+        QVERIFY(worstPrinted > 30);
         QVERIFY(worstOurs < 1e-9 * l);
         // … and there it is right
         const double yh = std::sqrt(l * l - s * s / 4);
         const Eigen::Vector2d q = inverseOf(d, formX, 65, yh);
-        QVERIFY(std::abs(seed(q[0], q[1]) - yh) < 1e-9 * l);
+        QVERIFY(std::abs(printed(q[0], q[1]) - yh) < 1e-9 * l);
     }
 
     // -- the form --------------------------------------------------------------------------------

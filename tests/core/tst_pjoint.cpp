@@ -1,6 +1,6 @@
 // The active П-joint against its closed forms, their inverses, finite differences and the
-// published prototype numbers (DOMAIN.md §1, §5.1).
-#include "pjoint.h"
+// published prototype numbers (the П-joint document; docs/mathematics.md).
+#include "kinds/pjoint/pjoint.h"
 
 #include <QTest>
 

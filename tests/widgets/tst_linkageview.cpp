@@ -3,7 +3,7 @@
 // carriages and ghosts of its other modes.
 
 #include "linkageview.h"
-#include "pjoint.h"
+#include "kinds/pjoint/pjoint.h"
 #include "registry.h"
 
 #include <QApplication>

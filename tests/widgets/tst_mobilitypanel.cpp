@@ -7,7 +7,7 @@
 // and computes nothing while hidden.
 //
 // With PKM_GRAB_DIR set, the panel's pictures are written there (mobility-panel*.png).
-#include "fourbar.h"
+#include "kinds/fourbar/fourbar.h"
 #include "mobilitypanel.h"
 #include "registry.h"
 

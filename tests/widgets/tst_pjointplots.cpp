@@ -2,7 +2,7 @@
 // core/pjoint.h, the cursor shows them at θ, and near-singular designs never put a NaN, an inf
 // or a runaway axis on screen.
 
-#include "pjoint.h"
+#include "kinds/pjoint/pjoint.h"
 #include "pjointcurves.h"
 #include "pjointplots.h"
 #include "plotstyle.h"

@@ -1,4 +1,4 @@
-// Tests of WorkspaceMapView: the map is MOMA's (DOMAIN.md §2) computed off the GUI thread,
+// Tests of WorkspaceMapView: the map is MOMA's (docs/mathematics.md) computed off the GUI thread,
 // a burst of design edits computes once and stale results are dropped, a pose change only moves
 // the marker, clicks map to mm, and a mechanism without a planar workspace says so.
 
@@ -30,7 +30,7 @@ MechanismPtr moma(const ParameterSet &parameters = {})
     return result ? *result : nullptr;
 }
 
-/// Configuration 3d (DOMAIN.md §2): the guides along the axes, both legs in their + branch.
+/// Configuration 3d (docs/mathematics.md): the guides along the axes, both legs in their + branch.
 MechanismPtr moma3d()
 {
     return moma({{"R1x", 117.0}, {"R1y", 0.0}, {"R2x", 0.0}, {"R2y", 117.0}, {"alpha1", 0.0}, {"alpha2", pi / 2},

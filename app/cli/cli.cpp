@@ -1,0 +1,437 @@
+#include "cli/cli.h"
+
+#include "cli/cliarguments.h"
+#include "cli/clidesign.h"
+#include "cli/clidrawing.h"
+#include "cli/clihelp.h"
+#include "cli/clisweep.h"
+#include "cli/cliworkspace.h"
+#include "registry.h"
+#include "report/jsonwriter.h"
+#include "report/report.h"
+#include "report/texttable.h"
+
+#include <QString>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <vector>
+
+// Everything `pkm` prints is built as UTF-8 std::string from core names and units, numbers
+// are formatted locale-free (numberformat.h), and the text reaches the FILE* only once the
+// command has succeeded. QString appears only at the designfile boundary.
+
+namespace pkm {
+
+int cliExitCode(const Failure &failure)
+{
+    switch (failure.kind) {
+    case FailureKind::OutOfRange:
+    case FailureKind::Unreachable:
+    case FailureKind::Singular:
+        return CliNoSolution;
+    case FailureKind::InvalidParameter:
+    case FailureKind::UnknownName:
+        break;
+    }
+    return CliUsageError;
+}
+
+namespace cli {
+
+using namespace report;
+
+namespace {
+
+// -- names ---------------------------------------------------------------------------------
+
+
+constexpr std::array<ParameterGroup, 5> parameterGroups = {ParameterGroup::Geometry, ParameterGroup::Range,
+    ParameterGroup::Actuator, ParameterGroup::Drawing, ParameterGroup::Mode};
+
+// -- list, show, eval ----------------------------------------------------------------------
+
+std::string listOutput(bool json)
+{
+    const QList<PresetInfo> presets = designfile::presets();
+    std::string out;
+    if (json) {
+        JsonWriter writer(out, JsonWriter::Style::Pretty);
+        writer.beginObject();
+        writer.key("presets");
+        writer.beginArray();
+        for (const PresetInfo &preset : presets) {
+            writer.beginObject(true);
+            writer.key("id").string(preset.id.toStdString());
+            writer.key("mechanism").string(preset.kind.toStdString());
+            writer.key("title").string(preset.title.toStdString());
+            writer.endObject();
+        }
+        writer.endArray();
+        writer.key("mechanisms");
+        writer.beginArray();
+        for (const MechanismKind &kind : mechanismKinds()) {
+            writer.beginObject(true);
+            writer.key("id").string(kind.id);
+            writer.key("title").string(kind.title);
+            writer.endObject();
+        }
+        writer.endArray();
+        writer.endObject();
+        out += '\n';
+        return out;
+    }
+    TextTable table({false, false, false}, "");
+    table.cells({"ID", "MECHANISM", "TITLE"});
+    for (const PresetInfo &preset : presets)
+        table.cells({preset.id.toStdString(), preset.kind.toStdString(), preset.title.toStdString()});
+    table.render(out);
+    return out;
+}
+
+std::string showJson(const PreparedDesign &prepared)
+{
+    const Mechanism &mechanism = *prepared.mechanism;
+    const ParameterSet values = mechanism.parameters();
+    std::string out;
+    JsonWriter json(out, JsonWriter::Style::Pretty);
+    json.beginObject();
+    json.key("design").string(prepared.origin);
+    json.key("title").string(prepared.design.title.toStdString());
+    json.key("description").string(prepared.design.description.toStdString());
+    json.key("mechanism").string(mechanism.kind());
+    json.key("mechanism_title").string(kindTitle(mechanism.kind()));
+
+    json.key("parameters");
+    json.beginObject();
+    for (const ParameterInfo &info : mechanism.parameterInfo()) {
+        json.key(info.name);
+        json.beginObject(true);
+        json.key("value").number(parameterDisplayValue(values, info));
+        json.key("unit").string(info.unit.symbol);
+        json.key("min").number(info.unit.toDisplay(info.domain.min)); // ±∞ → null: unbounded
+        json.key("max").number(info.unit.toDisplay(info.domain.max));
+        json.key("min_open").boolean(info.openMin);
+        json.key("max_open").boolean(info.openMax);
+        json.key("stored").boolean(info.stored);
+        json.key("group").string(parameterGroupKey(info.group));
+        json.key("symbol").string(info.symbol);
+        json.key("label").string(info.label);
+        json.key("decimals").integer(info.decimals);
+        json.endObject();
+    }
+    json.endObject();
+
+    json.key("variables");
+    json.beginObject();
+    const auto &variables = mechanism.variableInfo();
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        const VariableInfo &info = variables[i];
+        const Interval range = mechanism.variableRange(static_cast<int>(i));
+        json.key(info.name);
+        json.beginObject(true);
+        json.key("value").number(info.unit.toDisplay(mechanism.variableValue(prepared.pose, static_cast<int>(i))));
+        json.key("unit").string(info.unit.symbol);
+        json.key("min").number(info.unit.toDisplay(range.min));
+        json.key("max").number(info.unit.toDisplay(range.max));
+        json.key("actuated").boolean(info.actuated);
+        json.key("symbol").string(info.symbol);
+        json.key("label").string(info.label);
+        json.endObject();
+    }
+    json.endObject();
+
+    json.key("quantities");
+    json.beginObject();
+    for (const ReportEntry &entry : mechanism.reportLayout().entries) {
+        json.key(entry.name);
+        json.beginObject(true);
+        json.key("group").string(reportGroupKey(entry.group));
+        json.key("unit").string(entry.unit.symbol);
+        json.key("rows").integer(entry.rows);
+        json.key("cols").integer(entry.cols);
+        json.key("symbol").string(entry.symbol);
+        json.key("label").string(entry.label);
+        json.endObject();
+    }
+    json.endObject();
+
+    json.key("warnings");
+    json.beginArray();
+    for (const std::string &warning : mechanism.designWarnings())
+        json.string(warning);
+    json.endArray();
+    json.endObject();
+    out += '\n';
+    return out;
+}
+
+std::string showText(const PreparedDesign &prepared)
+{
+    const Mechanism &mechanism = *prepared.mechanism;
+    const ParameterSet values = mechanism.parameters();
+    std::string out = designHeading(prepared);
+    if (!prepared.design.description.isEmpty())
+        out += "About      " + prepared.design.description.toStdString() + '\n';
+    out += '\n';
+
+    TextTable table({false, false, true, false, false, false, false});
+    table.cells({"NAME", "SYMBOL", "VALUE", "UNIT", "ALLOWED", "KIND", "LABEL"});
+    for (ParameterGroup group : parameterGroups) {
+        bool headed = false;
+        for (const ParameterInfo &info : mechanism.parameterInfo()) {
+            if (info.group != group)
+                continue;
+            if (!headed) {
+                std::string title(parameterGroupKey(group));
+                title.front() = static_cast<char>(title.front() - 'a' + 'A');
+                table.heading(title + " parameters");
+            }
+            headed = true;
+            table.cells({info.name, info.symbol, fixedText(parameterDisplayValue(values, info), info.decimals),
+                std::string(info.unit.symbol),
+                rangeText(info.unit.toDisplay(info.domain.min), info.unit.toDisplay(info.domain.max), info.openMin,
+                    info.openMax),
+                info.stored ? "stored" : "derived", info.label});
+        }
+    }
+    table.heading("Pose variables");
+    const auto &variables = mechanism.variableInfo();
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        const VariableInfo &info = variables[i];
+        const int index = static_cast<int>(i);
+        const Interval range = mechanism.variableRange(index);
+        table.cells({info.name, info.symbol,
+            fixedText(info.unit.toDisplay(mechanism.variableValue(prepared.pose, index)), info.decimals),
+            std::string(info.unit.symbol),
+            rangeText(info.unit.toDisplay(range.min), info.unit.toDisplay(range.max), false, false,
+                std::max(info.decimals, 3)),
+            info.actuated ? "input" : "output", info.label});
+    }
+    table.render(out);
+
+    out += "\nQuantities of eval and sweep\n";
+    TextTable quantities({false, false, false, false, false});
+    for (const ReportEntry &entry : mechanism.reportLayout().entries) {
+        const std::string shape = entry.rows * entry.cols == 1
+            ? std::string()
+            : std::to_string(entry.rows) + "×" + std::to_string(entry.cols);
+        quantities.cells({entry.name, entry.symbol, std::string(entry.unit.symbol),
+            std::string(reportGroupKey(entry.group)) + (shape.empty() ? "" : " " + shape), entry.label});
+    }
+    quantities.render(out);
+
+    out += "\nWarnings\n";
+    const std::vector<std::string> warnings = mechanism.designWarnings();
+    for (const std::string &warning : warnings)
+        out += "  " + warning + '\n';
+    if (warnings.empty())
+        out += "  none\n";
+    return out;
+}
+
+std::string evalText(const PreparedDesign &prepared)
+{
+    const Mechanism &mechanism = *prepared.mechanism;
+    const ReportLayout &layout = mechanism.reportLayout();
+    std::vector<double> values(static_cast<std::size_t>(layout.size));
+    const Singularity singularity = mechanism.evaluate(prepared.pose, values);
+
+    std::string out = designHeading(prepared);
+    TextTable table({false, true, false, false});
+    const auto label = [](const std::string &text, const std::string &symbol, const std::string &name) {
+        return symbol == name ? text : text + " (" + name + ")"; // the name to use with --set and in JSON
+    };
+
+    table.heading("\nParameters");
+    const ParameterSet parameters = mechanism.parameters();
+    for (const ParameterInfo &info : mechanism.parameterInfo()) {
+        table.cells({info.symbol, fixedText(parameterDisplayValue(parameters, info), info.decimals),
+            std::string(info.unit.symbol), label(info.label, info.symbol, info.name)});
+    }
+    std::vector<std::string> undefined;
+    const auto addGroup = [&](ReportGroup group, const char *title) {
+        table.heading(title);
+        for (const ReportEntry &entry : layout.entries) {
+            if (entry.group != group)
+                continue;
+            if (!allFinite(entry, values))
+                undefined.push_back(entry.name);
+            const auto at = [&](int i) {
+                return fixedText(
+                    entry.unit.toDisplay(values[static_cast<std::size_t>(entry.offset + i)]), entry.decimals);
+            };
+            std::string text;
+            if (entry.rows * entry.cols == 1) {
+                text = at(0);
+            } else {
+                for (int r = 0; r < entry.rows; ++r) {
+                    text += r == 0 ? "[[" : ", [";
+                    for (int c = 0; c < entry.cols; ++c)
+                        text += (c == 0 ? "" : ", ") + at(r * entry.cols + c);
+                    text += "]";
+                }
+                text += "]";
+            }
+            table.cells(
+                {entry.symbol, text, std::string(entry.unit.symbol), label(entry.label, entry.symbol, entry.name)});
+        }
+        for (const ReportText &word : mechanism.reportText(prepared.pose)) {
+            if (word.group == group)
+                table.cells({word.name, word.text, "", word.label});
+        }
+    };
+    addGroup(ReportGroup::Pose, "Pose");
+    addGroup(ReportGroup::Jacobian, "Jacobian");
+    addGroup(ReportGroup::Derived, "Derived");
+    table.heading("Singularity");
+    table.cells({"type", std::string(singularityName(singularity.type)), "", "singularity class"});
+    table.cells({"margin", fixedText(singularity.margin, 4), "", "distance from the nearest singularity, 0 at it"});
+    if (!undefined.empty()) {
+        std::string names;
+        for (const std::string &name : undefined)
+            names += (names.empty() ? "" : ", ") + name;
+        table.text("not finite at this pose: " + names);
+    }
+    addMobilityRows(table, mechanism, prepared.pose);
+    const std::vector<std::string> warnings = mechanism.designWarnings();
+    if (!warnings.empty()) {
+        table.heading("Warnings");
+        for (const std::string &warning : warnings)
+            table.text(warning);
+    }
+    table.render(out);
+    return out;
+}
+
+// -- running -------------------------------------------------------------------------------
+
+int fail(std::FILE *err, const Failure &failure)
+{
+    printError(err, failure.message);
+    return cliExitCode(failure);
+}
+
+int finishOutput(std::FILE *out, std::FILE *err, bool ok)
+{
+    if (ok && std::fflush(out) == 0 && !std::ferror(out))
+        return CliSuccess;
+    printError(err, std::string("Cannot write the output: ") + std::strerror(errno) + ".");
+    return CliOutputError;
+}
+
+int runSweep(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
+{
+    const auto sweep = Sweep::solve(prepared, invocation);
+    if (!sweep)
+        return fail(err, sweep.failure());
+    const Sweep::Outcome outcome = sweep->write(out);
+    if (outcome == Sweep::Outcome::NotDeterministic) {
+        printError(err,
+            "a sweep step solved in the first pass failed in the second: the mechanism is not "
+            "deterministic (a bug).");
+        return CliNoSolution;
+    }
+    return finishOutput(out, err, outcome == Sweep::Outcome::Written);
+}
+
+} // namespace
+
+std::string kindTitle(std::string_view kind)
+{
+    const MechanismKind *found = findMechanismKind(kind);
+    return found ? std::string(found->title) : std::string(kind);
+}
+
+std::string designHeading(const PreparedDesign &prepared)
+{
+    const std::string title = prepared.design.title.toStdString();
+    const std::string_view kind = prepared.mechanism->kind();
+    return "Design     " + (title.empty() ? prepared.origin : prepared.origin + ": " + title) + "\nMechanism  "
+        + std::string(kind) + " (" + kindTitle(kind) + ")\n";
+}
+
+void printError(std::FILE *err, const std::string &message)
+{
+    const std::string line = "pkm: " + message + "\n";
+    std::fwrite(line.data(), 1, line.size(), err);
+    std::fflush(err);
+}
+
+int printOutput(std::FILE *out, std::FILE *err, std::string_view text)
+{
+    return finishOutput(out, err, std::fwrite(text.data(), 1, text.size(), out) == text.size());
+}
+
+std::string evalJson(const Mechanism &mechanism, const Pose &pose)
+{
+    const ReportLayout &layout = mechanism.reportLayout();
+    std::vector<double> values(static_cast<std::size_t>(layout.size));
+    const Singularity singularity = mechanism.evaluate(pose, values);
+    std::string out;
+    JsonWriter json(out, JsonWriter::Style::Pretty);
+    json.beginObject();
+    json.key("mechanism").string(mechanism.kind());
+    writeParametersJson(json, mechanism, false);
+    writeReportJson(json, layout, values, singularity, mechanism.reportText(pose));
+    writeMobilityJson(json, mechanism, pose);
+    json.endObject();
+    return out;
+}
+
+} // namespace cli
+
+int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
+{
+    using namespace cli;
+    std::vector<std::string> args;
+    args.reserve(static_cast<std::size_t>(arguments.size()));
+    for (const QString &argument : arguments)
+        args.push_back(argument.toStdString());
+    if (isDxfCommand(args)) { // its own options (clidxf.h)
+        if (!drawingCommands().dxf)
+            return fail(err, usageFailure("dxf", cannotDrawMessage("dxf")));
+        return drawingCommands().dxf(args, out, err);
+    }
+
+    const auto parsed = parseArguments(args);
+    if (!parsed)
+        return fail(err, parsed.failure());
+    const Invocation &invocation = *parsed;
+    if (invocation.version)
+        return printOutput(out, err, std::string("pkm ") + PKM_VERSION + "\n");
+    if (invocation.help)
+        return printOutput(out, err, helpText(invocation.command));
+    if (invocation.command == Command::List)
+        return printOutput(out, err, listOutput(invocation.json));
+
+    const auto prepared = prepareDesign(*invocation.design, invocation.sets);
+    if (!prepared)
+        return fail(err, prepared.failure());
+    const DrawingCommands &drawing = drawingCommands();
+    if (invocation.command == Command::Render) {
+        if (!drawing.render)
+            return fail(err, usageFailure("render", cannotDrawMessage("render")));
+        return drawing.render(*prepared, invocation, out, err); // it prints the note where it draws
+    }
+    if (invocation.command == Command::Sheet && !drawing.sheet)
+        return fail(err, usageFailure("sheet", cannotDrawMessage("sheet")));
+    if (!prepared->note.empty())
+        printError(err, "note: " + prepared->note);
+
+    if (invocation.command == Command::Show)
+        return printOutput(out, err, invocation.json ? showJson(*prepared) : showText(*prepared));
+    if (invocation.command == Command::Eval) {
+        return printOutput(
+            out, err, invocation.json ? evalJson(*prepared->mechanism, prepared->pose) + "\n" : evalText(*prepared));
+    }
+    if (invocation.command == Command::Workspace || invocation.command == Command::Map)
+        return runWorkspaceCommand(*prepared, invocation, out, err);
+    if (invocation.command == Command::Sheet)
+        return drawing.sheet(*prepared, invocation, out, err);
+    return runSweep(*prepared, invocation, out, err);
+}
+
+} // namespace pkm

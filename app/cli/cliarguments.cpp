@@ -1,0 +1,424 @@
+#include "cli/cliarguments.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace pkm::cli {
+
+namespace {
+
+enum OptionFlag : unsigned {
+    OptionJson = 1u << 0,
+    OptionCsv = 1u << 1,
+    OptionSet = 1u << 2,
+    OptionSweep = 1u << 3, ///< --var, --from, --to, --steps
+    OptionDesign = 1u << 4, ///< takes a DESIGN argument
+    OptionGrid = 1u << 5,
+    OptionQuantity = 1u << 6,
+    OptionOutput = 1u << 7, ///< -o FILE
+    OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption, --one-way
+    OptionLanguage = 1u << 9, ///< --lang CODE
+};
+
+struct CommandSpec {
+    Command command;
+    std::string_view name;
+    unsigned options;
+    std::array<std::string_view, 4> outputTypes {}; ///< the extensions -o takes (empty: unused)
+    bool needsOutput = false; ///< -o FILE is required
+};
+
+constexpr std::array<CommandSpec, 8> commandSpecs = {{
+    {Command::List, "list", OptionJson},
+    {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
+    {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet},
+    {Command::Sweep, "sweep", OptionDesign | OptionJson | OptionCsv | OptionSet | OptionSweep},
+    {Command::Workspace, "workspace", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionOutput,
+        {"png", "svg"}},
+    {Command::Map, "map", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput,
+        {"png", "csv"}},
+    {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture | OptionSweep,
+        {"png", "svg", "pdf", "gif"}, true},
+    {Command::Sheet, "sheet", OptionDesign | OptionSet | OptionOutput | OptionLanguage, {"pdf", "json", "csv"}, true},
+}};
+
+const CommandSpec *findCommand(std::string_view name)
+{
+    for (const CommandSpec &spec : commandSpecs) {
+        if (spec.name == name)
+            return &spec;
+    }
+    return nullptr;
+}
+
+/// The flag of an option ("--json"), 0 for an unknown one.
+unsigned optionFlag(std::string_view option)
+{
+    if (option == "--json")
+        return OptionJson;
+    if (option == "--csv")
+        return OptionCsv;
+    if (option == "--set")
+        return OptionSet;
+    if (option == "--var" || option == "--from" || option == "--to" || option == "--steps")
+        return OptionSweep;
+    if (option == "--grid")
+        return OptionGrid;
+    if (option == "--quantity")
+        return OptionQuantity;
+    if (option == "-o" || option == "--output")
+        return OptionOutput;
+    if (option == "--view" || option == "--size" || option == "--camera" || option == "--orthographic"
+        || option == "--no-caption" || option == "--one-way")
+        return OptionPicture;
+    if (option == "--lang")
+        return OptionLanguage;
+    return 0;
+}
+
+/// Locale-independent: std::from_chars reads '.' as the decimal separator whatever LC_NUMERIC
+/// says. The whole text must be a finite number ("5mm", "nan" and "1e999" are refused).
+std::optional<double> parseNumber(std::string_view text)
+{
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+        text.remove_prefix(1);
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
+        text.remove_suffix(1);
+    if (text.size() > 1 && text.front() == '+' && text[1] != '-')
+        text.remove_prefix(1);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        return std::nullopt;
+    return value;
+}
+
+Failure notANumber(const std::string &context, const std::string &culprit, std::string_view text)
+{
+    std::string message = context + ": '" + std::string(text) + "' is not a number";
+    if (text.find(',') != std::string_view::npos)
+        message += " (use '.' as the decimal separator)";
+    return usageFailure(culprit, message + ".");
+}
+
+bool isHelp(const std::string &argument)
+{
+    return argument == "-h" || argument == "--help";
+}
+
+/// "a .png, .svg or .pdf file"
+std::string fileTypes(const std::array<std::string_view, 4> &types)
+{
+    std::vector<std::string_view> used;
+    for (std::string_view type : types) {
+        if (!type.empty())
+            used.push_back(type);
+    }
+    std::string text("a ");
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        if (i > 0)
+            text.append(i + 1 == used.size() ? " or " : ", ");
+        text.append(".").append(used[i]);
+    }
+    return text.append(" file");
+}
+
+/// "1600x1200" (also "1600X1200", "1600×1200"): whole numbers, or nothing.
+std::optional<std::pair<double, double>> parseSize(std::string_view text)
+{
+    std::size_t at = text.find_first_of("xX");
+    std::size_t separator = 1;
+    if (const std::size_t times = text.find("×"); times != std::string_view::npos && times < at) {
+        at = times;
+        separator = std::string_view("×").size();
+    }
+    if (at == std::string_view::npos)
+        return std::nullopt;
+    const auto width = parseNumber(text.substr(0, at));
+    const auto height = parseNumber(text.substr(at + separator));
+    if (!width || !height)
+        return std::nullopt;
+    return std::pair {*width, *height};
+}
+
+} // namespace
+
+std::string_view commandName(Command command)
+{
+    for (const CommandSpec &spec : commandSpecs) {
+        if (spec.command == command)
+            return spec.name;
+    }
+    return {};
+}
+
+std::string fileExtension(std::string_view path)
+{
+    const std::size_t slash = path.find_last_of('/');
+    const std::string_view name = slash == std::string_view::npos ? path : path.substr(slash + 1);
+    const std::size_t dot = name.find_last_of('.');
+    if (dot == std::string_view::npos || dot == 0)
+        return {};
+    std::string extension(name.substr(dot + 1));
+    for (char &c : extension) {
+        if (c >= 'A' && c <= 'Z')
+            c = static_cast<char>(c - 'A' + 'a');
+    }
+    return extension;
+}
+
+Failure usageFailure(std::string culprit, std::string message)
+{
+    return Failure {FailureKind::InvalidParameter, std::move(culprit), std::move(message)};
+}
+
+Failure inContext(Failure failure, const std::string &context)
+{
+    failure.message = context + ": " + failure.message;
+    return failure;
+}
+
+Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
+{
+    Invocation invocation;
+    if (arguments.empty())
+        return usageFailure({}, "No command given: try 'pkm --help'.");
+
+    const std::string &first = arguments.front();
+    if (isHelp(first) || first == "help") {
+        invocation.help = true;
+        if (first == "help" && arguments.size() > 1) {
+            const CommandSpec *spec = findCommand(arguments[1]);
+            if (!spec)
+                return usageFailure(arguments[1], "Unknown command '" + arguments[1] + "': try 'pkm --help'.");
+            invocation.command = spec->command;
+        }
+        return invocation;
+    }
+    if (first == "--version" || first == "-V") {
+        invocation.version = true;
+        return invocation;
+    }
+    if (first.starts_with('-'))
+        return usageFailure(first, "Unknown option '" + first + "' before the command: try 'pkm --help'.");
+    const CommandSpec *spec = findCommand(first);
+    if (!spec)
+        return usageFailure(first, "Unknown command '" + first + "': try 'pkm --help'.");
+    const CommandSpec &command = *spec;
+    invocation.command = command.command;
+    // Help wins over any other mistake on the line, even after "--".
+    if (std::any_of(arguments.begin() + 1, arguments.end(), isHelp)) {
+        invocation.help = true;
+        return invocation;
+    }
+
+    const std::string quotedCommand = "'pkm " + std::string(command.name) + "'";
+    const std::string seeHelp = " (see 'pkm " + std::string(command.name) + " --help')";
+    bool optionsEnded = false;
+    for (std::size_t i = 1; i < arguments.size(); ++i) {
+        const std::string &argument = arguments[i];
+        if (optionsEnded || !argument.starts_with('-') || argument == "-") {
+            if (!(command.options & OptionDesign) || invocation.design)
+                return usageFailure(argument, "Unexpected argument '" + argument + "'" + seeHelp + ".");
+            invocation.design = argument;
+            continue;
+        }
+        if (argument == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        std::string option = argument;
+        std::optional<std::string> inlineValue;
+        if (const auto equals = argument.find('='); argument.starts_with("--") && equals != std::string::npos) {
+            option = argument.substr(0, equals);
+            inlineValue = argument.substr(equals + 1);
+        }
+        const unsigned flag = optionFlag(option);
+        if (!(flag & command.options)) {
+            return usageFailure(option, "'" + option + "' is not an option of " + quotedCommand + seeHelp + ".");
+        }
+        if (flag == OptionJson || flag == OptionCsv) {
+            if (inlineValue)
+                return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
+            (flag == OptionJson ? invocation.json : invocation.csv) = true;
+            continue;
+        }
+        if (option == "--orthographic" || option == "--no-caption" || option == "--one-way") {
+            if (inlineValue)
+                return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
+            if (option == "--orthographic")
+                invocation.orthographic = true;
+            else if (option == "--one-way")
+                invocation.oneWay = true;
+            else
+                invocation.caption = false;
+            continue;
+        }
+        // The remaining options take a value, which may look like a negative number.
+        std::string value;
+        if (inlineValue) {
+            value = *inlineValue;
+        } else if (i + 1 < arguments.size()) {
+            value = arguments[++i];
+        } else {
+            return usageFailure(option, "'" + option + "' needs a value" + seeHelp + ".");
+        }
+        const std::string context = option + " " + value;
+        if (option == "--set") {
+            const auto equals = value.find('=');
+            if (equals == std::string::npos || equals == 0)
+                return usageFailure(value, "--set needs NAME=VALUE, not '" + value + "'" + seeHelp + ".");
+            const std::string name = value.substr(0, equals);
+            const std::string_view number = std::string_view(value).substr(equals + 1);
+            const auto parsed = parseNumber(number);
+            const bool word = !number.empty()
+                && std::all_of(number.begin(), number.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+            if (!parsed && !word)
+                return notANumber(context, name, number);
+            if (parsed)
+                invocation.sets.push_back({value, name, *parsed, {}});
+            else
+                invocation.sets.push_back({value, name, std::nan(""), std::string(number)});
+        } else if (option == "--var") {
+            invocation.var = value;
+        } else if (option == "--lang") {
+            invocation.language = value;
+        } else if (option == "--grid") {
+            const auto number = parseNumber(value);
+            if (!number || *number < minGrid || *number > maxGrid || *number != std::floor(*number)) {
+                return usageFailure("--grid",
+                    context + ": the grid must be a whole number of cells from " + std::to_string(minGrid) + " to "
+                        + std::to_string(maxGrid) + " (along the longer side of the workspace).");
+            }
+            invocation.grid = static_cast<int>(*number);
+        } else if (option == "--quantity") {
+            if (value != "det" && value != "cond") {
+                return usageFailure("--quantity",
+                    context + ": the quantity must be 'det' (det J) or 'cond' (the condition number of J).");
+            }
+            invocation.quantity = value;
+        } else if (flag == OptionOutput) {
+            const std::string extension = fileExtension(value);
+            const auto &types = command.outputTypes;
+            if (value.empty() || extension.empty() || std::find(types.begin(), types.end(), extension) == types.end()) {
+                return usageFailure(value,
+                    option + " " + value + ": " + quotedCommand + " writes " + fileTypes(types)
+                        + ", so the name must end in one of these" + seeHelp + ".");
+            }
+            invocation.output = value;
+        } else if (option == "--view") {
+            if (value != "2d" && value != "3d") {
+                return usageFailure("--view",
+                    context + ": the view must be '2d' (the drawing of the mechanism plane) or '3d' (the solid model)"
+                        + seeHelp + ".");
+            }
+            invocation.view = value;
+        } else if (option == "--camera") {
+            if (value != "front" && value != "top" && value != "side" && value != "iso") {
+                return usageFailure(
+                    "--camera", context + ": the camera must be 'front', 'top', 'side' or 'iso'" + seeHelp + ".");
+            }
+            invocation.camera = value;
+        } else if (option == "--size") {
+            const auto size = parseSize(value);
+            const auto valid = [](double side) {
+                return side >= minPictureSide && side <= maxPictureSide && side == std::floor(side);
+            };
+            if (!size || !valid(size->first) || !valid(size->second)) {
+                std::string message(context);
+                message.append(": the size must be WIDTHxHEIGHT in pixels, whole numbers from ")
+                    .append(std::to_string(minPictureSide))
+                    .append(" to ")
+                    .append(std::to_string(maxPictureSide))
+                    .append(", e.g. 1600x1200")
+                    .append(seeHelp)
+                    .append(".");
+                return usageFailure("--size", message);
+            }
+            invocation.width = static_cast<int>(size->first);
+            invocation.height = static_cast<int>(size->second);
+            invocation.sizeGiven = true;
+        } else if (option == "--steps") {
+            const auto number = parseNumber(value);
+            // 10^9 rows are ~300 GB of CSV: far beyond any use.
+            if (!number || *number < 1 || *number > 1e9 || *number != std::floor(*number)) {
+                return usageFailure("--steps",
+                    context
+                        + ": the number of steps must be a whole number from 1 to "
+                          "1000000000.");
+            }
+            invocation.steps = static_cast<std::int64_t>(*number);
+        } else {
+            const auto number = parseNumber(value);
+            if (!number)
+                return notANumber(context, option, value);
+            (option == "--from" ? invocation.from : invocation.to) = *number;
+        }
+    }
+
+    if ((command.options & OptionDesign) && !invocation.design) {
+        return usageFailure("DESIGN",
+            quotedCommand + " needs a DESIGN: a preset id (see 'pkm list') or a .pkm.json file" + seeHelp + ".");
+    }
+    if (command.needsOutput && !invocation.output) {
+        return usageFailure("-o", quotedCommand + " needs -o FILE, " + fileTypes(command.outputTypes) + seeHelp + ".");
+    }
+    if (invocation.view.value_or("2d") != "3d") {
+        if (invocation.camera)
+            return usageFailure("--camera", "--camera " + *invocation.camera + " needs --view 3d" + seeHelp + ".");
+        if (invocation.orthographic)
+            return usageFailure("--orthographic", "--orthographic needs --view 3d" + seeHelp + ".");
+    }
+    if (invocation.json && invocation.csv)
+        return usageFailure("--csv", "--csv and --json exclude each other: give one.");
+    const bool animation = invocation.command == Command::Render && invocation.output
+        && fileExtension(*invocation.output) == "gif";
+    if (invocation.command == Command::Render && !animation) {
+        const std::optional<std::string> &sweepOption = invocation.var ? std::optional<std::string>("--var")
+            : invocation.from                                          ? std::optional<std::string>("--from")
+            : invocation.to                                            ? std::optional<std::string>("--to")
+            : invocation.steps ? std::optional<std::string>("--steps")
+            : invocation.oneWay ? std::optional<std::string>("--one-way")
+                                : std::nullopt;
+        if (sweepOption) {
+            return usageFailure(*sweepOption,
+                *sweepOption + " makes an animation: it needs -o FILE.gif" + seeHelp + ".");
+        }
+    }
+    if (animation) {
+        if (!invocation.sizeGiven) {
+            invocation.width = defaultAnimationWidth;
+            invocation.height = defaultAnimationHeight;
+        }
+        if (invocation.view.value_or("2d") != "2d")
+            return usageFailure("--view", "An animated GIF is drawn from the 2D view: leave out --view 3d.");
+        if (invocation.steps && (*invocation.steps < minAnimationSteps || *invocation.steps > maxAnimationSteps)) {
+            return usageFailure("--steps",
+                "--steps " + std::to_string(*invocation.steps) + ": an animation has "
+                    + std::to_string(minAnimationSteps) + " to " + std::to_string(maxAnimationSteps) + " frames.");
+        }
+    }
+    if ((command.options & OptionSweep) && (invocation.command != Command::Render || animation)) {
+        const auto missing = [&](const char *option, const char *what) {
+            return usageFailure(option, quotedCommand + " needs " + option + " " + what + seeHelp + ".");
+        };
+        if (!invocation.var)
+            return missing("--var", "NAME (a pose variable or a parameter)");
+        if (!invocation.from)
+            return missing("--from", "A (the first value)");
+        if (!invocation.to)
+            return missing("--to", "B (the last value)");
+        if (!invocation.steps)
+            return missing("--steps", animation ? "K (the number of frames)" : "K (the number of rows)");
+    }
+    return invocation;
+}
+
+} // namespace pkm::cli

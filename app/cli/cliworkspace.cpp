@@ -1,0 +1,619 @@
+#include "cli/cliworkspace.h"
+
+#include "cli/cli.h"
+#include "document/savefile.h"
+#include "registry.h"
+#include "report/jsonwriter.h"
+#include "report/numberformat.h"
+#include "report/report.h"
+#include "report/texttable.h"
+
+#include <QByteArray>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace pkm::cli {
+
+using namespace report;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+WorkspacePictureWriters &pictureWriters()
+{
+    static WorkspacePictureWriters writers;
+    return writers;
+}
+
+/// A picture the drawing half of the command line writes; refused where it is not linked in.
+template <typename Writer, typename... Arguments>
+std::optional<std::string> writePicture(Writer writer, const std::string &path, const Arguments &...arguments)
+{
+    if (!writer)
+        return "Cannot write '" + path + "': pictures are drawn by pkm-draw, which was not found beside this program.";
+    return writer(path, arguments...);
+}
+
+// -- numbers and names ---------------------------------------------------------------------
+
+/// Up to 6 significant digits, locale-free: for min and max in the text output.
+std::string shortNumber(double value)
+{
+    if (std::isinf(value))
+        return value > 0 ? "∞" : "-∞";
+    if (std::isnan(value))
+        return "undefined";
+    if (value == 0.0)
+        value = 0.0; // no "-0"
+    char buffer[64];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6).ptr;
+    return std::string(buffer, end);
+}
+
+/// A float map value as the shortest text that reads back as the same float ("0.1", not
+/// "0.100000001490116"), locale-free.
+void appendFloat(std::string &out, float value)
+{
+    if (value == 0.0f)
+        value = 0.0f;
+    char buffer[32];
+    out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+/// A coordinate in mm without the last-ulp noise of the grid arithmetic (1e-9 mm).
+double cleanCoordinate(double value)
+{
+    const double rounded = std::round(value * 1e9) / 1e9;
+    return rounded == 0.0 ? 0.0 : rounded;
+}
+
+std::string_view quantityKey(MapQuantity quantity)
+{
+    return quantity == MapQuantity::Condition ? "cond" : "det";
+}
+
+std::string_view quantityTitle(MapQuantity quantity)
+{
+    return quantity == MapQuantity::Condition ? "condition number of J" : "det J";
+}
+
+/// "Active П-joint" → "active П-joint"; "MOMA …" stays.
+std::string inSentence(std::string title)
+{
+    if (title.size() > 1 && title[0] >= 'A' && title[0] <= 'Z' && title[1] >= 'a' && title[1] <= 'z')
+        title[0] = static_cast<char>(title[0] - 'A' + 'a');
+    return title;
+}
+
+std::string xmlEscaped(std::string_view text)
+{
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
+        }
+    }
+    return out;
+}
+
+// -- grids and maps ------------------------------------------------------------------------
+
+bool reachable(float value)
+{
+    return !std::isnan(value);
+}
+
+struct ComputedMap {
+    MapGrid grid;
+    MapSummary summary;
+    std::vector<float> values;
+    std::vector<float> margins;
+};
+
+} // namespace
+
+namespace {
+
+// -- files ---------------------------------------------------------------------------------
+
+std::optional<std::string> saveMapCsv(const std::string &path, const ComputedMap &map)
+{
+    return files::saveFile(path, [&](const files::ChunkWriter &write) {
+        constexpr std::size_t flushBytes = std::size_t {1} << 20;
+        std::string text = "x,y,value,margin\n";
+        text.reserve(flushBytes + 256);
+        const MapGrid &grid = map.grid;
+        const std::size_t columns = static_cast<std::size_t>(grid.columns);
+        for (int r = 0; r < grid.rows; ++r) {
+            const double y = cleanCoordinate(grid.y(r));
+            for (int c = 0; c < grid.columns; ++c) {
+                const std::size_t i = static_cast<std::size_t>(r) * columns + static_cast<std::size_t>(c);
+                const float value = map.values[i];
+                if (!reachable(value))
+                    continue;
+                appendNumber(text, cleanCoordinate(grid.x(c)));
+                text += ',';
+                appendNumber(text, y);
+                text += ',';
+                if (std::isfinite(value)) // ±∞ at a singularity: an empty field, as in sweep
+                    appendFloat(text, value);
+                text += ',';
+                if (i < map.margins.size() && std::isfinite(map.margins[i]))
+                    appendFloat(text, map.margins[i]);
+                text += '\n';
+            }
+            if (text.size() >= flushBytes) {
+                if (!write(text))
+                    return false;
+                text.clear();
+            }
+        }
+        return write(text);
+    });
+}
+
+// -- the commands --------------------------------------------------------------------------
+
+/// The kinds whose designs have a planar workspace: "moma".
+std::string planarKinds()
+{
+    std::string kinds;
+    for (const MechanismKind &kind : mechanismKinds()) {
+        const auto made = kind.create({});
+        if (made && (*made)->planarWorkspace())
+            kinds += (kinds.empty() ? "" : ", ") + std::string(kind.id);
+    }
+    return kinds;
+}
+
+void writeBoxJson(JsonWriter &json, const Eigen::AlignedBox2d &box)
+{
+    const bool empty = box.isEmpty();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    json.key("x_min").number(empty ? nan : cleanCoordinate(box.min().x()));
+    json.key("x_max").number(empty ? nan : cleanCoordinate(box.max().x()));
+    json.key("y_min").number(empty ? nan : cleanCoordinate(box.min().y()));
+    json.key("y_max").number(empty ? nan : cleanCoordinate(box.max().y()));
+}
+
+void writeGridJson(JsonWriter &json, const MapGrid &grid, int resolution)
+{
+    json.key("grid");
+    json.beginObject(true);
+    json.key("resolution").integer(resolution);
+    json.key("columns").integer(grid.columns);
+    json.key("rows").integer(grid.rows);
+    writeBoxJson(json, grid.bounds);
+    json.endObject();
+    json.key("cell_size").number(grid.dx());
+}
+
+/// "[-150.00, 150.00]"
+std::string intervalText(double a, double b)
+{
+    std::string text("[");
+    text += fixedText(cleanCoordinate(a), 2) + ", " + fixedText(cleanCoordinate(b), 2) + "]";
+    return text;
+}
+
+void addGridRows(TextTable &table, const MapGrid &grid, int resolution, const Eigen::AlignedBox2d &reachableBox,
+    std::size_t reachableCells)
+{
+    table.cells({"grid", std::to_string(grid.columns) + " × " + std::to_string(grid.rows),
+        "cells (--grid " + std::to_string(resolution) + ")"});
+    table.cells({"cell size", fixedText(grid.dx(), 3), "mm"});
+    table.cells({"grid x", intervalText(grid.bounds.min().x(), grid.bounds.max().x()), "mm"});
+    table.cells({"grid y", intervalText(grid.bounds.min().y(), grid.bounds.max().y()), "mm"});
+    table.cells({"reachable cells", std::to_string(reachableCells), ""});
+    if (!reachableBox.isEmpty()) {
+        table.cells({"reachable x", intervalText(reachableBox.min().x(), reachableBox.max().x()), "mm"});
+        table.cells({"reachable y", intervalText(reachableBox.min().y(), reachableBox.max().y()), "mm"});
+    }
+}
+
+struct Context {
+    const PreparedDesign &prepared;
+    const Invocation &invocation;
+    std::FILE *out;
+    std::FILE *err;
+    int resolution = defaultGrid;
+};
+
+int failWith(std::FILE *err, const Failure &failure)
+{
+    printError(err, failure.message);
+    return cliExitCode(failure);
+}
+
+/// The design's modes for headings: " (branch1 = -1, …)" or "".
+std::string modeSuffix(const Mechanism &mechanism)
+{
+    const std::string modes = modeText(modeParameters(mechanism), mechanism.parameters());
+    return modes.empty() ? std::string() : " (" + modes + ")";
+}
+
+std::optional<Failure> emptyWorkspace(const Context &context, const MapSummary &summary)
+{
+    if (summary.reachableCells > 0)
+        return std::nullopt;
+    const MapGrid &grid = summary.grid;
+    return Failure {FailureKind::Unreachable, context.prepared.origin,
+        "The workspace of " + context.prepared.origin + modeSuffix(*context.prepared.mechanism)
+            + " has no reachable cell on the " + std::to_string(grid.columns) + " × " + std::to_string(grid.rows)
+            + " grid over " + intervalText(grid.bounds.min().x(), grid.bounds.max().x()) + " × "
+            + intervalText(grid.bounds.min().y(), grid.bounds.max().y())
+            + " mm: it is empty or thinner than a cell (try a larger --grid)."};
+}
+
+int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
+{
+    const Mechanism &mechanism = *context.prepared.mechanism;
+    const auto start = Clock::now();
+    ComputedMap map;
+    map.summary = computeInto(workspace, MapQuantity::Determinant, context.resolution, map.values, nullptr);
+    map.grid = map.summary.grid;
+    if (auto empty = emptyWorkspace(context, map.summary))
+        return failWith(context.err, *empty);
+    const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
+    const std::vector<const ParameterInfo *> modes = modeParameters(mechanism);
+    std::vector<float> buffer;
+    const std::vector<ModeArea> areas = modeAreas(mechanism, modes, map.summary, context.resolution, buffer);
+    const ModeRegions united = modes.empty() ? ModeRegions {} : modeRegions(mechanism, modes, context.resolution);
+    const auto named = namedModeAreas(modes, areas);
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+    const std::string suffix = modeSuffix(mechanism);
+    if (const auto &path = context.invocation.output) {
+        std::optional<std::string> failure;
+        if (fileExtension(*path) == "svg") {
+            const std::string title
+                = "Workspace of " + context.prepared.origin + suffix + ": " + fixedText(map.summary.area, 1) + " mm²";
+            failure = files::saveBytes(*path, QByteArray::fromStdString(workspaceSvg(map.grid, map.values, title)));
+        } else if (!named.empty() && united.reached.size() > 1) {
+            failure = writePicture(pictureWriters().regions, *path, united,
+                "Workspaces of the modes of " + context.prepared.origin + suffix
+                    + " (the design's own darker), their union outlined");
+        } else {
+            failure = writePicture(pictureWriters().workspace, *path, map.grid, std::span<const float>(map.values),
+                "Workspace of " + context.prepared.origin + suffix);
+        }
+        if (failure) {
+            printError(context.err, *failure);
+            return CliOutputError;
+        }
+    }
+
+    std::string out;
+    if (context.invocation.json) {
+        JsonWriter json(out, JsonWriter::Style::Pretty);
+        json.beginObject();
+        json.key("design").string(context.prepared.origin);
+        json.key("mechanism").string(mechanism.kind());
+        writeParametersJson(json, mechanism, true);
+        json.key("area").number(map.summary.area);
+        json.key("bounds");
+        json.beginObject(true);
+        writeBoxJson(json, box);
+        json.endObject();
+        writeGridJson(json, map.grid, context.resolution);
+        json.key("reachable_cells").integer(static_cast<std::int64_t>(map.summary.reachableCells));
+        for (const auto &[name, area] : named)
+            json.key("area_" + name).number(area);
+        if (!modes.empty())
+            json.key("area_union").number(united.unionArea);
+        // a mechanism carried by an axis (the O-X glide on z): its 3D workspace is the planar
+        // one extruded over that axis' travel
+        if (const auto travel = carriedTravel(mechanism)) {
+            json.key("travel").number(*travel);
+            json.key("volume").number(map.summary.area * *travel);
+            if (!modes.empty())
+                json.key("volume_union").number(united.unionArea * *travel);
+        }
+        json.key("modes");
+        json.beginArray();
+        for (const ModeArea &mode : areas) {
+            json.beginObject(true);
+            for (std::size_t i = 0; i < modes.size(); ++i) {
+                if (modes[i]->choices.empty())
+                    json.key(modes[i]->name).number(mode.values[i]);
+                else
+                    json.key(modes[i]->name).string(modeValueText(*modes[i], mode.values[i]));
+            }
+            json.key("area").number(mode.area);
+            json.key("reachable_cells").integer(static_cast<std::int64_t>(mode.reachableCells));
+            json.key("current").boolean(mode.current);
+            if (!mode.note.empty())
+                json.key("note").string(mode.note);
+            json.endObject();
+        }
+        json.endArray();
+        json.key("seconds").number(seconds);
+        json.endObject();
+        out += '\n';
+    } else {
+        out = designHeading(context.prepared);
+        TextTable table({false, true, false});
+        table.heading("\nWorkspace" + suffix);
+        table.cells({"area", fixedText(map.summary.area, 1), "mm²"});
+        if (const auto travel = carriedTravel(mechanism)) {
+            table.cells({"volume", fixedText(map.summary.area * *travel, 0), "mm³"});
+            table.cells({"", "(the area extruded over the travel of " + fixedText(*travel, 1) + " mm)", ""});
+        }
+        addGridRows(table, map.grid, context.resolution, box, map.summary.reachableCells);
+        table.cells({"time", fixedText(seconds, 3), "s"});
+        table.render(out);
+        if (!areas.empty()) {
+            out += "\nArea per mode\n";
+            std::vector<bool> alignment(modes.size(), true);
+            alignment.push_back(true);
+            alignment.push_back(false);
+            TextTable modeTable(alignment);
+            std::vector<std::string> header;
+            for (const ParameterInfo *info : modes)
+                header.push_back(info->name);
+            header.push_back("area (mm²)");
+            header.push_back("");
+            modeTable.cells(header);
+            for (const ModeArea &mode : areas) {
+                std::vector<std::string> row;
+                for (std::size_t i = 0; i < modes.size(); ++i)
+                    row.push_back(modeValueText(*modes[i], mode.values[i]));
+                row.push_back(fixedText(mode.area, 1));
+                row.push_back(mode.current ? "current" : mode.empty ? "no workspace in this mode" : mode.note);
+                modeTable.cells(row);
+            }
+            modeTable.render(out);
+            out.append("Union of the modes: ").append(fixedText(united.unionArea, 1)).append(" mm²\n");
+        }
+        if (const auto &path = context.invocation.output)
+            out += "\nWrote " + *path + '\n';
+    }
+    return printOutput(context.out, context.err, out);
+}
+
+int runMap(const Context &context, const PlanarWorkspace &workspace)
+{
+    const Mechanism &mechanism = *context.prepared.mechanism;
+    const MapQuantity quantity
+        = context.invocation.quantity.value_or("det") == "cond" ? MapQuantity::Condition : MapQuantity::Determinant;
+    ComputedMap map;
+    map.summary = computeInto(workspace, quantity, context.resolution, map.values, &map.margins);
+    map.grid = map.summary.grid;
+    if (auto empty = emptyWorkspace(context, map.summary))
+        return failWith(context.err, *empty);
+    const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
+
+    const auto &path = context.invocation.output;
+    const bool png = path && fileExtension(*path) == "png";
+    double limit = 0.0;
+    if (path) {
+        std::optional<std::string> failure;
+        if (png) {
+            limit = mapColourLimit(map.values, quantity);
+            failure = writePicture(pictureWriters().map, *path, map.grid, std::span<const float>(map.values), quantity,
+                limit, std::string(quantityTitle(quantity)) + " of " + context.prepared.origin + modeSuffix(mechanism));
+        } else {
+            failure = saveMapCsv(*path, map);
+        }
+        if (failure) {
+            printError(context.err, *failure);
+            return CliOutputError;
+        }
+    }
+    const double colourMin = quantity == MapQuantity::Condition ? 1.0 : -limit;
+
+    std::string out;
+    if (context.invocation.json) {
+        JsonWriter json(out, JsonWriter::Style::Pretty);
+        json.beginObject();
+        json.key("design").string(context.prepared.origin);
+        json.key("mechanism").string(mechanism.kind());
+        writeParametersJson(json, mechanism, true);
+        json.key("quantity").string(quantityKey(quantity));
+        writeGridJson(json, map.grid, context.resolution);
+        json.key("bounds");
+        json.beginObject(true);
+        writeBoxJson(json, box);
+        json.endObject();
+        json.key("reachable_cells").integer(static_cast<std::int64_t>(map.summary.reachableCells));
+        json.key("area").number(map.summary.area);
+        json.key("min").number(map.summary.min);
+        json.key("max").number(map.summary.max);
+        json.key("near_singular_cells").integer(static_cast<std::int64_t>(map.summary.nearSingularCells));
+        json.key("near_singular_margin").number(nearSingularMargin);
+        if (png) {
+            json.key("colour_scale");
+            json.beginObject(true);
+            json.key("min").number(colourMin);
+            json.key("max").number(limit);
+            json.key("log").boolean(quantity == MapQuantity::Condition);
+            json.endObject();
+        }
+        json.key("seconds").number(map.summary.seconds);
+        json.endObject();
+        out += '\n';
+    } else {
+        out = designHeading(context.prepared);
+        TextTable table({false, true, false});
+        table.heading("\nMap of " + std::string(quantityTitle(quantity)) + modeSuffix(mechanism));
+        addGridRows(table, map.grid, context.resolution, box, map.summary.reachableCells);
+        table.cells({"area", fixedText(map.summary.area, 1), "mm²"});
+        table.cells({"min", shortNumber(map.summary.min), "over the finite cells"});
+        table.cells({"max", shortNumber(map.summary.max), ""});
+        table.cells({"near-singular cells", std::to_string(map.summary.nearSingularCells),
+            "margin < " + numberText(nearSingularMargin)});
+        if (png) {
+            std::string scale("[");
+            scale += shortNumber(colourMin) + ", " + shortNumber(limit) + "]";
+            table.cells({"colours", scale, quantity == MapQuantity::Condition ? "log scale" : "linear, clipped"});
+        }
+        table.cells({"time", fixedText(map.summary.seconds, 3), "s"});
+        table.render(out);
+        if (path)
+            out += "\nWrote " + *path + '\n';
+    }
+    return printOutput(context.out, context.err, out);
+}
+
+} // namespace
+
+std::string workspaceSvg(const MapGrid &grid, std::span<const float> values, const std::string &title)
+{
+    // workspaceOutline() merges the edges along a grid line into long segments, and two cells
+    // that touch at a corner put a vertex in the middle of such a segment. So the segments are
+    // cut into unit edges between grid vertices (integer coordinates) and joined into closed
+    // loops; where four edges meet the walk turns left, so that the loops touch without
+    // crossing, and only the corners of a loop are written.
+    const std::vector<Eigen::Vector2d> segments = workspaceOutline(grid, values);
+    const double x0 = grid.bounds.min().x(), y0 = grid.bounds.min().y(), dx = grid.dx(), dy = grid.dy();
+    using Vertex = std::array<std::int64_t, 2>;
+    const auto toVertex = [&](const Eigen::Vector2d &p) {
+        return Vertex {std::llround((p.x() - x0) / dx), std::llround((p.y() - y0) / dy)};
+    };
+    const auto keyOf = [&](const Vertex &v) { return v[1] * (static_cast<std::int64_t>(grid.columns) + 1) + v[0]; };
+    std::vector<std::array<Vertex, 2>> edges;
+    for (std::size_t s = 0; s + 1 < segments.size(); s += 2) {
+        const Vertex a = toVertex(segments[s]), b = toVertex(segments[s + 1]);
+        const int axis = a[0] != b[0] ? 0 : 1;
+        const std::int64_t step = b[axis] > a[axis] ? 1 : -1;
+        for (Vertex v = a; v[axis] != b[axis]; v[axis] += step) {
+            Vertex w = v;
+            w[axis] += step;
+            edges.push_back({v, w});
+        }
+    }
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> at;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+        at[keyOf(edges[e][0])].push_back(e);
+        at[keyOf(edges[e][1])].push_back(e);
+    }
+    std::vector<bool> used(edges.size(), false);
+    std::string path;
+    const auto point = [&](char command, const Vertex &v) {
+        path += command;
+        appendNumber(path, cleanCoordinate(x0 + static_cast<double>(v[0]) * dx));
+        path += ',';
+        appendNumber(path, cleanCoordinate(-(y0 + static_cast<double>(v[1]) * dy))); // SVG's y points down
+    };
+    for (std::size_t first = 0; first < edges.size(); ++first) {
+        if (used[first])
+            continue;
+        used[first] = true;
+        const Vertex start = edges[first][0];
+        Vertex current = edges[first][1];
+        Vertex heading {current[0] - start[0], current[1] - start[1]};
+        point('M', start);
+        while (current != start) {
+            std::size_t next = edges.size();
+            std::int64_t best = -2; // left turn 1, straight 0, right turn −1
+            for (std::size_t e : at[keyOf(current)]) {
+                if (used[e])
+                    continue;
+                const Vertex &other = edges[e][0] == current ? edges[e][1] : edges[e][0];
+                const Vertex out {other[0] - current[0], other[1] - current[1]};
+                const std::int64_t cross = heading[0] * out[1] - heading[1] * out[0];
+                if (cross > best) {
+                    best = cross;
+                    next = e;
+                }
+            }
+            if (next == edges.size())
+                break; // cannot happen: every vertex of an outline joins an even number of edges
+            used[next] = true;
+            const Vertex other = edges[next][0] == current ? edges[next][1] : edges[next][0];
+            const Vertex out {other[0] - current[0], other[1] - current[1]};
+            if (out != heading)
+                point('L', current); // a corner
+            heading = out;
+            current = other;
+        }
+        path += 'Z';
+    }
+
+    // The view: the reachable cells with a margin of two cells, in mm, y up.
+    Eigen::AlignedBox2d box = reachableBounds(grid, values);
+    if (box.isEmpty())
+        box = grid.bounds;
+    const Eigen::Vector2d margin(2 * dx, 2 * dy);
+    box.min() -= margin;
+    box.max() += margin;
+    const Eigen::Vector2d size = box.sizes();
+    const double stroke = std::max(size.x(), size.y()) / 400.0;
+    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"";
+    appendNumber(svg, cleanCoordinate(size.x()));
+    svg += "mm\" height=\"";
+    appendNumber(svg, cleanCoordinate(size.y()));
+    svg += "mm\" viewBox=\"";
+    appendNumber(svg, cleanCoordinate(box.min().x()));
+    svg += ' ';
+    appendNumber(svg, cleanCoordinate(-box.max().y()));
+    svg += ' ';
+    appendNumber(svg, cleanCoordinate(size.x()));
+    svg += ' ';
+    appendNumber(svg, cleanCoordinate(size.y()));
+    svg += "\">\n  <title>" + xmlEscaped(title) + "</title>\n";
+    svg += "  <path fill=\"#a6cee3\" fill-rule=\"evenodd\" stroke=\"#1f4e79\" stroke-linejoin=\"round\" "
+           "stroke-width=\"";
+    appendNumber(svg, stroke);
+    svg += "\" d=\"" + path + "\"/>\n</svg>\n";
+    return svg;
+}
+
+void setWorkspacePictureWriters(const WorkspacePictureWriters &writers)
+{
+    pictureWriters() = writers;
+}
+
+bool writesPicture(const Invocation &invocation)
+{
+    if (!invocation.output || invocation.help)
+        return false;
+    const std::string extension = fileExtension(*invocation.output);
+    if (invocation.command == Command::Workspace)
+        return extension != "svg";
+    return invocation.command == Command::Map && extension == "png";
+}
+
+int runWorkspaceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
+{
+    const Mechanism &mechanism = *prepared.mechanism;
+    const std::string command(commandName(*invocation.command));
+    const PlanarWorkspace *workspace = mechanism.planarWorkspace();
+    if (!workspace) {
+        const std::string kinds = planarKinds();
+        return failWith(err,
+            usageFailure(prepared.origin,
+                "The " + inSentence(kindTitle(mechanism.kind())) + " has no planar workspace: 'pkm " + command + " "
+                    + prepared.origin + "' needs a mechanism whose output is a point of the plane"
+                    + (kinds.empty() ? std::string() : " (" + kinds + ")") + "."));
+    }
+    Context context {prepared, invocation, out, err, invocation.grid.value_or(defaultGrid)};
+    return invocation.command == Command::Map ? runMap(context, *workspace) : runWorkspace(context, *workspace);
+}
+
+} // namespace pkm::cli

@@ -1,0 +1,335 @@
+#include "document/designfile.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "quantityformat.h"
+#include "registry.h"
+#include "text.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+namespace pkm {
+
+namespace designfile {
+
+namespace {
+Failure fileFailure(const QString &culprit, const QString &message)
+{
+    return Failure{FailureKind::InvalidParameter, culprit.toStdString(), message.toStdString()};
+}
+
+/// A number in a message: the locale's decimal point and minus sign in the GUI, '.' in the CLI
+/// (text::number's rules), `significant` digits as QString::number(v, 'g', significant).
+QString numberText(double value, int significant = 10)
+{
+    QString text = QString::number(value, 'g', significant);
+    const text::Hooks hooks = text::installed();
+    if (!hooks.decimalPoint.empty())
+        text.replace(QLatin1Char('.'), toQString(hooks.decimalPoint));
+    if (!hooks.minusSign.empty() && text.startsWith(QLatin1Char('-')))
+        text.replace(0, 1, toQString(hooks.minusSign));
+    return text;
+}
+
+const ParameterInfo *findParameter(const Mechanism &mechanism, const QString &name)
+{
+    return mechanism.findParameter(name.toStdString());
+}
+
+QString presetPath(const QString &id)
+{
+    return QStringLiteral(":/presets/%1.pkm.json").arg(id);
+}
+} // namespace
+
+Result<Design> parse(const QByteArray &json, const QString &origin)
+{
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &error);
+    if (error.error != QJsonParseError::NoError) {
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 is not valid JSON (%2 at byte %3).")
+                                       .arg(origin, error.errorString(), numberText(error.offset)));
+    }
+    const QJsonObject root = document.object();
+    if (!document.isObject() || root.value(QStringLiteral("format")).toString() != QLatin1String(formatName))
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 is not a PKM Studio design file.").arg(origin));
+    const int version = root.value(QStringLiteral("version")).toInt(-1);
+    if (version > formatVersion) {
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 was written by a newer PKM Studio (format "
+                                                          "version %2; this version reads up to %3).")
+                                       .arg(origin, numberText(version), numberText(formatVersion)));
+    }
+    if (version < 1)
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 has no valid format version.").arg(origin));
+    // Older versions are read by the same code: see formatVersion for what each one changed.
+
+    const QString kindId = root.value(QStringLiteral("mechanism")).toString();
+    if (!findMechanismKind(kindId.toStdString()))
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 names an unknown mechanism kind '%2'.").arg(origin, kindId));
+    auto defaults = createMechanism(kindId.toStdString(), {});
+    if (!defaults)
+        return defaults.failure();
+
+    ParameterSet values;
+    const QJsonObject parameters = root.value(QStringLiteral("parameters")).toObject();
+    for (auto it = parameters.begin(); it != parameters.end(); ++it) {
+        const ParameterInfo *info = findParameter(**defaults, it.key());
+        if (!info)
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: unknown parameter '%2'.").arg(origin, it.key()));
+        if (it.value().isString()) {
+            // a mode given by its name ("mode": "X")
+            const std::string word = it.value().toString().toStdString();
+            const auto choice = std::find_if(info->choices.begin(), info->choices.end(),
+                                             [&](const auto &c) { return c.first == word; });
+            if (choice == info->choices.end()) {
+                QStringList names;
+                for (const auto &c : info->choices)
+                    names << QString::fromStdString(c.first);
+                return fileFailure(origin, names.isEmpty()
+                                               ? QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, it.key())
+                                               : QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' must be a number or one of %3, not '%4'.")
+                                                     .arg(origin, it.key(), names.join(QStringLiteral(", ")),
+                                                          it.value().toString()));
+            }
+            values[info->name] = choice->second;
+            continue;
+        }
+        if (!it.value().isDouble())
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, it.key()));
+        values[info->name] = info->unit.fromDisplay(it.value().toDouble());
+    }
+    auto mechanism = createMechanism(kindId.toStdString(), values);
+    if (!mechanism) {
+        Failure f = mechanism.failure();
+        f.message = origin.toStdString() + ": " + f.message;
+        return f;
+    }
+
+    Design design;
+    design.id = root.value(QStringLiteral("id")).toString();
+    design.title = root.value(QStringLiteral("title")).toString();
+    design.description = root.value(QStringLiteral("description")).toString();
+    design.mechanism = *mechanism;
+    design.pose = design.mechanism->homePose();
+
+    QList<QPair<QString, double>> pose;
+    const QJsonObject poseObject = root.value(QStringLiteral("pose")).toObject();
+    for (auto it = poseObject.begin(); it != poseObject.end(); ++it) {
+        if (!it.value().isDouble())
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: pose value '%2' is not a number.").arg(origin, it.key()));
+        pose.append({it.key(), it.value().toDouble()});
+    }
+    if (!pose.isEmpty()) {
+        auto solved = solveSavedPose(*design.mechanism, design.pose, pose);
+        if (!solved) {
+            Failure f = solved.failure();
+            f.message = origin.toStdString() + ": " + f.message;
+            return f;
+        }
+        design.pose = *solved;
+    }
+    return design;
+}
+
+namespace {
+/// Below this (relative) a saved output differs from its inputs' by round-off only.
+constexpr double exactPoseTolerance = 1e-12;
+} // namespace
+
+Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const QList<QPair<QString, double>> &values)
+{
+    const auto &variables = mechanism.variableInfo();
+    const int inputs = mechanism.inputCount();
+    std::vector<bool> given(variables.size(), false);
+    for (const auto &value : values) {
+        const int index = mechanism.variableIndex(value.first.toStdString());
+        if (index >= 0)
+            given[index] = true;
+    }
+    const bool allInputs = std::all_of(given.begin(), given.begin() + inputs, [](bool g) { return g; });
+    const bool anyOutput = std::any_of(given.begin() + inputs, given.end(), [](bool g) { return g; });
+    if (!allInputs || !anyOutput)
+        return solveDisplayVariables(mechanism, home, values);
+
+    // Every variable given (as version 2 writes them): the inputs decide, the outputs must agree.
+    QList<QPair<QString, double>> inputValues;
+    for (const auto &value : values) {
+        if (mechanism.variableIndex(value.first.toStdString()) < inputs)
+            inputValues.append(value);
+    }
+    auto solved = solveDisplayVariables(mechanism, home, inputValues);
+    if (!solved)
+        return solved;
+    Pose pose = *solved;
+    for (const auto &[name, display] : values) {
+        const int index = mechanism.variableIndex(name.toStdString());
+        if (index < inputs)
+            continue;
+        const VariableInfo &info = variables[index];
+        const double fromInputs = info.unit.toDisplay(mechanism.variableValue(*solved, index));
+        if (std::abs(fromInputs - display) > savedPoseTolerance * std::max(1.0, std::abs(display))) {
+            return Failure{FailureKind::InvalidParameter, info.name,
+                           QCoreApplication::translate("pkm::designfile",
+                                                       "the pose's %1 = %2 %4 does not agree with its inputs, which "
+                                                       "give %3 %4.")
+                               .arg(toQString(info.name), numberText(display), numberText(fromInputs),
+                                    unitText(info.unit))
+                               .toStdString()};
+        }
+        // Agreeing to round-off: keep the file's value, so that save → open is exact.
+        if (std::abs(fromInputs - display) <= exactPoseTolerance * std::max(1.0, std::abs(display)))
+            pose.outputs[index - inputs] = info.unit.fromDisplay(display);
+    }
+    return pose;
+}
+
+bool isPresetId(const QString &presetOrPath)
+{
+    return !presetOrPath.contains(QLatin1Char('/')) && !presetOrPath.endsWith(QLatin1String(".json"));
+}
+
+Result<Design> load(const QString &presetOrPath)
+{
+    QString path = presetOrPath;
+    if (isPresetId(presetOrPath)) {
+        path = presetPath(presetOrPath);
+        if (!QFile::exists(path)) {
+            return fileFailure(presetOrPath,
+                               QCoreApplication::translate("pkm::designfile", "'%1' is neither a preset id (see 'pkm list') nor a design file.")
+                                   .arg(presetOrPath));
+        }
+    }
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return fileFailure(presetOrPath, QCoreApplication::translate("pkm::designfile", "Cannot open %1: %2.").arg(presetOrPath, file.errorString()));
+    return parse(file.readAll(), presetOrPath);
+}
+
+QByteArray serialize(const Design &design)
+{
+    QJsonObject root;
+    root.insert(QStringLiteral("format"), QLatin1String(formatName));
+    root.insert(QStringLiteral("version"), formatVersion);
+    if (!design.id.isEmpty())
+        root.insert(QStringLiteral("id"), design.id);
+    root.insert(QStringLiteral("title"), design.title);
+    if (!design.description.isEmpty())
+        root.insert(QStringLiteral("description"), design.description);
+    root.insert(QStringLiteral("mechanism"), toQString(design.mechanism->kind()));
+
+    QJsonObject parameters;
+    const ParameterSet values = design.mechanism->parameters();
+    for (const ParameterInfo &info : design.mechanism->parameterInfo()) {
+        if (info.stored)
+            parameters.insert(toQString(info.name), info.unit.toDisplay(values.at(info.name)));
+    }
+    root.insert(QStringLiteral("parameters"), parameters);
+
+    // Every joint variable: the inputs fix the pose (direct kinematics is unique once the
+    // design's modes are given), the outputs are there for the reader and are checked on load.
+    QJsonObject pose;
+    const auto &variables = design.mechanism->variableInfo();
+    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
+        pose.insert(toQString(variables[i].name),
+                    variables[i].unit.toDisplay(design.mechanism->variableValue(design.pose, i)));
+    }
+    root.insert(QStringLiteral("pose"), pose);
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+Result<bool> save(const Design &design, const QString &path)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return fileFailure(path, QCoreApplication::translate("pkm::designfile", "Cannot write %1: %2.").arg(path, file.errorString()));
+    file.write(serialize(design));
+    if (!file.commit())
+        return fileFailure(path, QCoreApplication::translate("pkm::designfile", "Cannot write %1: %2.").arg(path, file.errorString()));
+    return true;
+}
+
+QList<PresetInfo> presets()
+{
+    QList<PresetInfo> list;
+    const QStringList files = QDir(QStringLiteral(":/presets")).entryList({QStringLiteral("*.pkm.json")}, QDir::Files,
+                                                                           QDir::Name);
+    for (const QString &name : files) {
+        QFile file(QStringLiteral(":/presets/") + name);
+        if (!file.open(QIODevice::ReadOnly))
+            continue;
+        const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+        list.append({root.value(QStringLiteral("id")).toString(), root.value(QStringLiteral("mechanism")).toString(),
+                     root.value(QStringLiteral("title")).toString()});
+    }
+    return list;
+}
+
+QString presetText(const QString &english)
+{
+    if (english.isEmpty())
+        return english;
+    const QByteArray source = english.toUtf8();
+    return QCoreApplication::translate("presets", source.constData());
+}
+
+Result<MechanismPtr> setDisplayParameter(const MechanismPtr &mechanism, const QString &name, double displayValue)
+{
+    const ParameterInfo *info = findParameter(*mechanism, name);
+    if (!info) {
+        return Failure{FailureKind::UnknownName, name.toStdString(),
+                       QCoreApplication::translate("pkm::designfile", "Unknown parameter '%1' (see 'pkm show').")
+                           .arg(name)
+                           .toStdString()};
+    }
+    return mechanism->withParameter(info->name, info->unit.fromDisplay(displayValue));
+}
+
+Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &current,
+                                   const QList<QPair<QString, double>> &values)
+{
+    const auto &variables = mechanism.variableInfo();
+    const int inputs = mechanism.inputCount();
+    Coordinates q = current.inputs;
+    Coordinates x = current.outputs;
+    bool anyInput = false;
+    bool anyOutput = false;
+    for (const auto &[name, display] : values) {
+        const int index = mechanism.variableIndex(name.toStdString());
+        if (index < 0) {
+            return Failure{FailureKind::UnknownName, name.toStdString(),
+                           QCoreApplication::translate("pkm::designfile", "Unknown pose variable '%1'.")
+                               .arg(name)
+                               .toStdString()};
+        }
+        const double value = variables[index].unit.fromDisplay(display);
+        if (index < inputs) {
+            q[index] = value;
+            anyInput = anyInput || !variables[index].independent;
+        } else {
+            x[index - inputs] = value;
+            anyOutput = true;
+        }
+    }
+    if (anyInput && anyOutput) {
+        return Failure{FailureKind::InvalidParameter, values.front().first.toStdString(),
+                       QCoreApplication::translate("pkm::designfile",
+                                                   "Give either the actuated inputs or the outputs of the pose, not "
+                                                   "both.")
+                           .toStdString()};
+    }
+    if (anyInput || !anyOutput)
+        return mechanism.solveDirect(q, &current);
+    Pose near = current; // with the independent axes (z) already moved
+    near.inputs = q;
+    return mechanism.solveInverse(x, &near);
+}
+
+} // namespace designfile
+} // namespace pkm

@@ -1,0 +1,67 @@
+#pragma once
+/// Design files (.pkm.json) and the built-in presets. A design names its mechanism kind and
+/// gives parameter values and a pose in display units (mm, degrees, N …), so that a person can
+/// read and edit the file.
+
+#include "mechanism.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+namespace pkm {
+
+struct Design {
+    QString id;          ///< preset id, or empty for a user file
+    QString title;
+    QString description;
+    MechanismPtr mechanism;
+    Pose pose;
+};
+
+struct PresetInfo {
+    QString id;
+    QString kind;
+    QString title;
+};
+
+namespace designfile {
+inline constexpr const char *formatName = "pkm-studio-design";
+/// The version written. Version 1 saved the pose's outputs only, which lost the O-X glide's z
+/// and which of a crank-rocker's two crank angles was meant; version 2 saves every joint
+/// variable. Older files are read as they were written (a partial pose is solved from what it
+/// gives) and saved in the current version; newer ones are refused.
+inline constexpr int formatVersion = 2;
+/// A saved output may differ from the one its inputs give by this much (relative, display
+/// units) before the file is refused as inconsistent.
+inline constexpr double savedPoseTolerance = 1e-6;
+
+/// Parses a design; `origin` names the file or preset in messages.
+Result<Design> parse(const QByteArray &json, const QString &origin);
+/// Whether `presetOrPath` names a preset (no '/' and no ".json" ending) rather than a file.
+bool isPresetId(const QString &presetOrPath);
+/// Loads a preset id (see presets()) or a file path.
+Result<Design> load(const QString &presetOrPath);
+QByteArray serialize(const Design &design);
+/// Writes atomically (QSaveFile); the failure names the path.
+Result<bool> save(const Design &design, const QString &path);
+
+QList<PresetInfo> presets();
+/// A preset's title or description (as its file gives it, in English) in the current language
+/// (the build hands every preset's texts to the catalogues: cmake/PresetTexts.cmake);
+/// any other text (a user's own design) comes back unchanged.
+QString presetText(const QString &english);
+
+/// Sets one design parameter given in display units; the failure names the parameter.
+Result<MechanismPtr> setDisplayParameter(const MechanismPtr &mechanism, const QString &name, double displayValue);
+/// Solves the pose a file gives (display units) from `home`: all inputs and some outputs
+/// (version 2) — the inputs decide and the outputs must agree; otherwise as
+/// solveDisplayVariables().
+Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const QList<QPair<QString, double>> &values);
+/// Solves a pose from named variable values in display units. All outputs given: inverse
+/// kinematics; all inputs given: direct; a partial set keeps the others from `current`.
+Result<Pose> solveDisplayVariables(const Mechanism &mechanism, const Pose &current,
+                                   const QList<QPair<QString, double>> &values);
+} // namespace designfile
+
+} // namespace pkm

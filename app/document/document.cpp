@@ -1,0 +1,223 @@
+#include "document/document.h"
+
+#include "document/commands.h"
+#include "quantityformat.h"
+
+#include <QCoreApplication>
+#include <QEvent>
+
+#include <cmath>
+
+namespace pkm {
+
+namespace {
+/// Below this singularity margin the status bar warns that the pose is nearly singular.
+constexpr double nearSingularMargin = 0.02;
+} // namespace
+
+Document::Document(QObject *parent)
+    : QObject(parent)
+{
+    auto initial = designfile::load(QStringLiteral("pjoint-prototype"));
+    Q_ASSERT(initial.ok());
+    m_design = *initial;
+    m_modeNeighbours = m_design.mechanism->modeNeighbours();
+    if (QCoreApplication *application = QCoreApplication::instance())
+        application->installEventFilter(this);
+}
+
+bool Document::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance()) {
+        for (int i = 0; i < m_undoStack.count(); ++i) {
+            // the stack hands out const commands; their texts are ours to set
+            if (auto *command = dynamic_cast<TranslatableCommand *>(const_cast<QUndoCommand *>(m_undoStack.command(i))))
+                command->retranslate();
+        }
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+Result<bool> Document::open(const QString &presetOrPath)
+{
+    auto loaded = designfile::load(presetOrPath);
+    if (!loaded)
+        return loaded.failure();
+    const QString title = loaded->title.isEmpty() ? presetOrPath : loaded->title;
+    m_undoStack.push(new ReplaceDesignCommand(this, m_design, *loaded,
+                                              [title] { return tr("Open %1").arg(designfile::presetText(title)); }));
+    return true;
+}
+
+Result<bool> Document::setParameter(const QString &name, double displayValue, bool continuous)
+{
+    auto changed = designfile::setDisplayParameter(m_design.mechanism, name, displayValue);
+    if (!changed)
+        return changed.failure();
+    Design next = m_design;
+    next.mechanism = *changed;
+    next.pose = carryPose(*next.mechanism, m_design.pose);
+    if (next.mechanism->parameters() == m_design.mechanism->parameters())
+        return true;
+    m_undoStack.push(new SetParameterCommand(this, name, m_design, next, continuous));
+    return true;
+}
+
+template <class Solve>
+Result<Pose> Document::moveTowards(const Solve &solveAt)
+{
+    m_lastMoveWasPartial = false;
+    auto solved = solveAt(1.0);
+    if (solved) {
+        applyPose(*solved);
+        return solved;
+    }
+    // Stop at the last reachable pose on the way rather than short of it: bisect the move.
+    double reachable = 0.0, unreachable = 1.0;
+    Result<Pose> best = Failure{FailureKind::Unreachable, {}, {}};
+    for (int i = 0; i < 30; ++i) {
+        const double t = 0.5 * (reachable + unreachable);
+        if (auto at = solveAt(t)) {
+            reachable = t;
+            best = at;
+        } else {
+            unreachable = t;
+        }
+    }
+    if (best) {
+        m_lastMoveWasPartial = true;
+        applyPose(*best);
+    }
+    return solved;
+}
+
+Result<Pose> Document::setVariable(int variable, double value)
+{
+    const Mechanism &m = *m_design.mechanism;
+    const Interval range = m.variableRange(variable);
+    m_drivenVariable = variable;
+    if (!std::isfinite(value))
+        return m.solveWith(m_design.pose, variable, value);
+    const Pose start = m_design.pose;
+    const double from = m.variableValue(start, variable);
+    const double to = range.clamp(value);
+    return moveTowards([&](double t) { return m.solveWith(start, variable, from + t * (to - from)); });
+}
+
+Result<Pose> Document::dragHandle(int handle, const Eigen::Vector2d &target)
+{
+    const Mechanism &m = *m_design.mechanism;
+    m_drivenVariable = m.inputCount(); // a drag moves the outputs
+    const Pose start = m_design.pose;
+    const Scene scene = m.scene(start);
+    if (handle < 0 || handle >= static_cast<int>(scene.handles.size()))
+        return m.dragHandle(start, handle, target);
+    const Eigen::Vector2d from = scene.joints[scene.handles[handle].joint].position.head<2>();
+    return moveTowards([&](double t) { return m.dragHandle(start, handle, from + t * (target - from)); });
+}
+
+Result<Pose> Document::moveOutputsTo(const Coordinates &outputs)
+{
+    const Mechanism &m = *m_design.mechanism;
+    m_drivenVariable = m.inputCount();
+    const Pose start = m_design.pose;
+    return moveTowards([&](double t) {
+        const Coordinates x = start.outputs + t * (outputs - start.outputs);
+        return m.solveInverse(x, &start);
+    });
+}
+
+std::vector<ModeAlternative> Document::modeAlternatives() const
+{
+    return Mechanism::solveAlternatives(m_modeNeighbours, m_design.pose);
+}
+
+Result<bool> Document::switchMode(const ModeAlternative &alternative)
+{
+    if (!alternative.mechanism || alternative.pose.inputs.size() != m_design.pose.inputs.size())
+        return Failure{FailureKind::InvalidParameter, {}, tr("That mode is not available at this pose.").toStdString()};
+    Design next = m_design;
+    next.mechanism = alternative.mechanism;
+    next.pose = alternative.pose;
+    m_undoStack.push(new ReplaceDesignCommand(this, m_design, next, [label = alternative.label] {
+        return tr("Switch to %1").arg(coreLabel(label));
+    }));
+    return true;
+}
+
+QString Document::limitNote() const
+{
+    const Mechanism &m = *m_design.mechanism;
+    const auto &variables = m.variableInfo();
+    const int count = static_cast<int>(variables.size());
+    // Name the variable the user drives first: moving θ to its limit is about θ, not d.
+    for (int n = 0; n < count; ++n) {
+        const int i = (m_drivenVariable + n) % count;
+        const VariableInfo &info = variables[i];
+        const Interval range = m.variableRange(i);
+        const double value = m.variableValue(m_design.pose, i);
+        const double tolerance = 1e-9 * std::max({1.0, std::abs(range.min), std::abs(range.max)});
+        const bool atMin = value <= range.min + tolerance;
+        const bool atMax = value >= range.max - tolerance;
+        if (!atMin && !atMax)
+            continue;
+        const QString symbol = toQString(info.symbol);
+        const QString limit = formatQuantity(atMax ? range.max : range.min, info.unit, info.decimals);
+        if (const std::string reason = m.rangeLimitReason(i, atMax); !reason.empty()) {
+            return atMax ? tr("%1 stops at its upper limit %2: %3.").arg(symbol, limit, QString::fromStdString(reason))
+                         : tr("%1 stops at its lower limit %2: %3.").arg(symbol, limit, QString::fromStdString(reason));
+        }
+        return atMax ? tr("%1 stops at its upper limit %2 (design range).").arg(symbol, limit)
+                     : tr("%1 stops at its lower limit %2 (design range).").arg(symbol, limit);
+    }
+    std::vector<double> values(m.reportLayout().size);
+    const Singularity singularity = m.evaluate(m_design.pose, values);
+    switch (singularity.type) {
+    case SingularityType::None:
+        break;
+    case SingularityType::Inverse:
+        return tr("Singular pose (inverse): the mechanism cannot be driven here.");
+    case SingularityType::Direct:
+        return tr("Singular pose (direct): the mechanism cannot be driven here.");
+    case SingularityType::Combined:
+        return tr("Singular pose (combined): the mechanism cannot be driven here.");
+    }
+    if (singularity.margin < nearSingularMargin)
+        return tr("Close to a singular pose: small input steps make large output jumps.");
+    return {};
+}
+
+void Document::applyDesign(const Design &design)
+{
+    if (design.mechanism != m_design.mechanism)
+        m_modeNeighbours = design.mechanism->modeNeighbours();
+    m_design = design;
+    emit designChanged();
+}
+
+void Document::applyPose(const Pose &pose)
+{
+    m_design.pose = pose;
+    emit poseChanged();
+}
+
+Pose Document::carryPose(const Mechanism &mechanism, const Pose &old)
+{
+    // Keep the outputs (what the user looks at: θ, the platform) and let the inputs follow;
+    // past a narrowed range, stop at the limit.
+    Coordinates outputs = old.outputs;
+    const int inputs = mechanism.inputCount();
+    for (int i = 0; i < outputs.size(); ++i)
+        outputs[i] = mechanism.variableRange(inputs + i).clamp(outputs[i]);
+    if (auto kept = mechanism.solveInverse(outputs, &old))
+        return *kept;
+    // Out of the new workspace: keep the actuators where they are, if the design allows.
+    Coordinates actuators = old.inputs;
+    for (int i = 0; i < actuators.size(); ++i)
+        actuators[i] = mechanism.variableRange(i).clamp(actuators[i]);
+    if (auto kept = mechanism.solveDirect(actuators, &old))
+        return *kept;
+    return mechanism.homePose();
+}
+
+} // namespace pkm

@@ -1,0 +1,82 @@
+#pragma once
+/// The document: one design and one pose, and the only writer of both. Widgets read it and ask
+/// it for changes; every design change is an undoable command, pose moves are not (they are
+/// the user exploring, not editing).
+
+#include "document/designfile.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+namespace pkm {
+
+class Document : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit Document(QObject *parent = nullptr);
+
+    const Design &design() const { return m_design; }
+    const MechanismPtr &mechanism() const { return m_design.mechanism; }
+    const Pose &pose() const { return m_design.pose; }
+    QUndoStack *undoStack() { return &m_undoStack; }
+
+    /// Opens a preset id or a design file as an undoable replacement of the design.
+    Result<bool> open(const QString &presetOrPath);
+    /// Changes one design parameter (display units); the failure names it and nothing changes.
+    /// `continuous` edits (stepping with keys or wheel) merge into the previous undo step of
+    /// the same parameter.
+    Result<bool> setParameter(const QString &name, double displayValue, bool continuous = false);
+    /// Moves joint variable `variable` (index into variableInfo(), core units). Values past a
+    /// limit stop at the limit; the failure names the variable if no pose can be reached.
+    Result<Pose> setVariable(int variable, double value);
+    /// Drags a scene handle to a point of the mechanism plane (mm).
+    Result<Pose> dragHandle(int handle, const Eigen::Vector2d &target);
+    /// Moves the outputs (a platform position clicked on a map) by inverse kinematics.
+    Result<Pose> moveOutputsTo(const Coordinates &outputs);
+    /// The design's neighbours in other working/assembly modes (computed once per design).
+    const std::vector<ModeAlternative> &modeNeighbours() const { return m_modeNeighbours; }
+    /// The current pose in the other modes: what the view draws as ghosts.
+    std::vector<ModeAlternative> modeAlternatives() const;
+    /// Switches to another mode, as an undoable design change; the pose becomes the
+    /// alternative's pose.
+    Result<bool> switchMode(const ModeAlternative &alternative);
+    /// Whether a move that failed went part of the way (see applyPartialMove).
+    bool lastMoveWasPartial() const { return m_lastMoveWasPartial; }
+    /// Why the pose cannot go further, when a variable sits at a limit or near a singularity;
+    /// empty otherwise.
+    QString limitNote() const;
+    // Used by the undo commands only.
+    void applyDesign(const Design &design);
+
+protected:
+    /// A new language (QEvent::LanguageChange to the application): the undo stack's texts
+    /// are made again, before the widgets hear of it.
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+signals:
+    /// The mechanism (and with it the pose) was replaced: recompute everything.
+    void designChanged();
+    /// Only the pose moved: the cheap path for slider drags.
+    void poseChanged();
+
+private:
+    void applyPose(const Pose &pose);
+    /// When a move to `target` fails, goes as far towards it as the mechanism allows (by
+    /// bisection between the current pose and the target) and reports the failure all the
+    /// same; `solveAt(t)` solves the move's fraction t ∈ [0, 1].
+    template <class Solve>
+    Result<Pose> moveTowards(const Solve &solveAt);
+    /// The pose to keep when the design changes: same outputs if still valid, else clamped.
+    static Pose carryPose(const Mechanism &mechanism, const Pose &old);
+
+    Design m_design;
+    QUndoStack m_undoStack;
+    int m_drivenVariable = 0; ///< the variable the user moved last (index into variableInfo())
+    std::vector<ModeAlternative> m_modeNeighbours;
+    bool m_lastMoveWasPartial = false;
+};
+
+} // namespace pkm

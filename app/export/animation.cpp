@@ -1,0 +1,116 @@
+#include "export/animation.h"
+
+#include "export/scenepicture.h"
+#include "export/gifwriter.h"
+#include "quantityformat.h"
+#include "scenepainter.h"
+#include "text.h"
+
+#include <QCoreApplication>
+#include <QPainter>
+
+#include <algorithm>
+
+namespace pkm {
+
+namespace {
+/// A message for the GUI's status bar and the CLI's stderr (English there: no catalogue).
+std::string message(const QString &text)
+{
+    return text.toStdString();
+}
+
+/// A number in a sentence: the locale's decimal point in the GUI, '.' in the CLI.
+QString numberText(double value, int decimals)
+{
+    return toQString(text::number(value, decimals));
+}
+} // namespace
+
+Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose &start,
+                                         const AnimationSettings &settings)
+{
+    const auto &variables = mechanism.variableInfo();
+    if (settings.variable < 0 || settings.variable >= static_cast<int>(variables.size()))
+        return Failure{FailureKind::UnknownName, {},
+                       message(QCoreApplication::translate("pkm::Animation",
+                                                           "The animation needs a pose variable of the mechanism."))};
+    const VariableInfo &info = variables[settings.variable];
+    if (settings.frames < minAnimationFrames || settings.frames > maxAnimationFrames) {
+        return Failure{FailureKind::InvalidParameter, "frames",
+                       message(QCoreApplication::translate("pkm::Animation", "An animation has %1 to %2 frames, not %3.")
+                                   .arg(numberText(minAnimationFrames, 0), numberText(maxAnimationFrames, 0),
+                                        numberText(settings.frames, 0)))};
+    }
+    std::vector<Pose> poses;
+    poses.reserve(settings.frames);
+    Pose near = start;
+    for (int i = 0; i < settings.frames; ++i) {
+        const double t = static_cast<double>(i) / (settings.frames - 1);
+        const double value = i + 1 == settings.frames ? settings.to : settings.from + t * (settings.to - settings.from);
+        auto solved = mechanism.solveWith(near, settings.variable, value);
+        if (!solved) {
+            Failure failure = solved.failure();
+            const QString unit = toQString(text::label(info.unit.symbol));
+            const QString shown = numberText(info.unit.toDisplay(value), info.decimals)
+                + (unit.isEmpty() || unit.startsWith(QChar(0x00B0)) ? QString() : QStringLiteral(" ")) + unit;
+            failure.message = message(QCoreApplication::translate("pkm::Animation", "Frame %1 (%2 = %3): %4")
+                                          .arg(numberText(i + 1, 0), toQString(info.name), shown,
+                                               toQString(failure.message)));
+            return failure;
+        }
+        near = *solved;
+        poses.push_back(near);
+    }
+    return poses;
+}
+
+QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose> &poses,
+                              const AnimationSettings &settings, const std::atomic<bool> *cancel)
+{
+    std::vector<const Pose *> order;
+    for (const Pose &pose : poses)
+        order.push_back(&pose);
+    if (settings.bounce && poses.size() > 2) {
+        // back again without repeating the turning points, so the loop runs smoothly
+        for (auto it = poses.rbegin() + 1; it + 1 != poses.rend(); ++it)
+            order.push_back(&*it);
+    }
+    QList<QImage> frames;
+    frames.reserve(static_cast<qsizetype>(order.size()));
+    const SceneStyle style;
+    for (const Pose *pose : order) {
+        if (cancel && cancel->load())
+            return {};
+        QImage image(settings.size, QImage::Format_RGB32);
+        image.fill(style.background);
+        QPainter painter(&image);
+        painter.setRenderHint(QPainter::Antialiasing, true);
+        const QString caption = settings.caption ? pictures::poseCaption(mechanism, *pose, settings.name) : QString();
+        pictures::paintScenePicture(painter, QRectF(image.rect()), mechanism.scene(*pose), style, caption);
+        painter.end();
+        frames.append(image);
+    }
+    return frames;
+}
+
+Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start, const AnimationSettings &settings,
+                                   const std::atomic<bool> *cancel)
+{
+    auto poses = animationPoses(mechanism, start, settings);
+    if (!poses)
+        return poses.failure();
+    const QList<QImage> frames = animationFrames(mechanism, *poses, settings, cancel);
+    if (frames.isEmpty())
+        return Failure{FailureKind::InvalidParameter, {},
+                       message(QCoreApplication::translate("pkm::Animation", "The animation was cancelled."))};
+    QString error;
+    GifOptions options;
+    options.frameMilliseconds = settings.frameMilliseconds;
+    const QByteArray gif = encodeGif(frames, options, &error);
+    if (gif.isEmpty())
+        return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
+    return gif;
+}
+
+} // namespace pkm

@@ -1,0 +1,191 @@
+#include "gui/animationdialog.h"
+
+#include "gui/backgroundtask.h"
+#include "quantityformat.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSaveFile>
+#include <QSpinBox>
+
+namespace pkm {
+
+namespace {
+const QList<QSize> pictureSizes {{640, 480}, {960, 720}, {1280, 960}, {1600, 1200}};
+constexpr int defaultSize = 1; // 960 × 720: sharp on a projector, a few MB for a minute of frames
+} // namespace
+
+AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidget *parent)
+    : QDialog(parent)
+    , m_mechanism(mechanism)
+{
+    auto *form = new QFormLayout(this);
+    m_form = form;
+    // the labels get their texts in retranslate()
+    auto addRow = [this, form](QWidget *field) {
+        auto *label = new QLabel(this);
+        label->setBuddy(field);
+        form->addRow(label, field);
+    };
+
+    m_variable = new QComboBox(this);
+    const auto &variables = mechanism.variableInfo();
+    for (std::size_t i = 0; i < variables.size(); ++i)
+        m_variable->addItem(QString());
+    addRow(m_variable);
+
+    m_from = new QDoubleSpinBox(this);
+    m_to = new QDoubleSpinBox(this);
+    addRow(m_from);
+    addRow(m_to);
+
+    m_frames = new QSpinBox(this);
+    m_frames->setRange(minAnimationFrames, maxAnimationFrames);
+    m_frames->setValue(60);
+    addRow(m_frames);
+
+    m_frameTime = new QSpinBox(this);
+    m_frameTime->setRange(20, 2000);
+    m_frameTime->setSingleStep(10);
+    m_frameTime->setValue(50);
+    addRow(m_frameTime);
+
+    m_size = new QComboBox(this);
+    for (const QSize &size : pictureSizes)
+        m_size->addItem(QString(), size);
+    m_size->setCurrentIndex(defaultSize);
+    addRow(m_size);
+
+    m_bounce = new QCheckBox(this);
+    m_bounce->setChecked(true);
+    form->addRow(QString(), m_bounce);
+
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    m_buttons = buttons;
+    retranslate();
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    form->addRow(buttons);
+
+    connect(m_variable, &QComboBox::currentIndexChanged, this, &AnimationDialog::selectVariable);
+    m_variable->setCurrentIndex(std::clamp(variable, 0, static_cast<int>(variables.size()) - 1));
+    selectVariable(m_variable->currentIndex());
+}
+
+void AnimationDialog::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDialog::changeEvent(event);
+}
+
+void AnimationDialog::setRowLabel(QWidget *field, const QString &text)
+{
+    if (auto *label = qobject_cast<QLabel *>(m_form->labelForField(field)))
+        label->setText(text);
+}
+
+void AnimationDialog::retranslate()
+{
+    setWindowTitle(tr("Export Animation"));
+    const auto &variables = m_mechanism.variableInfo();
+    for (int i = 0; i < m_variable->count() && i < static_cast<int>(variables.size()); ++i) {
+        const VariableInfo &info = variables[i];
+        m_variable->setItemText(i, QStringLiteral("%1 — %2").arg(toQString(info.symbol), coreLabel(info.label)));
+    }
+    setRowLabel(m_variable, tr("Move"));
+    setRowLabel(m_from, tr("From"));
+    setRowLabel(m_to, tr("To"));
+    setRowLabel(m_frames, tr("Frames"));
+    m_frameTime->setSuffix(tr(" ms per frame"));
+    setRowLabel(m_frameTime, tr("Speed"));
+    for (int i = 0; i < m_size->count(); ++i) {
+        const QSize size = m_size->itemData(i).toSize();
+        m_size->setItemText(i, tr("%1 × %2 pixels").arg(QLocale().toString(size.width()), QLocale().toString(size.height())));
+    }
+    setRowLabel(m_size, tr("Size"));
+    m_bounce->setText(tr("Play back to the start (a smooth loop)"));
+    m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Export…"));
+    showRangeUnit();
+}
+
+void AnimationDialog::showRangeUnit()
+{
+    const int variable = m_variable->currentIndex();
+    if (variable < 0)
+        return;
+    const QString symbol = unitText(m_mechanism.variableInfo()[variable].unit);
+    const QString suffix = symbol.isEmpty() || symbol.startsWith(QChar(0x00B0)) ? symbol : QLatin1Char(' ') + symbol;
+    for (QDoubleSpinBox *box : {m_from, m_to})
+        box->setSuffix(suffix);
+}
+
+void AnimationDialog::selectVariable(int variable)
+{
+    if (variable < 0)
+        return;
+    const VariableInfo &info = m_mechanism.variableInfo()[variable];
+    const Interval range = m_mechanism.variableRange(variable);
+    const double lo = info.unit.toDisplay(range.min), hi = info.unit.toDisplay(range.max);
+    for (QDoubleSpinBox *box : {m_from, m_to}) {
+        box->setDecimals(info.decimals);
+        box->setRange(lo, hi);
+    }
+    showRangeUnit();
+    m_from->setValue(lo);
+    m_to->setValue(hi);
+}
+
+AnimationSettings AnimationDialog::settings() const
+{
+    AnimationSettings settings;
+    settings.variable = m_variable->currentIndex();
+    const Unit &unit = m_mechanism.variableInfo()[settings.variable].unit;
+    settings.from = unit.fromDisplay(m_from->value());
+    settings.to = unit.fromDisplay(m_to->value());
+    settings.frames = m_frames->value();
+    settings.bounce = m_bounce->isChecked();
+    settings.size = m_size->currentData().toSize();
+    settings.frameMilliseconds = m_frameTime->value();
+    return settings;
+}
+
+void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, const AnimationSettings &settings,
+                     const QString &path, const std::function<void(const QString &, bool)> &done)
+{
+    runInBackground(
+        parent, AnimationDialog::tr("Export Animation"),
+        AnimationDialog::tr("Drawing %n frame(s)…", nullptr, settings.frames),
+        [mechanism = std::move(mechanism), pose, settings, path](const std::atomic<bool> &cancel) -> TaskFailure {
+            const Result<QByteArray> gif = renderAnimation(*mechanism, pose, settings, &cancel);
+            if (cancel)
+                return std::nullopt;
+            if (!gif)
+                return QString::fromStdString(gif.failure().message);
+            QSaveFile file(path);
+            if (!file.open(QIODevice::WriteOnly) || file.write(*gif) != gif->size() || !file.commit())
+                return AnimationDialog::tr("Cannot write %1: %2.").arg(path, file.errorString());
+            return std::nullopt;
+        },
+        [path, done](const TaskFailure &failure, bool cancelled) {
+            if (cancelled)
+                done(AnimationDialog::tr("Animation export cancelled."), false);
+            else if (failure)
+                done(*failure, true);
+            else
+                done(AnimationDialog::tr("Wrote %1 (%2 kB)")
+                         .arg(path, QLocale().toString((QFileInfo(path).size() + 512) / 1024)),
+                    false);
+        });
+}
+
+} // namespace pkm

@@ -1,0 +1,64 @@
+#pragma once
+/// File → Export Animation: which pose variable to sweep, over what range, in how many frames
+/// and at what size; the GIF is drawn off the GUI thread.
+
+#include "export/animation.h"
+
+#include <QDialog>
+
+#include <functional>
+
+class QCheckBox;
+class QComboBox;
+class QDialogButtonBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QSpinBox;
+
+namespace pkm {
+
+class AnimationDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    /// Offers `mechanism`'s pose variables, starting with `variable` over its whole range.
+    AnimationDialog(const Mechanism &mechanism, int variable, QWidget *parent = nullptr);
+
+    /// The choices, in core units.
+    AnimationSettings settings() const;
+
+    QComboBox *variableBox() const { return m_variable; }
+    QDoubleSpinBox *fromBox() const { return m_from; }
+    QDoubleSpinBox *toBox() const { return m_to; }
+    QSpinBox *framesBox() const { return m_frames; }
+
+protected:
+    /// A new language: labels, lists and units again, the choices kept.
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+    void selectVariable(int variable);
+    /// The unit after the range's values, in the current language.
+    void showRangeUnit();
+    void setRowLabel(QWidget *field, const QString &text);
+
+    const Mechanism &m_mechanism;
+    QFormLayout *m_form = nullptr;
+    QDialogButtonBox *m_buttons = nullptr;
+    QComboBox *m_variable = nullptr;
+    QDoubleSpinBox *m_from = nullptr;
+    QDoubleSpinBox *m_to = nullptr;
+    QSpinBox *m_frames = nullptr;
+    QComboBox *m_size = nullptr;
+    QSpinBox *m_frameTime = nullptr;
+    QCheckBox *m_bounce = nullptr;
+};
+
+/// Draws the animation off the GUI thread (a progress dialog offers to cancel) and writes it to
+/// `path` atomically; `done` gets the message for the status bar and whether it is an error.
+void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, const AnimationSettings &settings,
+                     const QString &path, const std::function<void(const QString &, bool)> &done);
+
+} // namespace pkm

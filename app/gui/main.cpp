@@ -1,0 +1,76 @@
+// pkm-studio: the desktop application. Usage: pkm-studio [--3d] [PRESET-ID | DESIGN.pkm.json]
+#include "document/designsession.h"
+#include "document/document.h"
+#include "document/language.h"
+#include "gui/mainwindow.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QScreen>
+#include <QTabWidget>
+#include <QTimer>
+
+#include <cstdio>
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("PKM Studio"));
+    QApplication::setApplicationName(QStringLiteral("pkm-studio"));
+    QApplication::setApplicationDisplayName(QStringLiteral("PKM Studio"));
+    QApplication::setApplicationVersion(QStringLiteral(PKM_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("pkm-studio"));
+    // A classroom projects this: a size larger than the desktop default reads from the back row.
+    QFont font = QApplication::font();
+    if (font.pointSizeF() < 10.5)
+        font.setPointSizeF(10.5);
+    QApplication::setFont(font);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Design, analyse and teach parallel-kinematic mechanisms."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("design"),
+                                 QStringLiteral("Preset id (see 'pkm list') or design file to open; "
+                                                "default: pjoint-prototype."));
+    const QCommandLineOption show3d(QStringLiteral("3d"), QStringLiteral("Start with the 3D view of the linkage."));
+    parser.addOption(show3d);
+    const QCommandLineOption languageOption(
+        QStringLiteral("lang"),
+        QStringLiteral("Language for this run: en, sr (Serbian, Cyrillic), sr_Latn (Serbian, Latin) or ru; "
+                       "default: the one chosen in the Language menu, else the system's."),
+        QStringLiteral("code"));
+    parser.addOption(languageOption);
+    parser.process(app);
+
+    // The language first, so that every widget is made in it. --lang is for this run only.
+    const QString code = parser.isSet(languageOption) ? parser.value(languageOption) : pkm::language::preferred();
+    if (!pkm::language::apply(code)) {
+        std::fprintf(stderr, "pkm-studio: unknown language '%s' (use en, sr, sr_Latn or ru)\n", qPrintable(code));
+        return 2;
+    }
+
+    pkm::MainWindow window;
+    const QStringList designs = parser.positionalArguments();
+    if (!designs.isEmpty() && !window.openDesign(designs.first())) {
+        std::fprintf(stderr, "pkm-studio: %s\n", qPrintable(window.lastStatus()));
+    } else {
+        // Opening at start is not an edit the user should be able to undo.
+        window.document()->undoStack()->clear();
+        window.session()->markClean();
+    }
+    if (parser.isSet(show3d))
+        window.viewTabs()->setCurrentIndex(1);
+    // First start: fill the screen (also where no window manager honours "maximized");
+    // later starts restore the remembered geometry, maximized or not.
+    if (!window.restoredGeometry()) {
+        if (QScreen *screen = QGuiApplication::primaryScreen())
+            window.setGeometry(screen->availableGeometry());
+        window.showMaximized();
+    } else {
+        window.show();
+    }
+    // After the window is up, so that the question has a parent to sit on.
+    QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
+    return app.exec();
+}

@@ -1,0 +1,174 @@
+#pragma once
+/// The main window: the linkage view, the joint-variable sliders, the design panel, live values
+/// and plots, all reading one Document and asking it for every change.
+
+#include "export/animation.h"
+#include "mechanism.h"
+
+#include <QMainWindow>
+#include <QMessageBox>
+#include <QPointer>
+
+#include <functional>
+
+class QAction;
+class QDockWidget;
+class QLabel;
+class QToolBar;
+class QMenu;
+class QSplitter;
+class QStackedWidget;
+class QTabWidget;
+
+namespace pkm {
+
+class DesignPanel;
+class DesignSession;
+class Document;
+class LinkageView;
+class ModeBar;
+class PJointPlots;
+class ValuesTable;
+class MobilityPanel;
+class VariablePanel;
+class WorkspacePanel;
+class OxGlidePanel;
+class FourBarPanel;
+class View3DPanel;
+
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    Document *document() const { return m_document; }
+    LinkageView *linkageView() const { return m_view; }
+    VariablePanel *variablePanel() const { return m_variables; }
+    DesignPanel *designPanel() const { return m_designPanel; }
+    ValuesTable *valuesTable() const { return m_values; }
+    /// The Mobility dock's panel (tabified with the values).
+    MobilityPanel *mobilityPanel() const { return m_mobility; }
+    PJointPlots *pjointPlots() const { return m_pjointPlots; }
+    ModeBar *modeBar() const { return m_modeBar; }
+    WorkspacePanel *workspacePanel() const { return m_workspacePanel; }
+    OxGlidePanel *oxglidePanel() const { return m_oxglidePanel; }
+    FourBarPanel *fourbarPanel() const { return m_fourbarPanel; }
+    View3DPanel *view3d() const { return m_view3d; }
+    /// The tabs over the linkage: "2D" and "3D".
+    QTabWidget *viewTabs() const { return m_viewTabs; }
+    /// The last message the status bar showed (tests read it after it times out).
+    QString lastStatus() const { return m_lastStatus; }
+
+    /// Whether a remembered window geometry was restored at construction.
+    bool restoredGeometry() const { return m_restoredGeometry; }
+
+    /// Opens a preset id or a design file; on failure says why and keeps the current design.
+    bool openDesign(const QString &presetOrPath);
+    /// The file, unsaved changes, recent files and autosave of the document.
+    DesignSession *session() const { return m_session; }
+    /// Asks whether to save unsaved changes: true when the caller may go on (saved, discarded,
+    /// or nothing to save), false when the user cancelled or the save failed.
+    bool maybeSave();
+    /// Saves to the document's file, or asks for one; false if not saved.
+    bool saveFile();
+    /// Offers the designs of sessions that ended without closing (at start-up).
+    void offerRecovery();
+    /// How the window asks questions; tests replace it to answer without a dialog. Gets the
+    /// title, the text and the buttons; returns the button chosen.
+    using Question = std::function<QMessageBox::StandardButton(const QString &, const QString &,
+                                                               QMessageBox::StandardButtons)>;
+    void setQuestion(Question question) { m_question = std::move(question); }
+    /// Draws the animation of the current design from its current pose off the GUI thread and
+    /// writes the GIF to `path`; the status bar says when it is done.
+    void exportAnimationTo(const QString &path, AnimationSettings settings);
+
+    /// Switches the program to the language `code` (language.h) and remembers it.
+    void setLanguage(const QString &code);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+    void changeEvent(QEvent *event) override;
+
+private:
+    void createActions();
+    /// Sets the action's text (and tooltip) to the translation of `source` now and after every
+    /// change of language.
+    QAction *translated(QAction *action, const char *source, const char *toolTip = nullptr);
+    void createUndoActions();
+    void fillPresetsMenu();
+    void retranslate();
+    void createDocks();
+    void onDesignChanged();
+    void onPoseChanged();
+    void keepMechanismInView();
+    void updateModes();
+    /// Gives the 3D view the current pose when it is shown; refits it for a new mechanism.
+    void update3d(bool designChanged);
+    void switchMode(int index);
+    void showStatus(const QString &message, bool error = false);
+    void openFile();
+    bool saveFileAs();
+    void updateTitle();
+    void exportAnimationDialog();
+    /// File ▸ Export Drawing (DXF)…: the current design and pose as a DXF file (dxfwriter.h).
+    void exportDrawing();
+    /// File ▸ Export Parameter Sheet…: the current design and pose as a PDF, JSON or CSV
+    /// parameter sheet (sheet.h), the same file as `pkm sheet`.
+    void exportParameterSheet();
+    /// File ▸ Save 2D View Picture…: the current design and pose as PNG, SVG or PDF
+    /// (viewpicture.h), as `pkm render` draws it.
+    void saveViewPicture();
+    void updateRecentMenu();
+    /// Opens a preset or file from a menu: asks about unsaved changes first.
+    void openFromMenu(const QString &presetOrPath);
+    void about();
+    void restoreLayout();
+
+    Document *m_document = nullptr;
+    DesignSession *m_session = nullptr;
+    QMenu *m_recentMenu = nullptr;
+    QMenu *m_editMenu = nullptr;
+    QMenu *m_presetsMenu = nullptr;
+    QMenu *m_languageMenu = nullptr;
+    QToolBar *m_toolBar = nullptr;
+    QAction *m_undoAction = nullptr;
+    QAction *m_redoAction = nullptr;
+    QAction *m_undoButton = nullptr;
+    QAction *m_redoButton = nullptr;
+    QDockWidget *m_designDock = nullptr;
+    QDockWidget *m_valuesDock = nullptr;
+    QDockWidget *m_mobilityDock = nullptr;
+    struct TranslatedAction {
+        QPointer<QAction> action;
+        const char *source = nullptr;
+        const char *toolTip = nullptr;
+    };
+    QList<TranslatedAction> m_translatedActions;
+    Question m_question;
+    LinkageView *m_view = nullptr;
+    VariablePanel *m_variables = nullptr;
+    ModeBar *m_modeBar = nullptr;
+    std::vector<ModeAlternative> m_alternatives; ///< the other modes at the current pose
+    DesignPanel *m_designPanel = nullptr;
+    ValuesTable *m_values = nullptr;
+    MobilityPanel *m_mobility = nullptr;
+    PJointPlots *m_pjointPlots = nullptr;
+    WorkspacePanel *m_workspacePanel = nullptr;
+    OxGlidePanel *m_oxglidePanel = nullptr;
+    FourBarPanel *m_fourbarPanel = nullptr;
+    View3DPanel *m_view3d = nullptr;
+    QTabWidget *m_viewTabs = nullptr;
+    Eigen::AlignedBox3d m_view3dExtent; ///< of the model last fitted in the 3D view
+    QStackedWidget *m_plots = nullptr;
+    QSplitter *m_splitter = nullptr;
+    QLabel *m_poseLabel = nullptr;
+    QLabel *m_singularityLabel = nullptr;
+    QString m_lastStatus;
+    bool m_statusIsError = false;
+    bool m_restoredGeometry = false;
+};
+
+} // namespace pkm

@@ -1,0 +1,107 @@
+#include "report/sweeprowformatter.h"
+
+#include "report/report.h"
+#include "report/jsonwriter.h"
+#include "report/numberformat.h"
+
+#include <cmath>
+#include <cstring>
+#include <set>
+#include <string_view>
+
+namespace pkm::report {
+
+SweepRowFormatter::SweepRowFormatter(const Mechanism &mechanism, bool withParameters)
+    : m_layout(mechanism.reportLayout())
+{
+    if (withParameters) {
+        for (const ParameterInfo &info : mechanism.parameterInfo())
+            m_parameters.push_back(&info);
+    }
+    std::set<std::string, std::less<>> used;
+    for (const ParameterInfo *info : m_parameters)
+        used.insert(info->name);
+    const auto addEntries = [&](ReportGroup group) {
+        for (const ReportEntry &entry : m_layout.entries) {
+            if (entry.group != group)
+                continue;
+            // Names are unique within a layout; a clash with a parameter gets the group prefix.
+            const std::string name
+                = used.count(entry.name) ? std::string(reportGroupKey(group)) + "." + entry.name : entry.name;
+            used.insert(name);
+            const bool scalar = entry.rows * entry.cols == 1;
+            for (int r = 0; r < entry.rows; ++r) {
+                for (int c = 0; c < entry.cols; ++c) {
+                    m_columns.push_back({Column::Value, entry.offset + r * entry.cols + c, entry.unit,
+                        scalar ? name : name + "[" + std::to_string(r) + "][" + std::to_string(c) + "]"});
+                }
+            }
+        }
+    };
+    for (ReportGroup group : groupsBeforeSingularity)
+        addEntries(group);
+    m_columns.push_back({Column::SingularityType, 0, units::none, "singularity"});
+    m_columns.push_back({Column::SingularityMargin, 0, units::none, "singularity_margin"});
+    for (ReportGroup group : groupsAfterSingularity)
+        addEntries(group);
+}
+
+void SweepRowFormatter::csvHeader(std::string &out) const
+{
+    for (const ParameterInfo *info : m_parameters)
+        out += info->name + ',';
+    for (const Column &column : m_columns)
+        out += column.name + ',';
+    out.back() = '\n';
+}
+
+std::size_t SweepRowFormatter::csvRowBound() const
+{
+    return (m_parameters.size() + m_columns.size()) * static_cast<std::size_t>(maxNumberLength) + 16;
+}
+
+char *SweepRowFormatter::csvRow(char *out, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
+{
+    const Singularity singularity = mechanism.evaluate(pose, values);
+    if (!m_parameters.empty()) {
+        const ParameterSet parameters = mechanism.parameters();
+        for (const ParameterInfo *info : m_parameters) {
+            const auto it = parameters.find(info->name);
+            if (it != parameters.end())
+                out = writeNumber(out, info->unit.toDisplay(it->second));
+            *out++ = ',';
+        }
+    }
+    for (const Column &column : m_columns) {
+        if (column.kind == Column::Value) {
+            const double value = column.unit.toDisplay(values[static_cast<std::size_t>(column.offset)]);
+            if (std::isfinite(value))
+                out = writeNumber(out, value); // else an empty field
+        } else if (column.kind == Column::SingularityType) {
+            const std::string_view name = singularityName(singularity.type);
+            std::memcpy(out, name.data(), name.size());
+            out += name.size();
+        } else if (std::isfinite(singularity.margin)) {
+            out = writeNumber(out, singularity.margin);
+        }
+        *out++ = ',';
+    }
+    out[-1] = '\n';
+    return out;
+}
+
+void SweepRowFormatter::jsonRow(
+    std::string &out, std::int64_t index, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
+{
+    const Singularity singularity = mechanism.evaluate(pose, values);
+    if (index > 0)
+        out += ",\n";
+    JsonWriter json(out, JsonWriter::Style::Compact);
+    json.beginObject();
+    if (!m_parameters.empty())
+        writeParametersJson(json, mechanism, true);
+    writeReportJson(json, m_layout, values, singularity);
+    json.endObject();
+}
+
+} // namespace pkm::report

@@ -1,0 +1,56 @@
+#pragma once
+/// The rows of `pkm sweep`: one CSV line or one JSON object per step, with the quantities of
+/// `pkm eval`. CSV columns are named as the keys of `pkm eval --json`, a matrix M giving
+/// columns M[i][j]; a value that is not finite is an empty CSV field and null in JSON.
+
+#include "mechanism.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace pkm::report {
+
+/// The columns are worked out once, so a CSV row is a loop of writeNumber calls into a
+/// reused buffer: no allocation per row.
+class SweepRowFormatter
+{
+public:
+    /// `withParameters`: every row starts with all parameters (a parameter sweep). The rows
+    /// must use `mechanism`'s report layout.
+    SweepRowFormatter(const Mechanism &mechanism, bool withParameters);
+
+    /// Size of the value buffer the rows need.
+    std::size_t valueCount() const { return static_cast<std::size_t>(m_layout.size); }
+
+    /// The CSV header line.
+    void csvHeader(std::string &out) const;
+
+    /// Bytes a CSV row may take: every field at its longest.
+    std::size_t csvRowBound() const;
+
+    /// Evaluates `pose` into `values` and writes its CSV row at `out` (csvRowBound() bytes of
+    /// room); returns the end. The hot loop of a sweep: no allocation, no std::string.
+    char *csvRow(char *out, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const;
+
+    /// Evaluates `pose` into `values` and appends its JSON row, the row number `index` of the
+    /// sweep (rows after the first are preceded by ",\n").
+    void jsonRow(std::string &out, std::int64_t index, const Mechanism &mechanism, const Pose &pose,
+        std::span<double> values) const;
+
+private:
+    struct Column {
+        enum Kind { Value, SingularityType, SingularityMargin } kind;
+        int offset; ///< in the value buffer
+        Unit unit;
+        std::string name;
+    };
+
+    const ReportLayout &m_layout;
+    std::vector<const ParameterInfo *> m_parameters;
+    std::vector<Column> m_columns;
+};
+
+} // namespace pkm::report
