@@ -14,13 +14,12 @@
 // the solid model, tessellating, uploading and drawing it, and waiting for the GL frame to
 // finish (issue: 3D view).
 #include "document/document.h"
+#include "gui/mainwindow.h"
+#include "kinds/workspacepanel.h"
 #include "linkageview.h"
 #include "linkageview3d.h"
-#include "gui/mainwindow.h"
-#include "kinds/moma/moma.h"
-#include "kinds/pjoint/pjoint.h"
+#include "units.h"
 #include "workspacemapview.h"
-#include "gui/workspacepanel.h"
 
 #include <QApplication>
 #include <QOpenGLContext>
@@ -95,7 +94,7 @@ int main(int argc, char *argv[])
             const Eigen::Vector2d target = home.outputs.head<2>() + 25.0 * Eigen::Vector2d(std::cos(angle) - 1, std::sin(angle));
             window.document()->dragHandle(0, target);
         } else {
-            window.document()->setVariable(pkm::PJoint::variableTheta, thetaDeg * pkm::units::degree);
+            window.document()->setVariable(window.document()->mechanism()->variableIndex("theta"), thetaDeg * pkm::units::degree);
         }
         // Deliver the pending paint requests now, as the event loop would before the next
         // input event: only what changed repaints, as on a real screen.

@@ -46,6 +46,10 @@ struct KinematicChain {
     /// A short description for reports ("planar four-bar: ground, crank, coupler, rocker"),
     /// translated.
     std::string description;
+    /// Why the mechanism keeps freedoms with its actuators locked, where its model knows (the
+    /// O-X glide's platform tilt), translated: the mobility panel adds it when the rank says
+    /// the mechanism is under-actuated.
+    std::string underActuation;
 
     int movingLinks() const { return static_cast<int>(links.size()) - 1; }
 };

@@ -44,6 +44,14 @@ struct SingularCurve {
     std::vector<Eigen::Vector2d> points;
 };
 
+/// An area of the workspace known in closed form, which reports give beside the grid's estimate.
+struct ExactArea {
+    std::string key;    ///< "area" for the design's own modes, else a name of its own ("area_O")
+    std::string symbol; ///< as printed ("A", "A_O")
+    std::string label;  ///< English source, QT_TRANSLATE_NOOP("Sheet", …): the sheet translates it
+    double area = 0.0;  ///< mm²
+};
+
 /// Implemented by mechanisms with a planar workspace (Mechanism::planarWorkspace()).
 class PlanarWorkspace
 {
@@ -62,6 +70,9 @@ public:
     virtual std::vector<SingularCurve> singularCurves() const = 0;
     /// What a singular curve of `type` means for this mechanism, for a legend: "link ⟂ guide".
     virtual std::string singularityMeaning(SingularCurve::Type type) const = 0;
+    /// The areas known exactly, the design's own modes first (key "area"); none by default,
+    /// where only the grid estimates the area.
+    virtual std::vector<ExactArea> exactAreas() const { return {}; }
 };
 
 /// Below this margin a cell counts as near-singular (≈ 3° from the singular pose).

@@ -1325,6 +1325,10 @@ Please verify the correct file name was given.</source>
 <context>
     <name>core</name>
     <message>
+        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
+        <translation>Ранг учитывает x и y платформы, z каретки и наклон платформы (её качание вокруг продольной оси). Приводы задают x_AB, x_CD и z; наклон ими не удерживается. При шарнирах, описанных в статье (сферические у платформы, по одному шарниру на каждую тягу у ползуна, тяги одной пары одна за другой), платформа может наклоняться при застопоренных ползунах; кинематика статьи предполагает, что она остаётся горизонтальной.</translation>
+    </message>
+    <message>
         <source>%1 mm</source>
         <translation>%1 мм</translation>
     </message>
@@ -4047,10 +4051,6 @@ Please verify the correct file name was given.</source>
             <numerusform>%1 при подвижности %2; при застопоренных приводах у него остаются %n степени свободы.</numerusform>
             <numerusform>%1 при подвижности %2; при застопоренных приводах у него остаётся %n степеней свободы.</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
-        <translation>Ранг учитывает x и y платформы, z каретки и наклон платформы (её качание вокруг продольной оси). Приводы задают x_AB, x_CD и z; наклон ими не удерживается. При шарнирах, описанных в статье (сферические у платформы, по одному шарниру на каждую тягу у ползуна, тяги одной пары одна за другой), платформа может наклоняться при застопоренных ползунах; кинематика статьи предполагает, что она остаётся горизонтальной.</translation>
     </message>
     <message>
         <source>Redundantly actuated: %1 for mobility %2.</source>

@@ -1325,6 +1325,10 @@ Please verify the correct file name was given.</source>
 <context>
     <name>core</name>
     <message>
+        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
+        <translation>Ранг обухвата x и y платформе, z колица и нагиб платформе (њено љуљање око подужне осе). Погони задају x_AB, x_CD и z; нагиб они не држе. Са зглобовима које рад описује (сферни код платформе, по један зглоб за сваки штап код клизача, штапови једног пара један иза другог) платформа може да се нагне са закоченим клизачима; кинематика из рада претпоставља да платформа остаје водоравна.</translation>
+    </message>
+    <message>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -4047,10 +4051,6 @@ Please verify the correct file name was given.</source>
             <numerusform>%1 за покретљивост %2; са закоченим погонима задржава %n степена слободе.</numerusform>
             <numerusform>%1 за покретљивост %2; са закоченим погонима задржава %n степени слободе.</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
-        <translation>Ранг обухвата x и y платформе, z колица и нагиб платформе (њено љуљање око подужне осе). Погони задају x_AB, x_CD и z; нагиб они не држе. Са зглобовима које рад описује (сферни код платформе, по један зглоб за сваки штап код клизача, штапови једног пара један иза другог) платформа може да се нагне са закоченим клизачима; кинематика из рада претпоставља да платформа остаје водоравна.</translation>
     </message>
     <message>
         <source>Redundantly actuated: %1 for mobility %2.</source>

@@ -1325,6 +1325,10 @@ Proverite da li je ime datoteke tačno.</translation>
 <context>
     <name>core</name>
     <message>
+        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
+        <translation>Rang obuhvata x i y platforme, z kolica i nagib platforme (njeno ljuljanje oko podužne ose). Pogoni zadaju x_AB, x_CD i z; nagib oni ne drže. Sa zglobovima koje rad opisuje (sferni kod platforme, po jedan zglob za svaki štap kod klizača, štapovi jednog para jedan iza drugog) platforma može da se nagne sa zakočenim klizačima; kinematika iz rada pretpostavlja da platforma ostaje vodoravna.</translation>
+    </message>
+    <message>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -4047,10 +4051,6 @@ Proverite da li je ime datoteke tačno.</translation>
             <numerusform>%1 za pokretljivost %2; sa zakočenim pogonima zadržava %n stepena slobode.</numerusform>
             <numerusform>%1 za pokretljivost %2; sa zakočenim pogonima zadržava %n stepeni slobode.</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>The rank counts the platform&apos;s x and y, the carriage&apos;s z and the platform&apos;s tilt (its swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is not held by them. With the joints the document describes (spherical at the platform, one hinge per rod at the slider, a pair&apos;s rods one behind the other) the platform can tilt with the sliders locked; the document&apos;s kinematics assume it stays level.</source>
-        <translation>Rang obuhvata x i y platforme, z kolica i nagib platforme (njeno ljuljanje oko podužne ose). Pogoni zadaju x_AB, x_CD i z; nagib oni ne drže. Sa zglobovima koje rad opisuje (sferni kod platforme, po jedan zglob za svaki štap kod klizača, štapovi jednog para jedan iza drugog) platforma može da se nagne sa zakočenim klizačima; kinematika iz rada pretpostavlja da platforma ostaje vodoravna.</translation>
     </message>
     <message>
         <source>Redundantly actuated: %1 for mobility %2.</source>

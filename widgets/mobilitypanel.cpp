@@ -94,11 +94,10 @@ public:
     using Subject = MobilityPanel::Subject;
     using Part = MobilityPanel::Part;
 
-    Display(const KinematicChain &chain, const MobilityReport &report, Subject subject, const std::string &kind)
+    Display(const KinematicChain &chain, const MobilityReport &report, Subject subject)
         : c(chain)
         , r(report)
         , subject(subject)
-        , kind(kind)
     {
     }
 
@@ -484,16 +483,10 @@ private:
                     tr("%1 for mobility %2; with the actuators locked, it keeps %n freedom(s).", nullptr, uncontrolled),
                     uncontrolled)
                       .arg(actuators, integer(useful));
-            // The O-X glide (docs/mathematics.md): the joints the document describes let the platform
-            // tilt with the sliders locked (tst_mobility: the planar part alone keeps its swing).
-            if (kind == "oxglide" && uncontrolled == 1 && useful == 4 && r.actuators == 3) {
-                text += QStringLiteral("</p><p>")
-                    + tr("The rank counts the platform's x and y, the carriage's z and the platform's tilt (its "
-                         "swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is "
-                         "not held by them. With the joints the document describes (spherical at the platform, one "
-                         "hinge per rod at the slider, a pair's rods one behind the other) the platform can tilt "
-                         "with the sliders locked; the document's kinematics assume it stays level.");
-            }
+            // What the mechanism's own model says about the freedom its actuators leave (the
+            // O-X glide's tilt, docs/mathematics.md).
+            if (!c.underActuation.empty())
+                text += QStringLiteral("</p><p>") + html(c.underActuation);
         } else if (r.actuators > useful) {
             text = tr("Redundantly actuated: %1 for mobility %2.").arg(actuators, integer(useful));
         } else {
@@ -508,7 +501,6 @@ private:
     const KinematicChain &c;
     const MobilityReport &r;
     Subject subject;
-    const std::string &kind;
 };
 
 } // namespace
@@ -733,7 +725,7 @@ void MobilityPanel::display(const Analysis &analysis)
 {
     m_shown = analysis;
     const std::map<Part, QString> parts
-        = Display(analysis.chain, analysis.report, analysis.subject, analysis.kind).parts();
+        = Display(analysis.chain, analysis.report, analysis.subject).parts();
     QString html;
     m_parts.clear();
     for (const auto &[part, fragment] : parts) {

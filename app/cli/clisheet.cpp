@@ -1,5 +1,7 @@
 #include "cli/clisheet.h"
 
+#include "kinds/kindmodule.h"
+
 #include "cli/cli.h"
 #include "document/language.h"
 #include "text.h"
@@ -101,7 +103,7 @@ int runSheetCommand(const PreparedDesign &prepared, const Invocation &invocation
             printError(err, "--lang " + code + ": this build of pkm has no catalogue for '" + code + "'.");
             return CliUsageError;
         }
-        built = sheet::build(*prepared.mechanism, prepared.pose, sheetSource(prepared));
+        built = kinds::buildSheet(*prepared.mechanism, prepared.pose, sheetSource(prepared));
         failure = sheet::save(built, path);
     }
     if (failure) {

@@ -1,15 +1,11 @@
 #include "export/sheet.h"
 
-
-#include "report/report.h"
 #include "document/designfile.h"
-#include "kinds/fourbar/fourbar.h"
-#include "kinds/oxglide/oxglide.h"
-#include "kinds/pjoint/pjoint.h"
+#include "export/sheetparts.h"
 #include "planarworkspace.h"
 #include "quantityformat.h"
 #include "registry.h"
-#include "export/sheetparts.h"
+#include "report/report.h"
 #include "text.h"
 
 #include <QCoreApplication>
@@ -597,7 +593,7 @@ const Section *Sheet::section(std::string_view key) const
 
 // -- the sheet ------------------------------------------------------------------------------
 
-Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source)
+Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source, KindSections kindSections)
 {
     Sheet sheet;
     sheet.design = source.design;
@@ -625,12 +621,10 @@ Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source)
     parts.plots.title = QCoreApplication::translate("Sheet", "Plots");
     parts.plots.newPage = true;
 
-    if (const auto *pjoint = dynamic_cast<const PJoint *>(&mechanism))
-        addPJoint(*pjoint, pose, parts);
-    else if (const auto *fourbar = dynamic_cast<const FourBar *>(&mechanism))
-        addFourBar(*fourbar, pose, parts);
+    if (kindSections)
+        kindSections(mechanism, pose, parts);
     if (const PlanarWorkspace *workspace = mechanism.planarWorkspace())
-        addPlanar(mechanism, *workspace, pose, dynamic_cast<const OxGlide *>(&mechanism), parts);
+        addPlanar(mechanism, *workspace, pose, parts);
 
     // What a kind without sections of its own still gets from the interface.
     if (parts.keyPoses.tables.empty())

@@ -192,8 +192,16 @@ struct Source {
 /// sheet's grid areas are the ones `pkm workspace --json` prints.
 inline constexpr int workspaceGrid = 400;
 
-/// The sheet of `mechanism` at `pose` (a solved pose of it).
-Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source);
+namespace detail {
+struct Parts;
+}
+/// The sections only one kind has (its key poses, checks, plots), which a kind's module adds to
+/// the generic ones (app/kinds/kindmodule.h; kinds::buildSheet passes the right ones).
+using KindSections = void (*)(const Mechanism &mechanism, const Pose &pose, detail::Parts &parts);
+
+/// The sheet of `mechanism` at `pose` (a solved pose of it), with the sections of its kind's
+/// module when given; without them, the generic sections every kind gets.
+Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source, KindSections kindSections = nullptr);
 
 // -- files ----------------------------------------------------------------------------------
 

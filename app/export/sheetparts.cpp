@@ -258,6 +258,27 @@ Figure sweepPlot(const Mechanism &mechanism, const Pose &pose, int variable, con
     return figure;
 }
 
+std::vector<const ReportEntry *> reportEntries(const Mechanism &mechanism, std::span<const std::string_view> names)
+{
+    std::vector<const ReportEntry *> found;
+    for (std::string_view name : names) {
+        const ReportEntry *entry = mechanism.reportLayout().find(name);
+        if (entry && entry->rows * entry->cols == 1)
+            found.push_back(entry);
+    }
+    return found;
+}
+
+Row reportRow(const Mechanism &mechanism, const Pose &pose, const std::vector<const ReportEntry *> &columns,
+    std::string key, QString label, bool highlight)
+{
+    const Evaluation evaluation = evaluateAt(mechanism, pose);
+    Row row {std::move(key), std::move(label), {}, highlight};
+    for (const ReportEntry *entry : columns)
+        row.cells.push_back(cellOf(*entry, evaluation));
+    return row;
+}
+
 } // namespace detail
 
 } // namespace pkm::sheet

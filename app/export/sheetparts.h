@@ -1,6 +1,7 @@
 #pragma once
-/// The pieces sheet.cpp builds a parameter sheet from, shared with the sections of the kinds
-/// (sheetkinds.cpp, sheetplanar.cpp). Not for other users: sheet.h is the interface.
+/// The pieces sheet.cpp builds a parameter sheet from, shared with the generic planar sections
+/// (sheetplanar.cpp) and with the sections a kind's module adds (app/kinds/<kind>/…sheet.cpp,
+/// sheet::KindSections). For other users sheet.h is the interface.
 
 #include "scenepainter.h"
 #include "export/sheet.h"
@@ -10,9 +11,6 @@
 #include <vector>
 
 namespace pkm {
-class FourBar;
-class OxGlide;
-class PJoint;
 class PlanarWorkspace;
 } // namespace pkm
 
@@ -97,13 +95,15 @@ std::optional<Eigen::AlignedBox2d> drawnBounds(const Scene &scene, double ratio)
 /// The style the sheet's drawing uses, for a device of `unitsPerMillimetre`.
 SceneStyle drawingStyle(double unitsPerMillimetre);
 
-// -- the kinds' sections --------------------------------------------------------------------
+/// The scalar report entries among `names`, in the order given: the columns of a table.
+std::vector<const ReportEntry *> reportEntries(const Mechanism &mechanism, std::span<const std::string_view> names);
+/// A row of a table of report entries at `pose`.
+Row reportRow(const Mechanism &mechanism, const Pose &pose, const std::vector<const ReportEntry *> &columns,
+    std::string key, QString label, bool highlight = false);
 
-void addPJoint(const PJoint &mechanism, const Pose &pose, Parts &parts);
-void addFourBar(const FourBar &mechanism, const Pose &pose, Parts &parts);
 /// Workspace, singular poses and strokes of a mechanism whose outputs are a point of the plane
-/// (MOMA, the O-X glide, any new one); the O-X glide's exact areas when `oxglide` is given.
-void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, const Pose &pose, const OxGlide *oxglide,
-    Parts &parts);
+/// (MOMA, the O-X glide, the five-bar, any new one), with the areas its workspace knows exactly
+/// (PlanarWorkspace::exactAreas) beside the grid's.
+void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, const Pose &pose, Parts &parts);
 
 } // namespace pkm::sheet::detail

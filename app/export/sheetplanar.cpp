@@ -1,19 +1,19 @@
 // The parameter sheet of a mechanism whose outputs are a point of the plane (MOMA, the O-X
 // glide, any new one with a PlanarWorkspace): the workspace as `pkm workspace` computes it —
 // the same grid, the same areas per mode, the same pictures as `pkm workspace -o` and
-// `pkm map -o` — with the O-X glide's exact areas (docs/mathematics.md), the singular poses inside
-// the workspace and the strokes the workspace uses.
+// `pkm map -o` — with the areas a workspace knows exactly (the O-X glide's, docs/mathematics.md),
+// the singular poses inside the workspace and the strokes the workspace uses.
 
-#include "export/workspacepictures.h"
-#include "report/workspaceanalysis.h"
-#include "kinds/oxglide/oxglide.h"
-#include "quantityformat.h"
 #include "export/sheetparts.h"
+#include "export/workspacepictures.h"
+#include "quantityformat.h"
+#include "report/workspaceanalysis.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace pkm::sheet::detail {
@@ -77,10 +77,28 @@ QString typeText(SingularCurve::Type type)
                                                : QCoreApplication::translate("Sheet", "inverse");
 }
 
+/// The exact area of the workspace in the modes of `mode` (NaN where none is known).
+double exactModeArea(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes,
+    const report::ModeArea &mode)
+{
+    ParameterSet changes;
+    for (std::size_t i = 0; i < modes.size(); ++i)
+        changes[modes[i]->name] = modes[i]->unit.fromDisplay(mode.values[i]);
+    const auto changed = mechanism.withParameters(changes);
+    if (changed) {
+        if (const PlanarWorkspace *workspace = (*changed)->planarWorkspace()) {
+            for (const ExactArea &known : workspace->exactAreas()) {
+                if (known.key == "area")
+                    return known.area;
+            }
+        }
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
 } // namespace
 
-void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, const Pose &pose, const OxGlide *oxglide,
-    Parts &parts)
+void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, const Pose &pose, Parts &parts)
 {
     std::vector<float> values, margins;
     const MapSummary summary
@@ -118,16 +136,14 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
                         .arg(workspaceGrid);
     std::vector<Item> &items = section.items;
     std::optional<double> exactOwn;
-    if (oxglide) {
-        exactOwn = oxglide::exactArea(oxglide->design(), oxglide->design().form);
-        items.push_back(numberItem("area", QStringLiteral("A"),
-            QCoreApplication::translate("Sheet", "area of this form's workspace (exact)"), *exactOwn, 1, "mm²"));
-        items.push_back(numberItem("area_O", QStringLiteral("A_O"),
-            QCoreApplication::translate("Sheet", "area of the extended (O) form (exact)"),
-            oxglide::exactArea(oxglide->design(), oxglide::formO), 1, "mm²"));
-        items.push_back(numberItem("area_X", QStringLiteral("A_X"),
-            QCoreApplication::translate("Sheet", "area of the crossed (X) form (exact)"),
-            oxglide::exactArea(oxglide->design(), oxglide::formX), 1, "mm²"));
+    const std::vector<ExactArea> exact = workspace.exactAreas();
+    if (!exact.empty()) {
+        for (const ExactArea &known : exact) {
+            if (known.key == "area")
+                exactOwn = known.area;
+            items.push_back(numberItem(known.key, utf8(known.symbol),
+                QCoreApplication::translate("Sheet", known.label.c_str()), known.area, 1, "mm²"));
+        }
         items.push_back(numberItem("area_grid", QStringLiteral("A_grid"),
             QCoreApplication::translate("Sheet", "area of this form on the grid"), summary.area, 1, "mm²"));
     } else {
@@ -170,7 +186,7 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
         for (const ParameterInfo *info : modes)
             table.columns.push_back({info->name, utf8(info->symbol), {}, coreLabel(info->label)});
         table.columns.push_back({"area", QCoreApplication::translate("Sheet", "area (grid)"), "mm²", {}});
-        if (oxglide)
+        if (exactOwn)
             table.columns.push_back({"area_exact", QCoreApplication::translate("Sheet", "area (exact)"), "mm²", {}});
         table.columns.push_back({"note", QCoreApplication::translate("Sheet", "note"), {}, {}});
         for (std::size_t m = 0; m < areas.size(); ++m) {
@@ -187,10 +203,8 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
             row.key = "mode_" + std::to_string(m + 1);
             row.label = label.join(QStringLiteral(", "));
             row.cells.push_back(numberCell(mode.area, 1));
-            if (oxglide) {
-                OxGlideDesign design = oxglide->design();
-                row.cells.push_back(numberCell(oxglide::exactArea(design, mode.values.front() > 0 ? oxglide::formO : oxglide::formX), 1));
-            }
+            if (exactOwn)
+                row.cells.push_back(numberCell(exactModeArea(mechanism, modes, mode), 1));
             if (mode.current)
                 row.cells.push_back(wordCell("current", QCoreApplication::translate("Sheet", "this design")));
             else if (mode.area > 0.0)

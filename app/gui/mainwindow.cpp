@@ -6,25 +6,21 @@
 #include "document/designsession.h"
 #include "document/document.h"
 #include "export/dxfwriter.h"
-#include "kinds/fourbar/fourbar.h"
-#include "gui/fourbarpanel.h"
 #include "document/language.h"
 #include "linkageview.h"
 #include "linkageview3d.h"
 #include "mobilitypanel.h"
 #include "modebar.h"
-#include "kinds/oxglide/oxglide.h"
-#include "gui/oxglidepanel.h"
 #include "pictureexport.h"
-#include "kinds/pjoint/pjoint.h"
-#include "pjointplots.h"
 #include "quantityformat.h"
 #include "export/sheet.h"
 #include "valuestable.h"
 #include "variablepanel.h"
 #include "gui/viewpicture.h"
 #include "workspacemapview.h"
-#include "gui/workspacepanel.h"
+#include "kinds/kindmodule.h"
+#include "kinds/kindpanel.h"
+#include "kinds/workspacepanel.h"
 
 #include <qcustomplot.h>
 
@@ -101,15 +97,18 @@ MainWindow::MainWindow(QWidget *parent)
     leftLayout->addWidget(m_variables);
     leftLayout->addWidget(m_modeBar);
 
+    // The panels beside the linkage: one per kind whose module has one, and the generic
+    // workspace map for the other planar kinds. All are made here, once.
     m_plots = new QStackedWidget(this);
-    m_pjointPlots = new PJointPlots(this);
-    m_plots->addWidget(m_pjointPlots);
+    for (const KindModule &module : kinds::modules()) {
+        if (!module.createPanel)
+            continue;
+        KindPanel *panel = module.createPanel(m_document, this);
+        m_kindPanels.emplace_back(std::string(module.kind), panel);
+        m_plots->addWidget(panel);
+    }
     m_workspacePanel = new WorkspacePanel(this);
     m_plots->addWidget(m_workspacePanel);
-    m_oxglidePanel = new OxGlidePanel(m_document, this);
-    m_plots->addWidget(m_oxglidePanel);
-    m_fourbarPanel = new FourBarPanel(m_document, this);
-    m_plots->addWidget(m_fourbarPanel);
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -157,11 +156,13 @@ MainWindow::MainWindow(QWidget *parent)
         if (!moved)
             showStatus(failureText(moved.failure()), true);
     };
-    connect(m_workspacePanel->mapView(), &WorkspaceMapView::pointClicked, this, moveTo);
-    connect(m_oxglidePanel->mapPanel()->mapView(), &WorkspaceMapView::pointClicked, this, moveTo);
-    connect(m_oxglidePanel, &OxGlidePanel::pointClicked, this, moveTo);
-    connect(m_oxglidePanel, &OxGlidePanel::statusMessage, this, &MainWindow::showStatus);
-    connect(m_fourbarPanel, &FourBarPanel::statusMessage, this, &MainWindow::showStatus);
+    std::vector<KindPanel *> panels {m_workspacePanel};
+    for (const auto &[kind, panel] : m_kindPanels)
+        panels.push_back(panel);
+    for (KindPanel *panel : panels) {
+        connect(panel, &KindPanel::pointClicked, this, moveTo);
+        connect(panel, &KindPanel::statusMessage, this, &MainWindow::showStatus);
+    }
     connect(m_designPanel, &DesignPanel::parameterEdited, this,
             [this](const QString &name, double value, bool continuous) {
                 auto changed = m_document->setParameter(name, value, continuous);
@@ -187,8 +188,9 @@ MainWindow::~MainWindow()
     disconnect(m_designPanel, nullptr, this, nullptr);
     disconnect(m_variables, nullptr, this, nullptr);
     disconnect(m_modeBar, nullptr, this, nullptr);
-    disconnect(m_fourbarPanel, nullptr, this, nullptr);
-    disconnect(m_workspacePanel->mapView(), nullptr, this, nullptr);
+    for (const auto &[kind, panel] : m_kindPanels)
+        disconnect(panel, nullptr, this, nullptr);
+    disconnect(m_workspacePanel, nullptr, this, nullptr);
     disconnect(m_view, nullptr, this, nullptr);
     disconnect(m_document, nullptr, this, nullptr);
     disconnect(m_session, nullptr, this, nullptr); // the undo stack's end is no change of title
@@ -454,24 +456,18 @@ void MainWindow::onDesignChanged()
     m_variables->setMechanism(mechanism);
     m_values->setMechanism(mechanism);
     m_mobility->setMechanism(mechanism);
-    if (const auto *joint = dynamic_cast<const PJoint *>(mechanism.get())) {
-        m_pjointPlots->setDesign(joint->design());
-        m_plots->setCurrentWidget(m_pjointPlots);
-    } else if (dynamic_cast<const OxGlide *>(mechanism.get())) {
-        m_oxglidePanel->setDesign(mechanism, design.title);
-        m_plots->setCurrentWidget(m_oxglidePanel);
-    } else if (dynamic_cast<const FourBar *>(mechanism.get())) {
-        m_fourbarPanel->setDesign(mechanism);
-        m_plots->setCurrentWidget(m_fourbarPanel);
-    } else if (mechanism->planarWorkspace()) {
-        m_workspacePanel->setDesign(mechanism, design.title);
-        m_plots->setCurrentWidget(m_workspacePanel);
+    // The kind's own panel, else the generic one its outputs allow, else none: a mechanism
+    // without plots gives the linkage the room rather than showing another mechanism's plots.
+    m_currentPanel = mechanism->planarWorkspace() ? m_workspacePanel : nullptr;
+    for (const auto &[kind, panel] : m_kindPanels) {
+        if (kind == mechanism->kind())
+            m_currentPanel = panel;
     }
-    // A mechanism without plots of its own gives the linkage the room rather than showing
-    // another mechanism's plots.
-    const bool hasPlots = dynamic_cast<const PJoint *>(mechanism.get()) || dynamic_cast<const FourBar *>(mechanism.get())
-        || mechanism->planarWorkspace();
-    m_plots->setVisible(hasPlots);
+    if (m_currentPanel) {
+        m_currentPanel->setDesign(mechanism, design.title);
+        m_plots->setCurrentWidget(m_currentPanel);
+    }
+    m_plots->setVisible(m_currentPanel != nullptr);
     onPoseChanged();
     keepMechanismInView();
     update3d(true);
@@ -525,14 +521,8 @@ void MainWindow::onPoseChanged()
     m_mobility->setPose(pose);
     m_view->setScene(mechanism->scene(pose));
     update3d(false);
-    if (dynamic_cast<const PJoint *>(mechanism.get()))
-        m_pjointPlots->setTheta(pose.outputs[0]);
-    else if (dynamic_cast<const OxGlide *>(mechanism.get()))
-        m_oxglidePanel->setPose(pose);
-    else if (dynamic_cast<const FourBar *>(mechanism.get()))
-        m_fourbarPanel->setPose(pose);
-    else if (mechanism->planarWorkspace())
-        m_workspacePanel->setPose(pose);
+    if (m_currentPanel)
+        m_currentPanel->setPose(pose);
 
     QStringList summary;
     const auto &variables = mechanism->variableInfo();
@@ -818,7 +808,7 @@ void MainWindow::exportParameterSheet()
         this, tr("Export Parameter Sheet"), tr("Computing the parameter sheet…"),
         [mechanism = m_document->mechanism(), pose = m_document->pose(), source,
          path](const std::atomic<bool> &) -> TaskFailure {
-            const sheet::Sheet built = sheet::build(*mechanism, pose, source);
+            const sheet::Sheet built = kinds::buildSheet(*mechanism, pose, source);
             if (const std::optional<std::string> failure = sheet::save(built, path.toStdString()))
                 return QString::fromStdString(*failure);
             return std::nullopt;

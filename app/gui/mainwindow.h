@@ -10,6 +10,9 @@
 #include <QPointer>
 
 #include <functional>
+#include <string>
+#include <utility>
+#include <vector>
 
 class QAction;
 class QDockWidget;
@@ -25,15 +28,13 @@ namespace pkm {
 class DesignPanel;
 class DesignSession;
 class Document;
+class KindPanel;
 class LinkageView;
 class ModeBar;
-class PJointPlots;
 class ValuesTable;
 class MobilityPanel;
 class VariablePanel;
 class WorkspacePanel;
-class OxGlidePanel;
-class FourBarPanel;
 class View3DPanel;
 
 class MainWindow : public QMainWindow
@@ -51,11 +52,21 @@ public:
     ValuesTable *valuesTable() const { return m_values; }
     /// The Mobility dock's panel (tabified with the values).
     MobilityPanel *mobilityPanel() const { return m_mobility; }
-    PJointPlots *pjointPlots() const { return m_pjointPlots; }
     ModeBar *modeBar() const { return m_modeBar; }
+    /// The generic panel of a planar kind without a panel of its own (the workspace map).
     WorkspacePanel *workspacePanel() const { return m_workspacePanel; }
-    OxGlidePanel *oxglidePanel() const { return m_oxglidePanel; }
-    FourBarPanel *fourbarPanel() const { return m_fourbarPanel; }
+    /// The panel beside the linkage now, or nullptr when the design has none.
+    KindPanel *currentPanel() const { return m_currentPanel; }
+    /// The panel of type `Panel` that a kind's module made (kindmodule.h), or nullptr.
+    template <typename Panel>
+    Panel *kindPanel() const
+    {
+        for (const auto &[kind, panel] : m_kindPanels) {
+            if (auto *found = qobject_cast<Panel *>(panel))
+                return found;
+        }
+        return nullptr;
+    }
     View3DPanel *view3d() const { return m_view3d; }
     /// The tabs over the linkage: "2D" and "3D".
     QTabWidget *viewTabs() const { return m_viewTabs; }
@@ -155,10 +166,10 @@ private:
     DesignPanel *m_designPanel = nullptr;
     ValuesTable *m_values = nullptr;
     MobilityPanel *m_mobility = nullptr;
-    PJointPlots *m_pjointPlots = nullptr;
+    /// The panels the kinds' modules made, by kind id.
+    std::vector<std::pair<std::string, KindPanel *>> m_kindPanels;
     WorkspacePanel *m_workspacePanel = nullptr;
-    OxGlidePanel *m_oxglidePanel = nullptr;
-    FourBarPanel *m_fourbarPanel = nullptr;
+    KindPanel *m_currentPanel = nullptr;
     View3DPanel *m_view3d = nullptr;
     QTabWidget *m_viewTabs = nullptr;
     Eigen::AlignedBox3d m_view3dExtent; ///< of the model last fitted in the 3D view

@@ -6,12 +6,12 @@
 
 #include "document/document.h"
 #include "kinds/fourbar/fourbar.h"
-#include "gui/fourbarpanel.h"
-#include "fourbarplots.h"
-#include "gui/oxglidepanel.h"
-#include "pjointplots.h"
+#include "kinds/fourbar/fourbarpanel.h"
+#include "kinds/fourbar/fourbarplots.h"
+#include "kinds/oxglide/oxglidepanel.h"
+#include "kinds/pjoint/pjointplots.h"
 #include "variablepanel.h"
-#include "gui/workspacepanel.h"
+#include "kinds/workspacepanel.h"
 
 #include <qcustomplot.h>
 
@@ -101,7 +101,7 @@ class TestFourBarWindow : public QObject
 
 private:
     MainWindow *m_window = nullptr;
-    FourBarPanel *panel() const { return m_window->fourbarPanel(); }
+    FourBarPanel *panel() const { return m_window->kindPanel<FourBarPanel>(); }
     FourBarPlots *plots() const { return panel()->plots(); }
     Document *document() const { return m_window->document(); }
     const Pose &pose() const { return document()->pose(); }
@@ -126,9 +126,9 @@ private slots:
         preset->trigger();
         QCOMPARE(document()->mechanism()->kind(), std::string_view("fourbar"));
         QVERIFY(panel()->isVisible());
-        QVERIFY(!m_window->pjointPlots()->isVisible());
+        QVERIFY(!m_window->kindPanel<PJointPlots>()->isVisible());
         QVERIFY(!m_window->workspacePanel()->isVisible());
-        QVERIFY(!m_window->oxglidePanel()->isVisible());
+        QVERIFY(!m_window->kindPanel<OxGlidePanel>()->isVisible());
         // the preset's links on the sliders and in the spin boxes
         QCOMPARE(panel()->lengthSpinBox(QStringLiteral("AB"))->value(), 40.0);
         QCOMPARE(panel()->lengthSlider(QStringLiteral("BC"))->value(), 120 * FourBarPanel::sliderScale);

@@ -4,11 +4,11 @@
 // sees — formats numbers by the language's locale, and exports (the parameter sheet) follow.
 #include "designpanel.h"
 #include "document/document.h"
-#include "gui/fourbarpanel.h"
+#include "kinds/fourbar/fourbarpanel.h"
 #include "document/language.h"
 #include "gui/mainwindow.h"
 #include "modebar.h"
-#include "pjointplots.h"
+#include "kinds/pjoint/pjointplots.h"
 #include "export/sheet.h"
 #include "text.h"
 #include "valuestable.h"
@@ -332,7 +332,7 @@ private slots:
         MainWindow window;
         window.show();
         QVERIFY(window.openDesign(QStringLiteral("fourbar-example")));
-        FourBarPanel *panel = window.fourbarPanel();
+        FourBarPanel *panel = window.kindPanel<FourBarPanel>();
         panel->lengthSpinBox(QStringLiteral("AB"))->setValue(400.0); // longer than BC + CD + AD
         QVERIFY(panel->linkMessage()->text().contains(QStringLiteral("cannot close the loop")));
         switchTo(window, QStringLiteral("ru"));

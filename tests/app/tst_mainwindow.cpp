@@ -1,13 +1,13 @@
 // The main window driven as a person would: spin boxes, sliders, the design panel, dragging in
 // the view, undo. Checks that d, the view, the values and the plot cursors follow.
 #include "gui/mainwindow.h"
-#include "gui/workspacepanel.h"
+#include "kinds/workspacepanel.h"
 
 #include "designpanel.h"
 #include "document/document.h"
 #include "linkageview.h"
 #include "kinds/pjoint/pjoint.h"
-#include "pjointplots.h"
+#include "kinds/pjoint/pjointplots.h"
 #include "valuestable.h"
 #include "variablepanel.h"
 
@@ -67,7 +67,7 @@ private:
                     .norm()
                 < 1e-9);
         // the plot cursors sit at θ
-        QVERIFY(std::abs(w.pjointPlots()->cursorTheta() - theta / deg) < 1e-9);
+        QVERIFY(std::abs(w.kindPanel<PJointPlots>()->cursorTheta() - theta / deg) < 1e-9);
         // the values table shows d
         QCOMPARE(w.valuesTable()->valueText(QStringLiteral("d")), QLocale().toString(d, 'f', 2) + QStringLiteral(" mm"));
     }
@@ -185,7 +185,7 @@ private slots:
         typeInto(w.designPanel()->field(QStringLiteral("a")), QStringLiteral("200"));
         QCOMPARE(joint(w).design().a, 200.0);
         checkFollows(30 * deg); // θ kept, d follows the new a
-        QVERIFY(std::abs(w.pjointPlots()->cursorValue(0) - pjoint::diagonal(joint(w).design(), 30 * deg)) < 1e-9);
+        QVERIFY(std::abs(w.kindPanel<PJointPlots>()->cursorValue(0) - pjoint::diagonal(joint(w).design(), 30 * deg)) < 1e-9);
         typeInto(w.designPanel()->field(QStringLiteral("k")), QStringLiteral("0.5"));
         QCOMPARE(joint(w).design().b, 100.0);
         QCOMPARE(w.designPanel()->field(QStringLiteral("b"))->text(), QLocale().toString(100));
@@ -299,15 +299,15 @@ private slots:
     {
         // a mechanism without plots of its own shows none, never the previous mechanism's
         QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));
-        QVERIFY(m_window->pjointPlots()->isVisible());
+        QVERIFY(m_window->kindPanel<PJointPlots>()->isVisible());
         QVERIFY(m_window->openDesign(QStringLiteral("fourbar-example")));
-        QVERIFY(!m_window->pjointPlots()->isVisible());
+        QVERIFY(!m_window->kindPanel<PJointPlots>()->isVisible());
         QVERIFY(!m_window->workspacePanel()->isVisible());
         QVERIFY(m_window->linkageView()->isVisible());
         QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
         QVERIFY(m_window->workspacePanel()->isVisible());
         QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));
-        QVERIFY(m_window->pjointPlots()->isVisible());
+        QVERIFY(m_window->kindPanel<PJointPlots>()->isVisible());
     }
 };
 

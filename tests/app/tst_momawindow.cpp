@@ -10,7 +10,7 @@
 #include "valuestable.h"
 #include "variablepanel.h"
 #include "workspacemapview.h"
-#include "gui/workspacepanel.h"
+#include "kinds/workspacepanel.h"
 
 #include <QAction>
 #include <QComboBox>

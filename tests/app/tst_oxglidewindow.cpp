@@ -9,7 +9,7 @@
 #include "linkageview.h"
 #include "linkageview3d.h"
 #include "kinds/oxglide/oxglide.h"
-#include "gui/oxglidepanel.h"
+#include "kinds/oxglide/oxglidepanel.h"
 #include "variablepanel.h"
 
 #include <qcustomplot.h>
@@ -63,7 +63,7 @@ class TestOxGlideWindow : public QObject
 
 private:
     MainWindow *m_window = nullptr;
-    OxGlidePanel *panel() const { return m_window->oxglidePanel(); }
+    OxGlidePanel *panel() const { return m_window->kindPanel<OxGlidePanel>(); }
     const Pose &pose() const { return m_window->document()->pose(); }
 
 private slots:

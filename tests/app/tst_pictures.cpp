@@ -12,7 +12,7 @@
 #include "pictureexport.h"
 #include "gui/viewpicture.h"
 #include "workspacemapview.h"
-#include "gui/workspacepanel.h"
+#include "kinds/workspacepanel.h"
 
 #include <qcustomplot.h>
 

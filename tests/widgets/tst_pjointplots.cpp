@@ -3,8 +3,8 @@
 // or a runaway axis on screen.
 
 #include "kinds/pjoint/pjoint.h"
-#include "pjointcurves.h"
-#include "pjointplots.h"
+#include "kinds/pjoint/pjointcurves.h"
+#include "kinds/pjoint/pjointplots.h"
 #include "plotstyle.h"
 
 #include <qcustomplot.h>

@@ -598,4 +598,16 @@ Result<Pose> OxGlide::dragHandle(const Pose &current, int handle, const Eigen::V
     return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};
 }
 
+std::vector<ExactArea> OxGlide::exactAreas() const
+{
+    return {
+        {"area", "A", QT_TRANSLATE_NOOP("Sheet", "area of this form's workspace (exact)"),
+         oxglide::exactArea(m_design, m_design.form)},
+        {"area_O", "A_O", QT_TRANSLATE_NOOP("Sheet", "area of the extended (O) form (exact)"),
+         oxglide::exactArea(m_design, oxglide::formO)},
+        {"area_X", "A_X", QT_TRANSLATE_NOOP("Sheet", "area of the crossed (X) form (exact)"),
+         oxglide::exactArea(m_design, oxglide::formX)},
+    };
+}
+
 } // namespace pkm

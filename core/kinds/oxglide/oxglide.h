@@ -120,6 +120,8 @@ public:
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
     std::vector<SingularCurve> singularCurves() const override;
+    /// This form's area and both forms', integrated in closed form (oxglide::exactArea).
+    std::vector<ExactArea> exactAreas() const override;
     std::string singularityMeaning(SingularCurve::Type type) const override
     {
         return type == SingularCurve::Type::Inverse ? QT_TRANSLATE_NOOP("core", "rods ⟂ guides")

@@ -194,6 +194,14 @@ KinematicChain OxGlide::kinematicChain(const Pose &pose) const
     chain.description
         = text::translate("core", "O-X glide: carriage on the longitudinal guides, slider pairs AB and CD, four rods "
                                   "(revolute at the sliders, spherical at the platform), platform");
+    // With these joints the platform keeps its tilt when the sliders are locked (tst_mobility:
+    // the planar part alone keeps its swing), which the document's kinematics assume away.
+    chain.underActuation = text::translate("core",
+        "The rank counts the platform's x and y, the carriage's z and the platform's tilt (its "
+        "swing about the longitudinal axis). The actuators drive x_AB, x_CD and z; the tilt is "
+        "not held by them. With the joints the document describes (spherical at the platform, one "
+        "hinge per rod at the slider, a pair's rods one behind the other) the platform can tilt "
+        "with the sliders locked; the document's kinematics assume it stays level.");
     return chain;
 }
 

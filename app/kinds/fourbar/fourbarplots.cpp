@@ -1,4 +1,4 @@
-#include "fourbarplots.h"
+#include "kinds/fourbar/fourbarplots.h"
 
 #include "plotfont.h"
 #include "plotstyle.h"

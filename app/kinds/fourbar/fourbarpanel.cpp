@@ -1,9 +1,9 @@
-#include "gui/fourbarpanel.h"
+#include "kinds/fourbar/fourbarpanel.h"
 
 #include "document/designfile.h"
 #include "document/document.h"
 #include "kinds/fourbar/fourbar.h"
-#include "fourbarplots.h"
+#include "kinds/fourbar/fourbarplots.h"
 #include "plotfont.h"
 #include "quantityformat.h"
 
@@ -95,7 +95,7 @@ private:
 } // namespace
 
 FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
-    : QWidget(parent)
+    : KindPanel(parent)
     , m_document(document)
 {
     setObjectName(QStringLiteral("fourbarPanel"));
@@ -298,7 +298,7 @@ void FourBarPanel::showLinkMessage()
     m_linkMessage->show();
 }
 
-void FourBarPanel::setDesign(const MechanismPtr &mechanism)
+void FourBarPanel::setDesign(const MechanismPtr &mechanism, const QString &)
 {
     const FourBar *fourbar = fourbarOf(mechanism);
     if (!fourbar)

@@ -1,9 +1,9 @@
-#include "pjointplots.h"
+#include "kinds/pjoint/pjointplots.h"
 
 #include "plotfont.h"
 #include "plotstyle.h"
 
-#include "pjointcurves.h"
+#include "kinds/pjoint/pjointcurves.h"
 
 #include <qcustomplot.h>
 
@@ -112,7 +112,7 @@ QCPBars *addSwatch(QCustomPlot *plot, QRgb fill, QPen edge)
 } // namespace
 
 PJointPlots::PJointPlots(QWidget *parent)
-    : QWidget(parent)
+    : KindPanel(parent)
     , m_tabs(new QTabWidget(this))
 {
     auto *layout = new QVBoxLayout(this);
@@ -225,6 +225,17 @@ void PJointPlots::setDesign(const PJointDesign &design)
         m_panels[i].needsReplot = true;
         refresh(i);
     }
+}
+
+void PJointPlots::setDesign(const MechanismPtr &mechanism, const QString &)
+{
+    if (const auto *joint = dynamic_cast<const PJoint *>(mechanism.get()))
+        setDesign(joint->design());
+}
+
+void PJointPlots::setPose(const Pose &pose)
+{
+    setTheta(pose.outputs[0]);
 }
 
 void PJointPlots::setTheta(double thetaRadians)

@@ -7,10 +7,9 @@
 /// perpendicular to the guides and parallel, and the platform can swing. The animation stops
 /// short of that pose and explains it; the user then chooses the form to leave in.
 
-#include "mechanism.h"
+#include "kinds/kindpanel.h"
 
 #include <QTimer>
-#include <QWidget>
 
 #include <functional>
 
@@ -24,7 +23,7 @@ class Document;
 class FormWorkspaceView;
 class WorkspacePanel;
 
-class OxGlidePanel : public QWidget
+class OxGlidePanel : public KindPanel
 {
     Q_OBJECT
 
@@ -32,8 +31,8 @@ public:
     explicit OxGlidePanel(Document *document, QWidget *parent = nullptr);
 
     /// A new design (`title` names it in the map's comparison list).
-    void setDesign(const MechanismPtr &mechanism, const QString &title);
-    void setPose(const Pose &pose);
+    void setDesign(const MechanismPtr &mechanism, const QString &title) override;
+    void setPose(const Pose &pose) override;
 
     FormWorkspaceView *formView() const { return m_formView; }
     WorkspacePanel *mapPanel() const { return m_mapPanel; }
@@ -57,10 +56,6 @@ public:
     void requestForm(int form);
     /// Starts (or stops) the crossing animation.
     void toggleCrossing();
-
-signals:
-    void statusMessage(const QString &message, bool error);
-    void pointClicked(const Eigen::Vector2d &point);
 
 protected:
     /// A new language: every text again, the banner and the workspace plot's titles included.

@@ -3,9 +3,7 @@
 /// workspace, and a row to overlay another configuration's workspace for comparison — a
 /// preset of the same mechanism or the current design pinned before it is changed.
 
-#include "mechanism.h"
-
-#include <QWidget>
+#include "kinds/kindpanel.h"
 
 class QComboBox;
 class QLabel;
@@ -15,7 +13,7 @@ namespace pkm {
 
 class WorkspaceMapView;
 
-class WorkspacePanel : public QWidget
+class WorkspacePanel : public KindPanel
 {
     Q_OBJECT
 
@@ -27,8 +25,8 @@ public:
     QPushButton *pinButton() const { return m_pin; }
 
     /// A new design (`title` names it in the comparison list).
-    void setDesign(const MechanismPtr &mechanism, const QString &title);
-    void setPose(const Pose &pose);
+    void setDesign(const MechanismPtr &mechanism, const QString &title) override;
+    void setPose(const Pose &pose) override;
 
 protected:
     /// A new language: the texts and the comparison list again, the choice kept.

@@ -1,10 +1,10 @@
-#include "gui/oxglidepanel.h"
+#include "kinds/oxglide/oxglidepanel.h"
 
 #include "document/document.h"
 #include "formworkspaceview.h"
 #include "kinds/oxglide/oxglide.h"
 #include "quantityformat.h"
-#include "gui/workspacepanel.h"
+#include "kinds/workspacepanel.h"
 
 #include <QButtonGroup>
 #include <QEvent>
@@ -42,7 +42,7 @@ const OxGlide *oxglideOf(const MechanismPtr &mechanism)
 } // namespace
 
 OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
-    : QWidget(parent)
+    : KindPanel(parent)
     , m_document(document)
 {
     auto *layout = new QVBoxLayout(this);
@@ -102,6 +102,7 @@ OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
     connect(m_leaveOther, &QPushButton::clicked, this, [this] { leave(true); });
     connect(m_leaveSame, &QPushButton::clicked, this, [this] { leave(false); });
     connect(m_formView, &FormWorkspaceView::pointClicked, this, &OxGlidePanel::pointClicked);
+    connect(m_mapPanel, &WorkspacePanel::pointClicked, this, &OxGlidePanel::pointClicked);
     m_timer.setInterval(tickMilliseconds);
     connect(&m_timer, &QTimer::timeout, this, &OxGlidePanel::tick);
     retranslate();

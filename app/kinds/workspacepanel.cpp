@@ -1,4 +1,4 @@
-#include "gui/workspacepanel.h"
+#include "kinds/workspacepanel.h"
 
 #include "document/designfile.h"
 #include "quantityformat.h"
@@ -21,7 +21,7 @@ const QString pinnedItem = QStringLiteral("#pinned");
 } // namespace
 
 WorkspacePanel::WorkspacePanel(QWidget *parent)
-    : QWidget(parent)
+    : KindPanel(parent)
     , m_map(new WorkspaceMapView(this))
 {
     auto *layout = new QVBoxLayout(this);
@@ -42,6 +42,8 @@ WorkspacePanel::WorkspacePanel(QWidget *parent)
     row->addStretch(1);
     layout->addLayout(row);
     layout->addWidget(m_map, 1);
+    // A click on the map moves the platform there (the main window asks the document).
+    connect(m_map, &WorkspaceMapView::pointClicked, this, &WorkspacePanel::pointClicked);
 
     connect(m_compare, &QComboBox::activated, this, &WorkspacePanel::compareWith);
     connect(m_pin, &QPushButton::clicked, this, &WorkspacePanel::pinCurrent);

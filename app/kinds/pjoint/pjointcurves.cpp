@@ -1,4 +1,4 @@
-#include "pjointcurves.h"
+#include "kinds/pjoint/pjointcurves.h"
 
 #include "quantityformat.h"
 

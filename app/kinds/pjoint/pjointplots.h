@@ -10,10 +10,10 @@
 /// graph(0) of every plot is the current design's curve over its θ range [θ_min, θ_max]; the
 /// other graphs are the same design beyond that range and, on the Geometry tab, the k-family.
 
+#include "kinds/kindpanel.h"
 #include "kinds/pjoint/pjoint.h"
 
 #include <QString>
-#include <QWidget>
 
 #include <array>
 
@@ -30,7 +30,7 @@ class QTabWidget;
 
 namespace pkm {
 
-class PJointPlots : public QWidget
+class PJointPlots : public KindPanel
 {
     Q_OBJECT
 
@@ -55,6 +55,9 @@ public:
     /// GUI thread) and replots the visible plots in full. The cursor stays at its θ.
     void setDesign(const pkm::PJointDesign &design);
     const pkm::PJointDesign &design() const { return m_design; }
+    /// The main window's calls (KindPanel): a П-joint's design, and θ from the pose.
+    void setDesign(const MechanismPtr &mechanism, const QString &title) override;
+    void setPose(const Pose &pose) override;
 
     /// Moves the cursor on every plot. Cheap, for every slider move: only the buffered cursor
     /// layer of the visible plots is redrawn; hidden plots catch up when their tab is shown.

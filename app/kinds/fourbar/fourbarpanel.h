@@ -5,10 +5,9 @@
 /// s + l against p + q, the assembly range of α (and why α stops at a limit), the
 /// transmission angle γ with its warning band, and the plots of figs. 4–6 (FourBarPlots).
 
-#include "mechanism.h"
+#include "kinds/kindpanel.h"
 
 #include <QPointer>
-#include <QWidget>
 
 #include <array>
 
@@ -23,7 +22,7 @@ class Document;
 class FourBarPlots;
 class TransmissionGauge;
 
-class FourBarPanel : public QWidget
+class FourBarPanel : public KindPanel
 {
     Q_OBJECT
 
@@ -31,8 +30,8 @@ public:
     explicit FourBarPanel(Document *document, QWidget *parent = nullptr);
 
     /// A new design (the pose is the document's).
-    void setDesign(const MechanismPtr &mechanism);
-    void setPose(const Pose &pose);
+    void setDesign(const MechanismPtr &mechanism, const QString &title = {}) override;
+    void setPose(const Pose &pose) override;
 
     /// The links, in the order of the sliders: "AB", "BC", "CD", "AD".
     static constexpr std::array<const char *, 4> linkNames = {"AB", "BC", "CD", "AD"};
@@ -57,8 +56,6 @@ public:
     /// go back to the design. `continuous` merges into the previous step of the same link.
     bool requestLength(const QString &link, double value, bool continuous);
 
-signals:
-    void statusMessage(const QString &message, bool error);
 
 protected:
     /// A new language: every text again, from the current design and pose.

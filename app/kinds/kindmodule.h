@@ -1,0 +1,40 @@
+#pragma once
+/// What a mechanism kind adds to the application beyond its core module (core/kinds/<kind>/):
+/// its own panel beside the linkage and its own sections of the parameter sheet. Each kind that
+/// has any lives in app/kinds/<kind>/ and is listed once, in kinds.cpp; the main window, the
+/// sheet and the command line ask this registry and fall back to the generic panels and
+/// sections for a kind that is not in it.
+
+#include "export/sheet.h"
+#include "mechanism.h"
+
+#include <string_view>
+#include <vector>
+
+class QWidget;
+
+namespace pkm {
+
+class Document;
+class KindPanel;
+
+struct KindModule {
+    std::string_view kind; ///< the core kind id ("pjoint")
+    /// The panel beside the linkage, made once by the main window (nullptr: the generic one).
+    KindPanel *(*createPanel)(Document *document, QWidget *parent) = nullptr;
+    /// The sections of the parameter sheet only this kind has (nullptr: the generic ones).
+    sheet::KindSections sheetSections = nullptr;
+};
+
+namespace kinds {
+
+/// Every kind's module, in the order of kinds.cpp.
+const std::vector<KindModule> &modules();
+/// The module of `kind`, or nullptr for a kind with none.
+const KindModule *find(std::string_view kind);
+/// sheet::build() with the sections of the mechanism's kind.
+sheet::Sheet buildSheet(const Mechanism &mechanism, const Pose &pose, const sheet::Source &source);
+
+} // namespace kinds
+
+} // namespace pkm
