@@ -4612,6 +4612,17 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::SweepPlotsPanel</name>
+    <message>
+        <source>&amp;Quantity:</source>
+        <translation>&amp;Величина:</translation>
+    </message>
+    <message>
+        <source>%1 against %2</source>
+        <translation>%1 у зависности од %2</translation>
+    </message>
+</context>
+<context>
     <name>pkm::ValuesTable</name>
     <message>
         <source>Pose</source>

@@ -4612,6 +4612,17 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
 </context>
 <context>
+    <name>pkm::SweepPlotsPanel</name>
+    <message>
+        <source>&amp;Quantity:</source>
+        <translation>&amp;Veličina:</translation>
+    </message>
+    <message>
+        <source>%1 against %2</source>
+        <translation>%1 u zavisnosti od %2</translation>
+    </message>
+</context>
+<context>
     <name>pkm::ValuesTable</name>
     <message>
         <source>Pose</source>

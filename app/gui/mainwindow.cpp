@@ -20,6 +20,7 @@
 #include "workspacemapview.h"
 #include "kinds/kindmodule.h"
 #include "kinds/kindpanel.h"
+#include "kinds/sweepplotspanel.h"
 #include "kinds/workspacepanel.h"
 
 #include <qcustomplot.h>
@@ -109,6 +110,8 @@ MainWindow::MainWindow(QWidget *parent)
     }
     m_workspacePanel = new WorkspacePanel(this);
     m_plots->addWidget(m_workspacePanel);
+    m_sweepPanel = new SweepPlotsPanel(this);
+    m_plots->addWidget(m_sweepPanel);
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -156,7 +159,7 @@ MainWindow::MainWindow(QWidget *parent)
         if (!moved)
             showStatus(failureText(moved.failure()), true);
     };
-    std::vector<KindPanel *> panels {m_workspacePanel};
+    std::vector<KindPanel *> panels {m_workspacePanel, m_sweepPanel};
     for (const auto &[kind, panel] : m_kindPanels)
         panels.push_back(panel);
     for (KindPanel *panel : panels) {
@@ -191,6 +194,7 @@ MainWindow::~MainWindow()
     for (const auto &[kind, panel] : m_kindPanels)
         disconnect(panel, nullptr, this, nullptr);
     disconnect(m_workspacePanel, nullptr, this, nullptr);
+    disconnect(m_sweepPanel, nullptr, this, nullptr);
     disconnect(m_view, nullptr, this, nullptr);
     disconnect(m_document, nullptr, this, nullptr);
     disconnect(m_session, nullptr, this, nullptr); // the undo stack's end is no change of title
@@ -458,7 +462,9 @@ void MainWindow::onDesignChanged()
     m_mobility->setMechanism(mechanism);
     // The kind's own panel, else the generic one its outputs allow, else none: a mechanism
     // without plots gives the linkage the room rather than showing another mechanism's plots.
-    m_currentPanel = mechanism->planarWorkspace() ? m_workspacePanel : nullptr;
+    m_currentPanel = mechanism->planarWorkspace() ? static_cast<KindPanel *>(m_workspacePanel)
+        : SweepPlotsPanel::canShow(*mechanism)    ? static_cast<KindPanel *>(m_sweepPanel)
+                                                  : nullptr;
     for (const auto &[kind, panel] : m_kindPanels) {
         if (kind == mechanism->kind())
             m_currentPanel = panel;

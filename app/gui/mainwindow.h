@@ -34,6 +34,7 @@ class ModeBar;
 class ValuesTable;
 class MobilityPanel;
 class VariablePanel;
+class SweepPlotsPanel;
 class WorkspacePanel;
 class View3DPanel;
 
@@ -55,6 +56,8 @@ public:
     ModeBar *modeBar() const { return m_modeBar; }
     /// The generic panel of a planar kind without a panel of its own (the workspace map).
     WorkspacePanel *workspacePanel() const { return m_workspacePanel; }
+    /// The generic panel of a kind with one input and no panel of its own (its sweep plots).
+    SweepPlotsPanel *sweepPanel() const { return m_sweepPanel; }
     /// The panel beside the linkage now, or nullptr when the design has none.
     KindPanel *currentPanel() const { return m_currentPanel; }
     /// The panel of type `Panel` that a kind's module made (kindmodule.h), or nullptr.
@@ -169,6 +172,7 @@ private:
     /// The panels the kinds' modules made, by kind id.
     std::vector<std::pair<std::string, KindPanel *>> m_kindPanels;
     WorkspacePanel *m_workspacePanel = nullptr;
+    SweepPlotsPanel *m_sweepPanel = nullptr;
     KindPanel *m_currentPanel = nullptr;
     View3DPanel *m_view3d = nullptr;
     QTabWidget *m_viewTabs = nullptr;
