@@ -76,8 +76,9 @@ the pose variables with their ranges and whether they are actuated inputs or out
 the quantities eval and sweep report, with units; and the design warnings.
 
   --set NAME=VALUE    applied first, as in 'pkm eval'
-  --json              {"design", "title", "description", "mechanism", "parameters",
-                       "variables", "quantities", "warnings"}; unbounded limits are null
+  --json              {"design", "title", "description", "mechanism", "mechanism_title",
+                       "parameters", "variables", "quantities", "warnings"}; unbounded
+                       limits are null
 )";
 
 constexpr std::string_view evalHelp = R"(Usage: pkm eval DESIGN [--set NAME=VALUE]... [--json]
@@ -92,10 +93,12 @@ class and the derived quantities, in display units.
                       is used, re-solved from its outputs when a parameter changed (the
                       home pose, with a note on stderr, if that fails).
   --json              {"mechanism", "parameters", "pose", "jacobian", "singularity",
-                       "derived"}; a matrix is a row-major nested array; singularity is
-                       {"type": none|inverse|direct|combined, "margin", "undefined"};
-                       a quantity that is not finite at the pose (J_inv at a singular
-                       pose) is null and named in singularity.undefined
+                       "derived", "mobility"}; a matrix is a row-major nested array;
+                       singularity is {"type": none|inverse|direct|combined, "margin",
+                       "undefined"}; a quantity that is not finite at the pose (J_inv at a
+                       singular pose) is null and named in singularity.undefined; mobility
+                       counts the mechanism's freedoms by Chebyshev's and Somov–Malyshev's
+                       formulas and by the rank of its loop equations
 )";
 
 constexpr std::string_view sweepHelp
@@ -149,8 +152,8 @@ planar mechanism rides the z axis, also the volume: the area extruded over the z
   --json              {"design", "mechanism", "parameters", "area", "bounds": {"x_min",
                        "x_max", "y_min", "y_max"}, "grid": {"resolution", "columns", "rows",
                        "x_min", "x_max", "y_min", "y_max"}, "cell_size", "reachable_cells",
-                       "modes": [{MODE: -1|1..., "area", "reachable_cells", "current",
-                       "note"}...], "area_union", "seconds"}; "area" is the design's own
+                       "area_union", "modes": [{MODE: -1|1..., "area", "reachable_cells",
+                       "current", "note"}...], "seconds"}; "area" is the design's own
                       (current modes); the O-X glide adds "area_O", "area_X", "travel",
                       "volume" and "volume_union" (mm³)
   -o FILE.png         a picture of the workspace of the current modes: the reachable cells
@@ -160,13 +163,6 @@ planar mechanism rides the z axis, also the volume: the area extruded over the z
                       darker, their union outlined (the document's fig. 5)
   -o FILE.svg         its outline as SVG paths, in mm (viewBox), y up
                       (-o FILE and --output FILE are the same)
-
-An animation for slides and lectures: -o FILE.gif with --var NAME (a pose variable,
-e.g. theta, alpha, x), --from A and --to B (display units) and --steps K (2 to 1000
-frames) draws the 2D picture at K evenly spaced values, each pose solved from the one
-before so the mechanism stays in its mode, 50 ms per frame, looping; it plays back to A
-unless --one-way (for a crank that turns fully). Default size 960x720. A value without
-a pose stops it with status 3, naming the frame.
 
 The file is written completely or not at all (a temporary file renamed at the end), before
 anything is printed. An empty workspace (no reachable cell) exits with status 3.
@@ -212,8 +208,8 @@ constexpr std::string_view renderHelp = R"(Usage: pkm render DESIGN [--set NAME=
                   [--one-way] [--size WxH] [--no-caption] -o FILE.gif
 
 Draws the mechanism in a pose — the design's stored pose, or the one the --set values
-give — and writes the picture to FILE. The drawing is fitted to the range of motion, so
-pictures of several poses of one design line up. A caption at the bottom-left names the
+give — and writes the picture to FILE. The 2D drawing is fitted to the range of motion, so
+pictures of several poses of one design line up; the 3D model is fitted in its pose. A caption at the bottom-left names the
 design and the pose (every pose variable in its display unit); a scale bar sits at the
 bottom-right.
 
@@ -234,6 +230,13 @@ bottom-right.
   -o FILE.pdf         one page with the picture's proportions, 297 mm along the
                       longer side (A4's length): 2D as vectors, 3D the WxH picture
                       (-o FILE and --output FILE are the same)
+
+An animation for slides and lectures: -o FILE.gif with --var NAME (a pose variable,
+e.g. theta, alpha, x), --from A and --to B (display units) and --steps K (2 to 1000
+frames) draws the 2D picture at K evenly spaced values, each pose solved from the one
+before so the mechanism stays in its mode, 50 ms per frame, looping; it plays back to A
+unless --one-way (for a crank that turns fully). Default size 960x720. A value without
+a pose stops it with status 3, naming the frame.
 
 Prints one line: Wrote FILE, with the size and the view. The file is written completely
 or not at all (a temporary file renamed at the end); on an error nothing is written and

@@ -347,6 +347,8 @@ private slots:
     void errors();
     void help_data();
     void help();
+    void helpNamesEveryJsonKey_data();
+    void helpNamesEveryJsonKey();
 
     void inProcessMatchesBinary();
     void numbersAreGeneral15_data();
@@ -2067,6 +2069,34 @@ void TestCli::help_data()
     QTest::newRow("render --help") << args({"render", "--help"}) << QStringLiteral("Usage: pkm render DESIGN");
     QTest::newRow("help render") << args({"help", "render"}) << QStringLiteral("--camera VIEW");
     QTest::newRow("render -h wins over errors") << args({"render", "--view", "5d", "-h"}) << QStringLiteral("xvfb-run");
+}
+
+void TestCli::helpNamesEveryJsonKey_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("command");
+    QTest::newRow("show") << args({"show", "pjoint-prototype", "--json"}) << QStringLiteral("show");
+    QTest::newRow("eval") << args({"eval", "pjoint-prototype", "--json"}) << QStringLiteral("eval");
+    QTest::newRow("sweep") << args({"sweep", "pjoint-prototype", "--var", "theta", "--from", "0", "--to", "10", "--steps",
+                                    "2", "--json"})
+                           << QStringLiteral("sweep");
+    QTest::newRow("workspace") << args({"workspace", "moma-3a", "--grid", "50", "--json"}) << QStringLiteral("workspace");
+    QTest::newRow("map") << args({"map", "moma-3a", "--grid", "50", "--json"}) << QStringLiteral("map");
+}
+
+// Each command's help names every top-level key of its JSON, so that a script's author
+// finds them all there.
+void TestCli::helpNamesEveryJsonKey()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, command);
+    const Run run = runPkm(arguments);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject json = QJsonDocument::fromJson(run.out).object();
+    QVERIFY(!json.isEmpty());
+    const QString help = QString::fromUtf8(runPkm({command, QStringLiteral("--help")}).out);
+    for (const QString &key : json.keys())
+        QVERIFY2(help.contains(QLatin1Char('"') + key + QLatin1Char('"')), qPrintable(command + QStringLiteral(": ") + key));
 }
 
 void TestCli::help()
