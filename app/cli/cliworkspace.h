@@ -49,7 +49,4 @@ void setWorkspacePictureWriters(const WorkspacePictureWriters &writers);
 /// Whether `invocation` (workspace or map) writes a PNG picture.
 bool writesPicture(const Invocation &invocation);
 
-/// The outline of the reachable cells as an SVG document, in mm (viewBox), y up.
-std::string workspaceSvg(const MapGrid &grid, std::span<const float> values, const std::string &title);
-
 } // namespace pkm::cli

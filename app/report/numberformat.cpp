@@ -132,4 +132,10 @@ std::string numberText(double value)
     return text;
 }
 
+double cleanCoordinate(double value)
+{
+    const double rounded = std::round(value * 1e9) / 1e9;
+    return rounded == 0.0 ? 0.0 : rounded;
+}
+
 } // namespace pkm::report

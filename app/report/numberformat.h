@@ -14,6 +14,10 @@ void appendNumber(std::string &out, double value);
 /// The same text as a new string, for messages.
 std::string numberText(double value);
 
+/// A coordinate in mm without the last-ulp noise of grid arithmetic (rounded to 1e-9 mm, -0
+/// as 0): the grid's and the outline's coordinates in JSON, CSV and SVG.
+double cleanCoordinate(double value);
+
 /// Room writeNumber() may use: the text is at most 23 bytes, but the fast path copies in
 /// fixed-size blocks past its end.
 inline constexpr int maxNumberLength = 32;
