@@ -173,128 +173,57 @@ Meet circleIntersection(const Eigen::Vector2d &p, double rp, const Eigen::Vector
 // -- design --------------------------------------------------------------------------------
 
 namespace {
-const std::vector<ParameterInfo> &fivebarParameterInfo()
+/// A mode is a side: exactly +1 (left) or −1 (right).
+Result<double> sideRule(const ParameterInfo &info, double value)
 {
-    static const std::vector<ParameterInfo> infos = [] {
+    if (value != 1.0 && value != -1.0) {
+        return Failure{FailureKind::InvalidParameter, info.name,
+                       text::format(text::translate("core", "%1 = %2 is invalid: it must be +1 (left) or -1 (right)."),
+                                    {info.name, text::number(value)})};
+    }
+    return value;
+}
+} // namespace
+
+const ParameterTable<FiveBarDesign> &FiveBar::table()
+{
+    using T = ParameterTable<FiveBarDesign>;
+    using D = FiveBarDesign;
+    static const T table = [] {
         const Interval positive{0.0, 1e5};
         const Interval turn{-2.0 * pi, 2.0 * pi};
         const Interval sign{-1.0, 1.0};
         const Unit length = units::millimetre, angle = units::angle;
         using G = ParameterGroup;
-        std::vector<ParameterInfo> v;
-        v.push_back({"AB", "AB", QT_TRANSLATE_NOOP("core", "length of crank 1, driven at A"), length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"BC", "BC", QT_TRANSLATE_NOOP("core", "length of distal link 1, from B to C"), length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"CD", "CD", QT_TRANSLATE_NOOP("core", "length of distal link 2, from C to D"), length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"DE", "DE", QT_TRANSLATE_NOOP("core", "length of crank 2, driven at E"), length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"AE", "AE", QT_TRANSLATE_NOOP("core", "length of the ground, from A to E along +x"), length, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"theta1_min", "θ₁,min", QT_TRANSLATE_NOOP("core", "lower limit of crank angle θ₁"), angle, G::Range, turn, false, false, true, 2, 1});
-        v.push_back({"theta1_max", "θ₁,max", QT_TRANSLATE_NOOP("core", "upper limit of crank angle θ₁"), angle, G::Range, turn, false, false, true, 2, 1});
-        v.push_back({"theta4_min", "θ₄,min", QT_TRANSLATE_NOOP("core", "lower limit of crank angle θ₄"), angle, G::Range, turn, false, false, true, 2, 1});
-        v.push_back({"theta4_max", "θ₄,max", QT_TRANSLATE_NOOP("core", "upper limit of crank angle θ₄"), angle, G::Range, turn, false, false, true, 2, 1});
         // the names are keys (files, the command line); the GUI shows them translated
         const std::vector<std::pair<std::string, double>> sides = {{QT_TRANSLATE_NOOP("core", "left"), 1.0},
                                                                    {QT_TRANSLATE_NOOP("core", "right"), -1.0}};
-        ParameterInfo w1{"working1", "w₁",
-                         QT_TRANSLATE_NOOP("core", "working mode of leg 1: elbow B left (+1) or right (−1) of A→C"),
-                         units::none, G::Mode, sign, false, false, true, 0, 2};
-        ParameterInfo w2{"working2", "w₂",
-                         QT_TRANSLATE_NOOP("core", "working mode of leg 2: elbow D left (+1) or right (−1) of E→C"),
-                         units::none, G::Mode, sign, false, false, true, 0, 2};
-        ParameterInfo assembly{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: C left (+1) or right (−1) of B→D"),
-                               units::none, G::Mode, sign, false, false, true, 0, 2};
-        for (ParameterInfo *mode : {&w1, &w2, &assembly}) {
-            mode->choices = sides;
-            v.push_back(*mode);
-        }
-        return v;
+        const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The five-bar linkage has no parameter named '%1'.")};
+        return T(rules, {
+            {{"AB", "AB", QT_TRANSLATE_NOOP("core", "length of crank 1, driven at A"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.crank[0]; })},
+            {{"BC", "BC", QT_TRANSLATE_NOOP("core", "length of distal link 1, from B to C"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.link[0]; })},
+            {{"CD", "CD", QT_TRANSLATE_NOOP("core", "length of distal link 2, from C to D"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.link[1]; })},
+            {{"DE", "DE", QT_TRANSLATE_NOOP("core", "length of crank 2, driven at E"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.crank[1]; })},
+            {{"AE", "AE", QT_TRANSLATE_NOOP("core", "length of the ground, from A to E along +x"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::ground>()},
+            {{"theta1_min", "θ₁,min", QT_TRANSLATE_NOOP("core", "lower limit of crank angle θ₁"), angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.range[0].min; })},
+            {{"theta1_max", "θ₁,max", QT_TRANSLATE_NOOP("core", "upper limit of crank angle θ₁"), angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.range[0].max; })},
+            {{"theta4_min", "θ₄,min", QT_TRANSLATE_NOOP("core", "lower limit of crank angle θ₄"), angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.range[1].min; })},
+            {{"theta4_max", "θ₄,max", QT_TRANSLATE_NOOP("core", "upper limit of crank angle θ₄"), angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.range[1].max; })},
+            {{"working1", "w₁", QT_TRANSLATE_NOOP("core", "working mode of leg 1: elbow B left (+1) or right (−1) of A→C"), units::none, G::Mode, sign, false, false, true, 0, 2, sides},
+             T::sign([](auto &d) -> auto & { return d.working[0]; }), &sideRule},
+            {{"working2", "w₂", QT_TRANSLATE_NOOP("core", "working mode of leg 2: elbow D left (+1) or right (−1) of E→C"), units::none, G::Mode, sign, false, false, true, 0, 2, sides},
+             T::sign([](auto &d) -> auto & { return d.working[1]; }), &sideRule},
+            {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: C left (+1) or right (−1) of B→D"), units::none, G::Mode, sign, false, false, true, 0, 2, sides},
+             T::sign<&D::assembly>(), &sideRule},
+        });
     }();
-    return infos;
+    return table;
 }
-
-/// The design's real-valued fields by parameter name.
-std::array<std::pair<const char *, double *>, 9> realFields(FiveBarDesign &d)
-{
-    return {{{"AB", &d.crank[0]},
-             {"BC", &d.link[0]},
-             {"CD", &d.link[1]},
-             {"DE", &d.crank[1]},
-             {"AE", &d.ground},
-             {"theta1_min", &d.range[0].min},
-             {"theta1_max", &d.range[0].max},
-             {"theta4_min", &d.range[1].min},
-             {"theta4_max", &d.range[1].max}}};
-}
-
-/// The design's mode fields (±1) by parameter name.
-std::array<std::pair<const char *, int *>, 3> modeFields(FiveBarDesign &d)
-{
-    return {{{"working1", &d.working[0]}, {"working2", &d.working[1]}, {"assembly", &d.assembly}}};
-}
-
-ParameterSet parametersOf(FiveBarDesign d)
-{
-    ParameterSet values;
-    for (const auto &[name, field] : realFields(d))
-        values[name] = *field;
-    for (const auto &[name, field] : modeFields(d))
-        values[name] = double(*field);
-    return values;
-}
-
-/// A mode value must be exactly +1 or −1.
-Result<bool> checkMode(const std::string &name, double value)
-{
-    if (value != 1.0 && value != -1.0) {
-        return Failure{FailureKind::InvalidParameter, name,
-                       text::format(text::translate("core", "%1 = %2 is invalid: it must be +1 (left) or -1 (right)."),
-                                    {name, text::number(value)})};
-    }
-    return true;
-}
-
-/// The design with `changes` applied, each checked against its own domain first, so that a
-/// bad value is named as itself.
-Result<FiveBarDesign> applyChanges(FiveBarDesign d, const ParameterSet &changes)
-{
-    const auto &infos = fivebarParameterInfo();
-    for (const auto &[name, value] : changes) {
-        const auto info =
-            std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
-        if (info == infos.end()) {
-            return Failure{FailureKind::UnknownName, name,
-                           text::format(text::translate("core", "The five-bar linkage has no parameter named '%1'."),
-                                        {name})};
-        }
-        if (auto checked = Mechanism::checkDomain(*info, value); !checked)
-            return checked.failure();
-        if (info->group == ParameterGroup::Mode) {
-            if (auto ok = checkMode(name, value); !ok)
-                return ok.failure();
-        }
-    }
-    for (const auto &[name, field] : realFields(d)) {
-        if (auto it = changes.find(name); it != changes.end())
-            *field = it->second;
-    }
-    for (const auto &[name, field] : modeFields(d)) {
-        if (auto it = changes.find(name); it != changes.end())
-            *field = it->second > 0 ? fivebar::left : fivebar::right;
-    }
-    return d;
-}
-} // namespace
 
 Result<MechanismPtr> FiveBar::create(const FiveBarDesign &d)
 {
-    const ParameterSet values = parametersOf(d);
-    for (const ParameterInfo &info : fivebarParameterInfo()) {
-        if (auto checked = checkDomain(info, values.at(info.name)); !checked)
-            return checked.failure();
-        if (info.group == ParameterGroup::Mode) {
-            if (auto ok = checkMode(info.name, values.at(info.name)); !ok)
-                return ok.failure();
-        }
-    }
+    if (auto checked = table().checkDesign(d); !checked)
+        return checked.failure();
     for (int leg = 0; leg < 2; ++leg) {
         const LegText &t = legText[std::size_t(leg)];
         const Interval &r = d.range[leg];
@@ -354,37 +283,6 @@ Result<MechanismPtr> FiveBar::create(const FiveBarDesign &d)
                                     {modes, ranges})};
     }
     return MechanismPtr(new FiveBar(candidate));
-}
-
-Result<MechanismPtr> FiveBar::createFrom(const ParameterSet &parameters)
-{
-    auto design = applyChanges(FiveBarDesign{}, parameters);
-    if (!design)
-        return design.failure();
-    return create(*design);
-}
-
-const std::vector<ParameterInfo> &FiveBar::parameterInfo() const
-{
-    return fivebarParameterInfo();
-}
-
-ParameterSet FiveBar::parameters() const
-{
-    return parametersOf(m_design);
-}
-
-Result<MechanismPtr> FiveBar::withParameters(const ParameterSet &changes) const
-{
-    auto design = applyChanges(m_design, changes);
-    if (!design)
-        return design.failure();
-    return blameChange(create(*design), changes);
-}
-
-Result<MechanismPtr> FiveBar::withParameter(std::string_view name, double value) const
-{
-    return withParameters({{std::string(name), value}});
 }
 
 FiveBar::FiveBar(const FiveBarDesign &design)

@@ -37,7 +37,7 @@
 ///   meet and C gains a freedom. Scale-free margins: |k_i|/(a_i·b_i) = |sin| of the elbow
 ///   angle, |det J_x|/(BC·CD) = |sin| of the angle between the distal links.
 
-#include "mechanism.h"
+#include "parametertable.h"
 #include "planarworkspace.h"
 #include "text.h"
 
@@ -96,24 +96,21 @@ inline double conditionNumber(double frobeniusSquared, double absDeterminant)
 }
 } // namespace fivebar
 
-class FiveBar final : public Mechanism, public PlanarWorkspace
+class FiveBar final : public TabledMechanism<FiveBar, FiveBarDesign>, public PlanarWorkspace
 {
 public:
     /// Validates the design; the failure names the culprit (a length ≤ 0 or NaN, a link not
     /// shorter than the other four together, a crank range inverted or over a turn, a mode
     /// other than ±1, modes and ranges in which the loop never closes).
     static Result<MechanismPtr> create(const FiveBarDesign &design);
-    /// From named values (missing ones take the example's: AE = 100, AB = DE = 80,
-    /// BC = CD = 120 mm, elbows out, C above BD, full-turn cranks).
-    static Result<MechanismPtr> createFrom(const ParameterSet &parameters);
+    /// The parameters and the design fields they read and write (createFrom(): missing values
+    /// take the example's: AE = 100, AB = DE = 80, BC = CD = 120 mm, elbows out, C above BD,
+    /// full-turn cranks).
+    static const ParameterTable<FiveBarDesign> &table();
 
     const FiveBarDesign &design() const { return m_design; }
 
     std::string_view kind() const override { return "fivebar"; }
-    const std::vector<ParameterInfo> &parameterInfo() const override;
-    ParameterSet parameters() const override;
-    Result<MechanismPtr> withParameter(std::string_view name, double value) const override;
-    Result<MechanismPtr> withParameters(const ParameterSet &changes) const override;
     /// Direct singularities in the workspace of the design's modes (C can lose control there).
     std::vector<std::string> designWarnings() const override;
 

@@ -212,77 +212,41 @@ double documentEpsilon3(double AB, double BC, double CD, double AD, double omega
 // -- design --------------------------------------------------------------------------------
 
 namespace {
-const std::vector<ParameterInfo> &fourbarParameterInfo()
-{
-    static const std::vector<ParameterInfo> infos = [] {
-        const Interval positive{0.0, 1e5};
-        using G = ParameterGroup;
-        std::vector<ParameterInfo> v;
-        v.push_back({"AB", "AB", QT_TRANSLATE_NOOP("core", "crank (input link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"BC", "BC", QT_TRANSLATE_NOOP("core", "coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"CD", "CD", QT_TRANSLATE_NOOP("core", "rocker (output link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"AD", "AD", QT_TRANSLATE_NOOP("core", "ground (frame) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"omega1", "ω₁", QT_TRANSLATE_NOOP("core", "crank angular velocity, constant (positive: α grows, counter-clockwise)"),
-                     units::radianPerSecond, G::Actuator, Interval{-1e4, 1e4}, false, false, true, 3, 0.1});
-        v.push_back({"coupler_point", "λ", QT_TRANSLATE_NOOP("core", "coupler point M on BC: BM/BC (0 at B, 1 at C)"), units::none, G::Geometry,
-                     Interval{0.0, 1.0}, false, false, true, 3, 0.05});
-        ParameterInfo branch{"branch", "σ", QT_TRANSLATE_NOOP("core", "assembly branch: +1 open (C left of B→D), −1 crossed"), units::none,
-                             G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2};
-        branch.choices = {{"open", 1.0}, {"crossed", -1.0}};
-        v.push_back(branch);
-        return v;
-    }();
-    return infos;
-}
-
-ParameterSet parametersOf(const FourBarDesign &d)
-{
-    return {{"AB", d.crank},         {"BC", d.coupler},
-            {"CD", d.rocker},        {"AD", d.ground},
-            {"omega1", d.omega1},    {"coupler_point", d.couplerPoint},
-            {"branch", double(d.branch)}};
-}
-
-Result<bool> checkBranch(double value)
+/// The branch is a sign: exactly +1 (open) or −1 (crossed).
+Result<double> branchRule(const ParameterInfo &, double value)
 {
     if (value != 1.0 && value != -1.0) {
         return Failure{FailureKind::InvalidParameter, "branch",
                        text::format(text::translate("core", "branch = %1 is invalid: it must be +1 (open) or -1 (crossed)."),
                                     {text::number(value)})};
     }
-    return true;
-}
-
-Result<FourBarDesign> applyChanges(FourBarDesign d, const ParameterSet &changes)
-{
-    const auto &infos = fourbarParameterInfo();
-    for (const auto &[name, value] : changes) {
-        const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
-        if (info == infos.end())
-            return Failure{FailureKind::UnknownName, name,
-                           text::format(text::translate("core", "The four-bar linkage has no parameter named '%1'."), {name})};
-        if (auto checked = Mechanism::checkDomain(*info, value); !checked)
-            return checked.failure();
-        if (name == "branch") {
-            if (auto ok = checkBranch(value); !ok)
-                return ok.failure();
-        }
-    }
-    auto take = [&](const char *name, double &field) {
-        if (auto it = changes.find(name); it != changes.end())
-            field = it->second;
-    };
-    take("AB", d.crank);
-    take("BC", d.coupler);
-    take("CD", d.rocker);
-    take("AD", d.ground);
-    take("omega1", d.omega1);
-    take("coupler_point", d.couplerPoint);
-    if (auto it = changes.find("branch"); it != changes.end())
-        d.branch = it->second > 0 ? fourbar::open : fourbar::crossed;
-    return d;
+    return value;
 }
 } // namespace
+
+const ParameterTable<FourBarDesign> &FourBar::table()
+{
+    using T = ParameterTable<FourBarDesign>;
+    using D = FourBarDesign;
+    static const T table = [] {
+        const Interval positive{0.0, 1e5};
+        using G = ParameterGroup;
+        const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The four-bar linkage has no parameter named '%1'.")};
+        return T(rules, {
+            {{"AB", "AB", QT_TRANSLATE_NOOP("core", "crank (input link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::crank>()},
+            {{"BC", "BC", QT_TRANSLATE_NOOP("core", "coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::coupler>()},
+            {{"CD", "CD", QT_TRANSLATE_NOOP("core", "rocker (output link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::rocker>()},
+            {{"AD", "AD", QT_TRANSLATE_NOOP("core", "ground (frame) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::ground>()},
+            {{"omega1", "ω₁", QT_TRANSLATE_NOOP("core", "crank angular velocity, constant (positive: α grows, counter-clockwise)"),
+              units::radianPerSecond, G::Actuator, Interval{-1e4, 1e4}, false, false, true, 3, 0.1}, T::real<&D::omega1>()},
+            {{"coupler_point", "λ", QT_TRANSLATE_NOOP("core", "coupler point M on BC: BM/BC (0 at B, 1 at C)"), units::none, G::Geometry,
+              Interval{0.0, 1.0}, false, false, true, 3, 0.05}, T::real<&D::couplerPoint>()},
+            {{"branch", "σ", QT_TRANSLATE_NOOP("core", "assembly branch: +1 open (C left of B→D), −1 crossed"), units::none,
+              G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2, {{"open", 1.0}, {"crossed", -1.0}}}, T::sign<&D::branch>(), &branchRule},
+        });
+    }();
+    return table;
+}
 
 fourbar::Grashof FourBar::grashof(const FourBarDesign &d)
 {
@@ -291,13 +255,9 @@ fourbar::Grashof FourBar::grashof(const FourBarDesign &d)
 
 Result<MechanismPtr> FourBar::create(const FourBarDesign &d)
 {
-    const ParameterSet values = parametersOf(d);
-    for (const ParameterInfo &info : fourbarParameterInfo()) {
-        if (auto checked = checkDomain(info, values.at(info.name)); !checked)
-            return checked.failure();
-    }
-    if (auto ok = checkBranch(double(d.branch)); !ok)
-        return ok.failure();
+    // the branch, the last row, is checked after every domain
+    if (auto checked = table().checkDesign(d); !checked)
+        return checked.failure();
     // A closed loop needs every link shorter than the other three together.
     const std::array<std::pair<const char *, double>, 4> links = {
         std::pair{"AB", d.crank}, std::pair{"BC", d.coupler}, std::pair{"CD", d.rocker}, std::pair{"AD", d.ground}};
@@ -318,37 +278,6 @@ Result<MechanismPtr> FourBar::create(const FourBarDesign &d)
                                     {longest->first, mm(longest->second), names, mm(others)})};
     }
     return MechanismPtr(new FourBar(d));
-}
-
-Result<MechanismPtr> FourBar::createFrom(const ParameterSet &parameters)
-{
-    auto design = applyChanges(FourBarDesign{}, parameters);
-    if (!design)
-        return design.failure();
-    return create(*design);
-}
-
-const std::vector<ParameterInfo> &FourBar::parameterInfo() const
-{
-    return fourbarParameterInfo();
-}
-
-ParameterSet FourBar::parameters() const
-{
-    return parametersOf(m_design);
-}
-
-Result<MechanismPtr> FourBar::withParameters(const ParameterSet &changes) const
-{
-    auto design = applyChanges(m_design, changes);
-    if (!design)
-        return design.failure();
-    return blameChange(create(*design), changes);
-}
-
-Result<MechanismPtr> FourBar::withParameter(std::string_view name, double value) const
-{
-    return withParameters({{std::string(name), value}});
 }
 
 FourBar::FourBar(const FourBarDesign &design)

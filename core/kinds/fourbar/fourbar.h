@@ -45,7 +45,7 @@
 /// (counter-clockwise, like ω₁), so it equals −dδ/dt: our ω₃ = −(8). Its (14) for ε₃ agrees
 /// with neither sign of the exact second derivative (docs/mathematics.md): see fourbar::document*.
 
-#include "mechanism.h"
+#include "parametertable.h"
 
 #include <vector>
 
@@ -119,24 +119,21 @@ double documentEpsilon3(double AB, double BC, double CD, double AD, double omega
                         double gamma, double delta);
 } // namespace fourbar
 
-class FourBar final : public Mechanism
+class FourBar final : public TabledMechanism<FourBar, FourBarDesign>
 {
 public:
     /// Validates the design; the failure names the culprit (a length ≤ 0 or NaN, a link
     /// longer than the other three together, a branch other than ±1).
     static Result<MechanismPtr> create(const FourBarDesign &design);
-    /// From named values (missing ones take the example's: 40, 120, 100, 140 mm).
-    static Result<MechanismPtr> createFrom(const ParameterSet &parameters);
+    /// The parameters and the design fields they read and write (createFrom(): missing values
+    /// take the example's: 40, 120, 100, 140 mm).
+    static const ParameterTable<FourBarDesign> &table();
     /// Grashof's class of a design.
     static fourbar::Grashof grashof(const FourBarDesign &design);
 
     const FourBarDesign &design() const { return m_design; }
 
     std::string_view kind() const override { return "fourbar"; }
-    const std::vector<ParameterInfo> &parameterInfo() const override;
-    ParameterSet parameters() const override;
-    Result<MechanismPtr> withParameter(std::string_view name, double value) const override;
-    Result<MechanismPtr> withParameters(const ParameterSet &changes) const override;
     /// A poor transmission (|γ| or 180° − |γ| below 40° somewhere in the range), a change point.
     std::vector<std::string> designWarnings() const override;
 

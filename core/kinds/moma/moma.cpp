@@ -89,153 +89,94 @@ double directMargin(const MomaDesign &design, const Eigen::Vector2d &z1, const E
 // -- design --------------------------------------------------------------------------------
 
 namespace {
-const std::vector<ParameterInfo> &momaParameterInfo()
+/// β_i and σ are signs: exactly −1 or +1.
+Result<double> signRule(const ParameterInfo &info, double value)
 {
-    static const std::vector<ParameterInfo> infos = [] {
+    if (value != 1.0 && value != -1.0) {
+        return Failure{FailureKind::InvalidParameter, info.name,
+                       text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
+                                    {info.name, text::number(value)})};
+    }
+    return value;
+}
+
+/// The one-side constraint is a switch: exactly 0 or 1.
+Result<double> switchRule(const ParameterInfo &, double value)
+{
+    if (value != 0.0 && value != 1.0) {
+        return Failure{FailureKind::InvalidParameter, "one_side",
+                       text::format(text::translate("core", "one_side = %1 is invalid: it must be 0 (off) or 1 (on)."),
+                                    {text::number(value)})};
+    }
+    return value;
+}
+
+/// α_i and γ_i given together both turn guide i.
+template <int Leg>
+Failure guideClash(double, double)
+{
+    const std::string alpha = "alpha" + legName(Leg), gamma = "gamma" + legName(Leg);
+    return Failure{FailureKind::InvalidParameter, gamma,
+                   text::format(text::translate("core", "%1 and %2 both turn guide %3: give one of them."),
+                                {alpha, gamma, legName(Leg)})};
+}
+
+/// γ_i = α_i − 270°, read in [−180°, 180°] and written as α_i = 270° + γ_i brought into
+/// [0°, 360°), so that every γ of its domain gives a valid α.
+template <int Leg>
+FieldAccess<MomaDesign> guideTurn()
+{
+    return {[](const MomaDesign &d) { return std::remainder(d.alpha[Leg] - 1.5 * pi, 2 * pi); },
+            [](MomaDesign &d, double gamma) {
+                const double alpha = std::fmod(1.5 * pi + gamma, 2 * pi);
+                d.alpha[Leg] = alpha < 0 ? alpha + 2 * pi : alpha;
+            }};
+}
+} // namespace
+
+const ParameterTable<MomaDesign> &Moma::table()
+{
+    using T = ParameterTable<MomaDesign>;
+    using D = MomaDesign;
+    static const T table = [] {
         const Interval coordinate{-1e5, 1e5};
         const Interval positive{0.0, 1e5};
         const Interval turn{-360.0 * units::degree, 360.0 * units::degree};
         const Interval halfTurn{-180.0 * units::degree, 180.0 * units::degree};
         const Interval sign{-1.0, 1.0};
         using G = ParameterGroup;
-        std::vector<ParameterInfo> v;
-        v.push_back({"R1x", "x_R1", QT_TRANSLATE_NOOP("core", "guide 1 reference point, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"R1y", "y_R1", QT_TRANSLATE_NOOP("core", "guide 1 reference point, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"R2x", "x_R2", QT_TRANSLATE_NOOP("core", "guide 2 reference point, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"R2y", "y_R2", QT_TRANSLATE_NOOP("core", "guide 2 reference point, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1});
-        v.push_back({"alpha1", "α₁", QT_TRANSLATE_NOOP("core", "direction of guide 1"), units::angle, G::Geometry, turn, false, false, true, 2, 1});
-        v.push_back({"alpha2", "α₂", QT_TRANSLATE_NOOP("core", "direction of guide 2"), units::angle, G::Geometry, turn, false, false, true, 2, 1});
-        v.push_back({"gamma1", "γ₁", QT_TRANSLATE_NOOP("core", "turn of guide 1 from the vertical (α₁ = 270° + γ₁)"), units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
-        v.push_back({"gamma2", "γ₂", QT_TRANSLATE_NOOP("core", "turn of guide 2 from the vertical (α₂ = 270° + γ₂)"), units::angle, G::Geometry, halfTurn, false, false, false, 2, 1});
-        v.push_back({"l1", "l₁", QT_TRANSLATE_NOOP("core", "length of link S₁"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"l2", "l₂", QT_TRANSLATE_NOOP("core", "length of link S₂"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"p_min", "p_min", QT_TRANSLATE_NOOP("core", "start of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        v.push_back({"p_max", "p_max", QT_TRANSLATE_NOOP("core", "end of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        v.push_back({"branch1", "β₁", QT_TRANSLATE_NOOP("core", "working mode of leg 1: sign in p₁ = B₁ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"branch2", "β₂", QT_TRANSLATE_NOOP("core", "working mode of leg 2: sign in p₂ = B₂ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: +1 platform left of Z₁→Z₂"), units::none, G::Mode, sign, false, false, true, 0, 2});
-        v.push_back({"one_side", QT_TRANSLATE_NOOP("core", "one side"), QT_TRANSLATE_NOOP("core", "links kept on the inner side of the guides (1: on)"), units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1});
-        v.push_back({"guide_width", "w_g", QT_TRANSLATE_NOOP("core", "drawn width of a guide"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
-        return v;
+        // every given value against its own domain first, so that a bad γ is named as γ, not
+        // as the α it would make
+        const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "MOMA has no parameter named '%1'."),
+                                .order = CheckOrder::DomainsFirst};
+        return T(rules, {
+            {{"R1x", "x_R1", QT_TRANSLATE_NOOP("core", "guide 1 reference point, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.reference[0].x(); })},
+            {{"R1y", "y_R1", QT_TRANSLATE_NOOP("core", "guide 1 reference point, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.reference[0].y(); })},
+            {{"R2x", "x_R2", QT_TRANSLATE_NOOP("core", "guide 2 reference point, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.reference[1].x(); })},
+            {{"R2y", "y_R2", QT_TRANSLATE_NOOP("core", "guide 2 reference point, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.reference[1].y(); })},
+            {{"alpha1", "α₁", QT_TRANSLATE_NOOP("core", "direction of guide 1"), units::angle, G::Geometry, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.alpha[0]; })},
+            {{"alpha2", "α₂", QT_TRANSLATE_NOOP("core", "direction of guide 2"), units::angle, G::Geometry, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.alpha[1]; })},
+            {{"gamma1", "γ₁", QT_TRANSLATE_NOOP("core", "turn of guide 1 from the vertical (α₁ = 270° + γ₁)"), units::angle, G::Geometry, halfTurn, false, false, false, 2, 1}, guideTurn<0>(), nullptr, "alpha1", &guideClash<0>},
+            {{"gamma2", "γ₂", QT_TRANSLATE_NOOP("core", "turn of guide 2 from the vertical (α₂ = 270° + γ₂)"), units::angle, G::Geometry, halfTurn, false, false, false, 2, 1}, guideTurn<1>(), nullptr, "alpha2", &guideClash<1>},
+            {{"l1", "l₁", QT_TRANSLATE_NOOP("core", "length of link S₁"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.length[0]; })},
+            {{"l2", "l₂", QT_TRANSLATE_NOOP("core", "length of link S₂"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.length[1]; })},
+            {{"p_min", "p_min", QT_TRANSLATE_NOOP("core", "start of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::strokeMin>()},
+            {{"p_max", "p_max", QT_TRANSLATE_NOOP("core", "end of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::strokeMax>()},
+            {{"branch1", "β₁", QT_TRANSLATE_NOOP("core", "working mode of leg 1: sign in p₁ = B₁ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2}, T::sign([](auto &d) -> auto & { return d.branch[0]; }), &signRule},
+            {{"branch2", "β₂", QT_TRANSLATE_NOOP("core", "working mode of leg 2: sign in p₂ = B₂ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2}, T::sign([](auto &d) -> auto & { return d.branch[1]; }), &signRule},
+            {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: +1 platform left of Z₁→Z₂"), units::none, G::Mode, sign, false, false, true, 0, 2}, T::sign<&D::assembly>(), &signRule},
+            {{"one_side", QT_TRANSLATE_NOOP("core", "one side"), QT_TRANSLATE_NOOP("core", "links kept on the inner side of the guides (1: on)"), units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1}, T::flag<&D::oneSide>(), &switchRule},
+            {{"guide_width", "w_g", QT_TRANSLATE_NOOP("core", "drawn width of a guide"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::guideWidth>()},
+        });
     }();
-    return infos;
+    return table;
 }
-} // namespace
-
-const std::vector<ParameterInfo> &Moma::parameterInfo() const
-{
-    return momaParameterInfo();
-}
-
-namespace {
-ParameterSet parametersOf(const MomaDesign &d)
-{
-    return {{"R1x", d.reference[0].x()},
-            {"R1y", d.reference[0].y()},
-            {"R2x", d.reference[1].x()},
-            {"R2y", d.reference[1].y()},
-            {"alpha1", d.alpha[0]},
-            {"alpha2", d.alpha[1]},
-            {"gamma1", std::remainder(d.alpha[0] - 1.5 * pi, 2 * pi)},
-            {"gamma2", std::remainder(d.alpha[1] - 1.5 * pi, 2 * pi)},
-            {"l1", d.length[0]},
-            {"l2", d.length[1]},
-            {"p_min", d.strokeMin},
-            {"p_max", d.strokeMax},
-            {"branch1", double(d.branch[0])},
-            {"branch2", double(d.branch[1])},
-            {"assembly", double(d.assembly)},
-            {"one_side", d.oneSide ? 1.0 : 0.0},
-            {"guide_width", d.guideWidth}};
-}
-} // namespace
-
-ParameterSet Moma::parameters() const
-{
-    return parametersOf(m_design);
-}
-
-namespace {
-/// The design with `changes` applied, or why not (unknown name, α and γ of one guide together).
-Result<MomaDesign> applyChanges(MomaDesign d, const ParameterSet &changes, const std::vector<ParameterInfo> &infos)
-{
-    for (const auto &[name, value] : changes) {
-        const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
-        if (info == infos.end())
-            return Failure{FailureKind::UnknownName, name,
-                           text::format(text::translate("core", "MOMA has no parameter named '%1'."), {name})};
-    }
-    for (int leg = 0; leg < 2; ++leg) {
-        const std::string alpha = "alpha" + legName(leg), gamma = "gamma" + legName(leg);
-        if (changes.count(alpha) && changes.count(gamma)) {
-            return Failure{FailureKind::InvalidParameter, gamma,
-                           text::format(text::translate("core", "%1 and %2 both turn guide %3: give one of them."),
-                                        {alpha, gamma, legName(leg)})};
-        }
-    }
-    auto take = [&](const char *name, double &field) {
-        if (auto it = changes.find(name); it != changes.end())
-            field = it->second;
-    };
-    auto takeInt = [&](const char *name, int &field) {
-        if (auto it = changes.find(name); it != changes.end())
-            field = it->second > 0 ? 1 : -1;
-    };
-    take("R1x", d.reference[0].x());
-    take("R1y", d.reference[0].y());
-    take("R2x", d.reference[1].x());
-    take("R2y", d.reference[1].y());
-    take("alpha1", d.alpha[0]);
-    take("alpha2", d.alpha[1]);
-    // α_i = 270° + γ_i, brought into [0°, 360°) so every γ of its domain gives a valid α
-    auto fromGamma = [](double gamma) {
-        const double alpha = std::fmod(1.5 * pi + gamma, 2 * pi);
-        return alpha < 0 ? alpha + 2 * pi : alpha;
-    };
-    if (auto it = changes.find("gamma1"); it != changes.end())
-        d.alpha[0] = fromGamma(it->second);
-    if (auto it = changes.find("gamma2"); it != changes.end())
-        d.alpha[1] = fromGamma(it->second);
-    take("l1", d.length[0]);
-    take("l2", d.length[1]);
-    take("p_min", d.strokeMin);
-    take("p_max", d.strokeMax);
-    takeInt("branch1", d.branch[0]);
-    takeInt("branch2", d.branch[1]);
-    takeInt("assembly", d.assembly);
-    if (auto it = changes.find("one_side"); it != changes.end())
-        d.oneSide = it->second > 0.5;
-    take("guide_width", d.guideWidth);
-    return d;
-}
-
-/// ±1 parameters and the 0/1 switch take exactly those values.
-Result<bool> checkModes(const ParameterSet &changes)
-{
-    for (const char *name : {"branch1", "branch2", "assembly"}) {
-        if (auto it = changes.find(name); it != changes.end() && it->second != 1.0 && it->second != -1.0) {
-            return Failure{FailureKind::InvalidParameter, name,
-                           text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
-                                        {name, text::number(it->second)})};
-        }
-    }
-    if (auto it = changes.find("one_side"); it != changes.end() && it->second != 0.0 && it->second != 1.0) {
-        return Failure{FailureKind::InvalidParameter, "one_side",
-                       text::format(text::translate("core", "one_side = %1 is invalid: it must be 0 (off) or 1 (on)."),
-                                    {text::number(it->second)})};
-    }
-    return true;
-}
-} // namespace
 
 Result<MechanismPtr> Moma::create(const MomaDesign &design)
 {
-    const ParameterSet values = parametersOf(design);
-    for (const ParameterInfo &info : momaParameterInfo()) {
-        if (auto checked = checkDomain(info, values.at(info.name)); !checked)
-            return checked.failure();
-    }
-    if (auto modes = checkModes(values); !modes)
+    if (auto checked = table().checkDomains(design); !checked)
+        return checked.failure();
+    if (auto modes = table().checkRules(design); !modes)
         return modes.failure();
     if (!(design.strokeMin < design.strokeMax)) {
         return Failure{FailureKind::InvalidParameter, "p_min",
@@ -268,48 +209,6 @@ Result<MechanismPtr> Moma::create(const MomaDesign &design)
                                      text::number(design.strokeMin), text::number(design.strokeMax)})};
     }
     return MechanismPtr(new Moma(candidate));
-}
-
-Result<MechanismPtr> Moma::createFrom(const ParameterSet &parameters)
-{
-    // each given value against its own domain first, so that a bad γ is named as γ, not as α
-    for (const auto &[name, value] : parameters) {
-        for (const ParameterInfo &info : momaParameterInfo()) {
-            if (info.name == name) {
-                if (auto checked = checkDomain(info, value); !checked)
-                    return checked.failure();
-            }
-        }
-    }
-    if (auto modes = checkModes(parameters); !modes)
-        return modes.failure();
-    auto design = applyChanges(MomaDesign{}, parameters, momaParameterInfo());
-    if (!design)
-        return design.failure();
-    return create(*design);
-}
-
-Result<MechanismPtr> Moma::withParameters(const ParameterSet &changes) const
-{
-    for (const auto &[name, value] : changes) {
-        for (const ParameterInfo &info : parameterInfo()) {
-            if (info.name == name) {
-                if (auto checked = checkDomain(info, value); !checked)
-                    return checked.failure();
-            }
-        }
-    }
-    if (auto modes = checkModes(changes); !modes)
-        return modes.failure();
-    auto design = applyChanges(m_design, changes, parameterInfo());
-    if (!design)
-        return design.failure();
-    return blameChange(create(*design), changes);
-}
-
-Result<MechanismPtr> Moma::withParameter(std::string_view name, double value) const
-{
-    return withParameters({{std::string(name), value}});
 }
 
 std::vector<std::string> Moma::designWarnings() const

@@ -17,7 +17,7 @@
 /// J = −J_p⁻¹·J_x; the document's (21) writes J = J_p⁻¹·J_x, which has the opposite sign and
 /// the same determinant (a 2×2 matrix).
 
-#include "mechanism.h"
+#include "parametertable.h"
 #include "planarworkspace.h"
 #include "text.h"
 
@@ -59,23 +59,19 @@ double directMargin(const MomaDesign &design, const Eigen::Vector2d &z1, const E
                     const Eigen::Vector2d &platform);
 } // namespace moma
 
-class Moma final : public Mechanism, public PlanarWorkspace
+class Moma final : public TabledMechanism<Moma, MomaDesign>, public PlanarWorkspace
 {
 public:
     /// Validates the design (and that its workspace is not empty); the failure names the
     /// culprit.
     static Result<MechanismPtr> create(const MomaDesign &design);
-    /// From named values (missing ones take configuration 3a's). gamma_i, if given, sets
-    /// α_i = 270° + γ_i.
-    static Result<MechanismPtr> createFrom(const ParameterSet &parameters);
+    /// The parameters and the design fields they read and write (createFrom(): missing values
+    /// take configuration 3a's). gamma_i, if given, sets α_i = 270° + γ_i.
+    static const ParameterTable<MomaDesign> &table();
 
     const MomaDesign &design() const { return m_design; }
 
     std::string_view kind() const override { return "moma"; }
-    const std::vector<ParameterInfo> &parameterInfo() const override;
-    ParameterSet parameters() const override;
-    Result<MechanismPtr> withParameter(std::string_view name, double value) const override;
-    Result<MechanismPtr> withParameters(const ParameterSet &changes) const override;
     std::vector<std::string> designWarnings() const override;
 
     const std::vector<VariableInfo> &variableInfo() const override;

@@ -88,73 +88,47 @@ double exactArea(const OxGlideDesign &d, int form)
 // -- design --------------------------------------------------------------------------------
 
 namespace {
-const std::vector<ParameterInfo> &oxglideParameterInfo()
+/// The form is a sign: exactly +1 (O) or −1 (X).
+Result<double> formRule(const ParameterInfo &, double value)
 {
-    static const std::vector<ParameterInfo> infos = [] {
-        const Interval positive{0.0, 1e5};
-        const Interval coordinate{-1e5, 1e5};
-        using G = ParameterGroup;
-        std::vector<ParameterInfo> v;
-        v.push_back({"l", "l", QT_TRANSLATE_NOOP("core", "rod length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"s", "s", QT_TRANSLATE_NOOP("core", "platform width"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"L", "L", QT_TRANSLATE_NOOP("core", "transverse guide length (slider positions 0…L)"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"a", "a", QT_TRANSLATE_NOOP("core", "spacing of the transverse guides"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"z_min", "z_min", QT_TRANSLATE_NOOP("core", "start of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        v.push_back({"z_max", "z_max", QT_TRANSLATE_NOOP("core", "end of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1});
-        ParameterInfo mode{"mode", QT_TRANSLATE_NOOP("core", "form"), QT_TRANSLATE_NOOP("core", "+1 extended (O), −1 crossed (X)"), units::none, G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2};
-        mode.choices = {{"O", 1.0}, {"X", -1.0}};
-        v.push_back(mode);
-        return v;
-    }();
-    return infos;
-}
-
-ParameterSet parametersOf(const OxGlideDesign &d)
-{
-    return {{"l", d.rod},   {"s", d.width},      {"L", d.guideLength}, {"a", d.spacing},
-            {"z_min", d.zMin}, {"z_max", d.zMax}, {"mode", double(d.form)}};
-}
-
-Result<OxGlideDesign> applyChanges(OxGlideDesign d, const ParameterSet &changes)
-{
-    for (const auto &[name, value] : changes) {
-        const auto &infos = oxglideParameterInfo();
-        const auto info = std::find_if(infos.begin(), infos.end(), [&](const ParameterInfo &i) { return i.name == name; });
-        if (info == infos.end())
-            return Failure{FailureKind::UnknownName, name,
-                           text::format(text::translate("core", "The O-X glide has no parameter named '%1'."), {name})};
-        if (auto checked = Mechanism::checkDomain(*info, value); !checked)
-            return checked.failure();
-        if (name == "mode" && value != 1.0 && value != -1.0) {
-            return Failure{FailureKind::InvalidParameter, "mode",
-                           text::format(text::translate("core", "mode = %1 is invalid: it must be +1 (O, extended) or -1 "
-                                                                "(X, crossed)."),
-                                        {text::number(value)})};
-        }
+    if (value != 1.0 && value != -1.0) {
+        return Failure{FailureKind::InvalidParameter, "mode",
+                       text::format(text::translate("core", "mode = %1 is invalid: it must be +1 (O, extended) or -1 "
+                                                            "(X, crossed)."),
+                                    {text::number(value)})};
     }
-    auto take = [&](const char *name, double &field) {
-        if (auto it = changes.find(name); it != changes.end())
-            field = it->second;
-    };
-    take("l", d.rod);
-    take("s", d.width);
-    take("L", d.guideLength);
-    take("a", d.spacing);
-    take("z_min", d.zMin);
-    take("z_max", d.zMax);
-    if (auto it = changes.find("mode"); it != changes.end())
-        d.form = it->second > 0 ? oxglide::formO : oxglide::formX;
-    return d;
+    return value;
 }
 } // namespace
 
+const ParameterTable<OxGlideDesign> &OxGlide::table()
+{
+    using T = ParameterTable<OxGlideDesign>;
+    using D = OxGlideDesign;
+    static const T table = [] {
+        const Interval positive{0.0, 1e5};
+        const Interval coordinate{-1e5, 1e5};
+        using G = ParameterGroup;
+        const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The O-X glide has no parameter named '%1'.")};
+        return T(rules, {
+            {{"l", "l", QT_TRANSLATE_NOOP("core", "rod length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::rod>()},
+            {{"s", "s", QT_TRANSLATE_NOOP("core", "platform width"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::width>()},
+            {{"L", "L", QT_TRANSLATE_NOOP("core", "transverse guide length (slider positions 0…L)"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::guideLength>()},
+            {{"a", "a", QT_TRANSLATE_NOOP("core", "spacing of the transverse guides"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::spacing>()},
+            {{"z_min", "z_min", QT_TRANSLATE_NOOP("core", "start of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::zMin>()},
+            {{"z_max", "z_max", QT_TRANSLATE_NOOP("core", "end of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::zMax>()},
+            {{"mode", QT_TRANSLATE_NOOP("core", "form"), QT_TRANSLATE_NOOP("core", "+1 extended (O), −1 crossed (X)"), units::none, G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2, {{"O", 1.0}, {"X", -1.0}}}, T::sign<&D::form>(), &formRule},
+        });
+    }();
+    return table;
+}
+
 Result<MechanismPtr> OxGlide::create(const OxGlideDesign &d)
 {
-    const ParameterSet values = parametersOf(d);
-    for (const ParameterInfo &info : oxglideParameterInfo()) {
-        if (auto checked = checkDomain(info, values.at(info.name)); !checked)
-            return checked.failure();
-    }
+    if (auto checked = table().checkDomains(d); !checked)
+        return checked.failure();
+    // the form by this check, not by its row's rule (checkDesign): a design given as a value
+    // has its own message
     if (d.form != oxglide::formO && d.form != oxglide::formX)
         return Failure{FailureKind::InvalidParameter, "mode",
                        text::translate("core", "mode must be +1 (O, extended) or -1 (X, crossed).")};
@@ -185,37 +159,6 @@ Result<MechanismPtr> OxGlide::create(const OxGlideDesign &d)
                        text::format(pattern, {mm(d.guideLength), mm(d.width), mm(d.rod)})};
     }
     return MechanismPtr(new OxGlide(candidate));
-}
-
-Result<MechanismPtr> OxGlide::createFrom(const ParameterSet &parameters)
-{
-    auto design = applyChanges(OxGlideDesign{}, parameters);
-    if (!design)
-        return design.failure();
-    return create(*design);
-}
-
-const std::vector<ParameterInfo> &OxGlide::parameterInfo() const
-{
-    return oxglideParameterInfo();
-}
-
-ParameterSet OxGlide::parameters() const
-{
-    return parametersOf(m_design);
-}
-
-Result<MechanismPtr> OxGlide::withParameters(const ParameterSet &changes) const
-{
-    auto design = applyChanges(m_design, changes);
-    if (!design)
-        return design.failure();
-    return blameChange(create(*design), changes);
-}
-
-Result<MechanismPtr> OxGlide::withParameter(std::string_view name, double value) const
-{
-    return withParameters({{std::string(name), value}});
 }
 
 OxGlide::OxGlide(const OxGlideDesign &design)

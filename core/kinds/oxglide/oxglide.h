@@ -26,7 +26,7 @@
 /// q̇ = J·ẋ with J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂], det J = −2y/w (O) or +2y/w (X),
 /// κ(J) = max(y/w, w/y). Units: mm, rad.
 
-#include "mechanism.h"
+#include "parametertable.h"
 #include "planarworkspace.h"
 
 namespace pkm {
@@ -66,21 +66,18 @@ Eigen::Vector2d inverse(double rod, double width, int form, const Eigen::Vector2
 double exactArea(const OxGlideDesign &design, int form);
 } // namespace oxglide
 
-class OxGlide final : public Mechanism, public PlanarWorkspace
+class OxGlide final : public TabledMechanism<OxGlide, OxGlideDesign>, public PlanarWorkspace
 {
 public:
     /// Validates the design; the failure names the culprit (s ≥ 2l, L ≤ s, z_min ≥ z_max…).
     static Result<MechanismPtr> create(const OxGlideDesign &design);
-    /// From named values (missing ones take the prototype's).
-    static Result<MechanismPtr> createFrom(const ParameterSet &parameters);
+    /// The parameters and the design fields they read and write (createFrom(): missing values
+    /// take the prototype's).
+    static const ParameterTable<OxGlideDesign> &table();
 
     const OxGlideDesign &design() const { return m_design; }
 
     std::string_view kind() const override { return "oxglide"; }
-    const std::vector<ParameterInfo> &parameterInfo() const override;
-    ParameterSet parameters() const override;
-    Result<MechanismPtr> withParameter(std::string_view name, double value) const override;
-    Result<MechanismPtr> withParameters(const ParameterSet &changes) const override;
 
     const std::vector<VariableInfo> &variableInfo() const override;
     Interval variableRange(int variable) const override;

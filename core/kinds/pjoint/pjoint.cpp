@@ -146,79 +146,56 @@ Interval recommendedRange(const PJointDesign &p, double share)
 
 // -- design ------------------------------------------------------------------------------
 
-const std::vector<ParameterInfo> &PJoint::parameterInfo() const
+namespace {
+/// k and b given together: both would size the coupler.
+Failure couplerClash(double k, double b)
 {
-    static const std::vector<ParameterInfo> infos = [] {
+    return Failure{FailureKind::InvalidParameter, "k",
+                   text::format(text::translate("core", "k = %1 and b = %2 mm both set the coupler: give b or "
+                                                        "k, not both."),
+                                {text::number(k, 6), text::number(b, 6)})};
+}
+} // namespace
+
+const ParameterTable<PJointDesign> &PJoint::table()
+{
+    using T = ParameterTable<PJointDesign>;
+    using D = PJointDesign;
+    static const T table = [] {
         const Interval positive{0.0, infinity};
         const Interval halfTurn{-90.0 * units::degree, 90.0 * units::degree};
         using G = ParameterGroup;
-        std::vector<ParameterInfo> v;
-        v.push_back({"a", "a", QT_TRANSLATE_NOOP("core", "crank (lever) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"b", "b", QT_TRANSLATE_NOOP("core", "base and coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1});
-        v.push_back({"k", "k", QT_TRANSLATE_NOOP("core", "ratio k = b/a"), units::none, G::Geometry, positive, true, false, false, 4, 0.01});
-        v.push_back({"theta_min", "θ_min", QT_TRANSLATE_NOOP("core", "lower limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1});
-        v.push_back({"theta_max", "θ_max", QT_TRANSLATE_NOOP("core", "upper limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1});
-        v.push_back({"lead", "h", QT_TRANSLATE_NOOP("core", "lead of the screw"), units::millimetrePerRevolution, G::Actuator, positive, true, false, true, 4, 0.1});
-        v.push_back({"step", "Δd", QT_TRANSLATE_NOOP("core", "linear step"), units::millimetrePerStep, G::Actuator, positive, true, false, true, 5, 0.001});
-        v.push_back({"speed_max", "ḋ_max", QT_TRANSLATE_NOOP("core", "max. linear speed"), units::millimetrePerSecond, G::Actuator, positive, true, false, true, 2, 1});
-        v.push_back({"force_max", "F_max", QT_TRANSLATE_NOOP("core", "max. thrust force"), units::newton, G::Actuator, positive, true, false, true, 1, 5});
-        v.push_back({"efficiency", "η", QT_TRANSLATE_NOOP("core", "screw efficiency"), units::none, G::Actuator, Interval{0.0, 1.0}, true, false, true, 3, 0.01});
-        v.push_back({"motor_length", "L_M", QT_TRANSLATE_NOOP("core", "motor body length"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
-        v.push_back({"motor_width", "W_M", QT_TRANSLATE_NOOP("core", "motor body width"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1});
-        v.push_back({"screw_diameter", "d_s", QT_TRANSLATE_NOOP("core", "screw diameter"), units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1});
-        return v;
+        // k = b/a is kept as a ratio: it sizes the coupler from the crank (the new one, since
+        // derived values are written after the stored ones)
+        const FieldAccess<D> ratio{[](const D &d) { return d.k(); }, [](D &d, double k) { d.b = k * d.a; }};
+        // createFrom() leaves every check to create(), which checks the design as a whole (a bad
+        // k is named as the b it makes); withParameter() blames a change in its own words
+        const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The П-joint has no parameter named '%1'."),
+                                .checkGiven = false,
+                                .blameSingle = false};
+        return T(rules, {
+            {{"a", "a", QT_TRANSLATE_NOOP("core", "crank (lever) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::a>()},
+            {{"b", "b", QT_TRANSLATE_NOOP("core", "base and coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::b>()},
+            {{"k", "k", QT_TRANSLATE_NOOP("core", "ratio k = b/a"), units::none, G::Geometry, positive, true, false, false, 4, 0.01}, ratio, nullptr, "b", &couplerClash},
+            {{"theta_min", "θ_min", QT_TRANSLATE_NOOP("core", "lower limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1}, T::real<&D::thetaMin>()},
+            {{"theta_max", "θ_max", QT_TRANSLATE_NOOP("core", "upper limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1}, T::real<&D::thetaMax>()},
+            {{"lead", "h", QT_TRANSLATE_NOOP("core", "lead of the screw"), units::millimetrePerRevolution, G::Actuator, positive, true, false, true, 4, 0.1}, T::real<&D::lead>()},
+            {{"step", "Δd", QT_TRANSLATE_NOOP("core", "linear step"), units::millimetrePerStep, G::Actuator, positive, true, false, true, 5, 0.001}, T::real<&D::step>()},
+            {{"speed_max", "ḋ_max", QT_TRANSLATE_NOOP("core", "max. linear speed"), units::millimetrePerSecond, G::Actuator, positive, true, false, true, 2, 1}, T::real<&D::speedMax>()},
+            {{"force_max", "F_max", QT_TRANSLATE_NOOP("core", "max. thrust force"), units::newton, G::Actuator, positive, true, false, true, 1, 5}, T::real<&D::forceMax>()},
+            {{"efficiency", "η", QT_TRANSLATE_NOOP("core", "screw efficiency"), units::none, G::Actuator, Interval{0.0, 1.0}, true, false, true, 3, 0.01}, T::real<&D::efficiency>()},
+            {{"motor_length", "L_M", QT_TRANSLATE_NOOP("core", "motor body length"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorLength>()},
+            {{"motor_width", "W_M", QT_TRANSLATE_NOOP("core", "motor body width"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorWidth>()},
+            {{"screw_diameter", "d_s", QT_TRANSLATE_NOOP("core", "screw diameter"), units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1}, T::real<&D::screwDiameter>()},
+        });
     }();
-    return infos;
-}
-
-ParameterSet PJoint::parameters() const
-{
-    const PJointDesign &p = m_design;
-    return {{"a", p.a},
-            {"b", p.b},
-            {"k", p.k()},
-            {"theta_min", p.thetaMin},
-            {"theta_max", p.thetaMax},
-            {"lead", p.lead},
-            {"step", p.step},
-            {"speed_max", p.speedMax},
-            {"force_max", p.forceMax},
-            {"efficiency", p.efficiency},
-            {"motor_length", p.motorLength},
-            {"motor_width", p.motorWidth},
-            {"screw_diameter", p.screwDiameter}};
-}
-
-PJointDesign PJoint::designFrom(const ParameterSet &parameters, PJointDesign p)
-{
-    auto take = [&](const char *name, double &field) {
-        if (auto it = parameters.find(name); it != parameters.end())
-            field = it->second;
-    };
-    take("a", p.a);
-    take("b", p.b);
-    take("theta_min", p.thetaMin);
-    take("theta_max", p.thetaMax);
-    take("lead", p.lead);
-    take("step", p.step);
-    take("speed_max", p.speedMax);
-    take("force_max", p.forceMax);
-    take("efficiency", p.efficiency);
-    take("motor_length", p.motorLength);
-    take("motor_width", p.motorWidth);
-    take("screw_diameter", p.screwDiameter);
-    return p;
+    return table;
 }
 
 Result<MechanismPtr> PJoint::create(const PJointDesign &design)
 {
-    PJoint candidate(design);
-    const ParameterSet values = candidate.parameters();
-    for (const ParameterInfo &info : candidate.parameterInfo()) {
-        auto checked = checkDomain(info, values.at(info.name));
-        if (!checked)
-            return checked.failure();
-    }
+    if (auto checked = table().checkDesign(design); !checked)
+        return checked.failure();
     // A design far outside any real proportion (a = 1e-300 mm) would give k, d or J that are
     // not finite numbers: refuse it rather than show them.
     const double k = design.k();
@@ -241,49 +218,6 @@ PJoint::PJoint(const PJointDesign &design)
     : m_design(design)
     , m_recommended(pjoint::recommendedRange(design))
 {
-}
-
-Result<PJointDesign> PJoint::withK(PJointDesign design, const ParameterSet &changes)
-{
-    if (auto k = changes.find("k"); k != changes.end()) {
-        if (changes.count("b")) {
-            return Failure{FailureKind::InvalidParameter, "k",
-                           text::format(text::translate("core", "k = %1 and b = %2 mm both set the coupler: give b or "
-                                                                "k, not both."),
-                                        {text::number(k->second, 6), text::number(changes.at("b"), 6)})};
-        }
-        design.b = k->second * design.a; // k is kept as b/a: it sizes the coupler
-    }
-    return design;
-}
-
-Result<MechanismPtr> PJoint::createFrom(const ParameterSet &parameters)
-{
-    auto design = withK(designFrom(parameters), parameters);
-    if (!design)
-        return design.failure();
-    return create(*design);
-}
-
-Result<MechanismPtr> PJoint::withParameters(const ParameterSet &changes) const
-{
-    for (const auto &[name, value] : changes) {
-        bool known = false;
-        for (const ParameterInfo &info : parameterInfo()) {
-            if (info.name == name) {
-                known = true;
-                if (auto checked = checkDomain(info, value); !checked)
-                    return checked.failure();
-            }
-        }
-        if (!known)
-            return Failure{FailureKind::UnknownName, name,
-                           text::format(text::translate("core", "The П-joint has no parameter named '%1'."), {name})};
-    }
-    auto design = withK(designFrom(changes, m_design), changes);
-    if (!design)
-        return design.failure();
-    return create(*design);
 }
 
 Result<MechanismPtr> PJoint::withParameter(std::string_view name, double value) const

@@ -6,7 +6,7 @@
 /// perpendicular to the base, A = B + a·(sin θ, cos θ); diagonal OA of length d (the actuator).
 /// Units: mm, rad, N, N·m, s. θ is the output, d the actuated input.
 
-#include "mechanism.h"
+#include "parametertable.h"
 
 namespace pkm {
 
@@ -72,23 +72,21 @@ inline constexpr double recommendedTorqueShare = 0.6;
 Interval recommendedRange(const PJointDesign &design, double share = recommendedTorqueShare);
 } // namespace pjoint
 
-class PJoint final : public Mechanism
+class PJoint final : public TabledMechanism<PJoint, PJointDesign>
 {
 public:
     /// Validates the design; the failure names the first invalid parameter.
     static Result<MechanismPtr> create(const PJointDesign &design);
-    /// From named values (missing ones take the prototype's); k, if given, sets b = k·a.
-    static Result<MechanismPtr> createFrom(const ParameterSet &parameters);
-    static PJointDesign designFrom(const ParameterSet &parameters, PJointDesign base = {});
+    /// The parameters and the design fields they read and write (createFrom(): missing values
+    /// take the prototype's). k, if changed, sets b = k·a with the new a; b and k together are
+    /// refused.
+    static const ParameterTable<PJointDesign> &table();
 
     const PJointDesign &design() const { return m_design; }
 
     std::string_view kind() const override { return "pjoint"; }
-    const std::vector<ParameterInfo> &parameterInfo() const override;
-    ParameterSet parameters() const override;
+    /// A failure of a check across parameters names the parameter changed, and says so.
     Result<MechanismPtr> withParameter(std::string_view name, double value) const override;
-    /// k, if changed, sets b = k·a with the new a; b and k together are refused.
-    Result<MechanismPtr> withParameters(const ParameterSet &changes) const override;
     std::vector<std::string> designWarnings() const override;
 
     const std::vector<VariableInfo> &variableInfo() const override;
@@ -123,7 +121,6 @@ public:
 
 private:
     explicit PJoint(const PJointDesign &design);
-    static Result<PJointDesign> withK(PJointDesign design, const ParameterSet &changes);
 
     PJointDesign m_design;
     Interval m_recommended;
