@@ -11,6 +11,7 @@
 #include "pjointplots.h"
 #include "export/sheet.h"
 #include "text.h"
+#include "support/app.h"
 #include "valuestable.h"
 
 #include <qcustomplot.h>
@@ -41,6 +42,7 @@
 #include <memory>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 
@@ -258,13 +260,11 @@ private slots:
     // numbers have a decimal comma.
     void nothingLeftInEnglish_data()
     {
-        QTest::addColumn<QString>("preset");
-        for (const char *preset : {"pjoint-prototype", "moma-3a", "oxglide-prototype", "fourbar-example", "fivebar-example"})
-            QTest::newRow(preset) << QString::fromLatin1(preset);
+        addPresetPerKindRows(); // every kind of mechanism, as it comes with the program
     }
     void nothingLeftInEnglish()
     {
-        QFETCH(QString, preset);
+        PKM_FETCH_PRESET(preset);
         QVERIFY(language::apply(QStringLiteral("en")));
         MainWindow window;
         window.resize(1600, 1000);
