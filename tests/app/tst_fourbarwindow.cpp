@@ -12,18 +12,16 @@
 #include "kinds/pjoint/pjointplots.h"
 #include "variablepanel.h"
 #include "kinds/workspacepanel.h"
+#include "support/app.h"
+#include "support/process.h"
 
 #include <qcustomplot.h>
 
 #include <QAction>
 #include <QDoubleSpinBox>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
-#include <QProcess>
-#include <QSettings>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyleOptionSlider>
 #include <QTabWidget>
@@ -34,20 +32,10 @@
 #include <numbers>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 constexpr double degree = std::numbers::pi / 180.0;
-
-void drag(QWidget *widget, QPointF from, QPointF to, int steps = 8)
-{
-    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, from.toPoint());
-    for (int i = 1; i <= steps; ++i) {
-        const QPointF at = from + (to - from) * (double(i) / steps);
-        QMouseEvent move(QEvent::MouseMove, at, widget->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
-        QApplication::sendEvent(widget, &move);
-    }
-    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, to.toPoint());
-}
 
 /// The centre of a slider's handle, and the pixel of a value on its groove.
 QPointF handleCentre(QSlider *slider)
@@ -61,15 +49,6 @@ QPointF handleCentre(QSlider *slider)
     option.sliderValue = slider->value();
     return QRectF(slider->style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider))
         .center();
-}
-
-QJsonObject runCli(const QStringList &arguments)
-{
-    QProcess process;
-    process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), arguments);
-    if (!process.waitForFinished(60000) || process.exitCode() != 0)
-        return {};
-    return QJsonDocument::fromJson(process.readAllStandardOutput()).object();
 }
 
 /// The value of a graph at exactly `key`, NaN if there is no such sample.
@@ -109,12 +88,8 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        m_window = new MainWindow;
-        m_window->resize(1800, 1000);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window = freshMainWindow({1800, 1000});
+        QVERIFY(m_window);
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -156,7 +131,7 @@ private slots:
         QVERIFY(m_window->openDesign(QStringLiteral("fourbar-example")));
         const FourBarDesign d = fourbarOf(*m_window).design();
         // fig. 4: δ(60°) is the CLI's δ at α = 60°
-        const QJsonObject cli = runCli({QStringLiteral("eval"), QStringLiteral("fourbar-example"),
+        const QJsonObject cli = pkmJson({QStringLiteral("eval"), QStringLiteral("fourbar-example"),
             QStringLiteral("--set"), QStringLiteral("alpha=60"), QStringLiteral("--json")});
         QVERIFY(!cli.isEmpty());
         const double cliDelta = cli.value(QStringLiteral("pose")).toObject().value(QStringLiteral("delta")).toDouble();

@@ -10,7 +10,9 @@
 #include "modebar.h"
 #include "kinds/pjoint/pjointplots.h"
 #include "export/sheet.h"
+#include "kinds/kindmodule.h"
 #include "text.h"
+#include "support/app.h"
 #include "valuestable.h"
 
 #include <qcustomplot.h>
@@ -41,6 +43,7 @@
 #include <memory>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 
@@ -258,13 +261,11 @@ private slots:
     // numbers have a decimal comma.
     void nothingLeftInEnglish_data()
     {
-        QTest::addColumn<QString>("preset");
-        for (const char *preset : {"pjoint-prototype", "moma-3a", "oxglide-prototype", "fourbar-example", "fivebar-example"})
-            QTest::newRow(preset) << QString::fromLatin1(preset);
+        addPresetPerKindRows(); // every kind of mechanism, as it comes with the program
     }
     void nothingLeftInEnglish()
     {
-        QFETCH(QString, preset);
+        PKM_FETCH_PRESET(preset);
         QVERIFY(language::apply(QStringLiteral("en")));
         MainWindow window;
         window.resize(1600, 1000);
@@ -420,7 +421,7 @@ private slots:
         MainWindow window;
         const sheet::Source source{"pjoint-prototype", window.document()->design().title,
                                    window.document()->design().description};
-        const sheet::Sheet built = sheet::build(*window.document()->mechanism(), window.document()->pose(), source);
+        const sheet::Sheet built = kinds::buildSheet(*window.document()->mechanism(), window.document()->pose(), source);
         QTemporaryDir dir;
         const QString pdf = dir.filePath(QStringLiteral("ru.pdf"));
         const QString json = dir.filePath(QStringLiteral("ru.json"));

@@ -10,18 +10,18 @@
 #include "kinds/pjoint/pjointplots.h"
 #include "valuestable.h"
 #include "variablepanel.h"
+#include "support/app.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
-#include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 constexpr double deg = units::degree;
@@ -75,12 +75,8 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear(); // every run starts from the default layout
-        m_window = new MainWindow;
-        m_window->resize(1600, 1000);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window = freshMainWindow({1600, 1000});
+        QVERIFY(m_window);
     }
 
     void cleanupTestCase() { delete m_window; }

@@ -8,18 +8,40 @@
 
 #include "document/document.h"
 #include "mobilitypanel.h"
+#include "support/app.h"
 
 #include <QDir>
 #include <QDockWidget>
 #include <QMenuBar>
-#include <QSettings>
-#include <QStandardPaths>
 #include <QTest>
 
+#include <map>
 #include <numbers>
 
 using namespace pkm;
+using namespace pkm::test;
 using Part = MobilityPanel::Part;
+
+namespace {
+/// What the Mobility dock says for the preset of every kind (presetPerKind()): Chebyshev's W
+/// (empty: it does not apply, the chain is spatial), Somov–Malyshev's W and the mobility.
+struct ExpectedReport {
+    const char *chebyshev;
+    const char *somovMalyshev;
+    int mobility;
+};
+const std::map<QString, ExpectedReport> &expectedReports()
+{
+    static const std::map<QString, ExpectedReport> reports {
+        {QStringLiteral("pjoint-prototype"), {"= 1", "= −5", 1}},
+        {QStringLiteral("moma-3a"), {"= 2", "= −1", 2}},
+        {QStringLiteral("fivebar-example"), {"= 2", "= −1", 2}},
+        {QStringLiteral("oxglide-prototype"), {"", "= 1", 4}},
+        {QStringLiteral("fourbar-example"), {"= 1", "= −2", 1}},
+    };
+    return reports;
+}
+} // namespace
 
 class TestMobilityWindow : public QObject
 {
@@ -45,12 +67,8 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        m_window = new MainWindow;
-        m_window->resize(1600, 1000);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window = freshMainWindow({1600, 1000});
+        QVERIFY(m_window);
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -107,35 +125,17 @@ private slots:
     }
 
     /// Every preset kind through the window: the numbers of the report.
-    void presets_data()
-    {
-        QTest::addColumn<QString>("preset");
-        QTest::addColumn<QString>("chebyshev");
-        QTest::addColumn<QString>("somovMalyshev");
-        QTest::addColumn<int>("mobility");
-        QTest::newRow("pjoint") << "pjoint-prototype"
-                                << "= 1"
-                                << "= −5" << 1;
-        QTest::newRow("moma") << "moma-3a"
-                              << "= 2"
-                              << "= −1" << 2;
-        QTest::newRow("fivebar") << "fivebar-example"
-                                 << "= 2"
-                                 << "= −1" << 2;
-        QTest::newRow("oxglide") << "oxglide-prototype"
-                                 << ""
-                                 << "= 1" << 4;
-        QTest::newRow("fourbar") << "fourbar-example"
-                                 << "= 1"
-                                 << "= −2" << 1;
-    }
+    void presets_data() { addPresetPerKindRows(); }
 
     void presets()
     {
-        QFETCH(QString, preset);
-        QFETCH(QString, chebyshev);
-        QFETCH(QString, somovMalyshev);
-        QFETCH(int, mobility);
+        PKM_FETCH_PRESET(preset);
+        const auto expected = expectedReports().find(preset);
+        QVERIFY2(expected != expectedReports().end(),
+            qPrintable(QStringLiteral("no expected report for preset %1: add it to expectedReports()").arg(preset)));
+        const QString chebyshev = QString::fromUtf8(expected->second.chebyshev);
+        const QString somovMalyshev = QString::fromUtf8(expected->second.somovMalyshev);
+        const int mobility = expected->second.mobility;
         QVERIFY(open(qPrintable(preset)));
         if (chebyshev.isEmpty())
             QVERIFY(panel()->partText(Part::Chebyshev).contains(QStringLiteral("Does not apply")));

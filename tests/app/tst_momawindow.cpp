@@ -11,22 +11,21 @@
 #include "variablepanel.h"
 #include "workspacemapview.h"
 #include "kinds/workspacepanel.h"
+#include "support/app.h"
+#include "support/process.h"
 
 #include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QPushButton>
-#include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <qcustomplot.h>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 constexpr double deg = units::degree;
@@ -36,27 +35,6 @@ double parameter(MainWindow &w, const char *name)
     return w.document()->mechanism()->parameters().at(name);
 }
 
-/// Press, move and release the left button in a widget (device pixels).
-void drag(QWidget *widget, QPointF from, QPointF to, int steps = 8)
-{
-    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, from.toPoint());
-    for (int i = 1; i <= steps; ++i) {
-        const QPointF at = from + (to - from) * (double(i) / steps);
-        QMouseEvent move(QEvent::MouseMove, at, widget->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
-                         Qt::NoModifier);
-        QApplication::sendEvent(widget, &move);
-    }
-    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, to.toPoint());
-}
-
-QJsonObject runCli(const QStringList &arguments)
-{
-    QProcess process;
-    process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), arguments);
-    if (!process.waitForFinished(60000) || process.exitCode() != 0)
-        return {};
-    return QJsonDocument::fromJson(process.readAllStandardOutput()).object();
-}
 } // namespace
 
 class TestMomaWindow : public QObject
@@ -80,12 +58,8 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        m_window = new MainWindow;
-        m_window->resize(1800, 1000);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window = freshMainWindow({1800, 1000});
+        QVERIFY(m_window);
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -224,12 +198,12 @@ private slots:
     {
         QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
         QVERIFY(waitForMap());
-        const QJsonObject workspace = runCli({QStringLiteral("workspace"), QStringLiteral("moma-3a"), QStringLiteral("--grid"),
-                                              QString::number(map()->resolution()), QStringLiteral("--json")});
+        const QJsonObject workspace = pkmJson({QStringLiteral("workspace"), QStringLiteral("moma-3a"),
+            QStringLiteral("--grid"), QString::number(map()->resolution()), QStringLiteral("--json")});
         QVERIFY(!workspace.isEmpty());
         QVERIFY(std::abs(workspace.value(QStringLiteral("area")).toDouble() - map()->area()) < 1e-6 * map()->area());
         const Pose pose = m_window->document()->pose();
-        const QJsonObject eval = runCli({QStringLiteral("eval"), QStringLiteral("moma-3a"), QStringLiteral("--json")});
+        const QJsonObject eval = pkmJson({QStringLiteral("eval"), QStringLiteral("moma-3a"), QStringLiteral("--json")});
         const QJsonObject cliPose = eval.value(QStringLiteral("pose")).toObject();
         QVERIFY(std::abs(cliPose.value(QStringLiteral("x")).toDouble() - pose.outputs[0]) < 1e-9);
         QVERIFY(std::abs(cliPose.value(QStringLiteral("y")).toDouble() - pose.outputs[1]) < 1e-9);

@@ -11,46 +11,25 @@
 #include "kinds/oxglide/oxglide.h"
 #include "kinds/oxglide/oxglidepanel.h"
 #include "variablepanel.h"
+#include "support/app.h"
+#include "support/process.h"
 
 #include <qcustomplot.h>
 
 #include <QAction>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
-#include <QProcess>
 #include <QImage>
 #include <QPushButton>
-#include <QSettings>
-#include <QStandardPaths>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
-void drag(QWidget *widget, QPointF from, QPointF to, int steps = 8)
-{
-    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, from.toPoint());
-    for (int i = 1; i <= steps; ++i) {
-        const QPointF at = from + (to - from) * (double(i) / steps);
-        QMouseEvent move(QEvent::MouseMove, at, widget->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
-        QApplication::sendEvent(widget, &move);
-    }
-    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, to.toPoint());
-}
-
-QJsonObject runCli(const QStringList &arguments)
-{
-    QProcess process;
-    process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), arguments);
-    if (!process.waitForFinished(60000) || process.exitCode() != 0)
-        return {};
-    return QJsonDocument::fromJson(process.readAllStandardOutput()).object();
-}
-
 int form(const MainWindow &w)
 {
     return dynamic_cast<const OxGlide &>(*w.document()->mechanism()).design().form;
@@ -69,12 +48,8 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        m_window = new MainWindow;
-        m_window->resize(1800, 1000);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window = freshMainWindow({1800, 1000});
+        QVERIFY(m_window);
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -111,8 +86,8 @@ private slots:
         // the marker is in both regions: the preset pose is an O pose
         QCOMPARE(view->formsAt(pose().outputs.head<2>()).size(), std::size_t(2));
         // the CLI's areas on a fine grid agree
-        const QJsonObject cli = runCli({QStringLiteral("workspace"), QStringLiteral("oxglide-prototype"), QStringLiteral("--grid"),
-                                        QStringLiteral("1600"), QStringLiteral("--json")});
+        const QJsonObject cli = pkmJson({QStringLiteral("workspace"), QStringLiteral("oxglide-prototype"),
+            QStringLiteral("--grid"), QStringLiteral("1600"), QStringLiteral("--json")});
         QVERIFY(!cli.isEmpty());
         QVERIFY(std::abs(cli.value(QStringLiteral("area_O")).toDouble() - oxglide::exactArea(d, oxglide::formO)) < 0.01 * 753.0);
         QVERIFY(std::abs(cli.value(QStringLiteral("area_X")).toDouble() - oxglide::exactArea(d, oxglide::formX)) < 0.01 * 2125.0);
@@ -120,10 +95,9 @@ private slots:
         // and its picture is fig. 5: the O region (the design's own, darker) inside the X region
         QTemporaryDir directory;
         const QString path = directory.filePath(QStringLiteral("fig5.png"));
-        QProcess process;
-        process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), {QStringLiteral("workspace"), QStringLiteral("oxglide-prototype"),
-                                                              QStringLiteral("--grid"), QStringLiteral("800"), QStringLiteral("-o"), path});
-        QVERIFY(process.waitForFinished(60000) && process.exitCode() == 0);
+        const Run run = runPkm({QStringLiteral("workspace"), QStringLiteral("oxglide-prototype"),
+            QStringLiteral("--grid"), QStringLiteral("800"), QStringLiteral("-o"), path});
+        QVERIFY(run.exitCode == 0);
         const QImage picture(path);
         QVERIFY(!picture.isNull());
         qsizetype dark = 0, light = 0;
@@ -234,10 +208,10 @@ private slots:
         QVERIFY(std::abs(pose().outputs[1] - startHeight) < 1e-6);
         QVERIFY(pose().inputs[0] > pose().inputs[1]); // crossed
         // the CLI agrees with the window at this pose
-        const QJsonObject cli = runCli({QStringLiteral("eval"), QStringLiteral("oxglide-prototype"), QStringLiteral("--set"),
-                                        QStringLiteral("mode=X"), QStringLiteral("--set"),
-                                        QStringLiteral("x=%1").arg(pose().outputs[0], 0, 'g', 17), QStringLiteral("--set"),
-                                        QStringLiteral("y=%1").arg(pose().outputs[1], 0, 'g', 17), QStringLiteral("--json")});
+        const QJsonObject cli = pkmJson({QStringLiteral("eval"), QStringLiteral("oxglide-prototype"),
+            QStringLiteral("--set"), QStringLiteral("mode=X"), QStringLiteral("--set"),
+            QStringLiteral("x=%1").arg(pose().outputs[0], 0, 'g', 17), QStringLiteral("--set"),
+            QStringLiteral("y=%1").arg(pose().outputs[1], 0, 'g', 17), QStringLiteral("--json")});
         const QJsonObject cliPose = cli.value(QStringLiteral("pose")).toObject();
         QCOMPARE(cliPose.value(QStringLiteral("mode")).toString(), QStringLiteral("X"));
         QVERIFY(std::abs(cliPose.value(QStringLiteral("x_AB")).toDouble() - pose().inputs[0]) < 1e-9);

@@ -13,6 +13,8 @@
 #include "gui/viewpicture.h"
 #include "workspacemapview.h"
 #include "kinds/workspacepanel.h"
+#include "support/app.h"
+#include "support/process.h"
 
 #include <qcustomplot.h>
 
@@ -24,11 +26,8 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QProcess>
 #include <QRegularExpression>
-#include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -38,6 +37,7 @@
 #include <cmath>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 
@@ -67,34 +67,6 @@ QStringList svgTexts(const QByteArray &bytes, QString *error)
     return texts;
 }
 
-QString poppler(const QString &tool, const QStringList &arguments)
-{
-    const QString program = QStandardPaths::findExecutable(tool);
-    if (program.isEmpty())
-        return {};
-    QProcess process;
-    process.start(program, arguments);
-    if (!process.waitForFinished(30000))
-        return {};
-    return QString::fromUtf8(process.readAllStandardOutput());
-}
-
-QSizeF pdfPageSize(const QString &info)
-{
-    const QRegularExpressionMatch match
-        = QRegularExpression(QStringLiteral("Page size:\\s*([0-9.]+) x ([0-9.]+) pts")).match(info);
-    return match.hasMatch() ? QSizeF(match.captured(1).toDouble(), match.captured(2).toDouble()) : QSizeF();
-}
-
-QMenu *openMenu(QWidget *widget)
-{
-    for (QMenu *menu : widget->findChildren<QMenu *>()) {
-        if (menu->isVisible())
-            return menu;
-    }
-    return nullptr;
-}
-
 } // namespace
 
 class TestPictures : public QObject
@@ -117,12 +89,8 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        m_window = new MainWindow;
-        m_window->resize(1800, 1000);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window = freshMainWindow({1800, 1000});
+        QVERIFY(m_window);
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -131,15 +99,12 @@ private slots:
 
     void everyPlotHasTheMenu_data()
     {
-        QTest::addColumn<QString>("preset");
-        for (const char *preset :
-            {"pjoint-prototype", "moma-3a", "oxglide-prototype", "fourbar-example", "fivebar-example"})
-            QTest::newRow(preset) << QString::fromLatin1(preset);
+        addPresetPerKindRows(); // every kind of mechanism, as it comes with the program
     }
 
     void everyPlotHasTheMenu()
     {
-        QFETCH(QString, preset);
+        PKM_FETCH_PRESET(preset);
         QVERIFY(m_window->openDesign(preset));
         QCoreApplication::processEvents();
         WorkspaceMapView *map = m_window->workspacePanel()->mapView();

@@ -8,6 +8,8 @@
 #include "export/workspacepictures.h"
 #include "report/numberformat.h"
 #include "scenepainter.h"
+#include "support/app.h"
+#include "support/process.h"
 
 #include <QImage>
 #include <QJsonArray>
@@ -23,62 +25,53 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 
 constexpr double degree = std::numbers::pi / 180.0;
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
+/// The mobility `pkm eval --json` reports for the designs of each kind at a regular pose:
+/// Chebyshev's W (−100: null, a spatial chain), Somov–Malyshev's W, the mobility (numerical and
+/// finite), the actuated freedoms and whether they control the mechanism.
+struct ExpectedMobility {
+    int chebyshev;
+    int somovMalyshev;
+    int numerical;
+    int actuators;
+    bool fullyActuated;
 };
-
-Run runPkm(const QStringList &arguments, const QProcessEnvironment &environment = QProcessEnvironment::systemEnvironment())
+const std::map<QString, ExpectedMobility> &expectedMobility()
 {
-    QProcess process;
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), arguments);
-    Run run;
-    if (!process.waitForStarted(10000) || !process.waitForFinished(60000))
-        return run;
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    static const std::map<QString, ExpectedMobility> expected {
+        {QStringLiteral("fourbar"), {1, -2, 1, 1, true}},
+        {QStringLiteral("pjoint"), {1, -5, 1, 1, true}},
+        {QStringLiteral("moma"), {2, -1, 2, 2, true}},
+        {QStringLiteral("fivebar"), {2, -1, 2, 2, true}},
+        // spatial, as built: the platform swings in its plane besides z, x_AB, x_CD (mobility.h)
+        {QStringLiteral("oxglide"), {-100, 1, 4, 3, false}},
+    };
+    return expected;
 }
 
-QJsonObject evalJson(const QStringList &sets, int *exitCode = nullptr)
+/// The first pose variable of each kind's caption ("pjoint-prototype — d = 183.10 mm, …").
+const std::map<QString, QString> &firstCaptionSymbol()
 {
-    QStringList arguments{QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--json")};
-    for (const QString &set : sets)
-        arguments << QStringLiteral("--set") << set;
-    const Run run = runPkm(arguments);
-    if (exitCode)
-        *exitCode = run.exitCode;
-    return QJsonDocument::fromJson(run.out).object();
+    static const std::map<QString, QString> symbols {{QStringLiteral("pjoint"), QStringLiteral("d")},
+        {QStringLiteral("moma"), QStringLiteral("p₁")}, {QStringLiteral("oxglide"), QStringLiteral("x_AB")},
+        {QStringLiteral("fourbar"), QStringLiteral("α")}, {QStringLiteral("fivebar"), QStringLiteral("θ₁")}};
+    return symbols;
 }
 
 /// Runs `pkm ARGUMENTS... --json` and parses stdout; the exit status goes to `exitCode`.
 QJsonObject runJson(QStringList arguments, int *exitCode = nullptr)
 {
-    arguments << QStringLiteral("--json");
-    const Run run = runPkm(arguments);
-    if (exitCode)
-        *exitCode = run.exitCode;
-    return QJsonDocument::fromJson(run.out).object();
-}
-
-QStringList args(std::initializer_list<const char *> arguments)
-{
-    QStringList list;
-    for (const char *argument : arguments)
-        list << QString::fromUtf8(argument);
-    return list;
+    return pkmJson(arguments << QStringLiteral("--json"), exitCode);
 }
 
 QString number(double value)
@@ -157,12 +150,6 @@ qsizetype pixelsUnlike(const QImage &image, QRgb colour, int tolerance = 24)
         }
     }
     return count;
-}
-
-QByteArray fileBytes(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 QStringList directoryEntries(const QTemporaryDir &directory)
@@ -394,7 +381,7 @@ void TestCli::evalJsonHasContractKeys()
 {
     QFETCH(QString, group);
     QFETCH(QString, key);
-    static const QJsonObject root = evalJson({QStringLiteral("theta=20")});
+    static const QJsonObject root = prototypeEval({QStringLiteral("theta=20")});
     const QJsonValue value = root.value(group).toObject().value(key);
     QVERIFY2(value.isDouble(), qPrintable(group + QLatin1Char('.') + key + QStringLiteral(" is missing")));
     QVERIFY(std::isfinite(value.toDouble()));
@@ -403,7 +390,7 @@ void TestCli::evalJsonHasContractKeys()
 void TestCli::evalJsonTopLevel()
 {
     int exitCode = -1;
-    const QJsonObject root = evalJson({}, &exitCode);
+    const QJsonObject root = prototypeEval({}, &exitCode);
     QCOMPARE(exitCode, 0);
     QCOMPARE(root.keys().size(), 7);
     QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("pjoint"));
@@ -421,7 +408,7 @@ void TestCli::evalJsonTopLevel()
 void TestCli::prototypeNumbers()
 {
     // Section 4.2 / Table 1: d_max ≈ 231.4, d_min ≈ 116.2, stroke ≈ 115.2 mm.
-    const QJsonObject derived = evalJson({}).value(QStringLiteral("derived")).toObject();
+    const QJsonObject derived = prototypeEval({}).value(QStringLiteral("derived")).toObject();
     QVERIFY(std::abs(derived.value(QStringLiteral("d_max")).toDouble() - 231.4) < 0.05);
     QVERIFY(std::abs(derived.value(QStringLiteral("d_min")).toDouble() - 116.2) < 0.05);
     QVERIFY(std::abs(derived.value(QStringLiteral("stroke")).toDouble() - 115.2) < 0.05);
@@ -440,7 +427,7 @@ void TestCli::inverseThenDirect()
     const double a = 170.0;
     const double k = 0.4;
     int exitCode = -1;
-    const QJsonObject inverse = evalJson({QStringLiteral("theta=") + number(theta)}, &exitCode);
+    const QJsonObject inverse = prototypeEval({QStringLiteral("theta=") + number(theta)}, &exitCode);
     QCOMPARE(exitCode, 0);
     const QJsonObject pose = inverse.value(QStringLiteral("pose")).toObject();
     const double d = pose.value(QStringLiteral("d")).toDouble();
@@ -452,7 +439,7 @@ void TestCli::inverseThenDirect()
     const double J = inverse.value(QStringLiteral("jacobian")).toObject().value(QStringLiteral("J")).toDouble();
     QCOMPARE(J, a * std::sin(mu * degree));
 
-    const QJsonObject direct = evalJson({QStringLiteral("d=") + number(d)}, &exitCode);
+    const QJsonObject direct = prototypeEval({QStringLiteral("d=") + number(d)}, &exitCode);
     QCOMPARE(exitCode, 0);
     const double back = direct.value(QStringLiteral("pose")).toObject().value(QStringLiteral("theta")).toDouble();
     QVERIFY2(std::abs(back - theta) < 1e-9, qPrintable(number(back)));
@@ -461,7 +448,8 @@ void TestCli::inverseThenDirect()
 void TestCli::settingKResizesCoupler()
 {
     int exitCode = -1;
-    const QJsonObject parameters = evalJson({QStringLiteral("k=0.5")}, &exitCode).value(QStringLiteral("parameters")).toObject();
+    const QJsonObject parameters
+        = prototypeEval({QStringLiteral("k=0.5")}, &exitCode).value(QStringLiteral("parameters")).toObject();
     QCOMPARE(exitCode, 0);
     QCOMPARE(parameters.value(QStringLiteral("b")).toDouble(), 85.0);
     QCOMPARE(parameters.value(QStringLiteral("a")).toDouble(), 170.0);
@@ -474,7 +462,7 @@ void TestCli::parameterOrderDoesNotMatter()
     for (const QStringList &sets : {QStringList {QStringLiteral("k=0.5"), QStringLiteral("a=200")},
                                     QStringList {QStringLiteral("a=200"), QStringLiteral("k=0.5")}}) {
         int exitCode = -1;
-        const QJsonObject parameters = evalJson(sets, &exitCode).value(QStringLiteral("parameters")).toObject();
+        const QJsonObject parameters = prototypeEval(sets, &exitCode).value(QStringLiteral("parameters")).toObject();
         QCOMPARE(exitCode, 0);
         QCOMPARE(parameters.value(QStringLiteral("b")).toDouble(), 100.0);
         QCOMPARE(parameters.value(QStringLiteral("k")).toDouble(), 0.5);
@@ -495,11 +483,11 @@ void TestCli::changedParameterKeepsPose()
 {
     // --set applies the parameters first, then the pose: θ = 70° is reachable once θ_max = 80°.
     int exitCode = -1;
-    const QJsonObject root = evalJson({QStringLiteral("theta=70"), QStringLiteral("theta_max=80")}, &exitCode);
+    const QJsonObject root = prototypeEval({QStringLiteral("theta=70"), QStringLiteral("theta_max=80")}, &exitCode);
     QCOMPARE(exitCode, 0);
     QCOMPARE(root.value(QStringLiteral("pose")).toObject().value(QStringLiteral("theta")).toDouble(), 70.0);
     // A new a keeps the stored θ = 0 and re-solves d for the new design.
-    const QJsonObject pose = evalJson({QStringLiteral("a=200")}).value(QStringLiteral("pose")).toObject();
+    const QJsonObject pose = prototypeEval({QStringLiteral("a=200")}).value(QStringLiteral("pose")).toObject();
     QCOMPARE(pose.value(QStringLiteral("theta")).toDouble(), 0.0);
     QCOMPARE(pose.value(QStringLiteral("d")).toDouble(), std::sqrt(200.0 * 200.0 + 68.0 * 68.0));
 }
@@ -1413,19 +1401,16 @@ void TestCli::mapColourLimitIgnoresSpikes()
 
 void TestCli::render2dPng_data()
 {
-    QTest::addColumn<QString>("design");
-    QTest::addColumn<QString>("captionStart");
-    QTest::newRow("pjoint-prototype") << QStringLiteral("pjoint-prototype")
-                                      << QStringLiteral("pjoint-prototype — d = ");
-    QTest::newRow("moma-3a") << QStringLiteral("moma-3a") << QStringLiteral("moma-3a — p₁ = ");
-    QTest::newRow("oxglide-prototype") << QStringLiteral("oxglide-prototype")
-                                       << QStringLiteral("oxglide-prototype — x_AB = ");
+    addPresetPerKindRows("design");
 }
 
 void TestCli::render2dPng()
 {
-    QFETCH(QString, design);
-    QFETCH(QString, captionStart);
+    PKM_FETCH_PRESET(design);
+    const auto symbol = firstCaptionSymbol().find(kindOfPreset(design));
+    QVERIFY2(symbol != firstCaptionSymbol().end(),
+        qPrintable(QStringLiteral("no caption symbol of %1's kind: add it to firstCaptionSymbol()").arg(design)));
+    const QString captionStart = design + QStringLiteral(" — ") + symbol->second + QStringLiteral(" = ");
     QTemporaryDir directory;
     const QString path = directory.filePath(design + QStringLiteral(".png"));
     {
@@ -1904,7 +1889,7 @@ void TestCli::sweepJson()
     for (const char *key : {"pose", "jacobian", "singularity", "derived"})
         QVERIFY2(row.value(QLatin1String(key)).isObject(), key);
     // The row holds exactly what eval prints for the same pose.
-    const QJsonObject eval = evalJson({QStringLiteral("theta=30")});
+    const QJsonObject eval = prototypeEval({QStringLiteral("theta=30")});
     for (const char *key : {"pose", "jacobian", "singularity", "derived"})
         QCOMPARE(row.value(QLatin1String(key)), eval.value(QLatin1String(key)));
 }
@@ -2346,32 +2331,21 @@ void TestCli::fourbarSweepFullTurn()
 
 void TestCli::evalMobility_data()
 {
-    QTest::addColumn<QString>("preset");
-    QTest::addColumn<int>("chebyshev"); // −100: null (a spatial chain)
-    QTest::addColumn<int>("somovMalyshev");
-    QTest::addColumn<int>("numerical");
-    QTest::addColumn<int>("actuators");
-    QTest::addColumn<bool>("fullyActuated");
-    QTest::newRow("fourbar-example") << QStringLiteral("fourbar-example") << 1 << -2 << 1 << 1 << true;
-    QTest::newRow("pjoint-prototype") << QStringLiteral("pjoint-prototype") << 1 << -5 << 1 << 1 << true;
-    QTest::newRow("moma-3a") << QStringLiteral("moma-3a") << 2 << -1 << 2 << 2 << true;
-    QTest::newRow("moma-3d") << QStringLiteral("moma-3d") << 2 << -1 << 2 << 2 << true;
-    // spatial, as built: the platform swings in its plane besides z, x_AB, x_CD (mobility.h)
-    QTest::newRow("oxglide-prototype") << QStringLiteral("oxglide-prototype") << -100 << 1 << 4 << 3 << false;
+    addEveryPresetRows();
 }
 
 /// eval --json has "mobility": the formulas, the rank, and the verdict; the other keys stay.
 void TestCli::evalMobility()
 {
     QFETCH(QString, preset);
-    QFETCH(int, chebyshev);
-    QFETCH(int, somovMalyshev);
-    QFETCH(int, numerical);
-    QFETCH(int, actuators);
-    QFETCH(bool, fullyActuated);
     int exitCode = -1;
     const QJsonObject root = runJson({QStringLiteral("eval"), preset}, &exitCode);
     QCOMPARE(exitCode, 0);
+    const QString kind = root.value(QStringLiteral("mechanism")).toString();
+    const auto expected = expectedMobility().find(kind);
+    QVERIFY2(expected != expectedMobility().end(),
+        qPrintable(QStringLiteral("no expected mobility of kind %1: add it to expectedMobility()").arg(kind)));
+    const auto [chebyshev, somovMalyshev, numerical, actuators, fullyActuated] = expected->second;
     const QJsonObject m = root.value(QStringLiteral("mobility")).toObject();
     if (chebyshev == -100)
         QVERIFY(m.value(QStringLiteral("chebyshev")).isNull());

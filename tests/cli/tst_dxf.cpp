@@ -8,6 +8,7 @@
 #include "cli/drawingcommands.h"
 #include "export/dxfwriter.h"
 #include "gui/mainwindow.h"
+#include "support/process.h"
 
 #include <QAction>
 #include <QApplication>
@@ -29,44 +30,13 @@
 #include <numbers>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
-
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runProgram(const QString &program, const QStringList &arguments)
-{
-    QProcess process;
-    process.start(program, arguments);
-    Run run;
-    if (!process.waitForStarted(10000) || !process.waitForFinished(120000))
-        return run;
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
-
-Run runPkm(const QStringList &arguments)
-{
-    return runProgram(QStringLiteral(PKM_BINARY_DIR "/pkm"), arguments);
-}
 
 QString u(const char *text)
 {
     return QString::fromUtf8(text);
-}
-
-QStringList args(std::initializer_list<const char *> arguments)
-{
-    QStringList list;
-    for (const char *argument : arguments)
-        list << QString::fromUtf8(argument);
-    return list;
 }
 
 /// A DXF file as its (group code, value) pairs; a malformed file gives an empty list.

@@ -6,6 +6,8 @@
 #include "cli/drawingcommands.h"
 #include "document/language.h"
 #include "gui/mainwindow.h"
+#include "support/app.h"
+#include "support/process.h"
 #include "text.h"
 
 #include <QApplication>
@@ -30,36 +32,9 @@
 #include <cmath>
 #include <cstdio>
 
+using namespace pkm::test;
+
 namespace {
-
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runPkm(const QStringList &arguments,
-    const QProcessEnvironment &environment = QProcessEnvironment::systemEnvironment())
-{
-    QProcess process;
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(PKM_BINARY_DIR "/pkm"), arguments);
-    Run run;
-    if (!process.waitForStarted(10000) || !process.waitForFinished(120000))
-        return run;
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
-
-QJsonObject readJson(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(file.readAll()).object();
-}
 
 /// One parsed CSV record (RFC 4180 quoting).
 QList<QStringList> readCsv(const QString &path)
@@ -98,14 +73,6 @@ QList<QStringList> readCsv(const QString &path)
         }
     }
     return records;
-}
-
-QJsonObject evalJson(const QStringList &sets = {})
-{
-    QStringList arguments {QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--json")};
-    for (const QString &set : sets)
-        arguments << QStringLiteral("--set") << set;
-    return QJsonDocument::fromJson(runPkm(arguments).out).object();
 }
 
 /// The row `key` of a sheet table.
@@ -277,7 +244,7 @@ void TestSheet::pjointPdfShowsTheNumbers()
     QVERIFY(text.contains(QStringLiteral("Active П-joint")));
 
     // every parameter as eval gives it, with the sheet's decimals
-    const QJsonObject eval = evalJson();
+    const QJsonObject eval = prototypeEval();
     const QJsonObject parameters = eval[QStringLiteral("parameters")].toObject();
     const QJsonObject values = section(m_prototype, QStringLiteral("parameters"))[QStringLiteral("values")].toObject();
     QVERIFY(parameters.size() >= 10);
@@ -304,7 +271,7 @@ void TestSheet::pjointPdfShowsTheNumbers()
         const char *label;
     } poses[] = {{"theta=-60", "θ_min"}, {"theta=0", "θ = 0"}, {"theta=60", "θ_max"}};
     for (const auto &pose : poses) {
-        const QJsonObject at = evalJson({QLatin1String(pose.set)});
+        const QJsonObject at = prototypeEval({QLatin1String(pose.set)});
         const QString d = fixed(at[QStringLiteral("pose")][QStringLiteral("d")].toDouble(), 2);
         const QString torque = fixed(at[QStringLiteral("derived")][QStringLiteral("torque")].toDouble(), 3);
         const QString label = QString::fromUtf8(pose.label);
@@ -330,7 +297,7 @@ void TestSheet::pjointJsonMatchesEval()
     QCOMPARE(sheet[QStringLiteral("design")].toString(), QStringLiteral("pjoint-prototype"));
     QCOMPARE(sheet[QStringLiteral("mechanism")].toString(), QStringLiteral("pjoint"));
     QCOMPARE(sheet[QStringLiteral("version")].toString(), QStringLiteral(PKM_VERSION));
-    const QJsonObject eval = evalJson();
+    const QJsonObject eval = prototypeEval();
     const QJsonObject parameters = eval[QStringLiteral("parameters")].toObject();
     for (auto it = parameters.begin(); it != parameters.end(); ++it)
         QCOMPARE(value(sheet, QStringLiteral("parameters"), it.key()), it.value().toDouble());
@@ -346,7 +313,7 @@ void TestSheet::pjointJsonMatchesEval()
     for (const auto &row : rows) {
         const QJsonObject cells = tableRow(sheet, QStringLiteral("key_poses"), QStringLiteral("poses"), QLatin1String(row.row))[QStringLiteral("values")].toObject();
         QVERIFY2(!cells.isEmpty(), row.row);
-        const QJsonObject at = evalJson({QLatin1String(row.set)});
+        const QJsonObject at = prototypeEval({QLatin1String(row.set)});
         for (const char *name : {"theta", "d", "phi", "mu"})
             QVERIFY2(close(cells[QLatin1String(name)].toDouble(), at[QStringLiteral("pose")][QLatin1String(name)].toDouble()), name);
         QVERIFY(close(cells[QStringLiteral("J")].toDouble(), at[QStringLiteral("jacobian")][QStringLiteral("J")].toDouble()));
@@ -390,7 +357,7 @@ void TestSheet::pjointActuatorCheck()
     QCOMPARE(result(checks, "speed"), QStringLiteral("FAIL"));
     QCOMPARE(result(checks, "resolution"), QStringLiteral("FAIL"));
     // the least torque is at θ_max: T = J·F_max there
-    const QJsonObject atMax = evalJson({QStringLiteral("theta=60")});
+    const QJsonObject atMax = prototypeEval({QStringLiteral("theta=60")});
     QVERIFY(close(checks[QStringLiteral("torque")][QStringLiteral("value")].toDouble(),
         atMax[QStringLiteral("derived")][QStringLiteral("torque")].toDouble(), 1e-9));
     QCOMPARE(result(checks, "motor_torque"), QStringLiteral("INFO"));
@@ -409,15 +376,12 @@ void TestSheet::pjointActuatorCheck()
 
 void TestSheet::csvMatchesJson_data()
 {
-    QTest::addColumn<QString>("design");
-    QTest::newRow("pjoint") << QStringLiteral("pjoint-prototype");
-    QTest::newRow("oxglide") << QStringLiteral("oxglide-prototype");
-    QTest::newRow("fourbar") << QStringLiteral("fourbar-example");
+    addPresetPerKindRows("design"); // every kind's sections and tables
 }
 
 void TestSheet::csvMatchesJson()
 {
-    QFETCH(QString, design);
+    PKM_FETCH_PRESET(design);
     const QString json = path(design + QStringLiteral("-match.json")), csv = path(design + QStringLiteral("-match.csv"));
     QCOMPARE(runPkm({QStringLiteral("sheet"), design, QStringLiteral("-o"), json}).exitCode, 0);
     QCOMPARE(runPkm({QStringLiteral("sheet"), design, QStringLiteral("-o"), csv}).exitCode, 0);

@@ -6,6 +6,7 @@
 // their culprit, dragging, the drawing and the preset.
 #include "kinds/fivebar/fivebar.h"
 #include "registry.h"
+#include "support/kinematics.h"
 
 #include <QFile>
 #include <QJsonDocument>
@@ -23,6 +24,7 @@
 #include <vector>
 
 using namespace pkm;
+using namespace pkm::test;
 
 Q_DECLARE_METATYPE(pkm::ParameterSet)
 Q_DECLARE_METATYPE(pkm::FiveBarDesign)
@@ -31,14 +33,6 @@ namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double deg = units::degree;
 constexpr double notANumber = std::numeric_limits<double>::quiet_NaN();
-
-std::shared_ptr<const FiveBar> make(const FiveBarDesign &design)
-{
-    auto made = FiveBar::create(design);
-    if (!made)
-        qFatal("%s", made.failure().message.c_str());
-    return std::static_pointer_cast<const FiveBar>(*made);
-}
 
 /// The example design (AE = 100, AB = DE = 80, BC = CD = 120 mm) in mode combination `modes`:
 /// bit 0 working1 = left, bit 1 working2 = left, bit 2 assembly = left.
@@ -53,13 +47,6 @@ QByteArray modesText(int modes)
 {
     return QByteArray("w1 ") + (modes & 1 ? "L" : "R") + " w2 " + (modes & 2 ? "L" : "R") + " σ "
         + (modes & 4 ? "L" : "R");
-}
-
-Coordinates pair(double a, double b)
-{
-    Coordinates c(2);
-    c << a, b;
-    return c;
 }
 
 Eigen::Vector2d pointOf(const Pose &pose)
@@ -80,12 +67,6 @@ Eigen::Vector2d rotated(const Eigen::Vector2d &v, double angle)
 double scaleOf(const FiveBarDesign &d)
 {
     return std::max({d.ground, d.crank[0], d.crank[1], d.link[0], d.link[1]});
-}
-
-/// A reproducible uniform number in [lo, hi) (the engine's output is the same everywhere).
-double uniform(std::mt19937 &generator, double lo, double hi)
-{
-    return lo + (hi - lo) * (generator() / 4294967296.0);
 }
 
 /// Random lengths (some designs have limited crank ranges); modes left to the caller.
@@ -151,25 +132,6 @@ QByteArray violation(const FiveBarDesign &d, const Pose &pose, double tolerance)
     if (d.assembly * crossOf(P[1] - P[0], C - P[0]) < -tolerance * d.link[0] * d.link[1])
         return "other assembly mode";
     return {};
-}
-
-std::vector<double> evaluated(const Mechanism &m, const Pose &pose, Singularity *singularity = nullptr)
-{
-    std::vector<double> values(std::size_t(m.reportLayout().size), notANumber);
-    const Singularity s = m.evaluate(pose, values);
-    if (singularity)
-        *singularity = s;
-    return values;
-}
-
-/// The named report entry: its first value, or the whole 2×2 matrix.
-double value(const Mechanism &m, const std::vector<double> &values, const char *name)
-{
-    return values[std::size_t(m.reportLayout().find(name)->offset)];
-}
-Eigen::Matrix2d matrix(const Mechanism &m, const std::vector<double> &values, const char *name)
-{
-    return Eigen::Matrix<double, 2, 2, Eigen::RowMajor>(&values[std::size_t(m.reportLayout().find(name)->offset)]);
 }
 
 /// Round-trip tolerance (mm): rounding ε, or √ε where a square root of a near-zero triangle
@@ -420,13 +382,9 @@ void TestFiveBar::jacobiansAgainstFiniteDifferences()
             QVERIFY((jq - j.inputs).norm() <= 1e-6 * j.inputs.norm());
             QVERIFY((j.inputs * j.full - j.outputs).norm() <= 1e-12 * j.outputs.norm());
             // J = dθ/dC: the inverse kinematics of C ± h
-            Eigen::Matrix2d numeric;
-            for (int k = 0; k < 2; ++k) {
-                const Eigen::Vector2d step = h * Eigen::Vector2d::Unit(k);
-                auto up = m->solveInverse(C + step, &*pose), down = m->solveInverse(C - step, &*pose);
-                QVERIFY(up && down);
-                numeric.col(k) = (up->inputs - down->inputs) / (2 * h);
-            }
+            const std::optional<Eigen::MatrixXd> differences = inverseDifferences(*m, pose->outputs, h, &*pose);
+            QVERIFY(differences);
+            const Eigen::Matrix2d numeric = *differences;
             QVERIFY2((numeric - j.full).norm() <= 1e-6 * j.full.norm(),
                 qPrintable(QString::number((numeric - j.full).norm())));
             // the sign conventions: det J_x has the sign of σ, k_i the sign of −w_i
@@ -454,19 +412,19 @@ void TestFiveBar::report()
             for (double value : v)
                 QVERIFY(!std::isnan(value));
             const Jacobians j = m->jacobians(*pose);
-            QCOMPARE(matrix(*m, v, "Jq"), Eigen::Matrix2d(j.inputs));
-            QCOMPARE(matrix(*m, v, "Jx"), Eigen::Matrix2d(j.outputs));
-            QVERIFY((matrix(*m, v, "J") - j.full).norm() <= 1e-15 * j.full.norm());
-            QVERIFY(std::abs(value(*m, v, "det_J") - j.full.determinant()) <= 1e-9 * std::abs(j.full.determinant()));
+            QCOMPARE(matrixEntry(*m, v, "Jq"), Eigen::Matrix2d(j.inputs));
+            QCOMPARE(matrixEntry(*m, v, "Jx"), Eigen::Matrix2d(j.outputs));
+            QVERIFY((matrixEntry(*m, v, "J") - j.full).norm() <= 1e-15 * j.full.norm());
+            QVERIFY(std::abs(entry(*m, v, "det_J") - j.full.determinant()) <= 1e-9 * std::abs(j.full.determinant()));
             QVERIFY(
-                std::abs(value(*m, v, "det_Jq") - j.inputs.determinant()) <= 1e-9 * std::abs(j.inputs.determinant()));
+                std::abs(entry(*m, v, "det_Jq") - j.inputs.determinant()) <= 1e-9 * std::abs(j.inputs.determinant()));
             QVERIFY(
-                std::abs(value(*m, v, "det_Jx") - j.outputs.determinant()) <= 1e-9 * std::abs(j.outputs.determinant()));
+                std::abs(entry(*m, v, "det_Jx") - j.outputs.determinant()) <= 1e-9 * std::abs(j.outputs.determinant()));
             // det J has the sign σ·w₁·w₂ everywhere in the workspace
-            QCOMPARE(value(*m, v, "det_J") > 0, d.assembly * d.working[0] * d.working[1] > 0);
+            QCOMPARE(entry(*m, v, "det_J") > 0, d.assembly * d.working[0] * d.working[1] > 0);
             const Eigen::JacobiSVD<Eigen::Matrix2d> svd(Eigen::Matrix2d(j.full));
-            QVERIFY(std::abs(value(*m, v, "cond") - svd.singularValues()(0) / svd.singularValues()(1))
-                <= 1e-9 * value(*m, v, "cond"));
+            QVERIFY(std::abs(entry(*m, v, "cond") - svd.singularValues()(0) / svd.singularValues()(1))
+                <= 1e-9 * entry(*m, v, "cond"));
             // the angles, measured again
             const Eigen::Vector2d A(0, 0), E(d.ground, 0), C = pointOf(*pose);
             const Eigen::Vector2d B = fivebar::elbow(d, 0, pose->inputs[0]), D = fivebar::elbow(d, 1, pose->inputs[1]);
@@ -474,15 +432,15 @@ void TestFiveBar::report()
                 return std::acos(std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0));
             };
             const double psi = angle(B - C, D - C);
-            QVERIFY(std::abs(value(*m, v, "elbow_angle1") - angle(A - B, C - B)) < 1e-9);
-            QVERIFY(std::abs(value(*m, v, "elbow_angle2") - angle(E - D, C - D)) < 1e-9);
-            QVERIFY(std::abs(value(*m, v, "links_angle") - psi) < 1e-9);
-            QVERIFY(std::abs(value(*m, v, "transmission") - std::min(psi, pi - psi)) < 1e-9);
+            QVERIFY(std::abs(entry(*m, v, "elbow_angle1") - angle(A - B, C - B)) < 1e-9);
+            QVERIFY(std::abs(entry(*m, v, "elbow_angle2") - angle(E - D, C - D)) < 1e-9);
+            QVERIFY(std::abs(entry(*m, v, "links_angle") - psi) < 1e-9);
+            QVERIFY(std::abs(entry(*m, v, "transmission") - std::min(psi, pi - psi)) < 1e-9);
             const double inverse = std::min(std::sin(angle(A - B, C - B)), std::sin(angle(E - D, C - D)));
-            QVERIFY(std::abs(value(*m, v, "margin_inverse") - inverse) < 1e-9);
-            QVERIFY(std::abs(value(*m, v, "margin_direct") - std::sin(psi)) < 1e-9);
-            QCOMPARE(value(*m, v, "margin"), s.margin);
-            QCOMPARE(s.margin, std::min(value(*m, v, "margin_inverse"), value(*m, v, "margin_direct")));
+            QVERIFY(std::abs(entry(*m, v, "margin_inverse") - inverse) < 1e-9);
+            QVERIFY(std::abs(entry(*m, v, "margin_direct") - std::sin(psi)) < 1e-9);
+            QCOMPARE(entry(*m, v, "margin"), s.margin);
+            QCOMPARE(s.margin, std::min(entry(*m, v, "margin_inverse"), entry(*m, v, "margin_direct")));
             ++checked;
         }
     }
@@ -707,7 +665,7 @@ void TestFiveBar::mapAgreesWithEvaluate()
                     continue;
                 Singularity s;
                 const std::vector<double> v = evaluated(*m, *pose, &s);
-                const double expected = value(*m, v, name);
+                const double expected = entry(*m, v, name);
                 QVERIFY2(std::abs(cell - expected) <= (s.margin > 1e-3 ? 1e-5 : 1e-3) * std::abs(expected),
                          where + " map " + QByteArray::number(cell) + ", evaluate " + QByteArray::number(expected));
                 QVERIFY2(std::abs(margin - s.margin) <= 1e-6, where);
@@ -765,7 +723,7 @@ void TestFiveBar::boundsAndCurves()
             pose.outputs = pair(curve.points[i].x(), curve.points[i].y());
             const std::vector<double> v = evaluated(*m, pose);
             const bool inverse = curve.type == SingularCurve::Type::Inverse;
-            QVERIFY2(value(*m, v, inverse ? "margin_inverse" : "margin_direct") < 1e-5, curve.label.c_str());
+            QVERIFY2(entry(*m, v, inverse ? "margin_inverse" : "margin_direct") < 1e-5, curve.label.c_str());
             QVERIFY(bounds.contains(curve.points[i]));
         }
     }

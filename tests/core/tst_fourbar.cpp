@@ -5,6 +5,7 @@
 // limits of α by the law of cosines, the instantaneous centre, singular poses, failures that
 // name their culprit, the other branch, dragging and the drawing.
 #include "kinds/fourbar/fourbar.h"
+#include "support/kinematics.h"
 
 #include <QTest>
 
@@ -15,6 +16,7 @@
 #include <vector>
 
 using namespace pkm;
+using namespace pkm::test;
 
 Q_DECLARE_METATYPE(pkm::ParameterSet)
 
@@ -32,21 +34,6 @@ FourBarDesign lengths(double ab, double bc, double cd, double ad, int branch = +
     d.ground = ad;
     d.branch = branch;
     return d;
-}
-
-std::shared_ptr<const FourBar> make(const FourBarDesign &design)
-{
-    auto made = FourBar::create(design);
-    if (!made)
-        qFatal("%s", made.failure().message.c_str());
-    return std::static_pointer_cast<const FourBar>(*made);
-}
-
-Coordinates one(double v)
-{
-    Coordinates c(1);
-    c << v;
-    return c;
 }
 
 /// The designs of the tests: one of each Grashof class.
@@ -100,14 +87,6 @@ double measureDelta(const FourBarDesign &d, const Eigen::Vector2d &C)
 double angleDifference(double a, double b)
 {
     return std::abs(std::remainder(a - b, 2.0 * pi));
-}
-
-/// The named value of a pose's report.
-double reportValue(const Mechanism &m, const Pose &pose, const char *name)
-{
-    std::vector<double> values(m.reportLayout().size);
-    m.evaluate(pose, values);
-    return values[std::size_t(m.reportLayout().find(name)->offset)];
 }
 
 /// α samples strictly inside the input range.

@@ -11,6 +11,7 @@
 #include "kinds/oxglide/oxglide.h"
 #include "kinds/pjoint/pjoint.h"
 #include "registry.h"
+#include "support/kinematics.h"
 
 #include <QTest>
 
@@ -18,20 +19,13 @@
 #include <numbers>
 
 using namespace pkm;
+using namespace pkm::test;
 
 Q_DECLARE_METATYPE(pkm::ParameterSet)
 
 namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double degree = pi / 180.0;
-
-MechanismPtr make(const char *kind, const ParameterSet &parameters = {})
-{
-    auto made = createMechanism(kind, parameters);
-    if (!made)
-        qFatal("%s", made.failure().message.c_str());
-    return *made;
-}
 
 Pose pose(std::initializer_list<double> inputs, std::initializer_list<double> outputs)
 {
@@ -152,7 +146,7 @@ private slots:
 
     void fourBar()
     {
-        const MechanismPtr m = make("fourbar");
+        const MechanismPtr m = makeKind("fourbar");
         QVERIFY(posesAcross(*m, 12).size() == 13);
         for (const Pose &p : posesAcross(*m, 12)) {
             const MobilityReport r = analyseMobility(m->kinematicChain(p));
@@ -171,7 +165,7 @@ private slots:
 
     void pJoint()
     {
-        const MechanismPtr m = make("pjoint");
+        const MechanismPtr m = makeKind("pjoint");
         QVERIFY(posesAcross(*m, 12).size() == 13);
         for (const Pose &p : posesAcross(*m, 12)) {
             const MobilityReport r = analyseMobility(m->kinematicChain(p));
@@ -199,7 +193,7 @@ private slots:
     void moma()
     {
         QFETCH(ParameterSet, parameters);
-        const MechanismPtr m = make("moma", parameters);
+        const MechanismPtr m = makeKind("moma", parameters);
         const std::vector<Pose> poses = posesAcross(*m, 8);
         QVERIFY(poses.size() >= 3);
         for (const Pose &p : poses) {
@@ -213,7 +207,7 @@ private slots:
 
     void fiveBar()
     {
-        const MechanismPtr m = make("fivebar");
+        const MechanismPtr m = makeKind("fivebar");
         const MobilityReport r = analyseMobility(m->kinematicChain(m->homePose()));
         checkRegular(r, {2, -1, 2, 2});
         QVERIFY(r.fullyActuated);
@@ -235,7 +229,7 @@ private slots:
     /// The planar analysis of the document assumes the platform stays parallel to the guides.
     void oxGlide()
     {
-        const MechanismPtr m = make("oxglide");
+        const MechanismPtr m = makeKind("oxglide");
         QVERIFY(posesAcross(*m, 8).size() >= 3);
         for (const Pose &p : posesAcross(*m, 8)) {
             const KinematicChain chain = m->kinematicChain(p);
@@ -281,7 +275,7 @@ private slots:
     void everyMechanismHasAChain()
     {
         for (const MechanismKind &kind : mechanismKinds()) {
-            const MechanismPtr m = make(std::string(kind.id).c_str());
+            const MechanismPtr m = makeKind(std::string(kind.id).c_str());
             const KinematicChain chain = m->kinematicChain(m->homePose());
             QVERIFY2(!chain.links.empty(), kind.id.data());
             QVERIFY(!chain.description.empty());
@@ -440,12 +434,7 @@ private slots:
     /// instantaneously: a direct singularity.
     void fourBarDeadPoint()
     {
-        FourBarDesign d;
-        d.crank = 100;
-        d.coupler = 60;
-        d.rocker = 80;
-        d.ground = 70;
-        const MechanismPtr m = *FourBar::create(d);
+        const MechanismPtr m = make(tripleRockerFourBar());
         const auto dead
             = m->solveWith(m->homePose(), FourBar::variableAlpha, m->variableRange(FourBar::variableAlpha).max);
         QVERIFY(dead.ok());
@@ -509,7 +498,7 @@ private slots:
     /// Millimetres or metres (or kilometres), anywhere in space: the same numbers.
     void independentOfUnits()
     {
-        const MechanismPtr pj = make("pjoint"), ox = make("oxglide");
+        const MechanismPtr pj = makeKind("pjoint"), ox = makeKind("oxglide");
         const std::vector<KinematicChain> chains = {pj->kinematicChain(pj->homePose()),
             ox->kinematicChain(ox->homePose()), mobility::bennettLinkage(100.0, 30 * degree, 70 * degree, 20 * degree),
             mobility::randomSpatial4R(5), mobility::spatialParallelogram(170.0, 68.0, 0.3)};

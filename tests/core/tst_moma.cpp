@@ -3,6 +3,7 @@
 // constraint, singular poses built by hand, the maps against the pose solver, the document's
 // statements about configurations 3a–3c, and failures that name their culprit.
 #include "kinds/moma/moma.h"
+#include "support/kinematics.h"
 
 #include <QTest>
 
@@ -20,10 +21,13 @@
 #include <vector>
 
 using namespace pkm;
+using namespace pkm::test;
 
 Q_DECLARE_METATYPE(pkm::ParameterSet)
 
 namespace {
+using test::make; // beside the local make() of named values
+
 constexpr double deg = units::degree;
 constexpr double pi = std::numbers::pi;
 constexpr double notANumber = std::numeric_limits<double>::quiet_NaN();
@@ -70,26 +74,11 @@ std::shared_ptr<const Moma> make(const ParameterSet &parameters)
     return std::static_pointer_cast<const Moma>(*made);
 }
 
-std::shared_ptr<const Moma> make(const MomaDesign &design)
-{
-    auto made = Moma::create(design);
-    if (!made)
-        qFatal("%s", made.failure().message.c_str());
-    return std::static_pointer_cast<const Moma>(*made);
-}
-
 /// The preset of the current data row (addPresetRows).
 std::shared_ptr<const Moma> rowMoma()
 {
     QFETCH(QString, preset);
     return make(::preset(preset));
-}
-
-Coordinates pair(double a, double b)
-{
-    Coordinates c(2);
-    c << a, b;
-    return c;
 }
 
 Eigen::Vector2d platformOf(const Pose &pose)
@@ -141,45 +130,12 @@ bool finite(const Pose &pose)
     return pose.inputs.size() == 2 && pose.outputs.size() == 2 && pose.inputs.allFinite() && pose.outputs.allFinite();
 }
 
-std::vector<double> evaluated(const Mechanism &m, const Pose &pose, Singularity *singularity = nullptr)
-{
-    std::vector<double> values(static_cast<std::size_t>(m.reportLayout().size), notANumber);
-    const Singularity s = m.evaluate(pose, values);
-    if (singularity)
-        *singularity = s;
-    return values;
-}
-
-double entry(const Mechanism &m, const std::vector<double> &values, const char *name)
-{
-    const ReportEntry *e = m.reportLayout().find(name);
-    if (!e)
-        qFatal("no report entry %s", name);
-    return values[static_cast<std::size_t>(e->offset)];
-}
-
-/// A 2×2 report entry (row-major in the buffer).
-Eigen::Matrix2d matrixEntry(const Mechanism &m, const std::vector<double> &values, const char *name)
-{
-    const ReportEntry *e = m.reportLayout().find(name);
-    if (!e || e->rows != 2 || e->cols != 2)
-        qFatal("no 2x2 report entry %s", name);
-    return Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&values[static_cast<std::size_t>(e->offset)]);
-}
-
 /// Round-trip tolerance (mm) at a pose of margin m: the solvers are exact to rounding away from
 /// singularities; next to one a square root of a near-zero discriminant (inverse) or of a
 /// near-zero l² − along² (direct) turns rounding ε into √ε.
 double roundTripTolerance(double scale, double margin)
 {
     return margin > 1e-3 ? 1e-9 * scale : 1e-6 * scale;
-}
-
-/// A reproducible uniform number in [lo, hi) (std::uniform_real_distribution's algorithm
-/// differs between standard libraries; the engine's output does not).
-double uniform(std::mt19937 &generator, double lo, double hi)
-{
-    return lo + (hi - lo) * (generator() / 4294967296.0);
 }
 
 /// Random guides, links and strokes (modes left at their defaults).
@@ -625,12 +581,9 @@ private slots:
                 // … and J maps a small step of P to the step of p the inverse kinematics takes.
                 const double hp = 1e-5 * scale;
                 for (int k = 0; k < 2; ++k) {
-                    Coordinates up = pose.outputs, down = pose.outputs;
-                    up[k] += hp;
-                    down[k] -= hp;
-                    auto a = m->solveInverse(up), b = m->solveInverse(down);
-                    QVERIFY(a.ok() && b.ok());
-                    const Eigen::Vector2d column = (a->inputs - b->inputs) / (2 * hp);
+                    const std::optional<Eigen::VectorXd> difference = inverseDifference(*m, pose.outputs, k, hp);
+                    QVERIFY(difference);
+                    const Eigen::Vector2d column = *difference;
                     QVERIFY2((column - jac.full.col(k)).norm() < 1e-6 * std::max(1.0, jac.full.norm()),
                              qPrintable(QStringLiteral("p = (%1, %2)").arg(p1).arg(p2)));
                 }

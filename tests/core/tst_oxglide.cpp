@@ -5,6 +5,7 @@
 // an independent integration, the maps against the pose solver, failures that name their
 // culprit, the neighbouring form, dragging, the drawings and the independent z axis.
 #include "kinds/oxglide/oxglide.h"
+#include "support/kinematics.h"
 
 #include <QTest>
 
@@ -19,6 +20,7 @@
 #include <vector>
 
 using namespace pkm;
+using namespace pkm::test;
 
 Q_DECLARE_METATYPE(pkm::ParameterSet)
 
@@ -41,28 +43,6 @@ OxGlideDesign prototype(int form = formO)
     d.zMax = 150;
     d.form = form;
     return d;
-}
-
-std::shared_ptr<const OxGlide> make(const OxGlideDesign &design)
-{
-    auto made = OxGlide::create(design);
-    if (!made)
-        qFatal("%s", made.failure().message.c_str());
-    return std::static_pointer_cast<const OxGlide>(*made);
-}
-
-Coordinates pair(double a, double b)
-{
-    Coordinates c(2);
-    c << a, b;
-    return c;
-}
-
-Coordinates triple(double a, double b, double z)
-{
-    Coordinates c(3);
-    c << a, b, z;
-    return c;
 }
 
 Eigen::Vector2d platformOf(const Pose &pose)
@@ -111,37 +91,6 @@ double lowestHeight(const OxGlideDesign &d, int form)
 {
     const double c = form == formO ? (d.guideLength - d.width) / 2 : (d.guideLength + d.width) / 2;
     return c >= d.rod ? 0.0 : std::sqrt(d.rod * d.rod - c * c);
-}
-
-std::vector<double> evaluated(const Mechanism &m, const Pose &pose, Singularity *singularity = nullptr)
-{
-    std::vector<double> values(static_cast<std::size_t>(m.reportLayout().size), notANumber);
-    const Singularity s = m.evaluate(pose, values);
-    if (singularity)
-        *singularity = s;
-    return values;
-}
-
-double entry(const Mechanism &m, const std::vector<double> &values, const char *name)
-{
-    const ReportEntry *e = m.reportLayout().find(name);
-    if (!e)
-        qFatal("no report entry %s", name);
-    return values[static_cast<std::size_t>(e->offset)];
-}
-
-Eigen::Matrix2d matrixEntry(const Mechanism &m, const std::vector<double> &values, const char *name)
-{
-    const ReportEntry *e = m.reportLayout().find(name);
-    if (!e || e->rows != 2 || e->cols != 2)
-        qFatal("no 2x2 report entry %s", name);
-    return Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&values[static_cast<std::size_t>(e->offset)]);
-}
-
-/// A reproducible uniform number in [lo, hi) (the engine's output is the same everywhere).
-double uniform(std::mt19937 &generator, double lo, double hi)
-{
-    return lo + (hi - lo) * (generator() / 4294967296.0);
 }
 
 /// A random valid design: s < 2l, L > s (by at least 0.3·l, see homePoseOfThinWorkspace).
@@ -683,10 +632,8 @@ private slots:
                         // (by the closed form: a step may leave the workspace at its edge)
                         numeric.col(c)
                             = (inverseOf(d, form, up[0], up[1]) - inverseOf(d, form, down[0], down[1])) / (2 * h);
-                        auto a = m->solveInverse(up), b = m->solveInverse(down);
-                        if (a && b)
-                            QVERIFY2(((a->inputs - b->inputs).head<2>() / (2 * h) - numeric.col(c)).norm()
-                                    < 1e-9 * std::max(1.0, numeric.norm()),
+                        if (const auto solved = inverseDifference(*m, pose.outputs, c, h))
+                            QVERIFY2((solved->head<2>() - numeric.col(c)).norm() < 1e-9 * std::max(1.0, numeric.norm()),
                                 where);
                     }
                     const Eigen::Matrix2d J = jac.full.topRows<2>();

@@ -1,6 +1,7 @@
 // The active П-joint against its closed forms, their inverses, finite differences and the
 // published prototype numbers (the П-joint document; docs/mathematics.md).
 #include "kinds/pjoint/pjoint.h"
+#include "support/kinematics.h"
 
 #include <QTest>
 
@@ -8,6 +9,7 @@
 #include <numbers>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 constexpr double deg = units::degree;
@@ -20,21 +22,6 @@ PJointDesign design(double a, double k, double thetaMinDeg = -60, double thetaMa
     p.thetaMin = thetaMinDeg * deg;
     p.thetaMax = thetaMaxDeg * deg;
     return p;
-}
-
-std::shared_ptr<const PJoint> make(const PJointDesign &p)
-{
-    auto made = PJoint::create(p);
-    if (!made)
-        qFatal("%s", made.failure().message.c_str());
-    return std::static_pointer_cast<const PJoint>(*made);
-}
-
-/// Central difference of f at x with step h.
-template <class F>
-double derivative(F f, double x, double h = 1e-6)
-{
-    return (f(x + h) - f(x - h)) / (2 * h);
 }
 
 void addDesignRows()

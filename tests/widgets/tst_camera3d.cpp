@@ -8,17 +8,20 @@
 #include "registry.h"
 #include "renderer3d.h"
 #include "scene3d.h"
+#include "support/kinematics.h"
 
 #include <QTest>
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 Q_DECLARE_METATYPE(pkm::Solid)
 Q_DECLARE_METATYPE(pkm::Camera3D::Projection)
 Q_DECLARE_METATYPE(pkm::Camera3D::StandardView)
 
 using namespace pkm;
+using namespace pkm::test;
 using Projection = Camera3D::Projection;
 using View = Camera3D::StandardView;
 
@@ -96,12 +99,7 @@ private slots:
     void roleColoursAreDistinct();
     void groundGridLiesUnderTheExtent();
     void extrudeHandScene();
-    void extrudedMechanismsStayInTheirExtent_data()
-    {
-        QTest::addColumn<QString>("kind");
-        QTest::newRow("pjoint") << QStringLiteral("pjoint");
-        QTest::newRow("moma") << QStringLiteral("moma");
-    }
+    void extrudedMechanismsStayInTheirExtent_data() { addKindRows(); }
     void extrudedMechanismsStayInTheirExtent();
 
 private:
@@ -484,6 +482,7 @@ void TestCamera3D::extrudedMechanismsStayInTheirExtent()
     const Scene3D first = mechanism->scene3d(home);
     QVERIFY(first.solids.size() >= 10);
     const Interval range = mechanism->variableRange(0);
+    std::string outside; // the first solid out of its model's extent
     for (int i = 0; i <= 8; ++i) {
         const Result<Pose> pose = mechanism->solveWith(home, 0, range.min + (range.max - range.min) * i / 8.0);
         if (!pose.ok())
@@ -491,8 +490,15 @@ void TestCamera3D::extrudedMechanismsStayInTheirExtent()
         const Scene3D model = mechanism->scene3d(*pose);
         QVERIFY(model.extent.isApprox(first.extent)); // fitting does not jump with the pose
         for (const Solid &s : model.solids)
-            QVERIFY2(contains(model.extent, solidBounds(s), 1e-6), s.label.c_str());
+            if (outside.empty() && !contains(model.extent, solidBounds(s), 1e-6))
+                outside = s.label;
     }
+    // A known defect, kept visible: the extruded model (Mechanism::scene3d's default) keeps the
+    // four-bar's instantaneous centre P as a marker wherever it is, far outside the extent near
+    // AB ∥ DC (the DXF drawing leaves such a free point out).
+    QEXPECT_FAIL(
+        "fourbar", "the four-bar's 3D model draws its far instantaneous centre P outside its extent", Continue);
+    QVERIFY2(outside.empty(), outside.c_str());
 }
 
 QTEST_MAIN(TestCamera3D)

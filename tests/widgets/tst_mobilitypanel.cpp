@@ -10,6 +10,7 @@
 #include "kinds/fourbar/fourbar.h"
 #include "mobilitypanel.h"
 #include "registry.h"
+#include "support/kinematics.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -18,22 +19,16 @@
 #include <QTest>
 #include <QTextBrowser>
 
+#include <map>
 #include <numbers>
 
 using namespace pkm;
+using namespace pkm::test;
 using Part = MobilityPanel::Part;
 using Subject = MobilityPanel::Subject;
 
 namespace {
 constexpr double degree = std::numbers::pi / 180.0;
-
-MechanismPtr make(const char *kind)
-{
-    auto made = createMechanism(kind, {});
-    if (!made)
-        qFatal("%s", made.failure().message.c_str());
-    return *made;
-}
 
 /// Waits until the panel shows an analysis of `subject` and nothing is running.
 bool settled(const MobilityPanel &panel, Subject subject = Subject::ThisMechanism)
@@ -51,6 +46,39 @@ void grab(QWidget &widget, const QString &name)
         QVERIFY(picture.save(QDir(dir).filePath(name)));
 }
 
+/// What the panel shows for every kind at its home pose: Chebyshev's and Somov–Malyshev's
+/// formulas with the numbers put in (Chebyshev empty: it does not apply), the rank line, the
+/// mobility and the pairs.
+struct ExpectedPanel {
+    const char *chebyshev;
+    const char *somovMalyshev;
+    const char *rank;
+    int mobility;
+    const char *pairs;
+};
+const std::map<QString, ExpectedPanel> &expectedPanels()
+{
+    static const std::map<QString, ExpectedPanel> panels {
+        {QStringLiteral("fourbar"),
+            {"3·3 − 2·4 − 0", "6·3 − 5·4 − 4·0 − 3·0 − 2·0 − 0",
+                "rank 3 of 6 loop equations → M = F − rank = 4 − 3 = 1", 1, "4 revolute (P₅ = 4)"}},
+        {QStringLiteral("pjoint"),
+            {"3·5 − 2·7 − 0", "6·5 − 5·7 − 4·0 − 3·0 − 2·0 − 0",
+                "rank 6 of 12 loop equations → M = F − rank = 7 − 6 = 1", 1, "6 revolute, 1 prismatic (P₅ = 7)"}},
+        {QStringLiteral("moma"),
+            {"3·4 − 2·5 − 0", "6·4 − 5·5 − 4·0 − 3·0 − 2·0 − 0",
+                "rank 3 of 6 loop equations → M = F − rank = 5 − 3 = 2", 2, "3 revolute, 2 prismatic (P₅ = 5)"}},
+        {QStringLiteral("fivebar"),
+            {"3·4 − 2·5 − 0", "6·4 − 5·5 − 4·0 − 3·0 − 2·0 − 0",
+                "rank 3 of 6 loop equations → M = F − rank = 5 − 3 = 2", 2, "5 revolute (P₅ = 5)"}},
+        {QStringLiteral("oxglide"),
+            {"", "6·8 − 5·7 − 4·0 − 3·4 − 2·0 − 0",
+                "rank 15 of 18 loop equations → M = F − rank = 19 − 15 = 4", 4,
+                "4 revolute, 3 prismatic (P₅ = 7); 4 spherical (P₃ = 4)"}},
+    };
+    return panels;
+}
+
 const QString wrong = QStringLiteral("⚠ wrong");
 const QString right = QStringLiteral("✓ right");
 } // namespace
@@ -60,57 +88,27 @@ class TestMobilityPanel : public QObject
     Q_OBJECT
 
 private slots:
-    void presets_data()
-    {
-        QTest::addColumn<QString>("kind");
-        QTest::addColumn<QString>("chebyshev"); // the numbers put in, empty: does not apply
-        QTest::addColumn<QString>("somovMalyshev");
-        QTest::addColumn<QString>("rank");
-        QTest::addColumn<int>("mobility");
-        QTest::addColumn<QString>("pairs");
-        QTest::newRow("fourbar") << "fourbar"
-                                 << "3·3 − 2·4 − 0"
-                                 << "6·3 − 5·4 − 4·0 − 3·0 − 2·0 − 0"
-                                 << "rank 3 of 6 loop equations → M = F − rank = 4 − 3 = 1" << 1
-                                 << "4 revolute (P₅ = 4)";
-        QTest::newRow("pjoint") << "pjoint"
-                                << "3·5 − 2·7 − 0"
-                                << "6·5 − 5·7 − 4·0 − 3·0 − 2·0 − 0"
-                                << "rank 6 of 12 loop equations → M = F − rank = 7 − 6 = 1" << 1
-                                << "6 revolute, 1 prismatic (P₅ = 7)";
-        QTest::newRow("moma") << "moma"
-                              << "3·4 − 2·5 − 0"
-                              << "6·4 − 5·5 − 4·0 − 3·0 − 2·0 − 0"
-                              << "rank 3 of 6 loop equations → M = F − rank = 5 − 3 = 2" << 2
-                              << "3 revolute, 2 prismatic (P₅ = 5)";
-        QTest::newRow("fivebar") << "fivebar"
-                                 << "3·4 − 2·5 − 0"
-                                 << "6·4 − 5·5 − 4·0 − 3·0 − 2·0 − 0"
-                                 << "rank 3 of 6 loop equations → M = F − rank = 5 − 3 = 2" << 2
-                                 << "5 revolute (P₅ = 5)";
-        QTest::newRow("oxglide") << "oxglide"
-                                 << ""
-                                 << "6·8 − 5·7 − 4·0 − 3·4 − 2·0 − 0"
-                                 << "rank 15 of 18 loop equations → M = F − rank = 19 − 15 = 4" << 4
-                                 << "4 revolute, 3 prismatic (P₅ = 7); 4 spherical (P₃ = 4)";
-    }
+    void presets_data() { addKindRows(); }
 
     /// Every kind at its home pose: the formulas with their numbers, the marker on the one that
     /// fails and only there, the rank, the verdict.
     void presets()
     {
         QFETCH(QString, kind);
-        QFETCH(QString, chebyshev);
-        QFETCH(QString, somovMalyshev);
-        QFETCH(QString, rank);
-        QFETCH(int, mobility);
-        QFETCH(QString, pairs);
+        const auto found = expectedPanels().find(kind);
+        QVERIFY2(found != expectedPanels().end(),
+            qPrintable(QStringLiteral("no expected panel for kind %1: add it to expectedPanels()").arg(kind)));
+        const QString chebyshev = QString::fromUtf8(found->second.chebyshev);
+        const QString somovMalyshev = QString::fromUtf8(found->second.somovMalyshev);
+        const QString rank = QString::fromUtf8(found->second.rank);
+        const int mobility = found->second.mobility;
+        const QString pairs = QString::fromUtf8(found->second.pairs);
 
         MobilityPanel panel;
         panel.resize(380, 900);
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
-        const MechanismPtr m = make(qPrintable(kind));
+        const MechanismPtr m = makeKind(qPrintable(kind));
         panel.setMechanism(m, m->homePose());
         QTRY_VERIFY(settled(panel));
         const MobilityReport expected = analyseMobility(m->kinematicChain(m->homePose()));
@@ -193,7 +191,7 @@ private slots:
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         QCOMPARE(panel.subjectBox()->count(), 4);
-        const MechanismPtr m = make("fourbar");
+        const MechanismPtr m = makeKind("fourbar");
         panel.setMechanism(m, m->homePose());
         QTRY_VERIFY(settled(panel));
 
@@ -259,12 +257,7 @@ private slots:
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
 
-        FourBarDesign d;
-        d.crank = 100;
-        d.coupler = 60;
-        d.rocker = 80;
-        d.ground = 70;
-        const MechanismPtr m = *FourBar::create(d);
+        const MechanismPtr m = make(tripleRockerFourBar());
         const auto dead
             = m->solveWith(m->homePose(), FourBar::variableAlpha, m->variableRange(FourBar::variableAlpha).max);
         QVERIFY(dead.ok());
@@ -343,7 +336,7 @@ private slots:
         panel.resize(400, 900);
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
-        const MechanismPtr m = make("oxglide");
+        const MechanismPtr m = makeKind("oxglide");
         std::vector<Pose> poses;
         const Interval range = m->variableRange(0);
         for (int i = 0; i <= 40; ++i) {
@@ -390,7 +383,7 @@ private slots:
         auto *panel = new MobilityPanel;
         panel->show();
         QVERIFY(QTest::qWaitForWindowExposed(panel));
-        const MechanismPtr m = make("oxglide");
+        const MechanismPtr m = makeKind("oxglide");
         panel->setMechanism(m, m->homePose());
         QVERIFY(panel->isBusy());
         delete panel;

@@ -3,6 +3,7 @@
 // leaves the left button alone.
 
 #include "pictureexport.h"
+#include "support/process.h"
 
 #include <qcustomplot.h>
 
@@ -26,6 +27,7 @@
 #include <memory>
 
 using namespace pkm;
+using namespace pkm::test;
 
 namespace {
 
@@ -78,27 +80,6 @@ Svg readSvg(const QByteArray &bytes)
     if (reader.hasError())
         svg.error = reader.errorString();
     return svg;
-}
-
-/// Runs a poppler tool on `path`; its output, or a null string when it is not installed.
-QString poppler(const QString &tool, const QStringList &arguments)
-{
-    const QString program = QStandardPaths::findExecutable(tool);
-    if (program.isEmpty())
-        return {};
-    QProcess process;
-    process.start(program, arguments);
-    if (!process.waitForFinished(30000))
-        return {};
-    return QString::fromUtf8(process.readAllStandardOutput());
-}
-
-/// "Page size:      460.8 x 259.2 pts" from pdfinfo.
-QSizeF pdfPageSize(const QString &info)
-{
-    const QRegularExpressionMatch match
-        = QRegularExpression(QStringLiteral("Page size:\\s*([0-9.]+) x ([0-9.]+) pts")).match(info);
-    return match.hasMatch() ? QSizeF(match.captured(1).toDouble(), match.captured(2).toDouble()) : QSizeF();
 }
 
 bool writeFile(const QString &path, const QByteArray &bytes)

