@@ -93,4 +93,11 @@ struct Scene {
     Eigen::AlignedBox3d extent;
 };
 
+/// Which joints a drawing or a model shows: all but a free point (an instantaneous centre)
+/// that no link, actuator, dimension or angle uses and that lies outside the range of motion
+/// by more than `margin` times the extent's size, which would stretch the picture to the
+/// horizon. The DXF drawing allows half its size; the 3D model none, since its camera is fitted
+/// to the extent once for every pose.
+std::vector<bool> shownJoints(const Scene &scene, double margin = 0.5);
+
 } // namespace pkm

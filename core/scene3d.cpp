@@ -257,10 +257,13 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
         fixedSolids.emplace_back(first, solids.size());
     }
 
-    // Joints: pins through everything they carry, balls, carriages, supports and markers.
+    // Joints: pins through everything they carry, balls, carriages, supports and markers; a
+    // far free point (the four-bar's instantaneous centre near AB ∥ DC) is left out, as the
+    // DXF drawing leaves it out, so that it does not shrink the fitted model to a speck.
+    const std::vector<bool> shown = shownJoints(scene, 0.0);
     for (std::size_t j = 0; j < n; ++j) {
         const SceneJoint &joint = scene.joints[j];
-        if (!finite(joint.position))
+        if (!finite(joint.position) || !shown[j])
             continue;
         const int jointIndex = int(j);
         const std::string &label = joint.label;

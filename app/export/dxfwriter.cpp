@@ -837,43 +837,9 @@ private:
 
     // -- choices -----------------------------------------------------------------------------
 
-    /// A free point (an instant centre) far outside the range of motion would stretch the
-    /// drawing to the horizon: it is left out unless a link, a dimension or an angle uses it.
-    void chooseShownJoints()
-    {
-        const std::size_t n = m_scene.joints.size();
-        m_shown.assign(n, true);
-        if (m_scene.extent.isEmpty() || !m_scene.extent.min().head<2>().allFinite()
-            || !m_scene.extent.max().head<2>().allFinite())
-            return;
-        std::vector<bool> used(n, false);
-        const auto use = [&](int joint) {
-            if (joint >= 0 && static_cast<std::size_t>(joint) < n)
-                used[static_cast<std::size_t>(joint)] = true;
-        };
-        for (const SceneBar &bar : m_scene.bars) {
-            use(bar.from);
-            use(bar.to);
-        }
-        for (const SceneActuator &actuator : m_scene.actuators) {
-            use(actuator.from);
-            use(actuator.to);
-        }
-        for (const SceneDimension &dimension : m_scene.dimensions) {
-            use(dimension.from);
-            use(dimension.to);
-        }
-        for (const SceneAngle &angle : m_scene.angles)
-            use(angle.vertex);
-        const Vec low = m_scene.extent.min().head<2>(), high = m_scene.extent.max().head<2>();
-        const Vec margin = Vec::Constant(0.5 * (high - low).maxCoeff());
-        const Eigen::AlignedBox2d near(Vec(low - margin), Vec(high + margin));
-        for (std::size_t j = 0; j < n; ++j) {
-            const SceneJoint &joint = m_scene.joints[j];
-            if (joint.kind == JointKind::Point && !used[j] && !near.contains(xy(joint.position)))
-                m_shown[j] = false;
-        }
-    }
+    /// A free point (an instant centre) far outside the range of motion is left out, as the
+    /// 3D model leaves it out (shownJoints, scene.h).
+    void chooseShownJoints() { m_shown = shownJoints(m_scene); }
 
     /// Text height, pin radius and the rest from the size of the range of motion, so that a
     /// 130 mm glide and a 1 m П-joint both read well at their natural size, and every pose of

@@ -493,11 +493,6 @@ void TestCamera3D::extrudedMechanismsStayInTheirExtent()
             if (outside.empty() && !contains(model.extent, solidBounds(s), 1e-6))
                 outside = s.label;
     }
-    // A known defect, kept visible: the extruded model (Mechanism::scene3d's default) keeps the
-    // four-bar's instantaneous centre P as a marker wherever it is, far outside the extent near
-    // AB ∥ DC (the DXF drawing leaves such a free point out).
-    QEXPECT_FAIL(
-        "fourbar", "the four-bar's 3D model draws its far instantaneous centre P outside its extent", Continue);
     QVERIFY2(outside.empty(), outside.c_str());
 }
 

@@ -69,13 +69,6 @@ const std::map<QString, std::vector<ReferenceView>> &referenceViews()
     return views;
 }
 
-/// A known defect, kept visible: the extruded model (Mechanism::scene3d's default) draws the
-/// four-bar's instantaneous centre P as a marker wherever it is — at the default design's home
-/// pose about 1.4 m away, far outside the scene's extent (the DXF drawing leaves such a free
-/// point out) — and the camera fits the model with it, so the linkage is a few pixels large.
-const char *const farInstantCentre
-    = "the 3D model of the four-bar keeps its far instantaneous centre P, and the camera fits it";
-
 Camera3D fixedCamera(const Scene3D &scene, View view, Projection projection)
 {
     Camera3D camera;
@@ -230,8 +223,6 @@ void TestView3D::matchesReferencePicture()
     const QString name = QString::fromLatin1(QTest::currentDataTag());
     keep(image, name);
     QVERIFY(backgroundAtCorners(image));
-    QEXPECT_FAIL("fourbar-isometric", farInstantCentre, Abort);
-    QEXPECT_FAIL("fourbar-front-orthographic", farInstantCentre, Abort);
     QVERIFY(drawnFraction(image) > 0.03);
 
     const QString reference = QStringLiteral(PKM_TEST_DATA_DIR "/view3d-") + name + QStringLiteral(".png");
@@ -281,7 +272,6 @@ void TestView3D::largePictureMatchesSmall()
     QCOMPARE(large.size(), QSize(1600, 1200));
     keep(large, kind + QStringLiteral("-large"));
     QVERIFY(backgroundAtCorners(large));
-    QEXPECT_FAIL("fourbar", farInstantCentre, Abort);
     QVERIFY(drawnFraction(large) > 0.03);
     // The same picture, only sharper: scaled down it matches the small one but for edges.
     const QImage reduced = large.scaled(pictureSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
