@@ -183,8 +183,8 @@ private slots:
             QVERIFY2(directGap <= differenceTolerance, where + ": ∂x/∂q·J off I by " + QByteArray::number(directGap));
             ++checked;
         }
-        if (checked == 0)
-            QSKIP("every pose of this design is near a singularity");
+        // every design here has a regular stored or home pose: a row that checked none fails
+        QVERIFY2(checked > 0, "every pose of this design is near a singularity");
     }
 
     /// evaluate() writes every value of the layout — the same whatever the buffer held before —
@@ -246,10 +246,8 @@ private slots:
         QVERIFY(!r.verdict.empty());
         QVERIFY(r.actuators >= 1);
         QVERIFY(r.numerical >= r.mobility);
-        Singularity s;
-        evaluated(*design.mechanism, design.pose, &s);
-        if (r.singular || s.margin < regularMargin)
-            QSKIP("a singular pose: its mobility is the kinds' own tests' business");
+        // the finite mobility (the rank at regular poses next to this one) holds at a singular
+        // pose too, where the rank drops and only the instantaneous one grows
         QVERIFY2(r.mobility >= 1, r.verdict.c_str());
     }
 

@@ -35,7 +35,8 @@ Failure ratioClash(double ratio, double height)
                    "ratio " + formatNumber(ratio) + " and height " + formatNumber(height) + " both size the box."};
 }
 
-/// The box, with only what a Mechanism must have besides its parameters stubbed out.
+/// The box: its parameters are the subject; the rest of the Mechanism interface is the least
+/// that compiles (a pose of one input and one output, an empty scene).
 class Box final : public TabledMechanism<Box, BoxDesign>
 {
 public:
