@@ -345,13 +345,22 @@ void enableXvfbRerun(const QString &program, const QStringList &arguments)
 RenderSetup prepareRenderPlatform(const std::vector<std::string> &arguments)
 {
     RenderSetup setup;
+    const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM").trimmed();
+    if (!arguments.empty() && arguments.front() == "dxf") {
+        // The DXF drawing is laid out by the screen's label layout, which measures text with
+        // QtGui's fonts: a QGuiApplication on the offscreen platform, no display.
+        if (platform.isEmpty())
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        setup.quietQt = true;
+        setup.guiApplication = true;
+        return setup;
+    }
     if (arguments.empty() || (arguments.front() != "render" && arguments.front() != "sheet"))
         return setup;
     const auto parsed = parseArguments(arguments);
     if (!parsed || parsed->help || (parsed->command != Command::Render && parsed->command != Command::Sheet))
         return setup; // the usage error or the help, from a QCoreApplication
     setup.quietQt = true;
-    const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM").trimmed();
     if (parsed->command == Command::Sheet || parsed->view.value_or("2d") != "3d") {
         // A picture needs fonts and QPainter, never a display: the same pixels everywhere.
         if (platform.isEmpty())

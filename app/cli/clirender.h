@@ -44,7 +44,8 @@ struct RenderSetup {
 /// platform and sets QT_QPA_PLATFORM — offscreen for 2D unless the user chose a platform;
 /// for 3D the user's or the desktop's platform when there is a display that may offer
 /// OpenGL (with Xvfb as the fallback), else none: the command then validates the design in a
-/// QCoreApplication and renders under Xvfb. Every other command keeps a QCoreApplication.
+/// QCoreApplication and renders under Xvfb. `pkm dxf` gets the offscreen platform too: its
+/// label layout measures text. Every other command keeps a QCoreApplication.
 RenderSetup prepareRenderPlatform(const std::vector<std::string> &arguments);
 
 /// Lets runRenderCommand() re-run `program arguments` under xvfb-run when this process has no

@@ -2,8 +2,9 @@
 // draw (clidrawing.h): render, sheet, dxf and the pictures of workspace and map. It runs the
 // whole command line (runCli) with the drawing commands registered.
 //
-// Every command runs in a QCoreApplication, without a display, except `pkm render` and
-// `pkm sheet`, which draw with QPainter and OpenGL and so need a QGuiApplication: the command
+// Every command runs in a QCoreApplication, without a display, except `pkm render`, `pkm sheet`
+// and `pkm dxf`, which draw with QPainter and OpenGL or measure text, and so need a
+// QGuiApplication: the command
 // line is looked at first (clirender.h: prepareRenderPlatform) to choose the Qt platform
 // before the application object exists.
 

@@ -1,7 +1,9 @@
 #pragma once
 /// DXF drawings of a linkage for CAD programs: our own small writer of AutoCAD R12 (AC1009)
-/// ASCII DXF — no third-party code — and the drawing of a Scene with it. Plain C++ (Eigen for
-/// the scene's points, no Qt): `pkm dxf` and the GUI's File ▸ Export Drawing (DXF)… share it.
+/// ASCII DXF — no third-party code — and the drawing of a Scene with it. The Writer is plain
+/// C++; sceneDrawing() (dxfdrawing.cpp) serialises the scene's one layout (pkm_drawing), so the
+/// DXF shows what the screen shows, labels where the screen puts them. `pkm dxf` and the GUI's
+/// File ▸ Export Drawing (DXF)… share it.
 ///
 /// The file: a HEADER ($ACADVER AC1009, $INSUNITS 4 = mm, $EXTMIN/$EXTMAX of what is drawn),
 /// TABLES (VPORT *ACTIVE fitted to the drawing; LTYPE CONTINUOUS, DASHED and CENTER; one
@@ -18,7 +20,9 @@
 /// Numbers: locale-independent ('.' whatever LC_NUMERIC says), fixed-point with up to 10
 /// decimals (0.1 nm: far below any machining tolerance, and exact for the checks' 1e-6 mm).
 
+#include "drawlist.h"
 #include "scene.h"
+#include "scenestyle.h"
 
 #include <Eigen/Core>
 
@@ -122,12 +126,11 @@ private:
     int m_skipped = 0;
 };
 
-/// How a Scene is drawn; zero sizes are chosen from the scene's size.
+/// How a Scene is drawn.
 struct DrawingOptions {
     std::string caption; ///< a line of text under the drawing ("pjoint-prototype — θ = 30.00°"), UTF-8
-    bool barOutlines = true; ///< each link's outline (two lines and end arcs) around its centre line
+    bool barOutlines = true; ///< each link's edges beside its centre line
     double textHeight = 0.0; ///< mm; 0: an ISO 3098 height about 1/50 of the drawing's size
-    double pinRadius = 0.0; ///< mm; 0: about 1/100 of the drawing's size, at most 1/5 of the shortest link
 };
 
 /// What sceneDrawing() produced.
@@ -138,35 +141,36 @@ struct Drawing {
     Eigen::AlignedBox2d extents; ///< $EXTMIN/$EXTMAX, mm
 };
 
+/// What sceneDrawing() writes: the scene laid out at the DXF's zoom (the caption included),
+/// and that zoom: `mapping` takes the list's device units to the drawing's mm.
+struct DrawingLayout {
+    drawing::DrawList list;
+    ViewMapping mapping;
+    double textHeight = 0.0; ///< mm
+};
+DrawingLayout drawingLayout(const Scene &scene, const DrawingOptions &options = {});
+
 /// The DXF drawing of `scene`, in mm, y up, in the scene's own frame (the joints' coordinates
-/// are the drawing's): what the 2D view draws, as CAD geometry on the linkage layers —
-///  - LINKS: a LINE from joint to joint for every link, plus its outline (barOutlines);
-///    ground links (the frame) on GROUND;
-///  - JOINTS: a CIRCLE (pin) at every joint — revolute, ground and slider joints at the pin
-///    radius, a spherical joint with a small inner circle, a point (a coupler or reference
-///    point) at half the radius — and the carriage of a slider on a guide as a rectangle;
-///  - GROUND: under each ground pivot the ground symbol, a triangle with a hatched base;
-///  - GUIDES: each rail's axis (CENTER), its two edges, end stops and hatching on the ground
-///    side (away from the links leaving it, as the 2D view);
-///  - ACTUATORS: the motor body as a closed rectangle, the screw's two edges, the axis (CENTER);
-///  - DIMENSIONS: per SceneDimension a dimension line as long as the distance between its two
-///    joints, at the scene's offset with extension lines (without an offset — the 2D view
-///    then writes only the text beside the member — on the member's axis from joint to
-///    joint), two arrowheads (SOLID) and a TEXT "name = 160.00": the measured distance in mm,
-///    the name taken from the scene's text (a negative value there — MOMA's p₁ — keeps its
-///    sign); per SceneAngle an ARC with an arrowhead, dashed legs where no link shows the
-///    angle's sides, and its label;
+/// are the drawing's). The scene is laid out as on the screen, at the zoom at which the
+/// screen's text is `textHeight` tall, and every primitive becomes CAD geometry on the linkage
+/// layers:
+///  - LINKS: a LINE from joint to joint for every link (exactly its length), and its edges
+///    outside the pins (barOutlines); ground links (the frame) on GROUND;
+///  - JOINTS: a CIRCLE (pin) at every joint — a spherical joint with a small inner circle, a
+///    point (a coupler or reference point) at half the radius — and carriages as rectangles;
+///  - GROUND: the ground symbol under each ground pivot, a triangle with a hatched base;
+///  - GUIDES: each rail's axis (CENTER), edges, end stops and hatching;
+///  - ACTUATORS: the motor body's and the screw's outlines and the axis (CENTER);
+///  - DIMENSIONS: every dimension line with its arrowheads (SOLID), whose tips are exactly the
+///    measured distance apart, broken where its text sits on it, with extension lines; a
+///    dimension along a member also as a dimension line on the member's axis; the text states
+///    the measured distance ("a = 170.00", dimensionText()); every angle an ARC of its whole
+///    sweep with an arrowhead, dashed legs where no link shows its sides, and its label;
 ///  - TEXT: the names of joints, links, guides and actuators, and the caption;
 ///  - PATHS: each polyline (a coupler curve) as a POLYLINE, split where a point is not finite.
-/// Texts are centred (TEXT alignment middle-centre) where they cover the least of what is drawn
-/// and written before them: a small label layout, in the spirit of the 2D view's. A free point
-/// (JointKind::Point used by no link, dimension or angle — the four-bar's instant centre) that
-/// lies far outside the scene's extent is left out rather than stretch the drawing.
+/// Texts are TEXT entities centred (middle-centre) where the screen's label layout put them.
+/// A free point (an instantaneous centre) far outside the range of motion is left out rather
+/// than stretch the drawing.
 Drawing sceneDrawing(const Scene &scene, const DrawingOptions &options = {});
-
-/// The text of a dimension between two joints `distance` mm apart, from the scene's text
-/// ("a = 170.0 mm" → "a = 170.00"): the name before '=' and the distance with 2 decimals;
-/// the sign of the scene's number is kept when its magnitude is the distance.
-std::string dimensionText(std::string_view sceneText, double distance);
 
 } // namespace pkm::dxf

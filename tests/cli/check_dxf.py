@@ -15,8 +15,8 @@ Checks:
     distinct colours;
   - every coordinate, radius, height and angle is finite, and $EXTMIN/$EXTMAX hold every
     entity (text by its alignment point);
-  - every length dimension text "name = 123.45" is the length of its dimension line (the
-    distance between the two joints), to its 2 decimals;
+  - every length dimension text "name = 123.45" is the distance between the tips of the two
+    arrowheads of its dimension line (the distance between the two joints), to its 2 decimals;
   - every angle label "θ = 12.3°" is the sweep of an angle arc, to its decimals;
   - with --eval: the links' lengths and the dimension texts of the mechanism kind (pjoint,
     fourbar, fivebar, moma, oxglide; another kind gets the generic checks and a note).
@@ -185,8 +185,21 @@ def main():
             if at_pin(line.dxf.start) and at_pin(line.dxf.end):
                 bar_lines[layer].append(distance2d(line.dxf.start, line.dxf.end))
 
-    # dimensions: "name = 123.45" is the length of the nearest parallel dimension line
+    # dimensions: "name = 123.45" is the distance between the arrow tips of its dimension line
     dimension_lines = list(msp.query('LINE[layer=="DIMENSIONS"]'))
+    # arrowheads: a SOLID's first corner is its tip; it points from the middle of its base
+    arrows = []
+    for solid in msp.query('SOLID[layer=="DIMENSIONS"]'):
+        tip, left, right = solid.dxf.vtx0, solid.dxf.vtx1, solid.dxf.vtx2
+        pointing = (tip[0] - (left[0] + right[0]) / 2, tip[1] - (left[1] + right[1]) / 2)
+        length = math.hypot(*pointing)
+        if length > 0:
+            arrows.append(((tip[0], tip[1]), (pointing[0] / length, pointing[1] / length)))
+
+    def on_line(line, a, d, n):
+        """Whether a LINE lies on the straight line through a along d (|d| = n)."""
+        return all(abs((p[0] - a[0]) * d[1] - (p[1] - a[1]) * d[0]) / n < 1e-6 for p in (line.dxf.start, line.dxf.end))
+
     arcs = list(msp.query('ARC[layer=="DIMENSIONS"]'))
     lengths = {}  # name → the stated value of each length dimension
     angles = {}
@@ -210,20 +223,28 @@ def main():
         anchor = text_anchor(text)
         direction = (math.cos(math.radians(text.dxf.rotation)), math.sin(math.radians(text.dxf.rotation)))
 
-        def parallel(line):
-            d = (line.dxf.end[0] - line.dxf.start[0], line.dxf.end[1] - line.dxf.start[1])
-            n = math.hypot(*d)
-            return n > 0 and abs(d[0] * direction[1] - d[1] * direction[0]) / n < 1e-6
-
-        candidates = [line for line in dimension_lines if parallel(line)]
-        if not candidates:
-            fail(f"dimension text {shown!r} has no dimension line along it")
+        # the dimension line of this text: the pair of arrow tips along the text's direction,
+        # on a DIMENSIONS line, nearest to the text; its value is the distance between the tips
+        best = None
+        for i, (a, da) in enumerate(arrows):
+            for b, db in arrows[i + 1:]:
+                d = (b[0] - a[0], b[1] - a[1])
+                n = math.hypot(*d)
+                if n <= 0 or abs(d[0] * direction[1] - d[1] * direction[0]) / n > 1e-6:
+                    continue
+                if abs(d[0] * da[1] - d[1] * da[0]) / n > 1e-6 or abs(d[0] * db[1] - d[1] * db[0]) / n > 1e-6:
+                    continue  # an arrowhead that does not point along the line
+                if not any(on_line(line, a, d, n) for line in dimension_lines):
+                    continue
+                middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+                if best is None or distance2d(anchor, middle) < best[0]:
+                    best = (distance2d(anchor, middle), n)
+        if best is None:
+            fail(f"dimension text {shown!r} has no dimension line with two arrowheads along it")
             continue
-        line = min(candidates, key=lambda l: distance2d(anchor, ((l.dxf.start[0] + l.dxf.end[0]) / 2,
-                                                                 (l.dxf.start[1] + l.dxf.end[1]) / 2)))
-        measured = distance2d(line.dxf.start, line.dxf.end)
+        measured = best[1]
         if abs(abs(value) - measured) > 0.005 + 1e-9:
-            fail(f"dimension text {shown!r} states {abs(value)} mm but its dimension line is {measured:.6f} mm")
+            fail(f"dimension text {shown!r} states {abs(value)} mm but its arrow tips are {measured:.6f} mm apart")
 
     note = ""
     if options.eval_json:

@@ -6,8 +6,11 @@
 
 #include "cli/cli.h"
 #include "cli/drawingcommands.h"
+#include "dimensiontext.h"
+#include "document/designfile.h"
 #include "export/dxfwriter.h"
 #include "gui/mainwindow.h"
+#include "support/app.h"
 #include "support/process.h"
 
 #include <QAction>
@@ -145,6 +148,8 @@ private slots:
     void dimensionTextIsTheMeasuredLength();
     void undefinedJointLeftOut();
     void farFreePointLeftOut();
+    void labelsWhereTheLayoutPutsThem_data();
+    void labelsWhereTheLayoutPutsThem();
 
     // pkm dxf
     void everyPresetReadBack_data();
@@ -440,7 +445,7 @@ void TestDxf::dimensionText()
     QFETCH(QString, sceneText);
     QFETCH(double, distance);
     QFETCH(QString, text);
-    QCOMPARE(QString::fromStdString(dxf::dimensionText(sceneText.toStdString(), distance)), text);
+    QCOMPARE(QString::fromStdString(drawing::dimensionText(sceneText.toStdString(), distance)), text);
 }
 
 void TestDxf::dimensionTextIsTheMeasuredLength()
@@ -448,17 +453,22 @@ void TestDxf::dimensionTextIsTheMeasuredLength()
     const dxf::Drawing drawing = dxf::sceneDrawing(sampleScene());
     const QList<Entity> drawn = entities(QByteArray::fromStdString(drawing.dxf));
     QList<QByteArray> texts;
-    double longest = 0.0;
+    QList<QPointF> tips; // of the arrowheads: a dimension is the distance between its two
     for (const Entity &e : drawn) {
         if (e.value(8) != "DIMENSIONS")
             continue;
         if (e.type == "TEXT")
             texts << e.value(1);
-        if (e.type == "LINE")
-            longest = std::max(longest, lineLength(e));
+        if (e.type == "SOLID")
+            tips << QPointF(e.number(10), e.number(20));
     }
     QVERIFY(texts.contains("a = 170.00")); // not the scene's 169
-    QVERIFY(std::abs(longest - 170.0) < 1e-9); // the dimension line is as long as the distance
+    bool measured = false;
+    for (const QPointF &a : tips) {
+        for (const QPointF &b : tips)
+            measured = measured || std::abs(std::hypot(b.x() - a.x(), b.y() - a.y()) - 170.0) < 1e-9;
+    }
+    QVERIFY2(measured, "two arrow tips are exactly the distance apart");
 }
 
 void TestDxf::undefinedJointLeftOut()
@@ -491,6 +501,103 @@ void TestDxf::farFreePointLeftOut()
     const dxf::Drawing drawing = dxf::sceneDrawing(scene);
     QVERIFY(drawing.extents.max().x() < 400.0);
     QVERIFY(drawing.extents.max().y() < 400.0);
+}
+
+namespace {
+
+/// The corners of a text's knock-out box, device units.
+std::array<QPointF, 4> textCorners(const drawing::Text &text)
+{
+    const double a = -text.rotationDegrees * std::numbers::pi / 180.0;
+    const QPointF u = QPointF(std::cos(a), -std::sin(a)) * (0.5 * text.box.width());
+    const QPointF v = QPointF(u.y(), -u.x()) * (text.box.height() / text.box.width());
+    return {text.centre - u - v, text.centre + u - v, text.centre + u + v, text.centre - u + v};
+}
+
+/// Whether segment a–b, `halfWidth` wide, meets the convex quad (separating axes).
+bool segmentMeetsBox(const QPointF &a, const QPointF &b, double halfWidth, const std::array<QPointF, 4> &box)
+{
+    const QPointF d = b - a;
+    const double length = std::hypot(d.x(), d.y());
+    if (length <= 0.0)
+        return false;
+    const QPointF u = d / length, n(-u.y(), u.x());
+    const std::array<QPointF, 4> band {a - halfWidth * n, b - halfWidth * n, b + halfWidth * n, a + halfWidth * n};
+    auto separated = [](const std::array<QPointF, 4> &p, const std::array<QPointF, 4> &q, const QPointF &axis) {
+        auto range = [&axis](const std::array<QPointF, 4> &c) {
+            double lo = 1e300, hi = -1e300;
+            for (const QPointF &x : c) {
+                const double t = x.x() * axis.x() + x.y() * axis.y();
+                lo = std::min(lo, t);
+                hi = std::max(hi, t);
+            }
+            return std::pair {lo, hi};
+        };
+        const auto [p0, p1] = range(p);
+        const auto [q0, q1] = range(q);
+        return p1 <= q0 || q1 <= p0;
+    };
+    for (const auto *quad : {&band, &box}) {
+        for (int i = 0; i < 2; ++i) {
+            const QPointF edge = (*quad)[std::size_t(i + 1)] - (*quad)[std::size_t(i)];
+            if (separated(band, box, QPointF(-edge.y(), edge.x())))
+                return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+void TestDxf::labelsWhereTheLayoutPutsThem_data()
+{
+    // every preset: among them pjoint-study-k03, k05 and moma-3d, whose labels crowded the
+    // links when the DXF placed its labels by rules of its own
+    pkm::test::addEveryPresetRows();
+}
+
+void TestDxf::labelsWhereTheLayoutPutsThem()
+{
+    PKM_FETCH_PRESET(preset);
+    const Result<Design> design = designfile::load(preset);
+    QVERIFY2(design, design ? "" : design.failure().message.c_str());
+    const Scene scene = design->mechanism->scene(design->pose);
+    const dxf::DrawingLayout layout = dxf::drawingLayout(scene);
+    const QList<Entity> drawn = entities(QByteArray::fromStdString(dxf::sceneDrawing(scene).dxf));
+
+    // the DXF's texts are the layout's, in its order, centred where it put them
+    QList<Entity> texts;
+    for (const Entity &e : drawn) {
+        if (e.type == "TEXT")
+            texts << e;
+    }
+    QList<const drawing::Text *> laidOut;
+    for (const drawing::Primitive &item : layout.list.items) {
+        if (const auto *text = std::get_if<drawing::Text>(&item.shape))
+            laidOut << text;
+    }
+    QCOMPARE(texts.size(), laidOut.size());
+    for (qsizetype i = 0; i < texts.size(); ++i) {
+        const Eigen::Vector2d at = layout.mapping.toScene(laidOut[i]->centre);
+        QVERIFY(std::abs(texts[i].number(11) - at.x()) < 1e-6);
+        QVERIFY(std::abs(texts[i].number(21) - at.y()) < 1e-6);
+    }
+
+    // and it put them clear of the links and of each other
+    for (const drawing::Text *text : laidOut) {
+        const std::array<QPointF, 4> box = textCorners(*text);
+        for (const drawing::Primitive &item : layout.list.items) {
+            if (const auto *member = std::get_if<drawing::Member>(&item.shape)) {
+                QVERIFY2(!segmentMeetsBox(member->a, member->b, 0.5 * member->width, box),
+                    qPrintable(QStringLiteral("the label %1 covers a link").arg(text->text)));
+            } else if (const auto *other = std::get_if<drawing::Text>(&item.shape); other && other != text) {
+                const std::array<QPointF, 4> otherBox = textCorners(*other);
+                QVERIFY2(!segmentMeetsBox(0.5 * (otherBox[0] + otherBox[3]), 0.5 * (otherBox[1] + otherBox[2]),
+                             0.5 * other->box.height(), box),
+                    qPrintable(QStringLiteral("the labels %1 and %2 overlap").arg(text->text, other->text)));
+            }
+        }
+    }
 }
 
 // -- pkm dxf ---------------------------------------------------------------------------------

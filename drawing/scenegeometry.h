@@ -1,6 +1,6 @@
 #pragma once
-/// Device-space vector helpers shared by ScenePainter, its label layout (scenelabels.h) and its
-/// drawing primitives (sceneprimitives.h). Internal to pkm_widgets.
+/// Device-space vector helpers shared by the scene layout, its labels and its renderers.
+/// Internal to pkm_drawing.
 ///
 /// Device coordinates have y down; scene angles are counter-clockwise from +x with y up.
 

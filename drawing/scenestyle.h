@@ -1,21 +1,13 @@
 #pragma once
-/// Draws a pkm::Scene as a clean engineering drawing onto any QPainter — a widget, a QImage,
-/// a QSvgGenerator or a QPdfWriter — so the screen and every export show the same picture.
-///
-/// Geometry (positions, the motor body, the screw) scales with the mapping; symbols and text
-/// (pivots, arrowheads, labels) have a fixed size in style pixels, so a zoomed-out drawing
-/// stays readable on a projector.
-
-#include "scene.h"
+/// How a scene maps onto a device and how it is styled: shared by the layout of a scene's
+/// drawing (scenelayout.h), every medium that renders it and the views that pan and zoom it.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <QColor>
 #include <QPointF>
 #include <QRectF>
-#include <QString>
-
-class QPainter;
 
 namespace pkm {
 
@@ -76,37 +68,6 @@ struct SceneStyle {
     double minimumScrewWidth = 3.0;
     double ghostOpacity = 0.35; ///< of a ghost scene; a hovered one is drawn stronger
     bool showHandles = true; ///< rings around draggable joints (off for exported drawings)
-};
-
-class ScenePainter
-{
-public:
-    /// Draws the scene (not the background). `activeHandle` (index into scene.handles, −1
-    /// none) is the hovered or dragged handle, drawn strongly highlighted.
-    static void paint(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
-        int activeHandle = -1);
-    /// Draws `scene` as a ghost — another pose the mechanism could take (another assembly or
-    /// working mode) — to go under the real one: faded, blue-grey, links dashed, no ground,
-    /// guides, labels, dimensions, angles or handles. `highlighted` (hovered) draws it
-    /// stronger, in the handle colour.
-    static void paintGhost(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
-        bool highlighted = false);
-
-    /// Fills `area` with the background and a mm grid whose spacing (1/2/5×10ⁿ mm) keeps the
-    /// lines at least `minimumGridPixels` style pixels apart.
-    static void paintBackground(QPainter &painter, const QRectF &area, const ViewMapping &mapping,
-        const SceneStyle &style, double minimumGridPixels = 40.0);
-    /// The translucent rounded box in the background colour that keeps text readable over
-    /// the drawing (under the scale bar, a caption).
-    static void paintKnockout(QPainter &painter, const QRectF &box, const SceneStyle &style);
-    /// A scale bar ("50 mm") in the bottom-right corner of `area`.
-    static void paintScaleBar(
-        QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style);
-    /// A one-line message in a rounded box at the bottom-left of `area`; nothing when empty.
-    static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style);
-
-    /// Grid spacing in mm: the smallest 1/2/5×10ⁿ with spacing × scale ≥ minimumDevice.
-    static double niceStep(double minimumDevice, double scale);
 };
 
 } // namespace pkm

@@ -1,21 +1,23 @@
 #pragma once
-/// The engineering-drawing primitives ScenePainter draws a scene with: the ground symbol, the
+/// The engineering-drawing elements a scene's drawing is laid out with: the ground symbol, the
 /// linear actuator (motor body and lead screw), guides (rails) with their slider carriages,
-/// dimension lines and angle arcs with their arrowheads. Each one tells the canvas's label
+/// dimension lines and angle arcs. Each adds its primitives to the draw list, tells the label
 /// layout what it covers, and queues its text to be placed once all geometry is known.
-/// Internal to pkm_widgets.
+/// Guides and carriages are in sceneguides.cpp, the rest in sceneprimitives.cpp.
+/// Internal to pkm_drawing.
 
+#include "drawlist.h"
 #include "scene.h"
 #include "scenelabels.h"
-#include "scenepainter.h"
+#include "scenestyle.h"
 
 #include <QColor>
+#include <QLineF>
 #include <QPointF>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
-
-class QPainter;
 
 namespace pkm {
 
@@ -53,25 +55,52 @@ std::vector<int> jointsOnGuides(const Scene &scene);
 std::vector<GuideShape> guideShapes(const Scene &scene, const std::vector<QPointF> &points,
     const std::vector<int> &jointGuide, const ViewMapping &mapping, const SceneStyle &style);
 
-/// What every drawing step needs: the painter, the scene with its joints in device units, the
-/// mapping and style, and the label layout that learns what the labels must keep off.
+/// What every layout step needs: the draw list it adds to, the scene with its joints in device
+/// units, the mapping and style, and the label layout that learns what the labels must keep off.
 struct SceneCanvas {
-    QPainter &painter;
+    drawing::DrawList &out;
     const Scene &scene;
     const ViewMapping &mapping;
     const SceneStyle &style;
-    const std::vector<QPointF> &points; ///< joint positions, device
+    const std::vector<QPointF> &points; ///< joint positions, device; not finite: not shown
     SceneLabels &labels;
     const std::vector<GuideShape> &guides; ///< scene.guides in device units
     const std::vector<int> &jointGuide; ///< per joint: the guide it lies on, or −1
 
     double px() const { return style.pixelSize; } ///< device units per style pixel
-    bool valid(int joint) const { return joint >= 0 && joint < int(points.size()); }
+    /// A joint that is shown: an index into the scene at a finite position.
+    bool valid(int joint) const
+    {
+        return joint >= 0 && joint < int(points.size()) && std::isfinite(point(joint).x())
+            && std::isfinite(point(joint).y());
+    }
     const QPointF &point(int joint) const { return points[std::size_t(joint)]; }
-    void stroke(const QColor &colour, double width, Qt::PenCapStyle cap = Qt::FlatCap) const;
     /// The guide slider joint `joint` rides on, or null.
     const GuideShape *carriageGuide(int joint) const;
+
+    void lines(drawing::Layer layer, const drawing::Pen &pen, std::vector<QLineF> lines,
+        drawing::Medium medium = drawing::Medium::All) const
+    {
+        out.add(drawing::Lines {std::move(lines), pen}, layer, medium);
+    }
+    void line(drawing::Layer layer, const drawing::Pen &pen, const QPointF &a, const QPointF &b,
+        drawing::Medium medium = drawing::Medium::All) const
+    {
+        lines(layer, pen, {QLineF(a, b)}, medium);
+    }
+    void band(drawing::Layer layer, const QPointF &a, const QPointF &b, double width, const QColor &colour,
+        drawing::Medium medium = drawing::Medium::All) const
+    {
+        out.add(drawing::Band {a, b, width, colour}, layer, medium);
+    }
 };
+
+/// A pen of `width` device units.
+inline drawing::Pen pen(const QColor &colour, double width, Qt::PenCapStyle cap = Qt::FlatCap,
+    drawing::Dash dash = drawing::Dash::Solid)
+{
+    return {colour, width, cap, dash};
+}
 
 /// The ground symbol under the pivot at device point `pivot`.
 void drawGround(const SceneCanvas &canvas, const QPointF &pivot);
@@ -87,7 +116,5 @@ void drawActuator(const SceneCanvas &canvas, const SceneActuator &actuator);
 void drawDimension(const SceneCanvas &canvas, const SceneDimension &dimension);
 /// An angle arc with an arrowhead at its end, and dashed legs where no member shows them.
 void drawAngle(const SceneCanvas &canvas, const SceneAngle &angle);
-/// A filled arrowhead with its tip at `tip`, pointing along `direction` (device).
-void drawArrow(const SceneCanvas &canvas, const QPointF &tip, const QPointF &direction, const QColor &colour);
 
 } // namespace pkm

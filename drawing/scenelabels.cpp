@@ -2,8 +2,6 @@
 
 #include "scenegeometry.h"
 
-#include <QPainter>
-#include <QPen>
 
 #include <algorithm>
 #include <cmath>
@@ -225,9 +223,15 @@ void SceneLabels::placeMemberLabels(bool dimensions)
     if (m_points.empty())
         return;
     QPointF centroid;
-    for (const QPointF &p : m_points)
-        centroid += p;
-    centroid /= double(m_points.size());
+    int shown = 0;
+    for (int j = 0; j < int(m_points.size()); ++j) {
+        if (valid(j)) {
+            centroid += point(j);
+            ++shown;
+        }
+    }
+    if (shown > 0)
+        centroid /= double(shown);
 
     std::vector<QPointF> candidates;
     for (const PendingMemberLabel &pending : m_memberLabels) {
@@ -238,7 +242,9 @@ void SceneLabels::placeMemberLabels(bool dimensions)
             continue;
         const QPointF u = unit(q - p), left = screenLeft(u);
         const QSizeF size = textSize(pending.text);
-        SceneLabel label {{}, 0.0, pending.text, false, pending.colour};
+        // a dimension's text is dimension layer, a member's name text
+        SceneLabel label {{}, 0.0, pending.text, false, pending.colour,
+            pending.preferReadingUp ? drawing::Layer::Dimensions : drawing::Layer::Text, pending.cad};
         double firstSide = 1.0;
         if (pending.preferReadingUp) {
             // Rotated with the member, above it as read.
@@ -295,7 +301,8 @@ void SceneLabels::placeAngleLabels()
         stepRound(6, 20);
         for (int step = 4; step <= 8; ++step)
             candidates.push_back(centreAt(middle, step * 10.0 * m_px));
-        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, m_style.angle}, candidates);
+        placeFirstFree(
+            SceneLabel {{}, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}}, candidates);
         const QPointF placed = m_labels.back().centre;
         addRay(pending.vertex, placed - v, length(placed - v));
     }
@@ -331,7 +338,7 @@ void SceneLabels::placeGuideLabels()
                     pending.start + fraction * axis + (pending.outerReach + extra + support(normal, size)) * normal);
             }
         }
-        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour}, candidates);
+        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}}, candidates);
     }
 }
 
@@ -340,7 +347,7 @@ void SceneLabels::placeJointLabels()
     std::vector<QPointF> candidates;
     for (std::size_t i = 0; i < m_points.size(); ++i) {
         const std::string &name = m_scene.joints[i].label;
-        if (name.empty())
+        if (name.empty() || !valid(int(i)))
             continue;
         // Preferred: the middles of the angular gaps between what leaves the joint (members,
         // ground, extension lines, arc labels), widest first; then all round, farther out.
@@ -375,36 +382,18 @@ void SceneLabels::placeJointLabels()
             for (int k = 0; k < 24; ++k)
                 candidates.push_back(centreAt(gaps.front().second + k * 15.0 * degree, extra));
         }
-        placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink}, candidates);
+        placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}}, candidates);
     }
 }
 
-// -- drawing -----------------------------------------------------------------------------
+// -- adding to the draw list --------------------------------------------------------------
 
-void SceneLabels::draw(QPainter &painter) const
+void SceneLabels::addTo(drawing::DrawList &list) const
 {
-    // Opaque knock-out boxes in the background colour: they hide the lines under the text,
-    // and unlike translucent or rounded ones they are plain span fills.
-    const QColor knockout = m_style.background;
     for (const SceneLabel &label : m_labels) {
-        const QSizeF size = textSize(label.text, label.joint);
-        const QRectF box(-0.5 * size.width(), -0.5 * size.height(), size.width(), size.height());
-        if (label.rotationDegrees == 0.0) {
-            painter.fillRect(box.translated(label.centre), knockout);
-        } else {
-            // A rotated box as one thick flat-capped line: the raster engine's fast path.
-            const QPointF u = deviceDirection(-label.rotationDegrees * degree);
-            painter.setPen(QPen(knockout, size.height(), Qt::SolidLine, Qt::FlatCap));
-            painter.drawLine(label.centre - 0.5 * size.width() * u, label.centre + 0.5 * size.width() * u);
-        }
-        painter.save();
-        painter.translate(label.centre);
-        if (label.rotationDegrees != 0.0)
-            painter.rotate(label.rotationDegrees);
-        painter.setFont(label.joint ? m_jointFont : m_font);
-        painter.setPen(label.colour);
-        painter.drawText(box, Qt::AlignCenter, label.text);
-        painter.restore();
+        drawing::Text text {label.centre, label.rotationDegrees, label.text, label.joint ? m_jointFont : m_font,
+            label.colour, textSize(label.text, label.joint), m_style.background, label.cad};
+        list.add(std::move(text), label.layer);
     }
 }
 

@@ -1,11 +1,13 @@
 #pragma once
-/// Label layout for ScenePainter: while the geometry is drawn, SceneLabels learns what each
-/// label must keep off (obstacles) and what leaves each joint (rays); once all of it is known
-/// it places the labels where they collide with nothing, and draws them last, so no line
-/// crosses a label. Internal to pkm_widgets.
+/// Label layout of a scene's drawing: while the geometry is laid out, SceneLabels learns what
+/// each label must keep off (obstacles) and what leaves each joint (rays); once all of it is
+/// known it places the labels where they collide with nothing, and adds them last to the draw
+/// list, so no line crosses a label. Every medium then shows the labels where they were placed
+/// here. Internal to pkm_drawing.
 
+#include "drawlist.h"
 #include "scene.h"
-#include "scenepainter.h"
+#include "scenestyle.h"
 
 #include <QColor>
 #include <QFont>
@@ -15,10 +17,11 @@
 #include <QString>
 
 #include <array>
+#include <cmath>
+#include <string>
 #include <vector>
 
 class QPaintDevice;
-class QPainter;
 
 namespace pkm {
 
@@ -39,13 +42,15 @@ QFont labelFont(double pixels, bool bold);
 
 } // namespace detail
 
-/// Text is collected while drawing the geometry and drawn last, so no line crosses a label.
+/// Text is collected while the geometry is laid out and added last, so no line crosses a label.
 struct SceneLabel {
     QPointF centre;
     double rotationDegrees = 0.0;
     QString text;
     bool joint = false; ///< bold joint name
     QColor colour;
+    drawing::Layer layer = drawing::Layer::Text;
+    std::string cad; ///< what a CAD drawing writes instead (drawing::Text::cad)
 };
 
 /// Labels placed once all geometry is known, so they can avoid it.
@@ -77,6 +82,7 @@ struct PendingMemberLabel {
     QString text;
     QColor colour;
     bool preferReadingUp = true; ///< dimension text: above the member as read
+    std::string cad; ///< a dimension's text in a CAD drawing
 };
 
 class SceneLabels
@@ -87,7 +93,7 @@ public:
     SceneLabels(const Scene &scene, const std::vector<QPointF> &points, const ViewMapping &mapping,
         const SceneStyle &style, const QPaintDevice *device);
 
-    // -- while the geometry is drawn ------------------------------------------------------
+    // -- while the geometry is laid out ---------------------------------------------------
     /// Something leaves `joint` towards `towards` (device) for `reach` device units: joint
     /// names go into the widest gap between such rays.
     void addRay(int joint, const QPointF &towards, double reach);
@@ -110,11 +116,11 @@ public:
     /// The size of a label's knock-out box.
     QSizeF textSize(const QString &text, bool joint = false) const;
 
-    // -- once all geometry is drawn -------------------------------------------------------
+    // -- once all geometry is known -------------------------------------------------------
     /// Places the pending labels, most constrained first.
     void placeAll();
-    /// Draws the placed labels, each on an opaque knock-out box.
-    void draw(QPainter &painter) const;
+    /// Adds the placed labels to `list`, each on an opaque knock-out box.
+    void addTo(drawing::DrawList &list) const;
 
 private:
     /// A direction leaving a joint (device, unit): joint names go into the widest gap between them.
@@ -123,7 +129,12 @@ private:
         double reach = 0.0;
     };
 
-    bool valid(int joint) const { return joint >= 0 && joint < int(m_points.size()); }
+    /// A joint that is shown: an index at a finite point.
+    bool valid(int joint) const
+    {
+        return joint >= 0 && joint < int(m_points.size()) && std::isfinite(point(joint).x())
+            && std::isfinite(point(joint).y());
+    }
     const QPointF &point(int joint) const { return m_points[std::size_t(joint)]; }
     bool isFree(const detail::Quad &box) const;
     /// Places `label` at the first free candidate centre, or the first one when none is free.

@@ -1,0 +1,48 @@
+#pragma once
+/// The one layout of a scene's drawing: a pkm::Scene in one pose becomes placed, styled
+/// primitives (drawlist.h) — members, pins, the ground, guides and carriages, actuators,
+/// dimensions, angles, paths and every label at the place chosen for it. The screen, the
+/// pictures, the GIF frames, the sheet and the DXF file all render this list, so they show the
+/// same drawing, labels included.
+///
+/// Geometry (positions, the motor body, the screw) scales with the mapping; symbols and text
+/// (pivots, arrowheads, labels) have a fixed size in style pixels, so a zoomed-out drawing
+/// stays readable on a projector.
+
+#include "drawlist.h"
+#include "scene.h"
+#include "scenestyle.h"
+
+#include <QString>
+
+#include <limits>
+
+class QPaintDevice;
+
+namespace pkm::drawing {
+
+struct LayoutOptions {
+    /// The hovered or dragged handle (index into scene.handles, −1 none), drawn highlighted.
+    int activeHandle = -1;
+    /// A free point (an instantaneous centre) this many times the extent's size outside the
+    /// range of motion is left out (shownJoints, scene.h): a file has no window to clip it.
+    double farPointMargin = std::numeric_limits<double>::infinity();
+    /// The device whose font metrics size the labels (a printer's differ from a screen's);
+    /// null: the screen's.
+    const QPaintDevice *device = nullptr;
+};
+
+/// The drawing of `scene` with `mapping` and `style`.
+DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
+    const LayoutOptions &options = {});
+
+/// `scene` as a ghost — another pose the mechanism could take (another assembly or working
+/// mode) — to go under the real one: faded, blue-grey, links dashed, no ground, guides,
+/// labels, dimensions, angles or handles. `highlighted` (hovered) draws it stronger, in the
+/// handle colour. Screen only.
+DrawList layoutGhost(const Scene &scene, const ViewMapping &mapping, const SceneStyle &style, bool highlighted);
+
+/// Adds `caption` as a line of text under what `list` shows in CAD, left-aligned with it.
+void addCaption(DrawList &list, const QString &caption, const SceneStyle &style, const QPaintDevice *device = nullptr);
+
+} // namespace pkm::drawing
