@@ -1,9 +1,11 @@
 #include "mechanism.h"
 
+
 #include "text.h"
 
 #include <algorithm>
 #include <charconv>
+#include <limits>
 #include <cmath>
 
 namespace pkm {
@@ -72,6 +74,47 @@ Singularity classifySingularity(double inverseMargin, double directMargin, doubl
                                : SingularityType::None;
     s.margin = std::min(inverseMargin, directMargin);
     return s;
+}
+
+void ReportLayout::atSingularity(const char *name, AtSingularity inverse, AtSingularity direct)
+{
+    for (ReportEntry &entry : entries) {
+        if (entry.name == name) {
+            entry.atInverse = inverse;
+            entry.atDirect = direct;
+            return;
+        }
+    }
+}
+
+void settleSingularValues(const ReportLayout &layout, std::span<double> values, SingularityType type)
+{
+    if (type == SingularityType::None)
+        return;
+    using A = AtSingularity;
+    for (const ReportEntry &entry : layout.entries) {
+        A mark = type == SingularityType::Inverse ? entry.atInverse
+               : type == SingularityType::Direct  ? entry.atDirect
+                                                  : A::Computed;
+        double value = 0.0;
+        if (type == SingularityType::Combined) {
+            const A a = entry.atInverse, b = entry.atDirect;
+            if (a == A::Computed || b == A::Computed || a == b) {
+                mark = a == A::Computed ? b : a;
+            } else {
+                mark = A::Infinite; // 0·∞: neither value holds
+                value = std::numeric_limits<double>::quiet_NaN();
+            }
+        }
+        if (mark == A::Computed)
+            continue;
+        if (mark == A::Infinite && value == 0.0)
+            value = std::numeric_limits<double>::infinity();
+        const std::size_t first = static_cast<std::size_t>(entry.offset);
+        const std::size_t count = static_cast<std::size_t>(entry.rows * entry.cols);
+        for (std::size_t i = first; i < first + count && i < values.size(); ++i)
+            values[i] = mark == A::Zero ? 0.0 : value;
+    }
 }
 
 int Mechanism::inputCount() const

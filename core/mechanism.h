@@ -80,6 +80,13 @@ struct Pose {
 
 enum class ReportGroup { Pose, Jacobian, Derived };
 
+/// What a reported quantity is exactly at a singular pose, where its formula divides by a
+/// vanishing determinant: J = J_q⁻¹·J_x is unbounded at an inverse singularity and det J is 0 at
+/// a direct one. Near one the formula still gives a finite number (det J = 10¹³ a micrometre
+/// from the stretched leg), which means nothing; at a pose classified singular the exact value
+/// replaces it.
+enum class AtSingularity : unsigned char { Computed, Zero, Infinite };
+
 /// Where one named quantity sits in the flat value buffer filled by Mechanism::evaluate().
 struct ReportEntry {
     ReportGroup group = ReportGroup::Derived;
@@ -91,6 +98,8 @@ struct ReportEntry {
     int cols = 1;
     int offset = 0; ///< index of the first value (row-major) in the buffer
     int decimals = 3;
+    AtSingularity atInverse = AtSingularity::Computed; ///< at an inverse singularity
+    AtSingularity atDirect = AtSingularity::Computed;  ///< at a direct singularity
 };
 
 /// A reported quantity that is a word ("mode": "X").
@@ -109,6 +118,8 @@ struct ReportLayout {
     /// Appends an entry of rows × cols values after the last one.
     void add(ReportGroup group, const char *name, const char *symbol, const char *label, Unit unit, int decimals,
              int rows = 1, int cols = 1);
+    /// Declares what entry `name` (added before) is at inverse and at direct singular poses.
+    void atSingularity(const char *name, AtSingularity inverse, AtSingularity direct);
 };
 
 /// The Jacobians of a pose, from the constraint F(x, q) = 0 with inputs q and outputs x:
@@ -132,6 +143,13 @@ struct Singularity {
 /// singularities (0 at them): below `tolerance` it is singular of that kind; the margin is the
 /// smaller one.
 Singularity classifySingularity(double inverseMargin, double directMargin, double tolerance);
+
+/// Puts the exact values of a singular pose of class `type` into `values` (filled by
+/// evaluate()), as each entry of `layout` declares (AtSingularity): 0, +∞ (unbounded, for every
+/// element of a matrix: the matrix does not exist), or, at a combined singularity where one
+/// mark says 0 and the other ∞, NaN (undefined). Nothing changes at a regular pose. Every
+/// kind's evaluate() ends with it; it does not allocate.
+void settleSingularValues(const ReportLayout &layout, std::span<double> values, SingularityType type);
 
 class Mechanism;
 class PlanarWorkspace;

@@ -7,6 +7,7 @@
 #include <QGroupBox>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QKeySequence>
 #include <QLineEdit>
 #include <QVBoxLayout>
 #include <QWheelEvent>
@@ -400,7 +401,16 @@ bool DesignPanel::eventFilter(QObject *watched, QEvent *event)
     if (!edit)
         return QWidget::eventFilter(watched, event);
     const QString name = edit->property(nameProperty).toString();
-    if (event->type() == QEvent::KeyPress) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        // Ctrl+Z in a field that shows the design's value (an edit just committed) is the
+        // document's undo, not the field's own text undo, which would only bring back what was
+        // typed; while the user types (the text modified), the field keeps it.
+        const auto *key = static_cast<QKeyEvent *>(event);
+        if (!edit->isModified() && (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo))) {
+            event->ignore(); // not the field's: the window's Undo and Redo actions take it
+            return true;
+        }
+    } else if (event->type() == QEvent::KeyPress) {
         const int key = static_cast<QKeyEvent *>(event)->key();
         if (key == Qt::Key_Up || key == Qt::Key_Down) {
             step(name, key == Qt::Key_Up ? 1 : -1);

@@ -29,6 +29,10 @@ QString coreLabel(std::string_view label)
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale)
 {
     double display = unit.toDisplay(coreValue);
+    // Unbounded at a singular pose (its sign depends on the side it is neared from), or
+    // undefined there.
+    if (std::isinf(display))
+        return QStringLiteral("∞");
     if (!std::isfinite(display))
         return QStringLiteral("—");
     // A value that rounds to zero shows as 0, never "-0.00" (a platform at x = −1e-14 mm).

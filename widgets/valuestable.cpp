@@ -135,7 +135,10 @@ void ValuesTable::setPose(const Pose &pose)
     for (std::size_t i = 0; i < layout.entries.size(); ++i) {
         const ReportEntry &entry = layout.entries[i];
         QString text;
-        if (entry.rows * entry.cols == 1) {
+        const auto first = m_values.begin() + entry.offset;
+        const bool unbounded = std::all_of(first, first + entry.rows * entry.cols, [](double v) { return std::isinf(v); });
+        if (entry.rows * entry.cols == 1 || unbounded) {
+            // a matrix that does not exist at a singular pose (J at an inverse one) is ∞ as a whole
             text = formatQuantity(m_values[entry.offset], entry.unit, entry.decimals);
         } else {
             // a matrix row by row, "[a, b; c, d] mm": the unit once, so it fits the dock; where

@@ -95,8 +95,12 @@ class and the derived quantities, in display units.
   --json              {"mechanism", "parameters", "pose", "jacobian", "singularity",
                        "derived", "mobility"}; a matrix is a row-major nested array;
                        singularity is {"type": none|inverse|direct|combined, "margin",
-                       "undefined"}; a quantity that is not finite at the pose (J_inv at a
-                       singular pose) is null and named in singularity.undefined; mobility
+                       "undefined", "infinite", "reason"}; a quantity that is not finite at
+                       the pose (J_inv at a singular pose) is null and named in
+                       singularity.undefined, and in singularity.infinite too when it is
+                       unbounded there (∞) rather than undefined; "reason" says why (null at
+                       a regular pose); at a pose classified singular the values are exact
+                       (det J = 0 at a direct singularity, never 1e13 beside one); mobility
                        counts the mechanism's freedoms by Chebyshev's and Somov–Malyshev's
                        formulas and by the rank of its loop equations
 )";

@@ -70,6 +70,33 @@ bool allFinite(const ReportEntry &entry, std::span<const double> values)
     return true;
 }
 
+bool anyInfinite(const ReportEntry &entry, std::span<const double> values)
+{
+    for (int i = 0; i < entry.rows * entry.cols; ++i) {
+        if (std::isinf(values[static_cast<std::size_t>(entry.offset + i)]))
+            return true;
+    }
+    return false;
+}
+
+/// Why quantities are null at a singular pose (the JSON's singularity.reason); null: regular.
+const char *singularityReason(SingularityType type)
+{
+    switch (type) {
+    case SingularityType::None:
+        return nullptr;
+    case SingularityType::Inverse:
+        return "inverse singularity: J_q is singular, so what divides by det J_q (J, det J, the condition "
+               "number) is unbounded";
+    case SingularityType::Direct:
+        return "direct singularity: J_x is singular, so det J is 0 and what divides by det J_x is unbounded";
+    case SingularityType::Combined:
+        return "combined singularity: J_q and J_x are both singular; a quantity that is 0 by one and "
+               "unbounded by the other is undefined";
+    }
+    return nullptr;
+}
+
 double parameterDisplayValue(const ParameterSet &values, const ParameterInfo &info)
 {
     const auto it = values.find(info.name);
@@ -102,6 +129,19 @@ void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<con
             json.string(entry.name);
     }
     json.endArray();
+    // of those, the ones that are unbounded at the pose (∞) rather than undefined (0/0)
+    json.key("infinite");
+    json.beginArray(true);
+    for (const ReportEntry &entry : layout.entries) {
+        if (anyInfinite(entry, values))
+            json.string(entry.name);
+    }
+    json.endArray();
+    json.key("reason");
+    if (const char *reason = singularityReason(singularity.type))
+        json.string(reason);
+    else
+        json.null();
     json.endObject();
     for (ReportGroup group : groupsAfterSingularity)
         writeGroupJson(json, layout, group, values, text);

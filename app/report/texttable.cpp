@@ -99,6 +99,8 @@ void TextTable::render(std::string &out) const
 
 std::string fixedText(double value, int decimals)
 {
+    if (std::isinf(value))
+        return "∞"; // unbounded at a singular pose: its sign depends on the side it is neared from
     if (!std::isfinite(value))
         return "undefined";
     if (std::abs(value) >= 1e15)

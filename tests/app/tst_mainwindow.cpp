@@ -246,6 +246,30 @@ private slots:
         QVERIFY(edit->styleSheet().isEmpty());
     }
 
+    void undoRightAfterEditingAField()
+    {
+        // Ctrl+Z with the focus still in the field just edited undoes the edit in the document
+        MainWindow &w = *m_window;
+        const double before = w.document()->mechanism()->parameters().at("a");
+        QLineEdit *edit = w.designPanel()->field(QStringLiteral("a"));
+        typeInto(edit, QStringLiteral("180"));
+        QVERIFY(std::abs(w.document()->mechanism()->parameters().at("a") - 180.0) < 1e-9);
+        QVERIFY(edit->hasFocus());
+        QTest::keySequence(edit, QKeySequence::Undo);
+        QVERIFY(std::abs(w.document()->mechanism()->parameters().at("a") - before) < 1e-9);
+        QTest::keySequence(edit, QKeySequence::Redo);
+        QVERIFY(std::abs(w.document()->mechanism()->parameters().at("a") - 180.0) < 1e-9);
+        // while typing, Ctrl+Z is the field's own: the document is not touched
+        edit->setFocus();
+        edit->selectAll();
+        QTest::keyClicks(edit, QStringLiteral("19"));
+        QTest::keySequence(edit, QKeySequence::Undo);
+        QVERIFY(std::abs(w.document()->mechanism()->parameters().at("a") - 180.0) < 1e-9);
+        QTest::keyClick(edit, Qt::Key_Escape);
+        w.document()->undoStack()->undo();
+        QVERIFY(std::abs(w.document()->mechanism()->parameters().at("a") - before) < 1e-9);
+    }
+
     void closingWithRejectedFieldIsSafe()
     {
         // Closing moves the focus out of the field, which commits it once more while the

@@ -277,6 +277,8 @@ private slots:
     void momaEvalJsonHasContractKeys();
     void momaInverseThenDirect();
     void momaSingularPose();
+    void singularPosesAreExact_data();
+    void singularPosesAreExact();
 
     void oxglideEvalJsonHasContractKeys_data();
     void oxglideEvalJsonHasContractKeys();
@@ -679,6 +681,53 @@ void TestCli::momaInverseThenDirect()
     QVERIFY(std::abs(back.value(QStringLiteral("y")).toDouble() + 250.0) < 1e-9);
 }
 
+void TestCli::singularPosesAreExact_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("type");
+    QTest::addColumn<QStringList>("infinite");
+    QTest::addColumn<QStringList>("zero");
+    // both legs stretched at the top of the workspace: C = (50, √(200² − 50²)) mm; a formula a
+    // hair's breadth from it gave det J ≈ 10¹³ rad²/mm² in the values panel
+    QTest::newRow("five-bar legs stretched")
+        << args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=193.64916731037084"}) << QStringLiteral("inverse")
+        << args({"J", "det_J", "cond"}) << args({"det_Jq"});
+    // 10⁻¹³ mm inside, where the formulas give det J ≈ 10¹²: classified singular (margin below
+    // 10⁻⁷), so the same exact values
+    QTest::newRow("five-bar a hair inside")
+        << args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=193.6491673103707"}) << QStringLiteral("inverse")
+        << args({"J", "det_J", "cond"}) << args({"det_Jq"});
+}
+
+void TestCli::singularPosesAreExact()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, type);
+    QFETCH(QStringList, infinite);
+    QFETCH(QStringList, zero);
+    const Run json = runPkm(QStringList(arguments) << QStringLiteral("--json"));
+    QVERIFY2(json.exitCode == 0, json.err.constData());
+    const QJsonObject root = QJsonDocument::fromJson(json.out).object();
+    const QJsonObject singularity = root.value(QStringLiteral("singularity")).toObject();
+    const QJsonObject jacobian = root.value(QStringLiteral("jacobian")).toObject();
+    QCOMPARE(singularity.value(QStringLiteral("type")).toString(), type);
+    QVERIFY(!singularity.value(QStringLiteral("reason")).toString().isEmpty());
+    const QJsonArray listed = singularity.value(QStringLiteral("infinite")).toArray();
+    for (const QString &name : infinite) {
+        QVERIFY2(listed.contains(name), qPrintable(name));
+        QVERIFY2(singularity.value(QStringLiteral("undefined")).toArray().contains(name), qPrintable(name));
+    }
+    for (const QString &name : zero)
+        QCOMPARE(jacobian.value(name).toDouble(), 0.0);
+    // and the text says ∞, never a huge number
+    const Run text = runPkm(arguments);
+    QCOMPARE(text.exitCode, 0);
+    const QString out = QString::fromUtf8(text.out);
+    QVERIFY(out.contains(QStringLiteral("∞")));
+    static const QRegularExpression huge(QStringLiteral("\\b\\d{9,}"));
+    QVERIFY2(!huge.match(out).hasMatch(), qPrintable(huge.match(out).captured()));
+}
+
 void TestCli::momaSingularPose()
 {
     // 3c in the other assembly mode reaches (195, 195) mm, where both links are perpendicular
@@ -689,7 +738,9 @@ void TestCli::momaSingularPose()
     QJsonParseError error;
     const QJsonObject root = QJsonDocument::fromJson(json.out, &error).object();
     QCOMPARE(error.error, QJsonParseError::NoError);
-    QVERIFY(!json.out.contains("inf") && !json.out.contains("nan"));
+    // no bare inf or nan (the key "infinite" is a word, not a number)
+    static const QRegularExpression bareNumber(QStringLiteral("\\b(-?inf|nan)\\b"), QRegularExpression::CaseInsensitiveOption);
+    QVERIFY(!bareNumber.match(QString::fromUtf8(json.out)).hasMatch());
     const QJsonObject jacobian = root.value(QStringLiteral("jacobian")).toObject();
     QVERIFY(jacobian.value(QStringLiteral("det_J")).isNull());
     QCOMPARE(jacobian.value(QStringLiteral("det_Jp")).toDouble(), 0.0);
@@ -698,11 +749,17 @@ void TestCli::momaSingularPose()
     const QJsonObject singularity = root.value(QStringLiteral("singularity")).toObject();
     QCOMPARE(singularity.value(QStringLiteral("type")).toString(), QStringLiteral("inverse"));
     QVERIFY(singularity.value(QStringLiteral("undefined")).toArray().contains(QStringLiteral("det_J")));
+    // unbounded, not undefined: J = −J_p⁻¹·J_x does not exist there, and the reason says so
+    const QJsonArray infinite = singularity.value(QStringLiteral("infinite")).toArray();
+    QVERIFY(infinite.contains(QStringLiteral("det_J")));
+    QVERIFY(infinite.contains(QStringLiteral("J")));
+    QVERIFY(infinite.contains(QStringLiteral("cond")));
+    QVERIFY(singularity.value(QStringLiteral("reason")).toString().startsWith(QStringLiteral("inverse singularity")));
 
     const Run text = runPkm(arguments);
     QCOMPARE(text.exitCode, 0);
     const QString out = QString::fromUtf8(text.out);
-    QVERIFY(out.contains(QStringLiteral("undefined")));
+    QVERIFY(out.contains(QStringLiteral("∞")));
     static const QRegularExpression notANumber(QStringLiteral("\\b(-?inf|nan)\\b"),
                                                QRegularExpression::CaseInsensitiveOption);
     QVERIFY2(!notANumber.match(out).hasMatch(), qPrintable(notANumber.match(out).captured()));

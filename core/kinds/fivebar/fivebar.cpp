@@ -591,6 +591,13 @@ const ReportLayout &FiveBar::reportLayout() const
         l.add(G::Derived, "margin_inverse", "m_inv", QT_TRANSLATE_NOOP("core", "distance from the inverse singularities, min |sin φ_i| (0 … 1)"), units::none, 4);
         l.add(G::Derived, "margin_direct", "m_dir", QT_TRANSLATE_NOOP("core", "distance from the direct singularities, |sin ψ| (0 … 1)"), units::none, 4);
         l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
+        // exact values at singular poses (mechanism.h: AtSingularity)
+        using S = AtSingularity;
+        l.atSingularity("J", S::Infinite, S::Computed);
+        l.atSingularity("det_J", S::Infinite, S::Zero);
+        l.atSingularity("cond", S::Infinite, S::Infinite);
+        l.atSingularity("det_Jq", S::Zero, S::Computed);
+        l.atSingularity("det_Jx", S::Computed, S::Zero);
         return l;
     }();
     return layout;
@@ -647,6 +654,7 @@ Singularity FiveBar::evaluate(const Pose &pose, std::span<double> values) const
     values[SlotMarginDirect] = directMargin;
     const Singularity s = classifySingularity(inverseMargin, directMargin, singularTolerance);
     values[SlotMargin] = s.margin;
+    settleSingularValues(reportLayout(), values, s.type);
     return s;
 }
 

@@ -646,6 +646,17 @@ const ReportLayout &FourBar::reportLayout() const
         l.add(G::Derived, "M_y", "y_M", QT_TRANSLATE_NOOP("core", "coupler point M, y"), units::millimetre, 2);
         l.add(G::Derived, "P_x", "x_P", QT_TRANSLATE_NOOP("core", "instantaneous centre P of the coupler, x (none: AB ∥ DC)"), units::millimetre, 2);
         l.add(G::Derived, "P_y", "y_P", QT_TRANSLATE_NOOP("core", "instantaneous centre P of the coupler, y (none: AB ∥ DC)"), units::millimetre, 2);
+        // exact values at singular poses (mechanism.h: AtSingularity)
+        using S = AtSingularity;
+        l.atSingularity("Jq", S::Zero, S::Computed);
+        l.atSingularity("Jx", S::Computed, S::Zero);
+        l.atSingularity("J", S::Infinite, S::Zero);
+        l.atSingularity("det_J", S::Infinite, S::Zero);
+        l.atSingularity("i31", S::Zero, S::Infinite);
+        l.atSingularity("omega2", S::Computed, S::Infinite);
+        l.atSingularity("omega3", S::Computed, S::Infinite);
+        l.atSingularity("epsilon2", S::Computed, S::Infinite);
+        l.atSingularity("epsilon3", S::Computed, S::Infinite);
         return l;
     }();
     return layout;
@@ -701,6 +712,7 @@ Singularity FourBar::evaluate(const Pose &pose, std::span<double> v) const
     v[SlotPy] = P.y();
     const Singularity s = classifySingularity(std::abs(std::sin(a.beta)), std::abs(std::sin(a.gamma)), singularTolerance);
     v[SlotMargin] = s.margin;
+    settleSingularValues(reportLayout(), v, s.type);
     return s;
 }
 

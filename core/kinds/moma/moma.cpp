@@ -504,6 +504,13 @@ const ReportLayout &Moma::reportLayout() const
         l.add(G::Derived, "link_angle2", "ψ₂", QT_TRANSLATE_NOOP("core", "angle between link S₂ and guide 2 (90°: inverse singularity)"), units::angle, 2);
         l.add(G::Derived, "links_angle", "ψ₁₂", QT_TRANSLATE_NOOP("core", "angle between the links (0°, 180°: direct singularity)"), units::angle, 2);
         l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
+        // exact values at singular poses (mechanism.h: AtSingularity)
+        using S = AtSingularity;
+        l.atSingularity("J", S::Infinite, S::Computed);
+        l.atSingularity("det_J", S::Infinite, S::Zero);
+        l.atSingularity("cond", S::Infinite, S::Infinite);
+        l.atSingularity("det_Jp", S::Zero, S::Computed);
+        l.atSingularity("det_Jx", S::Computed, S::Zero);
         return l;
     }();
     return layout;
@@ -570,6 +577,7 @@ Singularity Moma::evaluate(const Pose &pose, std::span<double> v) const
     v[SlotLinksAngle] = std::atan2(std::abs(cross(link[0], link[1])), link[0].dot(link[1]));
     const Singularity s = singularity(pose);
     v[SlotMargin] = s.margin;
+    settleSingularValues(reportLayout(), v, s.type);
     return s;
 }
 

@@ -389,6 +389,13 @@ const ReportLayout &OxGlide::reportLayout() const
         l.add(G::Derived, "rod_angle", "ψ", QT_TRANSLATE_NOOP("core", "angle between the rods and the guides (90°: the O↔X crossing)"), units::angle, 2);
         l.add(G::Derived, "crossing", "x_CD − x_AB − s", QT_TRANSLATE_NOOP("core", "distance from the O↔X crossing (0 there; > 0 O, < 0 X)"), units::millimetre, 2);
         l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
+        // exact values at singular poses (mechanism.h: AtSingularity)
+        using S = AtSingularity;
+        l.atSingularity("J", S::Infinite, S::Computed);
+        l.atSingularity("det_J", S::Infinite, S::Zero);
+        l.atSingularity("cond", S::Infinite, S::Infinite);
+        l.atSingularity("det_Jq", S::Zero, S::Computed);
+        l.atSingularity("det_Jx", S::Computed, S::Zero);
         return l;
     }();
     return layout;
@@ -451,6 +458,7 @@ Singularity OxGlide::evaluate(const Pose &pose, std::span<double> v) const
     v[SlotCrossing] = pose.inputs[1] - pose.inputs[0] - m_design.width;
     const Singularity s = singularity(pose);
     v[SlotMargin] = s.margin;
+    settleSingularValues(reportLayout(), v, s.type);
     return s;
 }
 

@@ -365,6 +365,15 @@ const ReportLayout &PJoint::reportLayout() const
         l.add(G::Derived, "stroke", "d_max − d_min", QT_TRANSLATE_NOOP("core", "actuator stroke"), units::millimetre, 2);
         l.add(G::Derived, "recommended_min", "θ_rec,min", QT_TRANSLATE_NOOP("core", "recommended range from (J ≥ 60 % of best)"), units::angle, 1);
         l.add(G::Derived, "recommended_max", "θ_rec,max", QT_TRANSLATE_NOOP("core", "recommended range to (J ≥ 60 % of best)"), units::angle, 1);
+        // exact values at singular poses (mechanism.h: AtSingularity)
+        using S = AtSingularity;
+        l.atSingularity("J", S::Infinite, S::Zero);
+        l.atSingularity("J_inv", S::Zero, S::Infinite);
+        l.atSingularity("J_d", S::Zero, S::Computed);
+        l.atSingularity("J_theta", S::Computed, S::Zero);
+        l.atSingularity("torque", S::Infinite, S::Zero);
+        l.atSingularity("speed", S::Zero, S::Infinite);
+        l.atSingularity("resolution", S::Zero, S::Infinite);
         return l;
     }();
     return layout;
@@ -412,7 +421,9 @@ Singularity PJoint::evaluate(const Pose &pose, std::span<double> v) const
     v[SlotStroke] = v[SlotDMax] - v[SlotDMin];
     v[SlotRecommendedMin] = m_recommended.min;
     v[SlotRecommendedMax] = m_recommended.max;
-    return singularity(theta);
+    const Singularity s = singularity(theta);
+    settleSingularValues(reportLayout(), v, s.type);
+    return s;
 }
 
 Jacobians PJoint::jacobians(const Pose &pose) const
