@@ -93,6 +93,23 @@ private slots:
         QCOMPARE(designfile::serialize(*loaded), designfile::serialize(*design));
     }
 
+    void savedValuesReadAsTyped()
+    {
+        // 60° kept in radians is 59.99999999999999° again: the file says 60, and reads back
+        auto design = designfile::load(QStringLiteral("pjoint-prototype"));
+        QVERIFY(design.ok());
+        auto changed = designfile::setDisplayParameter(design->mechanism, QStringLiteral("theta_max"), 60.0);
+        QVERIFY2(changed.ok(), changed ? "" : changed.failure().message.c_str());
+        design->mechanism = *changed;
+        const QByteArray file = designfile::serialize(*design);
+        QVERIFY2(!file.contains("9999999"), file.constData());
+        const QJsonObject parameters = QJsonDocument::fromJson(file).object().value(QStringLiteral("parameters")).toObject();
+        QCOMPARE(parameters.value(QStringLiteral("theta_max")).toDouble(), 60.0);
+        auto loaded = designfile::parse(file, QStringLiteral("memory"));
+        QVERIFY2(loaded.ok(), loaded ? "" : loaded.failure().message.c_str());
+        QCOMPARE(loaded->mechanism->parameters().at("theta_max"), design->mechanism->parameters().at("theta_max"));
+    }
+
     void crankRockerKeepsItsCrankAngle()
     {
         // A crank-rocker passes each rocker angle twice per turn: the inputs say which.
