@@ -3064,6 +3064,382 @@ Please verify the correct file name was given.</source>
         <source>form</source>
         <translation>форма</translation>
     </message>
+    <message>
+        <source>input of leg 1</source>
+        <translation>вход ноги 1</translation>
+    </message>
+    <message>
+        <source>input of leg 2</source>
+        <translation>вход ноги 2</translation>
+    </message>
+    <message>
+        <source>input of leg 3</source>
+        <translation>вход ноги 3</translation>
+    </message>
+    <message>
+        <source>platform angle</source>
+        <translation>угол платформы</translation>
+    </message>
+    <message>
+        <source>J_q = diag(∂g_i/∂q_i)</source>
+        <translation>J_q = диаг(∂g_i/∂q_i)</translation>
+    </message>
+    <message>
+        <source>J_x rows −∂g_i/∂X</source>
+        <translation>строки J_x: −∂g_i/∂X</translation>
+    </message>
+    <message>
+        <source>q̇ = J·Ẋ, J = J_q⁻¹·J_x</source>
+        <translation>q̇ = J·Ẋ, J = J_q⁻¹·J_x</translation>
+    </message>
+    <message>
+        <source>other assembly mode (same inputs)</source>
+        <translation>другой режим сборки (те же входы)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (same platform pose)</source>
+        <translation>нога 1: другой рабочий режим (та же поза платформы)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (same platform pose)</source>
+        <translation>нога 2: другой рабочий режим (та же поза платформы)</translation>
+    </message>
+    <message>
+        <source>leg 3: other working mode (same platform pose)</source>
+        <translation>нога 3: другой рабочий режим (та же поза платформы)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is invalid: it must be a whole number.</source>
+        <translation>%1 = %2 недопустимо: должно быть целым числом.</translation>
+    </message>
+    <message>
+        <source>The planar parallel mechanism has no parameter named &apos;%1&apos;.</source>
+        <translation>У плоского параллельного механизма нет параметра «%1».</translation>
+    </message>
+    <message>
+        <source>platform: 0 a point (2 DOF), 1 constant orientation (2 DOF), 2 free (3 DOF)</source>
+        <translation>платформа: 0 точка (2 степени свободы), 1 постоянная ориентация (2 степени свободы), 2 свободная (3 степени свободы)</translation>
+    </message>
+    <message>
+        <source>leg 1: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>нога 1: тип (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: base point A₁, x</source>
+        <translation>нога 1: точка основания A₁, x</translation>
+    </message>
+    <message>
+        <source>leg 1: base point A₁, y</source>
+        <translation>нога 1: точка основания A₁, y</translation>
+    </message>
+    <message>
+        <source>leg 1: platform point B₁ in the platform frame, x</source>
+        <translation>нога 1: точка платформы B₁ в системе платформы, x</translation>
+    </message>
+    <message>
+        <source>leg 1: platform point B₁ in the platform frame, y</source>
+        <translation>нога 1: точка платформы B₁ в системе платформы, y</translation>
+    </message>
+    <message>
+        <source>leg 1: crank length (R̲RR)</source>
+        <translation>нога 1: длина кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: distal link length</source>
+        <translation>нога 1: длина дистального звена</translation>
+    </message>
+    <message>
+        <source>leg 1: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>нога 1: направление направляющей (P̲RR) или основания П-шарнира (П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: П-joint crank (lever) length</source>
+        <translation>нога 1: длина кривошипа П-шарнира</translation>
+    </message>
+    <message>
+        <source>leg 1: П-joint ratio k = b/a</source>
+        <translation>нога 1: отношение П-шарнира k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 1: working mode (+1 elbow left of A₁→P₁; P̲RR: sign in q = B ± √…)</source>
+        <translation>нога 1: рабочий режим (+1 локоть слева от A₁→P₁; P̲RR: знак в q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>leg 2: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>нога 2: тип (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: base point A₂, x</source>
+        <translation>нога 2: точка основания A₂, x</translation>
+    </message>
+    <message>
+        <source>leg 2: base point A₂, y</source>
+        <translation>нога 2: точка основания A₂, y</translation>
+    </message>
+    <message>
+        <source>leg 2: platform point B₂ in the platform frame, x</source>
+        <translation>нога 2: точка платформы B₂ в системе платформы, x</translation>
+    </message>
+    <message>
+        <source>leg 2: platform point B₂ in the platform frame, y</source>
+        <translation>нога 2: точка платформы B₂ в системе платформы, y</translation>
+    </message>
+    <message>
+        <source>leg 2: crank length (R̲RR)</source>
+        <translation>нога 2: длина кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: distal link length</source>
+        <translation>нога 2: длина дистального звена</translation>
+    </message>
+    <message>
+        <source>leg 2: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>нога 2: направление направляющей (P̲RR) или основания П-шарнира (П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: П-joint crank (lever) length</source>
+        <translation>нога 2: длина кривошипа П-шарнира</translation>
+    </message>
+    <message>
+        <source>leg 2: П-joint ratio k = b/a</source>
+        <translation>нога 2: отношение П-шарнира k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 2: working mode (+1 elbow left of A₂→P₂; P̲RR: sign in q = B ± √…)</source>
+        <translation>нога 2: рабочий режим (+1 локоть слева от A₂→P₂; P̲RR: знак в q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>leg 3: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>нога 3: тип (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: base point A₃, x</source>
+        <translation>нога 3: точка основания A₃, x</translation>
+    </message>
+    <message>
+        <source>leg 3: base point A₃, y</source>
+        <translation>нога 3: точка основания A₃, y</translation>
+    </message>
+    <message>
+        <source>leg 3: platform point B₃ in the platform frame, x</source>
+        <translation>нога 3: точка платформы B₃ в системе платформы, x</translation>
+    </message>
+    <message>
+        <source>leg 3: platform point B₃ in the platform frame, y</source>
+        <translation>нога 3: точка платформы B₃ в системе платформы, y</translation>
+    </message>
+    <message>
+        <source>leg 3: crank length (R̲RR)</source>
+        <translation>нога 3: длина кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: distal link length</source>
+        <translation>нога 3: длина дистального звена</translation>
+    </message>
+    <message>
+        <source>leg 3: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>нога 3: направление направляющей (P̲RR) или основания П-шарнира (П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: П-joint crank (lever) length</source>
+        <translation>нога 3: длина кривошипа П-шарнира</translation>
+    </message>
+    <message>
+        <source>leg 3: П-joint ratio k = b/a</source>
+        <translation>нога 3: отношение П-шарнира k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 3: working mode (+1 elbow left of A₃→P₃; P̲RR: sign in q = B ± √…)</source>
+        <translation>нога 3: рабочий режим (+1 локоть слева от A₃→P₃; P̲RR: знак в q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>assembly mode: 2 DOF +1 platform left of C₁→C₂, −1 right; 3 DOF the n-th solution in order of φ</source>
+        <translation>режим сборки: при 2 степенях свободы +1 платформа слева от C₁→C₂, −1 справа; при 3 — n-е решение по возрастанию φ</translation>
+    </message>
+    <message>
+        <source>platform angle φ of the workspace map (3 DOF)</source>
+        <translation>угол платформы φ для карты рабочего пространства (3 степени свободы)</translation>
+    </message>
+    <message>
+        <source>%1 must be less than %2.</source>
+        <translation>%1 должно быть меньше %2.</translation>
+    </message>
+    <message>
+        <source>The range of crank %1 spans more than one turn (360°).</source>
+        <translation>Диапазон кривошипа %1 больше одного оборота (360°).</translation>
+    </message>
+    <message>
+        <source>%1 must be positive: it is the length of strut %2.</source>
+        <translation>%1 должно быть положительным: это длина штанги %2.</translation>
+    </message>
+    <message>
+        <source>The diagonal of П-joint %1 must stay strictly between %2 mm and %3 mm (θ between −90° and 90°).</source>
+        <translation>Диагональ П-шарнира %1 должна быть строго между %2 мм и %3 мм (θ между −90° и 90°).</translation>
+    </message>
+    <message>
+        <source>A platform of constant orientation needs P̲RR or П̲RR legs: leg %1&apos;s distal parallelogram must hang from a body that does not turn.</source>
+        <translation>Платформе постоянной ориентации нужны ноги P̲RR или П̲RR: дистальный параллелограмм ноги %1 должен висеть на звене, которое не поворачивается.</translation>
+    </message>
+    <message>
+        <source>The assembly mode of a 3-DOF platform counts the solutions from 1.</source>
+        <translation>Режим сборки платформы с 3 степенями свободы считает решения от 1.</translation>
+    </message>
+    <message>
+        <source>The platform points B₁, B₂, B₃ coincide: the platform&apos;s angle is undetermined.</source>
+        <translation>Точки платформы B₁, B₂, B₃ совпадают: угол платформы не определён.</translation>
+    </message>
+    <message>
+        <source>The mechanism cannot be assembled anywhere in its input ranges and modes.</source>
+        <translation>Механизм нельзя собрать нигде в его диапазонах входов и режимах.</translation>
+    </message>
+    <message>
+        <source>input of leg 1 (actuated)</source>
+        <translation>вход ноги 1 (приводной)</translation>
+    </message>
+    <message>
+        <source>input of leg 2 (actuated)</source>
+        <translation>вход ноги 2 (приводной)</translation>
+    </message>
+    <message>
+        <source>input of leg 3 (actuated)</source>
+        <translation>вход ноги 3 (приводной)</translation>
+    </message>
+    <message>
+        <source>The number of inputs does not match the legs.</source>
+        <translation>Число входов не совпадает с числом ног.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside its range [%3, %4].</source>
+        <translation>%1 = %2 вне своего диапазона [%3, %4].</translation>
+    </message>
+    <message>
+        <source>The П-joint of leg %1 cannot take the diagonal %2 = %3 mm.</source>
+        <translation>П-шарнир ноги %1 не может принять диагональ %2 = %3 мм.</translation>
+    </message>
+    <message>
+        <source>The legs cannot be assembled at these inputs in the design&apos;s working and assembly modes.</source>
+        <translation>При этих входах ноги нельзя собрать в рабочих режимах и режиме сборки проекта.</translation>
+    </message>
+    <message>
+        <source>At these inputs the platform has %1 assembly modes in the design&apos;s working modes, fewer than assembly = %2.</source>
+        <translation>При этих входах у платформы %1 режимов сборки в рабочих режимах проекта, меньше чем assembly = %2.</translation>
+    </message>
+    <message>
+        <source>(%1, %2) mm, φ = %3°</source>
+        <translation>(%1, %2) мм, φ = %3°</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1 in this assembly mode: the legs would pass through a direct singularity; switch the assembly mode to go on.</source>
+        <translation>Платформа не может достичь %1 в этом режиме сборки: ноги прошли бы через особое положение прямой кинематики; чтобы продолжить, смените режим сборки.</translation>
+    </message>
+    <message>
+        <source>the input of leg %1 would leave its range</source>
+        <translation>вход ноги %1 вышел бы из своего диапазона</translation>
+    </message>
+    <message>
+        <source>the input of leg %1 is undetermined there</source>
+        <translation>вход ноги %1 там не определён</translation>
+    </message>
+    <message>
+        <source>leg %1 cannot reach it</source>
+        <translation>нога %1 не достаёт до неё</translation>
+    </message>
+    <message>
+        <source>a leg&apos;s proximal and distal links in line</source>
+        <translation>проксимальное и дистальное звенья ноги на одной прямой</translation>
+    </message>
+    <message>
+        <source>the platform gains a freedom</source>
+        <translation>платформа получает свободу</translation>
+    </message>
+    <message>
+        <source>crank %1</source>
+        <translation>кривошип %1</translation>
+    </message>
+    <message>
+        <source>strut %1, motor body</source>
+        <translation>штанга %1, корпус двигателя</translation>
+    </message>
+    <message>
+        <source>strut %1, rod</source>
+        <translation>штанга %1, шток</translation>
+    </message>
+    <message>
+        <source>П-joint %1: crank OC</source>
+        <translation>П-шарнир %1: кривошип OC</translation>
+    </message>
+    <message>
+        <source>П-joint %1: coupler</source>
+        <translation>П-шарнир %1: шатун</translation>
+    </message>
+    <message>
+        <source>П-joint %1: motor body</source>
+        <translation>П-шарнир %1: корпус двигателя</translation>
+    </message>
+    <message>
+        <source>П-joint %1: screw</source>
+        <translation>П-шарнир %1: винт</translation>
+    </message>
+    <message>
+        <source>link %1, parallel</source>
+        <translation>звено %1, параллельное</translation>
+    </message>
+    <message>
+        <source>planar parallel mechanism: legs from the leg library joined at the platform</source>
+        <translation>плоский параллельный механизм: ноги из библиотеки ног, соединённые платформой</translation>
+    </message>
+    <message>
+        <source>Planar parallel mechanism (leg library)</source>
+        <translation>Плоский параллельный механизм (библиотека ног)</translation>
+    </message>
+    <message>
+        <source>leg 1: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 1: нижний предел входа (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 1: верхний предел входа (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: lower limit of the crank angle (R̲RR)</source>
+        <translation>нога 1: нижний предел угла кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: upper limit of the crank angle (R̲RR)</source>
+        <translation>нога 1: верхний предел угла кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 2: нижний предел входа (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 2: верхний предел входа (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: lower limit of the crank angle (R̲RR)</source>
+        <translation>нога 2: нижний предел угла кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: upper limit of the crank angle (R̲RR)</source>
+        <translation>нога 2: верхний предел угла кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 3: нижний предел входа (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 3: верхний предел входа (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: lower limit of the crank angle (R̲RR)</source>
+        <translation>нога 3: нижний предел угла кривошипа (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: upper limit of the crank angle (R̲RR)</source>
+        <translation>нога 3: верхний предел угла кривошипа (R̲RR)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -5072,6 +5448,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>
         <translation>Пример кривошипно-коромыслового механизма, подобранный для PKM Studio: документ Хабибуллиной, Хабибуллина и Исламова о четырёхзвенном механизме не даёт длин звеньев, поэтому эти размеры взяты не из документа. Кривошип AB = 40 мм, шатун BC = 120 мм, коромысло CD = 100 мм, стойка AD = 140 мм: s + l = 180 мм &lt; p + q = 220 мм, и кривошип — самое короткое звено, поэтому кривошип совершает полный оборот (α от 0° до 360°), а коромысло качается; угол передачи остаётся в пределах от 53° до 110°. Открытая ветвь, ω₁ = 10 рад/с, точка шатуна M в середине BC.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: MOMA configuration 3a from two P̲RR legs</source>
+        <translation>Плоский параллельный: конфигурация MOMA 3a из двух ног P̲RR</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3a (Vasilić and Živanović, the MOMA document, fig. 3a) rebuilt from the leg library: two P̲RR legs on guides from R₁ = (−100, 0) and R₂ = (100, 0) mm turned by γ = ∓5° from the vertical (α = 265°, 275°), strokes 0 to 200 mm, links 195 mm, both legs with q = B − √…, the platform right of C₁→C₂. Its poses and Jacobians are the MOMA kind&apos;s.</source>
+        <translation>Конфигурация MOMA 3a (Василич и Живанович, документ о MOMA, рис. 3a), собранная из библиотеки ног: две ноги P̲RR на направляющих от R₁ = (−100, 0) и R₂ = (100, 0) мм, повёрнутых на γ = ∓5° от вертикали (α = 265°, 275°), ходы от 0 до 200 мм, звенья 195 мм, обе ноги с q = B − √…, платформа справа от C₁→C₂. Её позы и матрицы Якоби совпадают с позами и матрицами Якоби вида MOMA.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a 3-RP̲R with six assembly modes</source>
+        <translation>Плоский параллельный: 3-RP̲R с шестью режимами сборки</translation>
+    </message>
+    <message>
+        <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
+        <translation>Механизм 3-RP̲R Инноченти и Паренти-Кастелли, исследованный Зейном, Венгером и Шаблой (статья о переходах между режимами сборки 3-RP̲R без особых положений, журнал «Теория механизмов и машин», 2008): шарниры основания A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), стороны платформы B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. При длинах штанг 14.98, 15.38 и 12 его прямая кинематика имеет шесть вещественных решений.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-R̲RR</source>
+        <translation>Плоский параллельный: симметричный 3-R̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-R̲RR chosen for PKM Studio, of the kind Gosselin and Angeles optimised (The optimum kinematic design of a planar three-degree-of-freedom parallel manipulator, 1988): base joints on an equilateral triangle of side 400 mm, cranks 120 mm, distal links 150 mm, an equilateral platform of circumradius 50 mm, every elbow left of A→P.</source>
+        <translation>Симметричный 3-R̲RR, выбранный для PKM Studio, того вида, который оптимизировали Госселен и Анджелес (статья об оптимальном кинематическом синтезе плоского параллельного манипулятора с тремя степенями свободы, 1988): шарниры основания в вершинах равностороннего треугольника со стороной 400 мм, кривошипы 120 мм, дистальные звенья 150 мм, равносторонняя платформа с радиусом описанной окружности 50 мм, каждый локоть слева от A→P.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a 5R driven by two П-joints</source>
+        <translation>Плоский параллельный: 5R с приводом от двух П-шарниров</translation>
+    </message>
+    <message>
+        <source>The planar 5R of the П-joint document&apos;s fig. 5 (Milutinović, Kokotović, Slavković and Živanović), each crank the crank of a laboratory П-joint (a = 170 mm, k = 0.4, θ = ±60°, diagonal 116.2 to 231.4 mm): pivots A₁ = (0, 0) and A₂ = (200, 0) mm, the П-joints&apos; bases turned by α = ±30°, distal links 200 mm.</source>
+        <translation>Плоский 5R с рис. 5 документа о П-шарнире (Милутинович, Кокотович, Славкович и Живанович), каждый кривошип которого — кривошип лабораторного П-шарнира (a = 170 мм, k = 0.4, θ = ±60°, диагональ от 116.2 до 231.4 мм): опоры A₁ = (0, 0) и A₂ = (200, 0) мм, основания П-шарниров повёрнуты на α = ±30°, дистальные звенья 200 мм.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: the five-bar example from two R̲RR legs</source>
+        <translation>Плоский параллельный: пример пятизвенника из двух ног R̲RR</translation>
+    </message>
+    <message>
+        <source>The five-bar example rebuilt from the leg library (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov, fig. 1): two R̲RR legs from A₁ = (0, 0) and A₂ = (100, 0) mm, cranks 80 mm, distal links 120 mm, elbows out, the platform point above the elbows. Its poses and Jacobians are the five-bar kind&apos;s.</source>
+        <translation>Пример пятизвенника, собранный из библиотеки ног (документ о четырёхзвенном механизме и подвижности Хабибуллиной, Хабибуллина и Исламова, рис. 1): две ноги R̲RR от A₁ = (0, 0) и A₂ = (100, 0) мм, кривошипы 80 мм, дистальные звенья 120 мм, локти наружу, точка платформы над локтями. Его позы и матрицы Якоби совпадают с позами и матрицами Якоби вида пятизвенника.</translation>
     </message>
 </context>
 </TS>

@@ -3064,6 +3064,382 @@ Please verify the correct file name was given.</source>
         <source>form</source>
         <translation>облик</translation>
     </message>
+    <message>
+        <source>input of leg 1</source>
+        <translation>улаз ноге 1</translation>
+    </message>
+    <message>
+        <source>input of leg 2</source>
+        <translation>улаз ноге 2</translation>
+    </message>
+    <message>
+        <source>input of leg 3</source>
+        <translation>улаз ноге 3</translation>
+    </message>
+    <message>
+        <source>platform angle</source>
+        <translation>угао платформе</translation>
+    </message>
+    <message>
+        <source>J_q = diag(∂g_i/∂q_i)</source>
+        <translation>J_q = диаг(∂g_i/∂q_i)</translation>
+    </message>
+    <message>
+        <source>J_x rows −∂g_i/∂X</source>
+        <translation>врсте J_x: −∂g_i/∂X</translation>
+    </message>
+    <message>
+        <source>q̇ = J·Ẋ, J = J_q⁻¹·J_x</source>
+        <translation>q̇ = J·Ẋ, J = J_q⁻¹·J_x</translation>
+    </message>
+    <message>
+        <source>other assembly mode (same inputs)</source>
+        <translation>други склопни режим (исти улази)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (same platform pose)</source>
+        <translation>нога 1: други радни режим (иста поза платформе)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (same platform pose)</source>
+        <translation>нога 2: други радни режим (иста поза платформе)</translation>
+    </message>
+    <message>
+        <source>leg 3: other working mode (same platform pose)</source>
+        <translation>нога 3: други радни режим (иста поза платформе)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is invalid: it must be a whole number.</source>
+        <translation>%1 = %2 није допуштено: мора бити цео број.</translation>
+    </message>
+    <message>
+        <source>The planar parallel mechanism has no parameter named &apos;%1&apos;.</source>
+        <translation>Равански паралелни механизам нема параметар „%1”.</translation>
+    </message>
+    <message>
+        <source>platform: 0 a point (2 DOF), 1 constant orientation (2 DOF), 2 free (3 DOF)</source>
+        <translation>платформа: 0 тачка (2 степена слободе), 1 стална оријентација (2 степена слободе), 2 слободна (3 степена слободе)</translation>
+    </message>
+    <message>
+        <source>leg 1: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>нога 1: тип (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: base point A₁, x</source>
+        <translation>нога 1: тачка основе A₁, x</translation>
+    </message>
+    <message>
+        <source>leg 1: base point A₁, y</source>
+        <translation>нога 1: тачка основе A₁, y</translation>
+    </message>
+    <message>
+        <source>leg 1: platform point B₁ in the platform frame, x</source>
+        <translation>нога 1: тачка платформе B₁ у систему платформе, x</translation>
+    </message>
+    <message>
+        <source>leg 1: platform point B₁ in the platform frame, y</source>
+        <translation>нога 1: тачка платформе B₁ у систему платформе, y</translation>
+    </message>
+    <message>
+        <source>leg 1: crank length (R̲RR)</source>
+        <translation>нога 1: дужина полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: distal link length</source>
+        <translation>нога 1: дужина дисталне спојке</translation>
+    </message>
+    <message>
+        <source>leg 1: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>нога 1: правац вођице (P̲RR) или основе П-зглоба (П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: П-joint crank (lever) length</source>
+        <translation>нога 1: дужина полуге П-зглоба</translation>
+    </message>
+    <message>
+        <source>leg 1: П-joint ratio k = b/a</source>
+        <translation>нога 1: однос П-зглоба k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 1: working mode (+1 elbow left of A₁→P₁; P̲RR: sign in q = B ± √…)</source>
+        <translation>нога 1: радни режим (+1 лакат лево од A₁→P₁; P̲RR: знак у q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>leg 2: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>нога 2: тип (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: base point A₂, x</source>
+        <translation>нога 2: тачка основе A₂, x</translation>
+    </message>
+    <message>
+        <source>leg 2: base point A₂, y</source>
+        <translation>нога 2: тачка основе A₂, y</translation>
+    </message>
+    <message>
+        <source>leg 2: platform point B₂ in the platform frame, x</source>
+        <translation>нога 2: тачка платформе B₂ у систему платформе, x</translation>
+    </message>
+    <message>
+        <source>leg 2: platform point B₂ in the platform frame, y</source>
+        <translation>нога 2: тачка платформе B₂ у систему платформе, y</translation>
+    </message>
+    <message>
+        <source>leg 2: crank length (R̲RR)</source>
+        <translation>нога 2: дужина полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: distal link length</source>
+        <translation>нога 2: дужина дисталне спојке</translation>
+    </message>
+    <message>
+        <source>leg 2: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>нога 2: правац вођице (P̲RR) или основе П-зглоба (П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: П-joint crank (lever) length</source>
+        <translation>нога 2: дужина полуге П-зглоба</translation>
+    </message>
+    <message>
+        <source>leg 2: П-joint ratio k = b/a</source>
+        <translation>нога 2: однос П-зглоба k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 2: working mode (+1 elbow left of A₂→P₂; P̲RR: sign in q = B ± √…)</source>
+        <translation>нога 2: радни режим (+1 лакат лево од A₂→P₂; P̲RR: знак у q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>leg 3: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>нога 3: тип (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: base point A₃, x</source>
+        <translation>нога 3: тачка основе A₃, x</translation>
+    </message>
+    <message>
+        <source>leg 3: base point A₃, y</source>
+        <translation>нога 3: тачка основе A₃, y</translation>
+    </message>
+    <message>
+        <source>leg 3: platform point B₃ in the platform frame, x</source>
+        <translation>нога 3: тачка платформе B₃ у систему платформе, x</translation>
+    </message>
+    <message>
+        <source>leg 3: platform point B₃ in the platform frame, y</source>
+        <translation>нога 3: тачка платформе B₃ у систему платформе, y</translation>
+    </message>
+    <message>
+        <source>leg 3: crank length (R̲RR)</source>
+        <translation>нога 3: дужина полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: distal link length</source>
+        <translation>нога 3: дужина дисталне спојке</translation>
+    </message>
+    <message>
+        <source>leg 3: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>нога 3: правац вођице (P̲RR) или основе П-зглоба (П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: П-joint crank (lever) length</source>
+        <translation>нога 3: дужина полуге П-зглоба</translation>
+    </message>
+    <message>
+        <source>leg 3: П-joint ratio k = b/a</source>
+        <translation>нога 3: однос П-зглоба k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 3: working mode (+1 elbow left of A₃→P₃; P̲RR: sign in q = B ± √…)</source>
+        <translation>нога 3: радни режим (+1 лакат лево од A₃→P₃; P̲RR: знак у q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>assembly mode: 2 DOF +1 platform left of C₁→C₂, −1 right; 3 DOF the n-th solution in order of φ</source>
+        <translation>склопни режим: за 2 степена слободе +1 платформа лево од C₁→C₂, −1 десно; за 3 — n-то решење по растућем φ</translation>
+    </message>
+    <message>
+        <source>platform angle φ of the workspace map (3 DOF)</source>
+        <translation>угао платформе φ за мапу радног простора (3 степена слободе)</translation>
+    </message>
+    <message>
+        <source>%1 must be less than %2.</source>
+        <translation>%1 мора бити мање од %2.</translation>
+    </message>
+    <message>
+        <source>The range of crank %1 spans more than one turn (360°).</source>
+        <translation>Опсег полуге %1 већи је од једног обрта (360°).</translation>
+    </message>
+    <message>
+        <source>%1 must be positive: it is the length of strut %2.</source>
+        <translation>%1 мора бити позитивно: то је дужина шипке %2.</translation>
+    </message>
+    <message>
+        <source>The diagonal of П-joint %1 must stay strictly between %2 mm and %3 mm (θ between −90° and 90°).</source>
+        <translation>Дијагонала П-зглоба %1 мора бити строго између %2 мм и %3 мм (θ између −90° и 90°).</translation>
+    </message>
+    <message>
+        <source>A platform of constant orientation needs P̲RR or П̲RR legs: leg %1&apos;s distal parallelogram must hang from a body that does not turn.</source>
+        <translation>Платформи сталне оријентације потребне су ноге P̲RR или П̲RR: дистални паралелограм ноге %1 мора висити о телу које се не окреће.</translation>
+    </message>
+    <message>
+        <source>The assembly mode of a 3-DOF platform counts the solutions from 1.</source>
+        <translation>Склопни режим платформе са 3 степена слободе броји решења од 1.</translation>
+    </message>
+    <message>
+        <source>The platform points B₁, B₂, B₃ coincide: the platform&apos;s angle is undetermined.</source>
+        <translation>Тачке платформе B₁, B₂, B₃ се поклапају: угао платформе није одређен.</translation>
+    </message>
+    <message>
+        <source>The mechanism cannot be assembled anywhere in its input ranges and modes.</source>
+        <translation>Механизам се не може склопити нигде у својим опсезима улаза и режимима.</translation>
+    </message>
+    <message>
+        <source>input of leg 1 (actuated)</source>
+        <translation>улаз ноге 1 (погонски)</translation>
+    </message>
+    <message>
+        <source>input of leg 2 (actuated)</source>
+        <translation>улаз ноге 2 (погонски)</translation>
+    </message>
+    <message>
+        <source>input of leg 3 (actuated)</source>
+        <translation>улаз ноге 3 (погонски)</translation>
+    </message>
+    <message>
+        <source>The number of inputs does not match the legs.</source>
+        <translation>Број улаза не одговара броју ногу.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside its range [%3, %4].</source>
+        <translation>%1 = %2 је изван свог опсега [%3, %4].</translation>
+    </message>
+    <message>
+        <source>The П-joint of leg %1 cannot take the diagonal %2 = %3 mm.</source>
+        <translation>П-зглоб ноге %1 не може имати дијагоналу %2 = %3 мм.</translation>
+    </message>
+    <message>
+        <source>The legs cannot be assembled at these inputs in the design&apos;s working and assembly modes.</source>
+        <translation>При овим улазима ноге се не могу склопити у радним и склопном режиму пројекта.</translation>
+    </message>
+    <message>
+        <source>At these inputs the platform has %1 assembly modes in the design&apos;s working modes, fewer than assembly = %2.</source>
+        <translation>При овим улазима платформа има %1 склопних режима у радним режимима пројекта, мање од assembly = %2.</translation>
+    </message>
+    <message>
+        <source>(%1, %2) mm, φ = %3°</source>
+        <translation>(%1, %2) мм, φ = %3°</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1 in this assembly mode: the legs would pass through a direct singularity; switch the assembly mode to go on.</source>
+        <translation>Платформа не може достићи %1 у овом склопном режиму: ноге би прошле кроз сингуларитет директне кинематике; промените склопни режим да бисте наставили.</translation>
+    </message>
+    <message>
+        <source>the input of leg %1 would leave its range</source>
+        <translation>улаз ноге %1 изашао би из свог опсега</translation>
+    </message>
+    <message>
+        <source>the input of leg %1 is undetermined there</source>
+        <translation>улаз ноге %1 ту није одређен</translation>
+    </message>
+    <message>
+        <source>leg %1 cannot reach it</source>
+        <translation>нога %1 не може да је достигне</translation>
+    </message>
+    <message>
+        <source>a leg&apos;s proximal and distal links in line</source>
+        <translation>проксимална и дистална спојка ноге у линији</translation>
+    </message>
+    <message>
+        <source>the platform gains a freedom</source>
+        <translation>платформа добија слободу</translation>
+    </message>
+    <message>
+        <source>crank %1</source>
+        <translation>полуга %1</translation>
+    </message>
+    <message>
+        <source>strut %1, motor body</source>
+        <translation>шипка %1, кућиште мотора</translation>
+    </message>
+    <message>
+        <source>strut %1, rod</source>
+        <translation>шипка %1, клип</translation>
+    </message>
+    <message>
+        <source>П-joint %1: crank OC</source>
+        <translation>П-зглоб %1: полуга OC</translation>
+    </message>
+    <message>
+        <source>П-joint %1: coupler</source>
+        <translation>П-зглоб %1: спојка</translation>
+    </message>
+    <message>
+        <source>П-joint %1: motor body</source>
+        <translation>П-зглоб %1: кућиште мотора</translation>
+    </message>
+    <message>
+        <source>П-joint %1: screw</source>
+        <translation>П-зглоб %1: вретено</translation>
+    </message>
+    <message>
+        <source>link %1, parallel</source>
+        <translation>спојка %1, паралелна</translation>
+    </message>
+    <message>
+        <source>planar parallel mechanism: legs from the leg library joined at the platform</source>
+        <translation>равански паралелни механизам: ноге из библиотеке ногу спојене платформом</translation>
+    </message>
+    <message>
+        <source>Planar parallel mechanism (leg library)</source>
+        <translation>Равански паралелни механизам (библиотека ногу)</translation>
+    </message>
+    <message>
+        <source>leg 1: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 1: доња граница улаза (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 1: горња граница улаза (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: lower limit of the crank angle (R̲RR)</source>
+        <translation>нога 1: доња граница угла полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: upper limit of the crank angle (R̲RR)</source>
+        <translation>нога 1: горња граница угла полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 2: доња граница улаза (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 2: горња граница улаза (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: lower limit of the crank angle (R̲RR)</source>
+        <translation>нога 2: доња граница угла полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: upper limit of the crank angle (R̲RR)</source>
+        <translation>нога 2: горња граница угла полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 3: доња граница улаза (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>нога 3: горња граница улаза (P̲RR, RP̲R, П̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: lower limit of the crank angle (R̲RR)</source>
+        <translation>нога 3: доња граница угла полуге (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: upper limit of the crank angle (R̲RR)</source>
+        <translation>нога 3: горња граница угла полуге (R̲RR)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -5072,6 +5448,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>
         <translation>Пример механизма полуга–клацкалица изабран за PKM Studio: документ Хабибулине, Хабибулина и Исламова о зглобном четвороуглу не даје дужине чланова, па ове вредности нису из документа. Полуга AB = 40 mm, спојка BC = 120 mm, клацкалица CD = 100 mm, постоље AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm, а полуга је најкраћи члан, па се полуга окреће пуним кругом (α од 0° до 360°), а клацкалица осцилује; угао преноса остаје између 53° и 110°. Отворена грана, ω₁ = 10 rad/s, тачка спојке M на средини BC.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: MOMA configuration 3a from two P̲RR legs</source>
+        <translation>Равански паралелни: конфигурација MOMA 3a од две ноге P̲RR</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3a (Vasilić and Živanović, the MOMA document, fig. 3a) rebuilt from the leg library: two P̲RR legs on guides from R₁ = (−100, 0) and R₂ = (100, 0) mm turned by γ = ∓5° from the vertical (α = 265°, 275°), strokes 0 to 200 mm, links 195 mm, both legs with q = B − √…, the platform right of C₁→C₂. Its poses and Jacobians are the MOMA kind&apos;s.</source>
+        <translation>Конфигурација MOMA 3a (Васић и Живановић, документ о MOMA, сл. 3a) састављена из библиотеке ногу: две ноге P̲RR на вођицама од R₁ = (−100, 0) и R₂ = (100, 0) мм, закренутим за γ = ∓5° од вертикале (α = 265°, 275°), ходови од 0 до 200 мм, спојке 195 мм, обе ноге са q = B − √…, платформа десно од C₁→C₂. Њене позе и Јакобијан матрице исте су као код врсте MOMA.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a 3-RP̲R with six assembly modes</source>
+        <translation>Равански паралелни: 3-RP̲R са шест склопних режима</translation>
+    </message>
+    <message>
+        <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
+        <translation>Механизам 3-RP̲R Иноћентија и Паренти-Кастелија, који су проучавали Зеин, Венгер и Шабла (чланак о прелазима између склопних режима 3-RP̲R без сингуларитета, часопис „Теорија механизама и машина”, 2008): зглобови основе A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), странице платформе B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. При дужинама шипки 14.98, 15.38 и 12 његова директна кинематика има шест реалних решења.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-R̲RR</source>
+        <translation>Равански паралелни: симетрични 3-R̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-R̲RR chosen for PKM Studio, of the kind Gosselin and Angeles optimised (The optimum kinematic design of a planar three-degree-of-freedom parallel manipulator, 1988): base joints on an equilateral triangle of side 400 mm, cranks 120 mm, distal links 150 mm, an equilateral platform of circumradius 50 mm, every elbow left of A→P.</source>
+        <translation>Симетрични 3-R̲RR изабран за PKM Studio, оне врсте коју су оптимизовали Госелен и Анђелес (чланак о оптималној кинематичкој синтези раванског паралелног манипулатора са три степена слободе, 1988): зглобови основе у теменима једнакостраничног троугла странице 400 мм, полуге 120 мм, дисталне спојке 150 мм, једнакостранична платформа полупречника описаног круга 50 мм, сваки лакат лево од A→P.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a 5R driven by two П-joints</source>
+        <translation>Равански паралелни: 5R погоњен са два П-зглоба</translation>
+    </message>
+    <message>
+        <source>The planar 5R of the П-joint document&apos;s fig. 5 (Milutinović, Kokotović, Slavković and Živanović), each crank the crank of a laboratory П-joint (a = 170 mm, k = 0.4, θ = ±60°, diagonal 116.2 to 231.4 mm): pivots A₁ = (0, 0) and A₂ = (200, 0) mm, the П-joints&apos; bases turned by α = ±30°, distal links 200 mm.</source>
+        <translation>Равански 5R са сл. 5 документа о П-зглобу (Милутиновић, Кокотовић, Славковић и Живановић), чија је свака полуга полуга лабораторијског П-зглоба (a = 170 мм, k = 0.4, θ = ±60°, дијагонала од 116.2 до 231.4 мм): ослонци A₁ = (0, 0) и A₂ = (200, 0) мм, основе П-зглобова закренуте за α = ±30°, дисталне спојке 200 мм.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: the five-bar example from two R̲RR legs</source>
+        <translation>Равански паралелни: пример петочланог механизма од две ноге R̲RR</translation>
+    </message>
+    <message>
+        <source>The five-bar example rebuilt from the leg library (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov, fig. 1): two R̲RR legs from A₁ = (0, 0) and A₂ = (100, 0) mm, cranks 80 mm, distal links 120 mm, elbows out, the platform point above the elbows. Its poses and Jacobians are the five-bar kind&apos;s.</source>
+        <translation>Пример петочланог механизма састављен из библиотеке ногу (документ о зглобном четвороуглу и покретљивости Хабибулине, Хабибулина и Исламова, сл. 1): две ноге R̲RR од A₁ = (0, 0) и A₂ = (100, 0) мм, полуге 80 мм, дисталне спојке 120 мм, лактови ка споља, тачка платформе изнад лактова. Његове позе и Јакобијан матрице исте су као код врсте петочланог механизма.</translation>
     </message>
 </context>
 </TS>

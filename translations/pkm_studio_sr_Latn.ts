@@ -3064,6 +3064,382 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>form</source>
         <translation>oblik</translation>
     </message>
+    <message>
+        <source>input of leg 1</source>
+        <translation>ulaz noge 1</translation>
+    </message>
+    <message>
+        <source>input of leg 2</source>
+        <translation>ulaz noge 2</translation>
+    </message>
+    <message>
+        <source>input of leg 3</source>
+        <translation>ulaz noge 3</translation>
+    </message>
+    <message>
+        <source>platform angle</source>
+        <translation>ugao platforme</translation>
+    </message>
+    <message>
+        <source>J_q = diag(∂g_i/∂q_i)</source>
+        <translation>J_q = diag(∂g_i/∂q_i)</translation>
+    </message>
+    <message>
+        <source>J_x rows −∂g_i/∂X</source>
+        <translation>vrste J_x: −∂g_i/∂X</translation>
+    </message>
+    <message>
+        <source>q̇ = J·Ẋ, J = J_q⁻¹·J_x</source>
+        <translation>q̇ = J·Ẋ, J = J_q⁻¹·J_x</translation>
+    </message>
+    <message>
+        <source>other assembly mode (same inputs)</source>
+        <translation>drugi sklopni režim (isti ulazi)</translation>
+    </message>
+    <message>
+        <source>leg 1: other working mode (same platform pose)</source>
+        <translation>noga 1: drugi radni režim (ista poza platforme)</translation>
+    </message>
+    <message>
+        <source>leg 2: other working mode (same platform pose)</source>
+        <translation>noga 2: drugi radni režim (ista poza platforme)</translation>
+    </message>
+    <message>
+        <source>leg 3: other working mode (same platform pose)</source>
+        <translation>noga 3: drugi radni režim (ista poza platforme)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is invalid: it must be a whole number.</source>
+        <translation>%1 = %2 nije dopušteno: mora biti ceo broj.</translation>
+    </message>
+    <message>
+        <source>The planar parallel mechanism has no parameter named &apos;%1&apos;.</source>
+        <translation>Ravanski paralelni mehanizam nema parametar „%1”.</translation>
+    </message>
+    <message>
+        <source>platform: 0 a point (2 DOF), 1 constant orientation (2 DOF), 2 free (3 DOF)</source>
+        <translation>platforma: 0 tačka (2 stepena slobode), 1 stalna orijentacija (2 stepena slobode), 2 slobodna (3 stepena slobode)</translation>
+    </message>
+    <message>
+        <source>leg 1: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>noga 1: tip (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: base point A₁, x</source>
+        <translation>noga 1: tačka osnove A₁, x</translation>
+    </message>
+    <message>
+        <source>leg 1: base point A₁, y</source>
+        <translation>noga 1: tačka osnove A₁, y</translation>
+    </message>
+    <message>
+        <source>leg 1: platform point B₁ in the platform frame, x</source>
+        <translation>noga 1: tačka platforme B₁ u sistemu platforme, x</translation>
+    </message>
+    <message>
+        <source>leg 1: platform point B₁ in the platform frame, y</source>
+        <translation>noga 1: tačka platforme B₁ u sistemu platforme, y</translation>
+    </message>
+    <message>
+        <source>leg 1: crank length (R̲RR)</source>
+        <translation>noga 1: dužina poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: distal link length</source>
+        <translation>noga 1: dužina distalne spojke</translation>
+    </message>
+    <message>
+        <source>leg 1: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>noga 1: pravac vođice (P̲RR) ili osnove P-zgloba (P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: П-joint crank (lever) length</source>
+        <translation>noga 1: dužina poluge P-zgloba</translation>
+    </message>
+    <message>
+        <source>leg 1: П-joint ratio k = b/a</source>
+        <translation>noga 1: odnos P-zgloba k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 1: working mode (+1 elbow left of A₁→P₁; P̲RR: sign in q = B ± √…)</source>
+        <translation>noga 1: radni režim (+1 lakat levo od A₁→P₁; P̲RR: znak u q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>leg 2: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>noga 2: tip (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: base point A₂, x</source>
+        <translation>noga 2: tačka osnove A₂, x</translation>
+    </message>
+    <message>
+        <source>leg 2: base point A₂, y</source>
+        <translation>noga 2: tačka osnove A₂, y</translation>
+    </message>
+    <message>
+        <source>leg 2: platform point B₂ in the platform frame, x</source>
+        <translation>noga 2: tačka platforme B₂ u sistemu platforme, x</translation>
+    </message>
+    <message>
+        <source>leg 2: platform point B₂ in the platform frame, y</source>
+        <translation>noga 2: tačka platforme B₂ u sistemu platforme, y</translation>
+    </message>
+    <message>
+        <source>leg 2: crank length (R̲RR)</source>
+        <translation>noga 2: dužina poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: distal link length</source>
+        <translation>noga 2: dužina distalne spojke</translation>
+    </message>
+    <message>
+        <source>leg 2: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>noga 2: pravac vođice (P̲RR) ili osnove P-zgloba (P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: П-joint crank (lever) length</source>
+        <translation>noga 2: dužina poluge P-zgloba</translation>
+    </message>
+    <message>
+        <source>leg 2: П-joint ratio k = b/a</source>
+        <translation>noga 2: odnos P-zgloba k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 2: working mode (+1 elbow left of A₂→P₂; P̲RR: sign in q = B ± √…)</source>
+        <translation>noga 2: radni režim (+1 lakat levo od A₂→P₂; P̲RR: znak u q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>leg 3: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)</source>
+        <translation>noga 3: tip (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: base point A₃, x</source>
+        <translation>noga 3: tačka osnove A₃, x</translation>
+    </message>
+    <message>
+        <source>leg 3: base point A₃, y</source>
+        <translation>noga 3: tačka osnove A₃, y</translation>
+    </message>
+    <message>
+        <source>leg 3: platform point B₃ in the platform frame, x</source>
+        <translation>noga 3: tačka platforme B₃ u sistemu platforme, x</translation>
+    </message>
+    <message>
+        <source>leg 3: platform point B₃ in the platform frame, y</source>
+        <translation>noga 3: tačka platforme B₃ u sistemu platforme, y</translation>
+    </message>
+    <message>
+        <source>leg 3: crank length (R̲RR)</source>
+        <translation>noga 3: dužina poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: distal link length</source>
+        <translation>noga 3: dužina distalne spojke</translation>
+    </message>
+    <message>
+        <source>leg 3: direction of the guide (P̲RR) or of the П-joint base (П̲RR)</source>
+        <translation>noga 3: pravac vođice (P̲RR) ili osnove P-zgloba (P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: П-joint crank (lever) length</source>
+        <translation>noga 3: dužina poluge P-zgloba</translation>
+    </message>
+    <message>
+        <source>leg 3: П-joint ratio k = b/a</source>
+        <translation>noga 3: odnos P-zgloba k = b/a</translation>
+    </message>
+    <message>
+        <source>leg 3: working mode (+1 elbow left of A₃→P₃; P̲RR: sign in q = B ± √…)</source>
+        <translation>noga 3: radni režim (+1 lakat levo od A₃→P₃; P̲RR: znak u q = B ± √…)</translation>
+    </message>
+    <message>
+        <source>assembly mode: 2 DOF +1 platform left of C₁→C₂, −1 right; 3 DOF the n-th solution in order of φ</source>
+        <translation>sklopni režim: za 2 stepena slobode +1 platforma levo od C₁→C₂, −1 desno; za 3 — n-to rešenje po rastućem φ</translation>
+    </message>
+    <message>
+        <source>platform angle φ of the workspace map (3 DOF)</source>
+        <translation>ugao platforme φ za mapu radnog prostora (3 stepena slobode)</translation>
+    </message>
+    <message>
+        <source>%1 must be less than %2.</source>
+        <translation>%1 mora biti manje od %2.</translation>
+    </message>
+    <message>
+        <source>The range of crank %1 spans more than one turn (360°).</source>
+        <translation>Opseg poluge %1 veći je od jednog obrta (360°).</translation>
+    </message>
+    <message>
+        <source>%1 must be positive: it is the length of strut %2.</source>
+        <translation>%1 mora biti pozitivno: to je dužina šipke %2.</translation>
+    </message>
+    <message>
+        <source>The diagonal of П-joint %1 must stay strictly between %2 mm and %3 mm (θ between −90° and 90°).</source>
+        <translation>Dijagonala P-zgloba %1 mora biti strogo između %2 mm i %3 mm (θ između −90° i 90°).</translation>
+    </message>
+    <message>
+        <source>A platform of constant orientation needs P̲RR or П̲RR legs: leg %1&apos;s distal parallelogram must hang from a body that does not turn.</source>
+        <translation>Platformi stalne orijentacije potrebne su noge P̲RR ili P̲RR: distalni paralelogram noge %1 mora visiti o telu koje se ne okreće.</translation>
+    </message>
+    <message>
+        <source>The assembly mode of a 3-DOF platform counts the solutions from 1.</source>
+        <translation>Sklopni režim platforme sa 3 stepena slobode broji rešenja od 1.</translation>
+    </message>
+    <message>
+        <source>The platform points B₁, B₂, B₃ coincide: the platform&apos;s angle is undetermined.</source>
+        <translation>Tačke platforme B₁, B₂, B₃ se poklapaju: ugao platforme nije određen.</translation>
+    </message>
+    <message>
+        <source>The mechanism cannot be assembled anywhere in its input ranges and modes.</source>
+        <translation>Mehanizam se ne može sklopiti nigde u svojim opsezima ulaza i režimima.</translation>
+    </message>
+    <message>
+        <source>input of leg 1 (actuated)</source>
+        <translation>ulaz noge 1 (pogonski)</translation>
+    </message>
+    <message>
+        <source>input of leg 2 (actuated)</source>
+        <translation>ulaz noge 2 (pogonski)</translation>
+    </message>
+    <message>
+        <source>input of leg 3 (actuated)</source>
+        <translation>ulaz noge 3 (pogonski)</translation>
+    </message>
+    <message>
+        <source>The number of inputs does not match the legs.</source>
+        <translation>Broj ulaza ne odgovara broju nogu.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside its range [%3, %4].</source>
+        <translation>%1 = %2 je izvan svog opsega [%3, %4].</translation>
+    </message>
+    <message>
+        <source>The П-joint of leg %1 cannot take the diagonal %2 = %3 mm.</source>
+        <translation>P-zglob noge %1 ne može imati dijagonalu %2 = %3 mm.</translation>
+    </message>
+    <message>
+        <source>The legs cannot be assembled at these inputs in the design&apos;s working and assembly modes.</source>
+        <translation>Pri ovim ulazima noge se ne mogu sklopiti u radnim i sklopnom režimu projekta.</translation>
+    </message>
+    <message>
+        <source>At these inputs the platform has %1 assembly modes in the design&apos;s working modes, fewer than assembly = %2.</source>
+        <translation>Pri ovim ulazima platforma ima %1 sklopnih režima u radnim režimima projekta, manje od assembly = %2.</translation>
+    </message>
+    <message>
+        <source>(%1, %2) mm, φ = %3°</source>
+        <translation>(%1, %2) mm, φ = %3°</translation>
+    </message>
+    <message>
+        <source>The platform cannot reach %1 in this assembly mode: the legs would pass through a direct singularity; switch the assembly mode to go on.</source>
+        <translation>Platforma ne može dostići %1 u ovom sklopnom režimu: noge bi prošle kroz singularitet direktne kinematike; promenite sklopni režim da biste nastavili.</translation>
+    </message>
+    <message>
+        <source>the input of leg %1 would leave its range</source>
+        <translation>ulaz noge %1 izašao bi iz svog opsega</translation>
+    </message>
+    <message>
+        <source>the input of leg %1 is undetermined there</source>
+        <translation>ulaz noge %1 tu nije određen</translation>
+    </message>
+    <message>
+        <source>leg %1 cannot reach it</source>
+        <translation>noga %1 ne može da je dostigne</translation>
+    </message>
+    <message>
+        <source>a leg&apos;s proximal and distal links in line</source>
+        <translation>proksimalna i distalna spojka noge u liniji</translation>
+    </message>
+    <message>
+        <source>the platform gains a freedom</source>
+        <translation>platforma dobija slobodu</translation>
+    </message>
+    <message>
+        <source>crank %1</source>
+        <translation>poluga %1</translation>
+    </message>
+    <message>
+        <source>strut %1, motor body</source>
+        <translation>šipka %1, kućište motora</translation>
+    </message>
+    <message>
+        <source>strut %1, rod</source>
+        <translation>šipka %1, klip</translation>
+    </message>
+    <message>
+        <source>П-joint %1: crank OC</source>
+        <translation>P-zglob %1: poluga OC</translation>
+    </message>
+    <message>
+        <source>П-joint %1: coupler</source>
+        <translation>P-zglob %1: spojka</translation>
+    </message>
+    <message>
+        <source>П-joint %1: motor body</source>
+        <translation>P-zglob %1: kućište motora</translation>
+    </message>
+    <message>
+        <source>П-joint %1: screw</source>
+        <translation>P-zglob %1: vreteno</translation>
+    </message>
+    <message>
+        <source>link %1, parallel</source>
+        <translation>spojka %1, paralelna</translation>
+    </message>
+    <message>
+        <source>planar parallel mechanism: legs from the leg library joined at the platform</source>
+        <translation>ravanski paralelni mehanizam: noge iz biblioteke nogu spojene platformom</translation>
+    </message>
+    <message>
+        <source>Planar parallel mechanism (leg library)</source>
+        <translation>Ravanski paralelni mehanizam (biblioteka nogu)</translation>
+    </message>
+    <message>
+        <source>leg 1: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>noga 1: donja granica ulaza (P̲RR, RP̲R, P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>noga 1: gornja granica ulaza (P̲RR, RP̲R, P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: lower limit of the crank angle (R̲RR)</source>
+        <translation>noga 1: donja granica ugla poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 1: upper limit of the crank angle (R̲RR)</source>
+        <translation>noga 1: gornja granica ugla poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>noga 2: donja granica ulaza (P̲RR, RP̲R, P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>noga 2: gornja granica ulaza (P̲RR, RP̲R, P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: lower limit of the crank angle (R̲RR)</source>
+        <translation>noga 2: donja granica ugla poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 2: upper limit of the crank angle (R̲RR)</source>
+        <translation>noga 2: gornja granica ugla poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: lower limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>noga 3: donja granica ulaza (P̲RR, RP̲R, P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: upper limit of the input (P̲RR, RP̲R, П̲RR)</source>
+        <translation>noga 3: gornja granica ulaza (P̲RR, RP̲R, P̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: lower limit of the crank angle (R̲RR)</source>
+        <translation>noga 3: donja granica ugla poluge (R̲RR)</translation>
+    </message>
+    <message>
+        <source>leg 3: upper limit of the crank angle (R̲RR)</source>
+        <translation>noga 3: gornja granica ugla poluge (R̲RR)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -5072,6 +5448,46 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>
         <translation>Primer mehanizma poluga–klackalica izabran za PKM Studio: dokument Habibuline, Habibulina i Islamova o zglobnom četvorouglu ne daje dužine članova, pa ove vrednosti nisu iz dokumenta. Poluga AB = 40 mm, spojka BC = 120 mm, klackalica CD = 100 mm, postolje AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm, a poluga je najkraći član, pa se poluga okreće punim krugom (α od 0° do 360°), a klackalica osciluje; ugao prenosa ostaje između 53° i 110°. Otvorena grana, ω₁ = 10 rad/s, tačka spojke M na sredini BC.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: MOMA configuration 3a from two P̲RR legs</source>
+        <translation>Ravanski paralelni: konfiguracija MOMA 3a od dve noge P̲RR</translation>
+    </message>
+    <message>
+        <source>MOMA configuration 3a (Vasilić and Živanović, the MOMA document, fig. 3a) rebuilt from the leg library: two P̲RR legs on guides from R₁ = (−100, 0) and R₂ = (100, 0) mm turned by γ = ∓5° from the vertical (α = 265°, 275°), strokes 0 to 200 mm, links 195 mm, both legs with q = B − √…, the platform right of C₁→C₂. Its poses and Jacobians are the MOMA kind&apos;s.</source>
+        <translation>Konfiguracija MOMA 3a (Vasić i Živanović, dokument o MOMA, sl. 3a) sastavljena iz biblioteke nogu: dve noge P̲RR na vođicama od R₁ = (−100, 0) i R₂ = (100, 0) mm, zakrenutim za γ = ∓5° od vertikale (α = 265°, 275°), hodovi od 0 do 200 mm, spojke 195 mm, obe noge sa q = B − √…, platforma desno od C₁→C₂. Njene poze i Jakobijan matrice iste su kao kod vrste MOMA.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a 3-RP̲R with six assembly modes</source>
+        <translation>Ravanski paralelni: 3-RP̲R sa šest sklopnih režima</translation>
+    </message>
+    <message>
+        <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
+        <translation>Mehanizam 3-RP̲R Inoćentija i Parenti-Kastelija, koji su proučavali Zein, Venger i Šabla (članak o prelazima između sklopnih režima 3-RP̲R bez singulariteta, časopis „Teorija mehanizama i mašina”, 2008): zglobovi osnove A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), stranice platforme B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. Pri dužinama šipki 14.98, 15.38 i 12 njegova direktna kinematika ima šest realnih rešenja.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-R̲RR</source>
+        <translation>Ravanski paralelni: simetrični 3-R̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-R̲RR chosen for PKM Studio, of the kind Gosselin and Angeles optimised (The optimum kinematic design of a planar three-degree-of-freedom parallel manipulator, 1988): base joints on an equilateral triangle of side 400 mm, cranks 120 mm, distal links 150 mm, an equilateral platform of circumradius 50 mm, every elbow left of A→P.</source>
+        <translation>Simetrični 3-R̲RR izabran za PKM Studio, one vrste koju su optimizovali Goselen i Anđeles (članak o optimalnoj kinematičkoj sintezi ravanskog paralelnog manipulatora sa tri stepena slobode, 1988): zglobovi osnove u temenima jednakostraničnog trougla stranice 400 mm, poluge 120 mm, distalne spojke 150 mm, jednakostranična platforma poluprečnika opisanog kruga 50 mm, svaki lakat levo od A→P.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a 5R driven by two П-joints</source>
+        <translation>Ravanski paralelni: 5R pogonjen sa dva P-zgloba</translation>
+    </message>
+    <message>
+        <source>The planar 5R of the П-joint document&apos;s fig. 5 (Milutinović, Kokotović, Slavković and Živanović), each crank the crank of a laboratory П-joint (a = 170 mm, k = 0.4, θ = ±60°, diagonal 116.2 to 231.4 mm): pivots A₁ = (0, 0) and A₂ = (200, 0) mm, the П-joints&apos; bases turned by α = ±30°, distal links 200 mm.</source>
+        <translation>Ravanski 5R sa sl. 5 dokumenta o P-zglobu (Milutinović, Kokotović, Slavković i Živanović), čija je svaka poluga poluga laboratorijskog P-zgloba (a = 170 mm, k = 0.4, θ = ±60°, dijagonala od 116.2 do 231.4 mm): oslonci A₁ = (0, 0) i A₂ = (200, 0) mm, osnove P-zglobova zakrenute za α = ±30°, distalne spojke 200 mm.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: the five-bar example from two R̲RR legs</source>
+        <translation>Ravanski paralelni: primer petočlanog mehanizma od dve noge R̲RR</translation>
+    </message>
+    <message>
+        <source>The five-bar example rebuilt from the leg library (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov, fig. 1): two R̲RR legs from A₁ = (0, 0) and A₂ = (100, 0) mm, cranks 80 mm, distal links 120 mm, elbows out, the platform point above the elbows. Its poses and Jacobians are the five-bar kind&apos;s.</source>
+        <translation>Primer petočlanog mehanizma sastavljen iz biblioteke nogu (dokument o zglobnom četvorouglu i pokretljivosti Habibuline, Habibulina i Islamova, sl. 1): dve noge R̲RR od A₁ = (0, 0) i A₂ = (100, 0) mm, poluge 80 mm, distalne spojke 120 mm, laktovi ka spolja, tačka platforme iznad laktova. Njegove poze i Jakobijan matrice iste su kao kod vrste petočlanog mehanizma.</translation>
     </message>
 </context>
 </TS>

@@ -5,6 +5,7 @@
 #include "moma/moma.h"
 #include "oxglide/oxglide.h"
 #include "pjoint/pjoint.h"
+#include "planarparallel/planarparallel.h"
 #include "text.h"
 
 namespace pkm {
@@ -17,6 +18,7 @@ const std::vector<MechanismKind> &mechanismKinds()
         {"oxglide", QT_TRANSLATE_NOOP("core", "O-X glide hybrid mechanism"), &OxGlide::createFrom},
         {"fourbar", QT_TRANSLATE_NOOP("core", "Planar four-bar linkage"), &FourBar::createFrom},
         {"fivebar", QT_TRANSLATE_NOOP("core", "Planar five-bar linkage"), &FiveBar::createFrom},
+        {"planar-parallel", QT_TRANSLATE_NOOP("core", "Planar parallel mechanism (leg library)"), &PlanarParallel::createFrom},
     };
     return kinds;
 }

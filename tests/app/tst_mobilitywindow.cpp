@@ -38,6 +38,7 @@ const std::map<QString, ExpectedReport> &expectedReports()
         {QStringLiteral("fivebar-example"), {"= 2", "= −1", 2}},
         {QStringLiteral("oxglide-prototype"), {"", "= 1", 4}},
         {QStringLiteral("fourbar-example"), {"= 1", "= −2", 1}},
+        {QStringLiteral("pp-2prr-moma3a"), {"= 2", "= −1", 2}}, // MOMA 3a from two P̲RR legs
     };
     return reports;
 }

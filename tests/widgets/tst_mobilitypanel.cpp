@@ -71,6 +71,10 @@ const std::map<QString, ExpectedPanel> &expectedPanels()
         {QStringLiteral("fivebar"),
             {"3·4 − 2·5 − 0", "6·4 − 5·5 − 4·0 − 3·0 − 2·0 − 0",
                 "rank 3 of 6 loop equations → M = F − rank = 5 − 3 = 2", 2, "5 revolute (P₅ = 5)"}},
+        // the default design is the five-bar example built from two R̲RR legs
+        {QStringLiteral("planar-parallel"),
+            {"3·4 − 2·5 − 0", "6·4 − 5·5 − 4·0 − 3·0 − 2·0 − 0",
+                "rank 3 of 6 loop equations → M = F − rank = 5 − 3 = 2", 2, "5 revolute (P₅ = 5)"}},
         {QStringLiteral("oxglide"),
             {"", "6·8 − 5·7 − 4·0 − 3·4 − 2·0 − 0",
                 "rank 15 of 18 loop equations → M = F − rank = 19 − 15 = 4", 4,

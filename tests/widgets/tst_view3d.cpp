@@ -65,6 +65,9 @@ const std::map<QString, std::vector<ReferenceView>> &referenceViews()
         {QStringLiteral("fivebar"),
             {{"isometric", View::Isometric, Projection::Perspective},
                 {"front-orthographic", View::Front, Projection::Orthographic}}},
+        {QStringLiteral("planar-parallel"),
+            {{"isometric", View::Isometric, Projection::Perspective},
+                {"front-orthographic", View::Front, Projection::Orthographic}}},
     };
     return views;
 }

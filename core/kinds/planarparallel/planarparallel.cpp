@@ -1,0 +1,476 @@
+// The planar parallel mechanism from a leg library: its parameters, the validation of a design,
+// the direct and inverse kinematics in the design's modes, the Jacobians, the singularity
+// classes and the report. The leg model is in legs.cpp, the forward problem of a 3-DOF
+// platform in forward.cpp, the maps, the scene and the kinematic chain in planarscene.cpp.
+#include "planarparallel.h"
+
+#include "text.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace pkm {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+using planar::cross;
+using planar::Reach;
+
+std::string number(int leg)
+{
+    return std::to_string(leg + 1);
+}
+
+/// The leg types and platforms are small integers: exactly 0…3 (0…2).
+Result<double> integerRule(const ParameterInfo &info, double value)
+{
+    if (value != std::round(value)) {
+        return Failure{FailureKind::InvalidParameter, info.name,
+                       text::format(text::translate("core", "%1 = %2 is invalid: it must be a whole number."),
+                                    {info.name, text::number(value)})};
+    }
+    return value;
+}
+
+/// Working modes are signs: exactly −1 or +1.
+Result<double> signRule(const ParameterInfo &info, double value)
+{
+    if (value != 1.0 && value != -1.0) {
+        return Failure{FailureKind::InvalidParameter, info.name,
+                       text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
+                                    {info.name, text::number(value)})};
+    }
+    return value;
+}
+
+/// The assembly mode: ±1 (2 DOF) or 1…6 (3 DOF), checked against the platform by create().
+Result<double> assemblyRule(const ParameterInfo &info, double value)
+{
+    if (value == 0.0)
+        return Failure{FailureKind::InvalidParameter, info.name,
+                       text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
+                                    {info.name, text::number(value)})};
+    return integerRule(info, value);
+}
+
+template <int Leg>
+FieldAccess<PlanarParallelDesign> legTypeField()
+{
+    return {[](const PlanarParallelDesign &d) { return double(int(d.legs[Leg].type)); },
+            [](PlanarParallelDesign &d, double v) { d.legs[Leg].type = LegType(int(std::lround(v))); }};
+}
+
+FieldAccess<PlanarParallelDesign> assemblyField()
+{
+    return {[](const PlanarParallelDesign &d) { return double(d.assembly); },
+            [](PlanarParallelDesign &d, double v) { d.assembly = int(std::lround(v)); }};
+}
+
+FieldAccess<PlanarParallelDesign> platformField()
+{
+    return {[](const PlanarParallelDesign &d) { return double(int(d.platform)); },
+            [](PlanarParallelDesign &d, double v) { d.platform = PlatformType(int(std::lround(v))); }};
+}
+} // namespace
+
+const ParameterTable<PlanarParallelDesign> &PlanarParallel::table()
+{
+    using T = ParameterTable<PlanarParallelDesign>;
+    static const T table = [] {
+        const Interval coordinate{-1e5, 1e5};
+        const Interval positive{0.0, 1e5};
+        const Interval turn{-360.0 * units::degree, 360.0 * units::degree};
+        const Interval sign{-1.0, 1.0};
+        const Interval legType{0.0, 3.0};
+        using G = ParameterGroup;
+        // the leg types and the platform in files by name, as numeric codes in the table
+        const std::vector<std::pair<std::string, double>> legTypeChoices
+            = {{"RRR", 0.0}, {"PRR", 1.0}, {"RPR", 2.0}, {"PiRR", 3.0}};
+        const std::vector<std::pair<std::string, double>> sideChoices = {{"left", 1.0}, {"right", -1.0}};
+        const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The planar parallel mechanism has no parameter named '%1'."),
+                                .order = CheckOrder::DomainsFirst};
+        return T(rules, {
+            {{"platform", "τ_P", QT_TRANSLATE_NOOP("core", "platform: 0 a point (2 DOF), 1 constant orientation (2 DOF), 2 free (3 DOF)"), units::none, G::Mode, Interval{0.0, 2.0}, false, false, true, 0, 1, {{"point", 0.0}, {"translating", 1.0}, {"free", 2.0}}}, platformField(), &integerRule},
+            {{"leg1_type", "τ₁", QT_TRANSLATE_NOOP("core", "leg 1: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices}, legTypeField<0>(), &integerRule},
+            {{"A1x", "x_A₁", QT_TRANSLATE_NOOP("core", "leg 1: base point A₁, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].base.x(); })},
+            {{"A1y", "y_A₁", QT_TRANSLATE_NOOP("core", "leg 1: base point A₁, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].base.y(); })},
+            {{"B1x", "x_B₁", QT_TRANSLATE_NOOP("core", "leg 1: platform point B₁ in the platform frame, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].platform.x(); })},
+            {{"B1y", "y_B₁", QT_TRANSLATE_NOOP("core", "leg 1: platform point B₁ in the platform frame, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].platform.y(); })},
+            {{"r1", "r₁", QT_TRANSLATE_NOOP("core", "leg 1: crank length (R̲RR)"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].crank; })},
+            {{"l1", "l₁", QT_TRANSLATE_NOOP("core", "leg 1: distal link length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].link; })},
+            {{"alpha1", "α₁", QT_TRANSLATE_NOOP("core", "leg 1: direction of the guide (P̲RR) or of the П-joint base (П̲RR)"), units::angle, G::Geometry, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].alpha; })},
+            {{"a1", "a₁", QT_TRANSLATE_NOOP("core", "leg 1: П-joint crank (lever) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].lever; })},
+            {{"k1", "k₁", QT_TRANSLATE_NOOP("core", "leg 1: П-joint ratio k = b/a"), units::none, G::Geometry, positive, true, false, true, 3, 0.05}, T::real([](auto &d) -> auto & { return d.legs[0].ratio; })},
+            {{"q1_min", "q₁_min", QT_TRANSLATE_NOOP("core", "leg 1: lower limit of the input (P̲RR, RP̲R, П̲RR)"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].range.min; })},
+            {{"q1_max", "q₁_max", QT_TRANSLATE_NOOP("core", "leg 1: upper limit of the input (P̲RR, RP̲R, П̲RR)"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].range.max; })},
+            {{"theta1_min", "θ₁_min", QT_TRANSLATE_NOOP("core", "leg 1: lower limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].crankRange.min; })},
+            {{"theta1_max", "θ₁_max", QT_TRANSLATE_NOOP("core", "leg 1: upper limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].crankRange.max; })},
+            {{"working1", "w₁", QT_TRANSLATE_NOOP("core", "leg 1: working mode (+1 elbow left of A₁→P₁; P̲RR: sign in q = B ± √…)"), units::none, G::Mode, sign, false, false, true, 0, 2, sideChoices}, T::sign([](auto &d) -> auto & { return d.legs[0].working; }), &signRule},
+            {{"leg2_type", "τ₂", QT_TRANSLATE_NOOP("core", "leg 2: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices}, legTypeField<1>(), &integerRule},
+            {{"A2x", "x_A₂", QT_TRANSLATE_NOOP("core", "leg 2: base point A₂, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].base.x(); })},
+            {{"A2y", "y_A₂", QT_TRANSLATE_NOOP("core", "leg 2: base point A₂, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].base.y(); })},
+            {{"B2x", "x_B₂", QT_TRANSLATE_NOOP("core", "leg 2: platform point B₂ in the platform frame, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].platform.x(); })},
+            {{"B2y", "y_B₂", QT_TRANSLATE_NOOP("core", "leg 2: platform point B₂ in the platform frame, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].platform.y(); })},
+            {{"r2", "r₂", QT_TRANSLATE_NOOP("core", "leg 2: crank length (R̲RR)"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].crank; })},
+            {{"l2", "l₂", QT_TRANSLATE_NOOP("core", "leg 2: distal link length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].link; })},
+            {{"alpha2", "α₂", QT_TRANSLATE_NOOP("core", "leg 2: direction of the guide (P̲RR) or of the П-joint base (П̲RR)"), units::angle, G::Geometry, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].alpha; })},
+            {{"a2", "a₂", QT_TRANSLATE_NOOP("core", "leg 2: П-joint crank (lever) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].lever; })},
+            {{"k2", "k₂", QT_TRANSLATE_NOOP("core", "leg 2: П-joint ratio k = b/a"), units::none, G::Geometry, positive, true, false, true, 3, 0.05}, T::real([](auto &d) -> auto & { return d.legs[1].ratio; })},
+            {{"q2_min", "q₂_min", QT_TRANSLATE_NOOP("core", "leg 2: lower limit of the input (P̲RR, RP̲R, П̲RR)"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].range.min; })},
+            {{"q2_max", "q₂_max", QT_TRANSLATE_NOOP("core", "leg 2: upper limit of the input (P̲RR, RP̲R, П̲RR)"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].range.max; })},
+            {{"theta2_min", "θ₂_min", QT_TRANSLATE_NOOP("core", "leg 2: lower limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].crankRange.min; })},
+            {{"theta2_max", "θ₂_max", QT_TRANSLATE_NOOP("core", "leg 2: upper limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].crankRange.max; })},
+            {{"working2", "w₂", QT_TRANSLATE_NOOP("core", "leg 2: working mode (+1 elbow left of A₂→P₂; P̲RR: sign in q = B ± √…)"), units::none, G::Mode, sign, false, false, true, 0, 2, sideChoices}, T::sign([](auto &d) -> auto & { return d.legs[1].working; }), &signRule},
+            {{"leg3_type", "τ₃", QT_TRANSLATE_NOOP("core", "leg 3: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices}, legTypeField<2>(), &integerRule},
+            {{"A3x", "x_A₃", QT_TRANSLATE_NOOP("core", "leg 3: base point A₃, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].base.x(); })},
+            {{"A3y", "y_A₃", QT_TRANSLATE_NOOP("core", "leg 3: base point A₃, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].base.y(); })},
+            {{"B3x", "x_B₃", QT_TRANSLATE_NOOP("core", "leg 3: platform point B₃ in the platform frame, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].platform.x(); })},
+            {{"B3y", "y_B₃", QT_TRANSLATE_NOOP("core", "leg 3: platform point B₃ in the platform frame, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].platform.y(); })},
+            {{"r3", "r₃", QT_TRANSLATE_NOOP("core", "leg 3: crank length (R̲RR)"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].crank; })},
+            {{"l3", "l₃", QT_TRANSLATE_NOOP("core", "leg 3: distal link length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].link; })},
+            {{"alpha3", "α₃", QT_TRANSLATE_NOOP("core", "leg 3: direction of the guide (P̲RR) or of the П-joint base (П̲RR)"), units::angle, G::Geometry, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].alpha; })},
+            {{"a3", "a₃", QT_TRANSLATE_NOOP("core", "leg 3: П-joint crank (lever) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].lever; })},
+            {{"k3", "k₃", QT_TRANSLATE_NOOP("core", "leg 3: П-joint ratio k = b/a"), units::none, G::Geometry, positive, true, false, true, 3, 0.05}, T::real([](auto &d) -> auto & { return d.legs[2].ratio; })},
+            {{"q3_min", "q₃_min", QT_TRANSLATE_NOOP("core", "leg 3: lower limit of the input (P̲RR, RP̲R, П̲RR)"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].range.min; })},
+            {{"q3_max", "q₃_max", QT_TRANSLATE_NOOP("core", "leg 3: upper limit of the input (P̲RR, RP̲R, П̲RR)"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].range.max; })},
+            {{"theta3_min", "θ₃_min", QT_TRANSLATE_NOOP("core", "leg 3: lower limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].crankRange.min; })},
+            {{"theta3_max", "θ₃_max", QT_TRANSLATE_NOOP("core", "leg 3: upper limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].crankRange.max; })},
+            {{"working3", "w₃", QT_TRANSLATE_NOOP("core", "leg 3: working mode (+1 elbow left of A₃→P₃; P̲RR: sign in q = B ± √…)"), units::none, G::Mode, sign, false, false, true, 0, 2, sideChoices}, T::sign([](auto &d) -> auto & { return d.legs[2].working; }), &signRule},
+            {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: 2 DOF +1 platform left of C₁→C₂, −1 right; 3 DOF the n-th solution in order of φ"), units::none, G::Mode, Interval{-1.0, 6.0}, false, false, true, 0, 1}, assemblyField(), &assemblyRule},
+            {{"phi_map", "φ_m", QT_TRANSLATE_NOOP("core", "platform angle φ of the workspace map (3 DOF)"), units::angle, G::Drawing, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.mapPhi; })},
+        });
+    }();
+    return table;
+}
+
+// -- design --------------------------------------------------------------------------------
+
+namespace {
+Failure invalid(const std::string &name, const std::string &message)
+{
+    return Failure{FailureKind::InvalidParameter, name, message};
+}
+
+/// What a leg of this type needs of its own parameters.
+Result<bool> checkLeg(const PlanarLeg &leg, int i, PlatformType platform)
+{
+    const std::string n = number(i);
+    const char *prefix = leg.type == LegType::RRR ? "theta" : "q";
+    const std::string qMin = joinText({prefix, n, "_min"}), qMax = joinText({prefix, n, "_max"});
+    const Interval &range = leg.inputRange();
+    if (!(range.min < range.max))
+        return invalid(qMin, text::format(text::translate("core", "%1 must be less than %2."), {qMin, qMax}));
+    switch (leg.type) {
+    case LegType::RRR:
+        if (range.max - range.min > 2.0 * pi * (1.0 + 1e-12))
+            return invalid(qMax, text::format(text::translate("core", "The range of crank %1 spans more than one turn (360°)."), {n}));
+        break;
+    case LegType::RPR:
+        if (range.min <= 0.0)
+            return invalid(qMin, text::format(text::translate("core", "%1 must be positive: it is the length of strut %2."), {qMin, n}));
+        break;
+    case LegType::PiRR: {
+        // the diagonal stays strictly between the folded a|1 − k| and the stretched a(1 + k)
+        const double low = leg.lever * std::abs(1.0 - leg.ratio), high = leg.lever * (1.0 + leg.ratio);
+        if (range.min <= low || range.max >= high)
+            return invalid(range.min <= low ? qMin : qMax,
+                           text::format(text::translate("core", "The diagonal of П-joint %1 must stay strictly between %2 mm and %3 mm (θ between −90° and 90°)."),
+                                        {n, text::number(low), text::number(high)}));
+        break;
+    }
+    case LegType::PRR:
+        break;
+    }
+    if (platform == PlatformType::Translating && leg.type != LegType::PRR && leg.type != LegType::PiRR)
+        return invalid(joinText({"leg", n, "_type"}),
+                       text::format(text::translate("core", "A platform of constant orientation needs P̲RR or П̲RR legs: leg %1's distal parallelogram must hang from a body that does not turn."), {n}));
+    return true;
+}
+} // namespace
+
+Result<MechanismPtr> PlanarParallel::create(const PlanarParallelDesign &design)
+{
+    if (auto checked = table().checkDesign(design); !checked)
+        return checked.failure();
+    const int n = design.legCount();
+    for (int i = 0; i < n; ++i) {
+        if (auto checked = checkLeg(design.legs[std::size_t(i)], i, design.platform); !checked)
+            return checked.failure();
+    }
+    if (n == 2 && design.assembly != 1 && design.assembly != -1)
+        return invalid("assembly", text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
+                                                {"assembly", text::number(design.assembly)}));
+    if (n == 3) {
+        if (design.assembly < 1)
+            return invalid("assembly", text::translate("core", "The assembly mode of a 3-DOF platform counts the solutions from 1."));
+        const auto &legs = design.legs;
+        if ((legs[1].platform - legs[0].platform).norm() + (legs[2].platform - legs[0].platform).norm() <= 0.0)
+            return invalid("B1x", text::translate("core", "The platform points B₁, B₂, B₃ coincide: the platform's angle is undetermined."));
+    }
+    std::shared_ptr<PlanarParallel> made(new PlanarParallel(design));
+    if (made->m_home.inputs.size() == 0)
+        return Failure{FailureKind::Unreachable, "assembly",
+                       text::translate("core", "The mechanism cannot be assembled anywhere in its input ranges and modes.")};
+    return MechanismPtr(made);
+}
+
+PlanarParallel::PlanarParallel(const PlanarParallelDesign &design)
+    : m_design(design)
+{
+    const int n = design.legCount();
+    static const std::array<const char *, 3> inputLabels = {QT_TRANSLATE_NOOP("core", "input of leg 1 (actuated)"),
+                                                             QT_TRANSLATE_NOOP("core", "input of leg 2 (actuated)"),
+                                                             QT_TRANSLATE_NOOP("core", "input of leg 3 (actuated)")};
+    static const std::array<const char *, 3> subscripts = {"₁", "₂", "₃"};
+    for (int i = 0; i < n; ++i) {
+        const bool angle = design.legs[std::size_t(i)].type == LegType::RRR;
+        m_variables.push_back({joinText({"q", number(i)}), joinText({"q", subscripts[std::size_t(i)]}), inputLabels[std::size_t(i)],
+                               angle ? units::angle : units::millimetre, true, 2});
+    }
+    m_variables.push_back({"x", "x", QT_TRANSLATE_NOOP("core", "platform x"), units::millimetre, false, 2});
+    m_variables.push_back({"y", "y", QT_TRANSLATE_NOOP("core", "platform y"), units::millimetre, false, 2});
+    if (n == 3)
+        m_variables.push_back({"phi", "φ", QT_TRANSLATE_NOOP("core", "platform angle"), units::angle, false, 2});
+    buildReport();
+    m_bounds = computeBounds();
+
+    // The home pose: the inputs in the middle of their ranges if the mechanism assembles there
+    // in its modes away from singularities, else the best of a grid of inputs.
+    Coordinates mid(n);
+    for (int i = 0; i < n; ++i)
+        mid[i] = 0.5 * (design.legs[std::size_t(i)].inputRange().min + design.legs[std::size_t(i)].inputRange().max);
+    if (auto pose = solveDirect(mid); pose && singularity(*pose).margin >= 0.2) {
+        m_home = *pose;
+        return;
+    }
+    const int samples = n == 2 ? 17 : 9;
+    double best = -1.0;
+    Coordinates q(n);
+    const int total = n == 2 ? samples * samples : samples * samples * samples;
+    for (int index = 0; index < total; ++index) {
+        int rest = index;
+        for (int i = 0; i < n; ++i) {
+            const Interval &r = design.legs[std::size_t(i)].inputRange();
+            q[i] = r.min + (r.max - r.min) * (0.5 + rest % samples) / samples;
+            rest /= samples;
+        }
+        if (auto pose = solveDirect(q)) {
+            const double margin = singularity(*pose).margin;
+            if (margin > best) {
+                best = margin;
+                m_home = *pose;
+            }
+        }
+    }
+}
+
+Interval PlanarParallel::variableRange(int variable) const
+{
+    const int n = m_design.legCount();
+    if (variable < n)
+        return m_design.legs[std::size_t(variable)].inputRange();
+    if (variable - n == 2)
+        return {-pi, pi};
+    const Eigen::AlignedBox2d &b = m_bounds;
+    return variable == n ? Interval{b.min().x(), b.max().x()} : Interval{b.min().y(), b.max().y()};
+}
+
+Eigen::Vector3d PlanarParallel::platformPose(const Coordinates &outputs) const
+{
+    return {outputs[0], outputs[1], m_design.legCount() == 3 ? outputs[2] : 0.0};
+}
+
+std::array<planar::LegCircle, 3> PlanarParallel::circles(const Coordinates &inputs) const
+{
+    std::array<planar::LegCircle, 3> c;
+    for (int i = 0; i < m_design.legCount(); ++i)
+        c[std::size_t(i)] = planar::circle(m_design.legs[std::size_t(i)], inputs[i]);
+    return c;
+}
+
+// -- kinematics ----------------------------------------------------------------------------
+
+namespace {
+Pose makePose(const Coordinates &inputs, const Eigen::Vector3d &X, int n)
+{
+    Pose pose;
+    pose.inputs = inputs;
+    pose.outputs.resize(n);
+    pose.outputs[0] = X.x();
+    pose.outputs[1] = X.y();
+    if (n == 3)
+        pose.outputs[2] = X.z();
+    return pose;
+}
+} // namespace
+
+std::vector<Pose> PlanarParallel::assemblies(const Coordinates &inputs) const
+{
+    const int n = m_design.legCount();
+    const auto c = circles(inputs);
+    std::vector<Eigen::Vector3d> candidates;
+    for (int i = 0; i < n; ++i) {
+        if (!c[std::size_t(i)].valid)
+            return {};
+    }
+    if (n == 2) {
+        // two circles in the plane of (x, y): leg i's about C_i − B_i (B_i = 0 for a point)
+        const Eigen::Vector2d p = c[0].centre - m_design.legs[0].platform, q = c[1].centre - m_design.legs[1].platform;
+        const double rp = c[0].radius, rq = c[1].radius;
+        const Eigen::Vector2d between = q - p;
+        const double distance = between.norm(), scale = rp + rq;
+        if (distance < 1e-9 * scale || distance > scale * (1.0 + 1e-9) || distance < std::abs(rp - rq) - 1e-9 * scale)
+            return {};
+        const Eigen::Vector2d u = between / distance;
+        const double along = (rp * rp - rq * rq + distance * distance) / (2.0 * distance);
+        const double across = std::sqrt(std::max(0.0, rp * rp - along * along));
+        for (const int side : {m_design.assembly, -m_design.assembly}) {
+            const Eigen::Vector2d X = p + along * u + side * across * Eigen::Vector2d(-u.y(), u.x());
+            candidates.emplace_back(X.x(), X.y(), 0.0);
+        }
+    } else {
+        candidates = planar::threeCircleSolutions(m_design.legs, c);
+    }
+    std::vector<Pose> poses;
+    for (const Eigen::Vector3d &X : candidates) {
+        bool modes = true;
+        for (int i = 0; i < n; ++i) {
+            const PlanarLeg &leg = m_design.legs[std::size_t(i)];
+            modes = modes && planar::workingOf(leg, inputs[i], planar::platformPoint(leg, X)) * leg.working >= 0;
+        }
+        if (modes)
+            poses.push_back(makePose(inputs, X, n));
+    }
+    return poses;
+}
+
+Result<Pose> PlanarParallel::solveDirect(const Coordinates &inputs, const Pose *near) const
+{
+    const int n = m_design.legCount();
+    if (inputs.size() != n)
+        return Failure{FailureKind::OutOfRange, "q1", text::translate("core", "The number of inputs does not match the legs.")};
+    for (int i = 0; i < n; ++i) {
+        const std::string name = joinText({"q", number(i)});
+        const Interval &range = m_design.legs[std::size_t(i)].inputRange();
+        if (!std::isfinite(inputs[i]))
+            return Failure{FailureKind::OutOfRange, name, text::format(text::translate("core", "%1 must be a finite number."), {name})};
+        if (!range.contains(inputs[i], 1e-9 * std::max(1.0, std::abs(range.max - range.min))))
+            return Failure{FailureKind::OutOfRange, name,
+                           text::format(text::translate("core", "%1 = %2 is outside its range [%3, %4]."),
+                                        {name, text::number(m_variables[std::size_t(i)].unit.toDisplay(inputs[i])),
+                                         text::number(m_variables[std::size_t(i)].unit.toDisplay(range.min)),
+                                         text::number(m_variables[std::size_t(i)].unit.toDisplay(range.max))})};
+        if (!planar::circle(m_design.legs[std::size_t(i)], inputs[i]).valid)
+            return Failure{FailureKind::OutOfRange, name,
+                           text::format(text::translate("core", "The П-joint of leg %1 cannot take the diagonal %2 = %3 mm."),
+                                        {number(i), name, text::number(inputs[i])})};
+    }
+    const std::vector<Pose> poses = assemblies(inputs);
+    const Failure none{FailureKind::Unreachable, "q1",
+                       text::translate("core", "The legs cannot be assembled at these inputs in the design's working and assembly modes.")};
+    if (poses.empty())
+        return none;
+    if (n == 2) {
+        // the first candidate is the design's assembly mode: the second is the other one
+        const Eigen::Vector3d X = platformPose(poses.front().outputs);
+        const auto c = circles(inputs);
+        const Eigen::Vector2d p = c[0].centre - m_design.legs[0].platform, q = c[1].centre - m_design.legs[1].platform;
+        if (cross(q - p, X.head<2>() - p) * m_design.assembly < -1e-9 * c[0].radius * c[1].radius)
+            return none;
+        return poses.front();
+    }
+    // 3 DOF: continuation from the pose to follow (Newton's method from it on the new inputs,
+    // then the nearest solution), else the assembly-th solution in order of φ
+    if (near && near->outputs.size() == 3) {
+        Eigen::Vector3d start = platformPose(near->outputs);
+        Eigen::Vector3d X = start;
+        if (planar::polish(m_design.legs, circles(inputs), X))
+            start = X;
+        const double L = std::max(1.0, m_bounds.sizes().norm());
+        const Pose *best = nullptr;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const Pose &pose : poses) {
+            const Eigen::Vector3d Y = platformPose(pose.outputs);
+            const double distance = (Y.head<2>() - start.head<2>()).norm() / L + std::abs(std::remainder(Y.z() - start.z(), 2 * pi));
+            if (distance < nearest) {
+                nearest = distance;
+                best = &pose;
+            }
+        }
+        Pose chosen = *best;
+        // keep φ on the same turn as the pose followed
+        chosen.outputs[2] = near->outputs[2] + std::remainder(chosen.outputs[2] - near->outputs[2], 2 * pi);
+        return chosen;
+    }
+    if (m_design.assembly > int(poses.size()))
+        return Failure{FailureKind::Unreachable, "assembly",
+                       text::format(text::translate("core", "At these inputs the platform has %1 assembly modes in the design's working modes, fewer than assembly = %2."),
+                                    {std::to_string(poses.size()), std::to_string(m_design.assembly)})};
+    return poses[std::size_t(m_design.assembly - 1)];
+}
+
+Reach PlanarParallel::inverseCheck(const Eigen::Vector3d &X, const Coordinates *reference, Coordinates &q, int &culprit) const
+{
+    const int n = m_design.legCount();
+    q.resize(n);
+    for (int i = 0; i < n; ++i) {
+        const PlanarLeg &leg = m_design.legs[std::size_t(i)];
+        const double ref = reference && reference->size() == n ? (*reference)[i]
+            : m_home.inputs.size() == n                        ? m_home.inputs[i]
+                                                               : 0.5 * (leg.inputRange().min + leg.inputRange().max);
+        const Reach r = planar::inverse(leg, planar::platformPoint(leg, X), ref, q[i]);
+        if (r != Reach::Yes) {
+            culprit = i;
+            return r;
+        }
+    }
+    if (n == 2) {
+        const PlanarLeg &a = m_design.legs[0], &b = m_design.legs[1];
+        const planar::LegCircle ca = planar::circle(a, q[0]), cb = planar::circle(b, q[1]);
+        const Eigen::Vector2d p = ca.centre - a.platform, o = cb.centre - b.platform;
+        if (cross(o - p, X.head<2>() - p) * m_design.assembly < -1e-9 * ca.radius * cb.radius) {
+            culprit = -1;
+            return Reach::Undetermined; // the other assembly mode
+        }
+    }
+    culprit = 0;
+    return Reach::Yes;
+}
+
+Result<Pose> PlanarParallel::solveInverse(const Coordinates &outputs, const Pose *near) const
+{
+    const int n = m_design.legCount();
+    for (int i = 0; i < n; ++i) {
+        const std::string name = m_variables[std::size_t(n + i)].name;
+        if (i >= outputs.size() || !std::isfinite(outputs[i]))
+            return Failure{FailureKind::OutOfRange, name, text::format(text::translate("core", "%1 must be a finite number."), {name})};
+    }
+    const Eigen::Vector3d X = platformPose(outputs);
+    Coordinates q;
+    int culprit = 0;
+    const Reach r = inverseCheck(X, near ? &near->inputs : nullptr, q, culprit);
+    if (r != Reach::Yes) {
+        const std::string where = n == 3
+            ? text::format(text::translate("core", "(%1, %2) mm, φ = %3°"), {text::number(X.x()), text::number(X.y()), text::number(X.z() / units::degree)})
+            : text::format(text::translate("core", "(%1, %2) mm"), {text::number(X.x()), text::number(X.y())});
+        if (culprit < 0)
+            return Failure{FailureKind::Unreachable, "x",
+                           text::format(text::translate("core", "The platform cannot reach %1 in this assembly mode: the legs would pass through a direct singularity; switch the assembly mode to go on."), {where})};
+        const std::string leg = number(culprit);
+        const std::string why = r == Reach::Range
+            ? text::format(text::translate("core", "the input of leg %1 would leave its range"), {leg})
+            : r == Reach::Undetermined ? text::format(text::translate("core", "the input of leg %1 is undetermined there"), {leg})
+                                       : text::format(text::translate("core", "leg %1 cannot reach it"), {leg});
+        return Failure{r == Reach::Range ? FailureKind::OutOfRange : FailureKind::Unreachable, "x",
+                       text::format(text::translate("core", "The platform cannot reach %1: %2."), {where, why})};
+    }
+    Pose pose = makePose(q, X, n);
+    pose.outputs = outputs;
+    return pose;
+}
+
+} // namespace pkm

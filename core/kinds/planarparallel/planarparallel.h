@@ -1,0 +1,200 @@
+#pragma once
+/// A planar parallel mechanism assembled from a library of legs (docs/mathematics.md,
+/// "Planar parallel mechanisms from a leg library").
+///
+/// Frame: the base frame, y up; units mm and rad. The platform pose is X = (x, y, φ): a point
+/// platform (2 DOF, φ ≡ 0, the legs meet at (x, y)), a platform of constant orientation (2 DOF,
+/// φ ≡ 0, leg i holds the platform point B_i given in the platform frame), or a free rigid
+/// body (3 DOF). The platform point of leg i in the base frame is P_i = (x, y) + R(φ)·B_i.
+///
+/// Leg i runs from its base point A_i to P_i, its actuated joint first:
+///   R̲RR  crank r_i driven at A_i by q_i (angle from +x), distal link l_i;
+///   P̲RR  slider at A_i + q_i·u(α_i) on a guide of direction α_i, link l_i (MOMA's leg);
+///   RP̲R  a telescopic strut A_i P_i whose length q_i is the input;
+///   П̲RR  an active П-joint (the П-joint document) whose crank of length a_i is the proximal
+///        link: base pivot of the crank at A_i, the П-joint's base line OB along α_i (O at
+///        A_i − k_i·a_i·u(α_i)), input the diagonal length d_i = q_i; the crank angle θ_i from
+///        the perpendicular to the base follows from (3–5), the crank points along
+///        ψ_i = α_i + 90° − θ_i; distal link l_i.
+/// With its input fixed every leg is one circle constraint |P_i − C_i| = ρ_i: C = A, ρ = q
+/// (RPR); C = A + r·u(q), ρ = l (RRR); C = A + q·u(α), ρ = l (PRR); C = A + a·u(ψ(q)),
+/// ρ = l (П̲RR). The direct kinematics is the intersection of these circles: two circles for
+/// 2 DOF, the planar 3-RPR forward problem for 3 DOF — a sextic in t = tan(φ/2) (C. Gosselin,
+/// J. Sefrioui, M. J. Richard, "Solutions polynomiales au problème de la cinématique directe
+/// des manipulateurs parallèles plans à trois degrés de liberté", Mech. Mach. Theory 27, 1992;
+/// M. Husty, "An algorithm for solving the direct kinematics of general Stewart–Gough
+/// platforms", 1996, for the planar reduction).
+///
+/// Modes (design parameters, never changed by the solvers):
+///   working_i = ±1: RRR and П̲RR, +1 when the elbow C_i lies left of the directed line
+///     A_i→P_i (the five-bar's convention); PRR, the MOMA branch β_i, q = u·(P − A) + β·√…;
+///     RPR has one working mode.
+///   assembly: 2 DOF, ±1, the platform point left (+1) of the directed line C₁→C₂ between the
+///     circle centres (the five-bar's and MOMA's convention). 3 DOF, 1…6: without a pose to
+///     follow the direct kinematics takes the assembly-th solution in order of φ; with one it
+///     follows that pose's solution by continuation.
+///
+/// Velocities: g_i(X, q_i) = ½(|P_i − C_i|² − ρ_i²) = 0 differentiated gives
+/// J_q·q̇ = J_x·Ẋ with J_q = diag(∂g_i/∂q_i) and J_x rows −∂g_i/∂X, J = J_q⁻¹·J_x. A П̲RR
+/// row is multiplied by the П-joint's J = ∂d/∂θ (7), so that its J_q entry is ∂g/∂θ and its
+/// J_x row carries the factor J: the П-joint's own singularity (θ = ±90°) is then a direct
+/// singularity of the whole mechanism (the П-joint document, section 4).
+
+#include "parametertable.h"
+#include "planarworkspace.h"
+#include "text.h"
+
+#include <array>
+#include <vector>
+
+namespace pkm {
+
+enum class LegType { RRR = 0, PRR = 1, RPR = 2, PiRR = 3 };
+enum class PlatformType { Point = 0, Translating = 1, Free = 2 };
+
+struct PlanarLeg {
+    LegType type = LegType::RRR;
+    Eigen::Vector2d base = Eigen::Vector2d::Zero();     ///< A_i, base frame, mm
+    Eigen::Vector2d platform = Eigen::Vector2d::Zero(); ///< B_i, platform frame, mm
+    double crank = 80.0;  ///< r_i, mm (RRR)
+    double link = 120.0;  ///< l_i, mm (RRR, PRR, П̲RR)
+    double alpha = 0.0;   ///< α_i, rad: the guide (PRR) or the П-joint's base line (П̲RR)
+    double lever = 170.0; ///< a_i, mm: the П-joint's crank (П̲RR)
+    double ratio = 0.4;   ///< k_i = b_i/a_i of the П-joint (П̲RR)
+    Interval range{10.0, 200.0}; ///< q_i limits of a slider, a strut or a П-joint's diagonal, mm
+    Interval crankRange{-std::numbers::pi, std::numbers::pi}; ///< θ_i limits of an R̲RR crank, rad
+    int working = +1;
+
+    /// The limits of q_i: in rad for a crank, in mm otherwise (parameters theta_i_min/max and
+    /// q_i_min/max, so that every parameter keeps one unit whatever the leg type).
+    const Interval &inputRange() const { return type == LegType::RRR ? crankRange : range; }
+};
+
+struct PlanarParallelDesign {
+    PlatformType platform = PlatformType::Point;
+    /// The default is the five-bar example as two R̲RR legs (elbows out, C above BD).
+    std::array<PlanarLeg, 3> legs = {
+        PlanarLeg{LegType::RRR, {0.0, 0.0}, {0.0, 0.0}, 80.0, 120.0, 0.0, 170.0, 0.4, {10.0, 200.0}, {-std::numbers::pi, std::numbers::pi}, +1},
+        PlanarLeg{LegType::RRR, {100.0, 0.0}, {0.0, 0.0}, 80.0, 120.0, 0.0, 170.0, 0.4, {10.0, 200.0}, {-std::numbers::pi, std::numbers::pi}, -1},
+        PlanarLeg{LegType::RPR, {50.0, 150.0}, {0.0, 20.0}, 80.0, 120.0, 0.0, 170.0, 0.4, {10.0, 200.0}, {-std::numbers::pi, std::numbers::pi}, +1},
+    };
+    int assembly = +1;
+    double mapPhi = 0.0; ///< φ of the constant-orientation workspace map of a 3-DOF platform, rad
+
+    int legCount() const { return platform == PlatformType::Free ? 3 : 2; }
+};
+
+/// The leg model: closed forms, no validation (callers check).
+namespace planar {
+inline Eigen::Vector2d direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
+inline double cross(const Eigen::Vector2d &u, const Eigen::Vector2d &v) { return u.x() * v.y() - u.y() * v.x(); }
+
+/// One leg at input q: its circle |P − centre| = radius and the derivatives of both by q.
+struct LegCircle {
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    double radius = 0.0;
+    Eigen::Vector2d centreRate = Eigen::Vector2d::Zero(); ///< ∂centre/∂q (П̲RR: ∂/∂θ)
+    double radiusRate = 0.0;                              ///< ∂radius/∂q
+    double pjointRate = 1.0; ///< П̲RR: J = ∂d/∂θ of the П-joint (7); 1 for the others
+    double theta = 0.0;      ///< П̲RR: the П-joint's crank angle θ
+    bool valid = true;       ///< false: the П-joint cannot take this d
+};
+LegCircle circle(const PlanarLeg &leg, double q);
+
+/// П̲RR: the П-joint's θ from d (3–5) (NaN outside), d from θ (2), J = ∂d/∂θ (7).
+double pjointAngle(const PlanarLeg &leg, double d);
+double pjointDiagonal(const PlanarLeg &leg, double theta);
+double pjointJacobian(const PlanarLeg &leg, double theta);
+
+/// Why a platform point is not reachable by a leg in its working mode.
+enum class Reach { Yes, TooFar, TooNear, Range, Undetermined };
+/// Inverse kinematics of one leg in closed form: the input that puts its distal end at P in
+/// the leg's working mode. For a crank (RRR, П̲RR) the angle is taken nearest `reference`.
+Reach inverse(const PlanarLeg &leg, const Eigen::Vector2d &P, double reference, double &q);
+/// The working mode a leg is in with input q and distal end P: +1, −1 (0: on the border).
+int workingOf(const PlanarLeg &leg, double q, const Eigen::Vector2d &P);
+/// The scale-free inverse-singularity margin of a leg (0 when its J_q entry vanishes).
+double inverseMargin(const PlanarLeg &leg, double q, const Eigen::Vector2d &P);
+
+/// The point P_i of the platform pose X = (x, y, φ).
+Eigen::Vector2d platformPoint(const PlanarLeg &leg, const Eigen::Vector3d &X);
+
+/// Every real solution X = (x, y, φ) of |P_i(X) − C_i| = ρ_i, i = 1, 2, 3 (the 3-RPR forward
+/// problem), polished by Newton's method on these equations, in order of φ ∈ (−π, π].
+std::vector<Eigen::Vector3d> threeCircleSolutions(const std::array<PlanarLeg, 3> &legs,
+                                                  const std::array<LegCircle, 3> &circles);
+/// The largest residual | |P_i − C_i| − ρ_i | of a pose, mm.
+double residual(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle, 3> &circles, int count,
+                const Eigen::Vector3d &X);
+/// Newton's method on the three circle equations from X; false when it does not converge.
+bool polish(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle, 3> &circles, Eigen::Vector3d &X);
+} // namespace planar
+
+class PlanarParallel final : public TabledMechanism<PlanarParallel, PlanarParallelDesign>, public PlanarWorkspace
+{
+public:
+    /// Validates the design and finds its home pose; the failure names the culprit.
+    static Result<MechanismPtr> create(const PlanarParallelDesign &design);
+    static const ParameterTable<PlanarParallelDesign> &table();
+
+    const PlanarParallelDesign &design() const { return m_design; }
+    std::string_view kind() const override { return "planar-parallel"; }
+
+    const std::vector<VariableInfo> &variableInfo() const override { return m_variables; }
+    Interval variableRange(int variable) const override;
+    Pose homePose() const override { return m_home; }
+    Result<Pose> solveDirect(const Coordinates &inputs, const Pose *near = nullptr) const override;
+    Result<Pose> solveInverse(const Coordinates &outputs, const Pose *near = nullptr) const override;
+    /// Every assembly mode at these inputs in the design's working modes (3 DOF: in order of φ;
+    /// 2 DOF: the design's assembly mode first), without range checks.
+    std::vector<Pose> assemblies(const Coordinates &inputs) const;
+
+    const ReportLayout &reportLayout() const override { return m_layout; }
+    Singularity evaluate(const Pose &pose, std::span<double> values) const override;
+    Jacobians jacobians(const Pose &pose) const override;
+    std::vector<ModeAlternative> modeNeighbours() const override;
+    const PlanarWorkspace *planarWorkspace() const override { return this; }
+    KinematicChain kinematicChain(const Pose &pose) const override;
+
+    Scene scene(const Pose &pose) const override;
+    /// Handle 0 (the platform) solves the inverse problem at the target.
+    Result<Pose> dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const override;
+
+    /// The class of a pose from the scale-free margins: per leg the inverse margin, and
+    /// |det N|/Π|N_i| of J_x with each row normalised (the five-bar's and MOMA's |sin| of the
+    /// angle between the distal links for 2 DOF), times |cos θ| of every П-joint.
+    Singularity singularity(const Pose &pose) const;
+    static constexpr double singularTolerance = 1e-7;
+
+    // PlanarWorkspace: the point (x, y); for 3 DOF at φ = phi_map.
+    Eigen::AlignedBox2d workspaceBounds() const override { return m_bounds; }
+    void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
+                    std::span<float> margins) const override;
+    std::vector<SingularCurve> singularCurves() const override { return {}; }
+    std::string singularityMeaning(SingularCurve::Type type) const override
+    {
+        return type == SingularCurve::Type::Inverse ? QT_TRANSLATE_NOOP("core", "a leg's proximal and distal links in line")
+                                                    : QT_TRANSLATE_NOOP("core", "the platform gains a freedom");
+    }
+
+    /// The outputs as (x, y, φ) (φ = 0 for 2 DOF).
+    Eigen::Vector3d platformPose(const Coordinates &outputs) const;
+
+private:
+    explicit PlanarParallel(const PlanarParallelDesign &design);
+    /// The Jacobians without allocation: J_q (diagonal) and J_x, n × n in the top-left corner.
+    void jacobianParts(const Pose &pose, Eigen::Matrix3d &jq, Eigen::Matrix3d &jx) const;
+    /// Inverse kinematics of every leg and the 2-DOF assembly check; the culprit leg on failure.
+    planar::Reach inverseCheck(const Eigen::Vector3d &X, const Coordinates *reference, Coordinates &q, int &culprit) const;
+    std::array<planar::LegCircle, 3> circles(const Coordinates &inputs) const;
+    Eigen::AlignedBox2d computeBounds() const;
+    void buildReport();
+
+    PlanarParallelDesign m_design;
+    std::vector<VariableInfo> m_variables;
+    ReportLayout m_layout;
+    Eigen::AlignedBox2d m_bounds;
+    Pose m_home;
+};
+
+} // namespace pkm

@@ -1,0 +1,342 @@
+// What the planar parallel mechanism shows and how it is built: the workspace box and the map
+// rows (the inverse kinematics of every leg per cell), the 2D scene of a pose, and the
+// kinematic chain for the mobility analysis.
+#include "planarparallel.h"
+
+#include "mobility.h"
+#include "text.h"
+
+#include <Eigen/Dense>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace pkm {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+const std::array<const char *, 3> subscripts = {"₁", "₂", "₃"};
+
+Eigen::Vector3d to3(const Eigen::Vector2d &v)
+{
+    return {v.x(), v.y(), 0.0};
+}
+
+/// The side of a distal parallelogram: across the guide of a slider, along the coupler of a
+/// П-joint (which stays parallel to its base line), a quarter of the link long.
+Eigen::Vector2d parallelogramSide(const PlanarLeg &leg)
+{
+    const double angle = leg.type == LegType::PRR ? leg.alpha + 0.5 * pi : leg.alpha;
+    return 0.25 * leg.link * planar::direction(angle);
+}
+
+/// A box that holds every point a leg's distal end can reach.
+Eigen::AlignedBox2d reachBox(const PlanarLeg &leg)
+{
+    auto disc = [](const Eigen::Vector2d &c, double r) {
+        return Eigen::AlignedBox2d(c - Eigen::Vector2d::Constant(r), c + Eigen::Vector2d::Constant(r));
+    };
+    switch (leg.type) {
+    case LegType::RRR:
+        return disc(leg.base, leg.crank + leg.link);
+    case LegType::PRR: {
+        Eigen::AlignedBox2d box = disc(leg.base + leg.range.min * planar::direction(leg.alpha), leg.link);
+        box.extend(disc(leg.base + leg.range.max * planar::direction(leg.alpha), leg.link));
+        return box;
+    }
+    case LegType::RPR:
+        return disc(leg.base, leg.range.max);
+    case LegType::PiRR:
+        return disc(leg.base, leg.lever + leg.link);
+    }
+    return {};
+}
+} // namespace
+
+Eigen::AlignedBox2d PlanarParallel::computeBounds() const
+{
+    const int n = m_design.legCount();
+    const double phi = n == 3 ? m_design.mapPhi : 0.0;
+    Eigen::AlignedBox2d box;
+    for (int i = 0; i < n; ++i) {
+        const PlanarLeg &leg = m_design.legs[std::size_t(i)];
+        // the reference point (x, y) is P_i − R(φ)B_i
+        const Eigen::Vector2d offset = planar::platformPoint(leg, Eigen::Vector3d(0.0, 0.0, phi));
+        const Eigen::AlignedBox2d reach = reachBox(leg);
+        const Eigen::AlignedBox2d shifted(reach.min() - offset, reach.max() - offset);
+        box = i == 0 ? shifted : box.intersection(shifted);
+    }
+    if (box.isEmpty())
+        return Eigen::AlignedBox2d(Eigen::Vector2d(-1.0, -1.0), Eigen::Vector2d(1.0, 1.0));
+    // The legs' reach is a loose box: shrink it to the cells a coarse grid finds reachable,
+    // padded by two cells, so that the maps show the workspace large.
+    constexpr int samples = 96;
+    const Eigen::Vector2d step = box.sizes() / samples;
+    Eigen::AlignedBox2d reached;
+    Coordinates q;
+    for (int r = 0; r < samples; ++r) {
+        for (int c = 0; c < samples; ++c) {
+            const Eigen::Vector2d point = box.min() + Eigen::Vector2d((c + 0.5) * step.x(), (r + 0.5) * step.y());
+            int culprit = 0;
+            if (inverseCheck(Eigen::Vector3d(point.x(), point.y(), phi), nullptr, q, culprit) == planar::Reach::Yes)
+                reached.extend(point);
+        }
+    }
+    if (reached.isEmpty())
+        reached = box;
+    const Eigen::Vector2d pad = 2.0 * step + Eigen::Vector2d::Constant(1.0);
+    return Eigen::AlignedBox2d(reached.min() - pad, reached.max() + pad).intersection(
+        Eigen::AlignedBox2d(box.min() - pad, box.max() + pad));
+}
+
+void PlanarParallel::fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
+                                std::span<float> margins) const
+{
+    const int n = m_design.legCount();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const double phi = n == 3 ? m_design.mapPhi : 0.0;
+    Pose pose;
+    pose.outputs.resize(n);
+    for (std::size_t c = 0; c < values.size(); ++c) {
+        const Eigen::Vector3d X(x0 + double(c) * dx, y, phi);
+        int culprit = 0;
+        if (inverseCheck(X, nullptr, pose.inputs, culprit) != planar::Reach::Yes) {
+            values[c] = nan;
+            if (!margins.empty())
+                margins[c] = nan;
+            continue;
+        }
+        pose.outputs[0] = X.x();
+        pose.outputs[1] = X.y();
+        if (n == 3)
+            pose.outputs[2] = phi;
+        Eigen::Matrix3d jq, jx;
+        jacobianParts(pose, jq, jx);
+        double value = 0.0;
+        const double detJq = jq.diagonal().head(n).prod();
+        if (quantity == MapQuantity::Determinant) {
+            value = (n == 2 ? jx.topLeftCorner<2, 2>().determinant() : jx.determinant()) / detJq;
+        } else {
+            value = std::numeric_limits<double>::infinity();
+            if (detJq != 0.0) {
+                Eigen::Matrix3d J = jx;
+                for (int i = 0; i < n; ++i)
+                    J.row(i) /= jq(i, i);
+                if (n == 2) {
+                    const Eigen::Matrix2d j2 = J.topLeftCorner<2, 2>();
+                    const double f = j2.squaredNorm(), d = std::abs(j2.determinant());
+                    if (d > 0.0)
+                        value = (f + std::sqrt(std::max(0.0, f * f - 4.0 * d * d))) / (2.0 * d);
+                } else {
+                    const Eigen::Vector3d s = Eigen::JacobiSVD<Eigen::Matrix3d>(J).singularValues();
+                    if (s[2] > 0.0)
+                        value = s[0] / s[2];
+                }
+            }
+        }
+        values[c] = static_cast<float>(value);
+        if (!margins.empty())
+            margins[c] = static_cast<float>(singularity(pose).margin);
+    }
+}
+
+// -- drawing -------------------------------------------------------------------------------
+
+Scene PlanarParallel::scene(const Pose &pose) const
+{
+    const int n = m_design.legCount();
+    const Eigen::Vector3d X = platformPose(pose.outputs);
+    Scene s;
+    auto joint = [&](const Eigen::Vector2d &p, const std::string &label, JointKind kind) {
+        s.joints.push_back({to3(p), label, kind});
+        return int(s.joints.size()) - 1;
+    };
+    // joint 0: the platform's reference point, the handle
+    const int reference = joint(X.head<2>(), n == 2 && m_design.platform == PlatformType::Point ? "P" : "O_P",
+                                m_design.platform == PlatformType::Point ? JointKind::Revolute : JointKind::Point);
+    std::array<int, 3> ends{};
+    for (int i = 0; i < n; ++i) {
+        const std::size_t k = std::size_t(i);
+        const PlanarLeg &leg = m_design.legs[k];
+        const planar::LegCircle c = planar::circle(leg, pose.inputs[i]);
+        const Eigen::Vector2d P = planar::platformPoint(leg, X);
+        const std::string sub = subscripts[k];
+        ends[k] = m_design.platform == PlatformType::Point ? reference : joint(P, joinText({"P", sub}), JointKind::Revolute);
+        int proximal = -1; // the joint the distal link starts from
+        switch (leg.type) {
+        case LegType::RRR: {
+            const int a = joint(leg.base, joinText({"A", sub}), JointKind::Ground);
+            proximal = joint(c.centre, joinText({"C", sub}), JointKind::Revolute);
+            s.bars.push_back({a, proximal, BarKind::Crank, joinText({"r", sub})});
+            break;
+        }
+        case LegType::PRR: {
+            joint(leg.base, joinText({"A", sub}), JointKind::Point);
+            proximal = joint(c.centre, joinText({"C", sub}), JointKind::Slider);
+            SceneGuide guide;
+            guide.start = to3(leg.base + leg.range.min * planar::direction(leg.alpha));
+            guide.end = to3(leg.base + leg.range.max * planar::direction(leg.alpha));
+            guide.width = 16.0;
+            s.guides.push_back(guide);
+            break;
+        }
+        case LegType::RPR: {
+            const int a = joint(leg.base, joinText({"A", sub}), JointKind::Ground);
+            const double body = 0.45 * leg.range.min;
+            s.actuators.push_back({a, ends[k], body, std::max(8.0, 0.12 * body), std::max(3.0, 0.04 * body), joinText({"q", sub})});
+            break;
+        }
+        case LegType::PiRR: {
+            // the П-joint's parallelogram O-B-A-C: B at A_i, O along −α, the coupler parallel to OB
+            const Eigen::Vector2d base = planar::direction(leg.alpha) * leg.ratio * leg.lever;
+            const int o = joint(leg.base - base, joinText({"O", sub}), JointKind::Ground);
+            const int b = joint(leg.base, joinText({"A", sub}), JointKind::Ground);
+            proximal = joint(c.centre, joinText({"C", sub}), JointKind::Revolute);
+            const int other = joint(c.centre - base, "", JointKind::Revolute);
+            s.bars.push_back({o, b, BarKind::Ground, ""});
+            s.bars.push_back({b, proximal, BarKind::Crank, joinText({"a", sub})});
+            s.bars.push_back({o, other, BarKind::Crank, ""});
+            s.bars.push_back({other, proximal, BarKind::Coupler, ""});
+            s.actuators.push_back({o, proximal, 45.0, 28.0, 4.8, joinText({"d", sub})});
+            break;
+        }
+        }
+        if (proximal >= 0) {
+            s.bars.push_back({proximal, ends[k], BarKind::Link, joinText({"l", sub})});
+            if (m_design.platform == PlatformType::Translating) {
+                const Eigen::Vector2d side = parallelogramSide(leg);
+                const int from = joint(c.centre + side, "", JointKind::Revolute);
+                const int to = joint(P + side, "", JointKind::Revolute);
+                s.bars.push_back({from, to, BarKind::Link, ""});
+                s.bars.push_back({proximal, from, BarKind::Coupler, ""});
+                s.bars.push_back({ends[k], to, BarKind::Platform, ""});
+            }
+        }
+    }
+    if (m_design.platform != PlatformType::Point) {
+        for (int i = 0; i < n; ++i)
+            s.bars.push_back({ends[std::size_t(i)], ends[std::size_t((i + 1) % n)], BarKind::Platform, ""});
+        if (n == 2)
+            s.bars.push_back({reference, ends[0], BarKind::Platform, ""});
+    }
+    s.handles.push_back({reference, text::translate("core", "drag to move the platform (inverse kinematics)")});
+    Eigen::AlignedBox3d extent;
+    for (const SceneJoint &j : s.joints)
+        extent.extend(j.position);
+    extent.extend(Eigen::Vector3d(m_bounds.min().x(), m_bounds.min().y(), 0.0));
+    extent.extend(Eigen::Vector3d(m_bounds.max().x(), m_bounds.max().y(), 0.0));
+    for (const PlanarLeg &leg : m_design.legs) {
+        if (&leg - m_design.legs.data() < n)
+            extent.extend(to3(leg.base));
+    }
+    const Eigen::Vector3d pad = Eigen::Vector3d::Constant(20.0);
+    s.extent = Eigen::AlignedBox3d(extent.min() - pad, extent.max() + pad);
+    return s;
+}
+
+Result<Pose> PlanarParallel::dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const
+{
+    if (handle != 0)
+        return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};
+    Coordinates outputs = current.outputs;
+    outputs[0] = target.x();
+    outputs[1] = target.y();
+    return solveInverse(outputs, &current);
+}
+
+// -- structure -----------------------------------------------------------------------------
+
+KinematicChain PlanarParallel::kinematicChain(const Pose &pose) const
+{
+    const int n = m_design.legCount();
+    const Eigen::Vector3d X = platformPose(pose.outputs);
+    KinematicChain chain;
+    chain.links = {text::translate("core", "ground")};
+    auto link = [&](const std::string &name) {
+        chain.links.push_back(name);
+        return int(chain.links.size()) - 1;
+    };
+    auto revolute = [&](const std::string &name, int a, int b, const Eigen::Vector2d &p) {
+        chain.pairs.push_back(mobility::planarRevolute(name, a, b, p));
+    };
+    const int platform = m_design.platform == PlatformType::Point ? -1 : link(text::translate("core", "platform"));
+    int firstDistal = -1;
+    for (int i = 0; i < n; ++i) {
+        const std::size_t k = std::size_t(i);
+        const PlanarLeg &leg = m_design.legs[k];
+        const planar::LegCircle c = planar::circle(leg, pose.inputs[i]);
+        const Eigen::Vector2d P = planar::platformPoint(leg, X);
+        const std::string sub = subscripts[k], legNumber = std::to_string(i + 1);
+        int distal = -1, holder = -1; // holder: the body a distal parallelogram hangs from
+        switch (leg.type) {
+        case LegType::RRR: {
+            const int crank = link(text::format(text::translate("core", "crank %1"), {legNumber}));
+            distal = link(text::format(text::translate("core", "link %1"), {legNumber}));
+            chain.pairs.push_back(mobility::planarRevolute(joinText({"A", sub}), 0, crank, leg.base, true));
+            revolute(joinText({"C", sub}), crank, distal, c.centre);
+            break;
+        }
+        case LegType::PRR: {
+            const int slider = link(text::format(text::translate("core", "slider %1"), {legNumber}));
+            distal = link(text::format(text::translate("core", "link %1"), {legNumber}));
+            chain.pairs.push_back(mobility::planarPrismatic(text::format(text::translate("core", "guide %1"), {legNumber}), 0, slider,
+                                                            c.centre, planar::direction(leg.alpha), true));
+            revolute(joinText({"C", sub}), slider, distal, c.centre);
+            holder = slider;
+            break;
+        }
+        case LegType::RPR: {
+            const int body = link(text::format(text::translate("core", "strut %1, motor body"), {legNumber}));
+            distal = link(text::format(text::translate("core", "strut %1, rod"), {legNumber}));
+            revolute(joinText({"A", sub}), 0, body, leg.base);
+            chain.pairs.push_back(mobility::planarPrismatic(joinText({"q", sub}), body, distal, leg.base, P - leg.base, true));
+            break;
+        }
+        case LegType::PiRR: {
+            // the П-joint's own chain (the pjoint kind's): parallelogram O-B-A-C and the diagonal
+            const Eigen::Vector2d base = planar::direction(leg.alpha) * leg.ratio * leg.lever;
+            const Eigen::Vector2d o = leg.base - base, tip = c.centre, other = tip - base;
+            const int crank = link(text::format(text::translate("core", "crank %1"), {legNumber}));
+            const int rocker = link(text::format(text::translate("core", "П-joint %1: crank OC"), {legNumber}));
+            const int coupler = link(text::format(text::translate("core", "П-joint %1: coupler"), {legNumber}));
+            const int motor = link(text::format(text::translate("core", "П-joint %1: motor body"), {legNumber}));
+            const int screw = link(text::format(text::translate("core", "П-joint %1: screw"), {legNumber}));
+            distal = link(text::format(text::translate("core", "link %1"), {legNumber}));
+            revolute(joinText({"A", sub}), 0, crank, leg.base);
+            revolute(joinText({"O", sub}), 0, rocker, o);
+            revolute(joinText({"C", sub}), crank, coupler, tip);
+            revolute(joinText({"C'", sub}), rocker, coupler, other);
+            revolute(joinText({"O'", sub}), 0, motor, o);
+            revolute(joinText({"C''", sub}), crank, screw, tip);
+            chain.pairs.push_back(mobility::planarPrismatic(joinText({"d", sub}), motor, screw, o, tip - o, true));
+            // the distal link hangs from the coupler, which keeps the base line's direction
+            revolute(joinText({"C'''", sub}), coupler, distal, tip);
+            holder = coupler;
+            break;
+        }
+        }
+        if (m_design.platform == PlatformType::Point) {
+            if (firstDistal < 0)
+                firstDistal = distal;
+            else
+                revolute("P", firstDistal, distal, P);
+            continue;
+        }
+        revolute(joinText({"P", sub}), distal, platform, P);
+        if (m_design.platform == PlatformType::Translating) {
+            // the distal parallelogram: a second link beside the first, from the slider or the
+            // П-joint's coupler (the body the distal link hangs from) to the platform
+            const Eigen::Vector2d side = parallelogramSide(leg);
+            const int second = link(text::format(text::translate("core", "link %1, parallel"), {legNumber}));
+            revolute(joinText({"E", sub}), holder, second, c.centre + side);
+            revolute(joinText({"F", sub}), second, platform, P + side);
+        }
+    }
+    chain.description = text::translate("core", "planar parallel mechanism: legs from the leg library joined at the platform");
+    return chain;
+}
+
+} // namespace pkm
