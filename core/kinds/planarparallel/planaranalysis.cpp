@@ -113,6 +113,13 @@ void PlanarParallel::buildReport()
     l.add(G::Jacobian, "det_Jx", "det J_x", QT_TRANSLATE_NOOP("core", "0 at a direct singularity"), units::none, 1);
     l.add(G::Jacobian, "cond", "κ(J)", QT_TRANSLATE_NOOP("core", "condition number of J"), units::none, 3);
     l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
+    // exact values at singular poses (mechanism.h: AtSingularity)
+    using S = AtSingularity;
+    l.atSingularity("J", S::Infinite, S::Computed);
+    l.atSingularity("det_J", S::Infinite, S::Zero);
+    l.atSingularity("cond", S::Infinite, S::Infinite);
+    l.atSingularity("det_Jq", S::Zero, S::Computed);
+    l.atSingularity("det_Jx", S::Computed, S::Zero);
 }
 
 Singularity PlanarParallel::evaluate(const Pose &pose, std::span<double> v) const
@@ -155,6 +162,7 @@ Singularity PlanarParallel::evaluate(const Pose &pose, std::span<double> v) cons
     v[std::size_t(at++)] = cond;
     const Singularity s = singularity(pose);
     v[std::size_t(at++)] = s.margin;
+    settleSingularValues(m_layout, v, s.type);
     return s;
 }
 
