@@ -208,6 +208,25 @@ std::vector<ModeAlternative> Mechanism::solveAlternatives(const std::vector<Mode
     return solved;
 }
 
+std::vector<Pose> Mechanism::assemblyModes(const Pose &pose) const
+{
+    std::vector<Pose> modes {pose};
+    for (const ModeAlternative &neighbour : modeNeighbours()) {
+        if (!neighbour.sameInputs || !neighbour.mechanism)
+            continue;
+        auto other = neighbour.mechanism->solveDirect(pose.inputs, &pose);
+        if (!other)
+            continue;
+        // one entry per pose: neighbours may reach the same one
+        const bool known = std::any_of(modes.begin(), modes.end(), [&](const Pose &m) {
+            return (m.outputs - other->outputs).norm() <= 1e-9 * std::max(1.0, m.outputs.norm());
+        });
+        if (!known)
+            modes.push_back(*other);
+    }
+    return modes;
+}
+
 Result<MechanismPtr> Mechanism::withParameters(const ParameterSet &changes) const
 {
     Result<MechanismPtr> current = MechanismPtr(shared_from_this());

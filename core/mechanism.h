@@ -236,6 +236,10 @@ public:
     /// The same for neighbours computed before (cheap: one solve per neighbour).
     static std::vector<ModeAlternative> solveAlternatives(const std::vector<ModeAlternative> &neighbours,
                                                           const Pose &pose);
+    /// Every real assembly mode at the inputs of `pose` (every solution of the direct
+    /// kinematics in the design's working modes), `pose` among them, for `pkm eval
+    /// --all-modes`. The default: `pose` and the neighbours that keep the inputs, solved there.
+    virtual std::vector<Pose> assemblyModes(const Pose &pose) const;
     /// Workspace and singularity maps, for mechanisms whose outputs are a point of the plane.
     virtual const PlanarWorkspace *planarWorkspace() const { return nullptr; }
     /// The links and kinematic pairs with their axes at `pose`, for the mobility analysis

@@ -232,7 +232,18 @@ std::string showText(const PreparedDesign &prepared)
     return out;
 }
 
-std::string evalText(const PreparedDesign &prepared)
+/// The outputs of `pose` in display units, in the order of the variables.
+std::vector<std::pair<std::string, double>> displayOutputs(const Mechanism &mechanism, const Pose &pose)
+{
+    std::vector<std::pair<std::string, double>> outputs;
+    const auto &variables = mechanism.variableInfo();
+    const int inputs = mechanism.inputCount();
+    for (int i = inputs; i < static_cast<int>(variables.size()); ++i)
+        outputs.emplace_back(variables[std::size_t(i)].name, variables[std::size_t(i)].unit.toDisplay(mechanism.variableValue(pose, i)));
+    return outputs;
+}
+
+std::string evalText(const PreparedDesign &prepared, bool allModes)
 {
     const Mechanism &mechanism = *prepared.mechanism;
     const ReportLayout &layout = mechanism.reportLayout();
@@ -296,6 +307,19 @@ std::string evalText(const PreparedDesign &prepared)
         table.text("not finite at this pose: " + names);
     }
     addMobilityRows(table, mechanism, prepared.pose);
+    if (allModes) {
+        // every real solution of the direct kinematics at these inputs; * marks the pose's
+        table.heading("Assembly modes at these inputs");
+        const std::vector<Pose> modes = mechanism.assemblyModes(prepared.pose);
+        for (std::size_t m = 0; m < modes.size(); ++m) {
+            std::string text;
+            for (const auto &[name, value] : displayOutputs(mechanism, modes[m]))
+                text += (text.empty() ? "" : ", ") + name + " = " + fixedText(value, 3);
+            const bool current = (modes[m].outputs - prepared.pose.outputs).norm()
+                <= 1e-9 * std::max(1.0, prepared.pose.outputs.norm());
+            table.cells({std::to_string(m + 1) + (current ? " *" : ""), text, "", ""});
+        }
+    }
     const std::vector<std::string> warnings = mechanism.designWarnings();
     if (!warnings.empty()) {
         table.heading("Warnings");
@@ -365,7 +389,7 @@ int printOutput(std::FILE *out, std::FILE *err, std::string_view text)
     return finishOutput(out, err, std::fwrite(text.data(), 1, text.size(), out) == text.size());
 }
 
-std::string evalJson(const Mechanism &mechanism, const Pose &pose)
+std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes)
 {
     const ReportLayout &layout = mechanism.reportLayout();
     std::vector<double> values(static_cast<std::size_t>(layout.size));
@@ -377,6 +401,17 @@ std::string evalJson(const Mechanism &mechanism, const Pose &pose)
     writeParametersJson(json, mechanism, false);
     writeReportJson(json, layout, values, singularity, mechanism.reportText(pose));
     writeMobilityJson(json, mechanism, pose);
+    if (allModes) {
+        json.key("assembly_modes");
+        json.beginArray();
+        for (const Pose &mode : mechanism.assemblyModes(pose)) {
+            json.beginObject(true);
+            for (const auto &[name, value] : displayOutputs(mechanism, mode))
+                json.key(name).number(value);
+            json.endObject();
+        }
+        json.endArray();
+    }
     json.endObject();
     return out;
 }
@@ -425,7 +460,8 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
         return printOutput(out, err, invocation.json ? showJson(*prepared) : showText(*prepared));
     if (invocation.command == Command::Eval) {
         return printOutput(
-            out, err, invocation.json ? evalJson(*prepared->mechanism, prepared->pose) + "\n" : evalText(*prepared));
+            out, err, invocation.json ? evalJson(*prepared->mechanism, prepared->pose, invocation.allModes) + "\n"
+                                : evalText(*prepared, invocation.allModes));
     }
     if (invocation.command == Command::Workspace || invocation.command == Command::Map)
         return runWorkspaceCommand(*prepared, invocation, out, err);

@@ -47,7 +47,9 @@ struct PreparedDesign;
 
 /// The report of one solved pose as `pkm eval --json` prints it (without a trailing newline):
 /// {"mechanism", "parameters", "pose", "jacobian", "singularity", "derived"}.
-std::string evalJson(const Mechanism &mechanism, const Pose &pose);
+/// With `allModes` it adds "assembly_modes": [{output: value, …}, …], every real assembly
+/// mode at the pose's inputs (Mechanism::assemblyModes), in display units.
+std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes = false);
 
 /// The first lines of show, eval, workspace and map: "Design     moma-3a: …" and
 /// "Mechanism  moma (…)".

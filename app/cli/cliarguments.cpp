@@ -25,6 +25,7 @@ enum OptionFlag : unsigned {
     OptionOutput = 1u << 7, ///< -o FILE
     OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption, --one-way
     OptionLanguage = 1u << 9, ///< --lang CODE
+    OptionModes = 1u << 10, ///< --all-modes
 };
 
 struct CommandSpec {
@@ -38,7 +39,7 @@ struct CommandSpec {
 constexpr std::array<CommandSpec, 8> commandSpecs = {{
     {Command::List, "list", OptionJson},
     {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
-    {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet},
+    {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet | OptionModes},
     {Command::Sweep, "sweep", OptionDesign | OptionJson | OptionCsv | OptionSet | OptionSweep},
     {Command::Workspace, "workspace", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionOutput,
         {"png", "svg"}},
@@ -80,6 +81,8 @@ unsigned optionFlag(std::string_view option)
         return OptionPicture;
     if (option == "--lang")
         return OptionLanguage;
+    if (option == "--all-modes")
+        return OptionModes;
     return 0;
 }
 
@@ -244,10 +247,10 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
         if (!(flag & command.options)) {
             return usageFailure(option, "'" + option + "' is not an option of " + quotedCommand + seeHelp + ".");
         }
-        if (flag == OptionJson || flag == OptionCsv) {
+        if (flag == OptionJson || flag == OptionCsv || flag == OptionModes) {
             if (inlineValue)
                 return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
-            (flag == OptionJson ? invocation.json : invocation.csv) = true;
+            (flag == OptionJson ? invocation.json : flag == OptionCsv ? invocation.csv : invocation.allModes) = true;
             continue;
         }
         if (option == "--orthographic" || option == "--no-caption" || option == "--one-way") {

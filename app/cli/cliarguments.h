@@ -49,6 +49,7 @@ struct Invocation {
     bool version = false;
     bool json = false;
     bool csv = false;
+    bool allModes = false; ///< --all-modes (eval): every assembly mode at the inputs
     std::optional<std::string> design;
     std::vector<Setting> sets;
     std::optional<std::string> var;

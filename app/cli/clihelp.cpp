@@ -81,7 +81,7 @@ the quantities eval and sweep report, with units; and the design warnings.
                        limits are null
 )";
 
-constexpr std::string_view evalHelp = R"(Usage: pkm eval DESIGN [--set NAME=VALUE]... [--json]
+constexpr std::string_view evalHelp = R"(Usage: pkm eval DESIGN [--set NAME=VALUE]... [--all-modes] [--json]
 
 Solves one pose of the design and prints every coordinate, the Jacobians, the singularity
 class and the derived quantities, in display units.
@@ -103,6 +103,10 @@ class and the derived quantities, in display units.
                        (det J = 0 at a direct singularity, never 1e13 beside one); mobility
                        counts the mechanism's freedoms by Chebyshev's and Somov–Malyshev's
                        formulas and by the rank of its loop equations
+  --all-modes         also every real assembly mode at the pose's inputs (every solution
+                      of the direct kinematics in the design's working modes, the pose's
+                      own marked *); with --json "assembly_modes": [{"x", "y", …}, …],
+                      the outputs of each in display units
 )";
 
 constexpr std::string_view sweepHelp

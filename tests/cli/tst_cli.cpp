@@ -279,6 +279,8 @@ private slots:
     void list();
     void show();
     void evalText();
+    void evalAllModes_data();
+    void evalAllModes();
 
     void momaEvalJsonHasContractKeys_data();
     void momaEvalJsonHasContractKeys();
@@ -686,6 +688,70 @@ void TestCli::momaInverseThenDirect()
     const QJsonObject back = direct.value(QStringLiteral("pose")).toObject();
     QVERIFY(std::abs(back.value(QStringLiteral("x")).toDouble() - 10.0) < 1e-9);
     QVERIFY(std::abs(back.value(QStringLiteral("y")).toDouble() + 250.0) < 1e-9);
+}
+
+void TestCli::evalAllModes_data()
+{
+    QTest::addColumn<QString>("design");
+    QTest::addColumn<int>("modes");
+    QTest::addColumn<QStringList>("outputs");
+    // the 3-RPR preset's home pose has six real assembly modes
+    QTest::newRow("pp-3rpr") << QStringLiteral("pp-3rpr") << 6 << args({"x", "y", "phi"});
+    // a five-bar has two: C on either side of B→D
+    QTest::newRow("fivebar-example") << QStringLiteral("fivebar-example") << 2 << args({"x", "y"});
+    QTest::newRow("pp-5r") << QStringLiteral("pp-5r") << 2 << args({"x", "y"});
+}
+
+void TestCli::evalAllModes()
+{
+    QFETCH(QString, design);
+    QFETCH(int, modes);
+    QFETCH(QStringList, outputs);
+    int exitCode = -1;
+    const QJsonObject root = runJson(args({"eval"}) << design << QStringLiteral("--all-modes") << QStringLiteral("--json"), &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonArray found = root.value(QStringLiteral("assembly_modes")).toArray();
+    QCOMPARE(found.size(), modes);
+    // the pose itself is one of them, and they are distinct
+    const QJsonObject pose = root.value(QStringLiteral("pose")).toObject();
+    int own = 0;
+    for (qsizetype i = 0; i < found.size(); ++i) {
+        const QJsonObject mode = found[i].toObject();
+        QCOMPARE(mode.size(), outputs.size());
+        double distance = 0.0;
+        for (const QString &name : outputs) {
+            QVERIFY2(mode.value(name).isDouble(), qPrintable(name));
+            distance += std::abs(mode.value(name).toDouble() - pose.value(name).toDouble());
+        }
+        own += distance < 1e-6 ? 1 : 0;
+        for (qsizetype j = 0; j < i; ++j) {
+            double apart = 0.0;
+            for (const QString &name : outputs)
+                apart += std::abs(mode.value(name).toDouble() - found[j].toObject().value(name).toDouble());
+            QVERIFY2(apart > 1e-6, "two modes are the same pose");
+        }
+    }
+    QCOMPARE(own, 1);
+    // each is a pose of the design: solving its outputs gives the same inputs
+    for (const QJsonValue &value : found) {
+        const QJsonObject mode = value.toObject();
+        QStringList solve = args({"eval"}) << design;
+        for (const QString &name : outputs)
+            solve << QStringLiteral("--set") << name + QLatin1Char('=') + QString::number(mode.value(name).toDouble(), 'g', 17);
+        if (design == QStringLiteral("pp-3rpr")) {
+            // the struts' lengths are the inputs whatever the mode
+            const QJsonObject solved = runJson(QStringList(solve) << QStringLiteral("--json"), &exitCode);
+            QCOMPARE(exitCode, 0);
+            for (const char *input : {"q1", "q2", "q3"})
+                QVERIFY(std::abs(solved.value(QStringLiteral("pose")).toObject().value(QLatin1String(input)).toDouble()
+                            - pose.value(QLatin1String(input)).toDouble()) < 1e-6);
+        }
+    }
+    // the text output lists them, the pose's own marked
+    const Run text = runPkm(args({"eval"}) << design << QStringLiteral("--all-modes"));
+    QCOMPARE(text.exitCode, 0);
+    QVERIFY(text.out.contains("Assembly modes at these inputs"));
+    QVERIFY(text.out.contains(" *"));
 }
 
 void TestCli::singularPosesAreExact_data()

@@ -153,6 +153,8 @@ public:
     Singularity evaluate(const Pose &pose, std::span<double> values) const override;
     Jacobians jacobians(const Pose &pose) const override;
     std::vector<ModeAlternative> modeNeighbours() const override;
+    /// assemblies() at the pose's inputs: every real solution, in order of φ for 3 DOF.
+    std::vector<Pose> assemblyModes(const Pose &pose) const override { return assemblies(pose.inputs); }
     const PlanarWorkspace *planarWorkspace() const override { return this; }
     KinematicChain kinematicChain(const Pose &pose) const override;
 
