@@ -1,4 +1,10 @@
+// The mobility analysis (docs/mathematics.md, section 7): the chain's loop equations from the
+// twists of its pairs, their ranks at the pose and near it, and the report built on them; the
+// structural formulas and the classroom chains are in mobilityformulas.cpp, the verdict's
+// words in mobilityverdict.cpp.
+
 #include "mobility.h"
+#include "mobilityinternal.h"
 
 #include "mechanism.h"
 #include "text.h"
@@ -16,6 +22,7 @@ namespace pkm {
 namespace {
 
 using Twist = Eigen::Matrix<double, 6, 1>;
+using mobility::verdictOf;
 
 /// A rigid displacement x ↦ R·x + p.
 struct Displacement {
@@ -71,11 +78,6 @@ Twist prismaticTwist(const Eigen::Vector3d &axis)
 bool needsAxis(PairType type)
 {
     return type != PairType::Spherical;
-}
-
-bool planarCapable(PairType type)
-{
-    return type == PairType::Revolute || type == PairType::Prismatic || type == PairType::CamPlanar;
 }
 
 /// Why the chain cannot be analysed, or empty.
@@ -389,181 +391,9 @@ Nearby exploreNearby(
     return nearby;
 }
 
-/// A phrase with a count: `translated`, the catalogue's plural form of a "%n …(s)" source, when a
-/// program installed one (text::install); else English, `one` for n = 1 and `many` otherwise with
-/// "%n" replaced by n, so that the CLI and the tests read "1 loop", "3 loops".
-std::string counted(std::string translated, int n, std::string_view one, std::string_view many)
-{
-    // a catalogue leaves "%n" for n < 0 (no plural form): filled here, as in English
-    std::string phrase = text::installed().translate ? std::move(translated) : std::string(n == 1 ? one : many);
-    const std::string number = std::to_string(n);
-    for (std::size_t at = phrase.find("%n"); at != std::string::npos; at = phrase.find("%n", at + number.size()))
-        phrase.replace(at, 2, number);
-    return phrase;
-}
-
-/// An integer as printed for people: a true minus sign.
-std::string integerText(int n)
-{
-    return n < 0 ? joinText({"−", std::to_string(-n)}) : std::to_string(n);
-}
-
-std::string verdictOf(const MobilityReport &r)
-{
-    const int M = r.mobility;
-    const std::string links = counted(text::translate("core", "%n moving link(s)", nullptr, r.movingLinks),
-        r.movingLinks, "%n moving link", "%n moving links");
-    const std::string pairs
-        = counted(text::translate("core", "%n pair(s)", nullptr, r.pairs), r.pairs, "%n pair", "%n pairs");
-    const std::string loops
-        = counted(text::translate("core", "%n loop(s)", nullptr, r.loops), r.loops, "%n loop", "%n loops");
-    std::string verdict = text::format(r.planar
-            ? text::translate("core",
-                "Planar chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4")
-            : text::translate("core",
-                "Spatial chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4"),
-        {links, pairs, loops, integerText(M)});
-    const auto add = [&verdict](const std::string &clause) { verdict.append("; ").append(clause); };
-    if (r.chebyshev) {
-        if (r.chebyshevFails) {
-            const int n = r.planarRedundantConstraints.value_or(0);
-            add(text::format(counted(text::translate("core",
-                                         "Chebyshev's W = %1 is wrong: %n planar loop equation(s) is/are redundant (an "
-                                         "overconstrained planar chain)",
-                                         nullptr, n),
-                                 n,
-                                 "Chebyshev's W = %1 is wrong: %n planar loop equation is redundant (an overconstrained "
-                                 "planar chain)",
-                                 "Chebyshev's W = %1 is wrong: %n planar loop equations are redundant (an "
-                                 "overconstrained planar chain)"),
-                {integerText(*r.chebyshev)}));
-        } else {
-            add(text::format(text::translate("core", "Chebyshev's W = %1 is right"), {integerText(*r.chebyshev)}));
-        }
-    }
-    if (!r.somovMalyshevFails) {
-        add(text::format(
-            text::translate("core", "Somov–Malyshev's W = %1 is right"), {integerText(r.somovMalyshev)}));
-    } else {
-        const std::string why = r.planar ? text::translate("core", "(parallel axes: a planar loop imposes only 3)")
-            : M > 0 && r.somovMalyshev <= 0
-            ? text::translate("core", "(an overconstrained, \"paradoxical\" chain: it moves)")
-            : text::translate("core", "(an overconstrained chain)");
-        const int n = r.redundantConstraints;
-        add(text::format(counted(text::translate("core",
-                                     "Somov–Malyshev's W = %1 is wrong: it counts 6 equations per loop and %n is/are "
-                                     "redundant %2",
-                                     nullptr, n),
-                             n,
-                             "Somov–Malyshev's W = %1 is wrong: it counts 6 equations per loop and %n is redundant "
-                             "%2",
-                             "Somov–Malyshev's W = %1 is wrong: it counts 6 equations per loop and %n are redundant "
-                             "%2"),
-            {integerText(r.somovMalyshev), why}));
-    }
-    if (r.singular) {
-        add(text::format(
-            text::translate("core", "at this pose the rank drops: the instantaneous mobility is %1, a singular pose"),
-            {integerText(r.numerical)}));
-    }
-    const int useful = M - r.idleFreedoms;
-    const int uncontrolled = r.lockedMobilityNearby - r.idleFreedoms;
-    const int actuators = r.actuators;
-    if (actuators == 0) {
-        add(text::translate("core", "no pair is actuated"));
-    } else if (uncontrolled > 0) {
-        const std::string left = counted(text::translate("core", "%n freedom(s)", nullptr, uncontrolled), uncontrolled,
-            "%n freedom", "%n freedoms");
-        add(text::format(
-            counted(text::translate("core", "%n actuated freedom(s) leave(s) %1 uncontrolled (under-actuated)", nullptr,
-                        actuators),
-                actuators, "%n actuated freedom leaves %1 uncontrolled (under-actuated)",
-                "%n actuated freedoms leave %1 uncontrolled (under-actuated)"),
-            {left}));
-    } else if (actuators > useful) {
-        add(text::format(
-            counted(text::translate("core", "%n actuated freedom(s) for mobility %1: redundantly actuated", nullptr,
-                        actuators),
-                actuators, "%n actuated freedom for mobility %1: redundantly actuated",
-                "%n actuated freedoms for mobility %1: redundantly actuated"),
-            {integerText(useful)}));
-    } else {
-        add(counted(text::translate("core", "%n actuated freedom(s): fully actuated", nullptr, actuators), actuators,
-            "%n actuated freedom: fully actuated", "%n actuated freedoms: fully actuated"));
-    }
-    if (r.lockedMobility > r.lockedMobilityNearby)
-        add(text::translate(
-            "core", "with the actuators locked it can still move instantaneously here (a direct singularity)"));
-    if (r.idleFreedoms > 0) {
-        add(counted(text::translate("core", "%n idle freedom(s) is/are included", nullptr, r.idleFreedoms),
-            r.idleFreedoms, "%n idle freedom is included", "%n idle freedoms are included"));
-    }
-    verdict += '.';
-    return verdict;
-}
-
 } // namespace
 
-// -- formulas ------------------------------------------------------------------------------
-
 namespace mobility {
-
-int pairClass(PairType type)
-{
-    return 6 - pairFreedoms(type);
-}
-
-int pairFreedoms(PairType type)
-{
-    switch (type) {
-    case PairType::Revolute:
-    case PairType::Prismatic:
-    case PairType::Screw:
-        return 1;
-    case PairType::Cylindrical:
-    case PairType::CamPlanar:
-        return 2;
-    case PairType::Spherical:
-        return 3;
-    }
-    return 1;
-}
-
-PairClassCounts countPairs(const KinematicChain &chain)
-{
-    PairClassCounts counts {};
-    for (const KinematicPair &pair : chain.pairs)
-        ++counts[std::size_t(pairClass(pair.type))];
-    return counts;
-}
-
-int chebyshev(int movingLinks, int lowerPairs, int higherPairs)
-{
-    return 3 * movingLinks - 2 * lowerPairs - higherPairs;
-}
-
-std::optional<int> chebyshev(const KinematicChain &chain)
-{
-    if (!chain.planar || chain.links.empty())
-        return std::nullopt;
-    int lower = 0, higher = 0;
-    for (const KinematicPair &pair : chain.pairs) {
-        if (!planarCapable(pair.type))
-            return std::nullopt;
-        ++(pair.type == PairType::CamPlanar ? higher : lower);
-    }
-    return chebyshev(chain.movingLinks(), lower, higher);
-}
-
-int somovMalyshev(int movingLinks, const PairClassCounts &p)
-{
-    return 6 * movingLinks - 5 * p[5] - 4 * p[4] - 3 * p[3] - 2 * p[2] - p[1];
-}
-
-int documentSomovMalyshev(int movingLinks, const PairClassCounts &p)
-{
-    return 6 * movingLinks - 5 * p[5] - 4 * p[4] - 3 * p[3] - 2 * p[2] + p[1];
-}
 
 // -- the constraint Jacobian ---------------------------------------------------------------
 
@@ -585,135 +415,6 @@ ConstraintJacobian constraintJacobian(const KinematicChain &chain)
 int numericalRank(const Eigen::MatrixXd &matrix, double tolerance)
 {
     return matrix.size() == 0 ? 0 : rankOf(Eigen::JacobiSVD<Eigen::MatrixXd>(matrix).singularValues(), tolerance);
-}
-
-// -- classroom chains ----------------------------------------------------------------------
-
-KinematicPair makePair(PairType type, std::string name, int link1, int link2, const Eigen::Vector3d &point,
-    const Eigen::Vector3d &axis, bool actuated)
-{
-    KinematicPair pair;
-    pair.name = std::move(name);
-    pair.type = type;
-    pair.link1 = link1;
-    pair.link2 = link2;
-    pair.point = point;
-    pair.axis = axis.normalized();
-    pair.actuated = actuated;
-    return pair;
-}
-
-KinematicPair planarRevolute(std::string name, int link1, int link2, const Eigen::Vector2d &point, bool actuated)
-{
-    return makePair(PairType::Revolute, std::move(name), link1, link2, Eigen::Vector3d(point.x(), point.y(), 0.0),
-        Eigen::Vector3d::UnitZ(), actuated);
-}
-
-KinematicPair planarPrismatic(std::string name, int link1, int link2, const Eigen::Vector2d &point,
-    const Eigen::Vector2d &direction, bool actuated)
-{
-    return makePair(PairType::Prismatic, std::move(name), link1, link2, Eigen::Vector3d(point.x(), point.y(), 0.0),
-        Eigen::Vector3d(direction.x(), direction.y(), 0.0), actuated);
-}
-
-namespace {
-/// Four revolute pairs closing ground → 1 → 2 → 3 → ground, at the given axes.
-KinematicChain fourRevoluteLoop(
-    const std::array<Eigen::Vector3d, 4> &points, const std::array<Eigen::Vector3d, 4> &axes)
-{
-    KinematicChain chain;
-    chain.links = {text::translate("core", "ground")};
-    for (int i = 1; i < 4; ++i)
-        chain.links.push_back(text::format(text::translate("core", "link %1"), {std::to_string(i)}));
-    for (int i = 0; i < 4; ++i)
-        chain.pairs.push_back(makePair(
-            PairType::Revolute, std::to_string(i + 1), i, (i + 1) % 4, points[std::size_t(i)], axes[std::size_t(i)]));
-    chain.pairs[0].actuated = true;
-    chain.planar = false;
-    return chain;
-}
-} // namespace
-
-KinematicChain spatialParallelogram(double a, double b, double theta)
-{
-    const Eigen::Vector3d crank = a * Eigen::Vector3d(std::sin(theta), std::cos(theta), 0.0);
-    const Eigen::Vector3d O = Eigen::Vector3d::Zero(), B(b, 0.0, 0.0), A = B + crank, C = O + crank;
-    const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
-    KinematicChain chain = fourRevoluteLoop({O, C, A, B}, {z, z, z, z});
-    chain.links = {text::translate("core", "ground OB"), text::translate("core", "crank OC"),
-        text::translate("core", "coupler CA"), text::translate("core", "crank AB")};
-    const char *names[] = {"O", "C", "A", "B"};
-    for (std::size_t i = 0; i < 4; ++i)
-        chain.pairs[i].name = names[i];
-    chain.description
-        = text::translate("core", "spatial parallelogram: four parallel revolute axes taken as a spatial chain");
-    return chain;
-}
-
-Eigen::Isometry3d denavitHartenberg(double theta, double d, double a, double alpha)
-{
-    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.rotate(Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()));
-    T.translate(Eigen::Vector3d(a, 0.0, d));
-    T.rotate(Eigen::AngleAxisd(alpha, Eigen::Vector3d::UnitX()));
-    return T;
-}
-
-std::array<double, 4> bennettAngles(double alpha, double beta, double theta1)
-{
-    // tan(θ₂/2) = K / tan(θ₁/2), K = sin((β + α)/2) / sin((β − α)/2); the atan2 form holds at
-    // θ₁ = 0 too (θ₂ = π there).
-    const double K = std::sin(0.5 * (beta + alpha)) / std::sin(0.5 * (beta - alpha));
-    const double theta2 = 2.0 * std::atan2(K * std::cos(0.5 * theta1), std::sin(0.5 * theta1));
-    return {theta1, theta2, -theta1, -theta2};
-}
-
-KinematicChain bennettLinkage(double a, double alpha, double beta, double theta1)
-{
-    const double b = a * std::sin(beta) / std::sin(alpha);
-    const std::array<double, 4> theta = bennettAngles(alpha, beta, theta1);
-    const std::array<double, 3> lengths = {a, b, a}, twists = {alpha, beta, alpha};
-    std::array<Eigen::Vector3d, 4> points, axes;
-    Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
-    for (std::size_t i = 0; i < 4; ++i) {
-        points[i] = frame.translation();
-        axes[i] = frame.linear().col(2);
-        if (i < 3)
-            frame = frame * denavitHartenberg(theta[i], 0.0, lengths[i], twists[i]);
-    }
-    KinematicChain chain = fourRevoluteLoop(points, axes);
-    chain.description
-        = text::translate("core", "Bennett linkage: four revolute axes, opposite links equal, a/sin α = b/sin β");
-    return chain;
-}
-
-KinematicChain randomSpatial4R(unsigned seed, double size)
-{
-    std::mt19937 random(seed);
-    const auto uniform = [&random] { return double(random()) / double(std::mt19937::max()); };
-    std::array<Eigen::Vector3d, 4> points, axes;
-    for (std::size_t i = 0; i < 4; ++i) {
-        points[i] = size * Eigen::Vector3d(uniform(), uniform(), uniform());
-        do {
-            axes[i] = Eigen::Vector3d(uniform(), uniform(), uniform()) * 2.0 - Eigen::Vector3d::Ones();
-        } while (axes[i].norm() < 0.1 || axes[i].norm() > 1.0);
-    }
-    KinematicChain chain = fourRevoluteLoop(points, axes);
-    chain.pairs[0].actuated = false; // a structure: nothing to drive
-    chain.description = text::translate("core", "spatial 4R loop with random axes (not a Bennett linkage)");
-    return chain;
-}
-
-KinematicChain planarFiveBar(const std::array<Eigen::Vector2d, 5> &joints)
-{
-    KinematicChain chain;
-    chain.links = {text::translate("core", "ground AE"), text::translate("core", "crank AB"),
-        text::translate("core", "link BC"), text::translate("core", "link DC"), text::translate("core", "crank ED")};
-    const char *names[] = {"A", "B", "C", "D", "E"};
-    for (int i = 0; i < 5; ++i)
-        chain.pairs.push_back(planarRevolute(names[i], i, (i + 1) % 5, joints[std::size_t(i)], i == 0 || i == 4));
-    chain.description = text::translate("core", "planar five-bar: ground, two driven cranks, two distal links");
-    return chain;
 }
 
 } // namespace mobility

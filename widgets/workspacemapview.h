@@ -42,7 +42,7 @@ class QTimer;
 
 namespace pkm {
 
-struct WorkspaceMapResult; ///< what a worker hands to the GUI thread (workspacemapview.cpp)
+struct WorkspaceMapResult; ///< what a worker hands to the GUI thread (workspacemapviewinternal.h)
 
 class WorkspaceMapView : public QWidget
 {

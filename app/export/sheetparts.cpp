@@ -1,5 +1,6 @@
 // The pieces of the parameter sheet that every section uses (sheetparts.h): report values as
-// cells and columns, key-pose rows, sweeps over an input and their plots.
+// cells and columns, key-pose rows, sweeps over an input and their plots; and the cells and
+// words of the sheet's model (sheet.h) as every format writes them.
 
 #include "export/sheetparts.h"
 
@@ -7,6 +8,7 @@
 #include "quantityformat.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 
 #include <algorithm>
 #include <cmath>
@@ -280,5 +282,86 @@ Row reportRow(const Mechanism &mechanism, const Pose &pose, const std::vector<co
 }
 
 } // namespace detail
+
+using detail::utf8;
+
+// -- cells ------------------------------------------------------------------------------------
+
+Cell numberCell(double value, int decimals)
+{
+    Cell cell;
+    cell.number = value;
+    cell.decimals = std::clamp(decimals, 0, 12);
+    return cell;
+}
+
+Cell wordCell(std::string word, QString shown)
+{
+    Cell cell;
+    cell.word = std::move(word);
+    cell.shown = std::move(shown);
+    return cell;
+}
+
+QString cellText(const Cell &cell)
+{
+    if (!cell.shown.isEmpty())
+        return cell.shown;
+    if (cell.isWord())
+        return utf8(cell.word);
+    if (std::isnan(cell.number))
+        return QStringLiteral("—");
+    if (std::isinf(cell.number))
+        return cell.number > 0 ? QStringLiteral("∞") : QStringLiteral("-∞");
+    // "-0.00" → "0.00": a value that rounds to zero is printed as zero.
+    const QString plain = QString::number(cell.number, 'f', cell.decimals);
+    const bool zero = std::all_of(plain.cbegin(), plain.cend(),
+        [](QChar c) { return c == QLatin1Char('-') || c == QLatin1Char('0') || c == QLatin1Char('.'); });
+    // The language's decimal separator ("116,20" in Russian), no group separators: a table of
+    // dimensions reads "1044.03", as the GUI shows it.
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    return locale.toString(zero ? 0.0 : cell.number, 'f', cell.decimals);
+}
+
+const char *verdictWord(Verdict verdict)
+{
+    switch (verdict) {
+    case Verdict::Pass:
+        return "PASS";
+    case Verdict::Fail:
+        return "FAIL";
+    case Verdict::Info:
+        break;
+    }
+    return "INFO";
+}
+
+const char *figureKindWord(FigureKind kind)
+{
+    switch (kind) {
+    case FigureKind::Plot:
+        return "plot";
+    case FigureKind::Drawing:
+        return "drawing";
+    case FigureKind::Image:
+        break;
+    }
+    return "image";
+}
+
+QString scaleText(std::pair<int, int> scale)
+{
+    return QStringLiteral("%1:%2").arg(scale.first).arg(scale.second);
+}
+
+const Section *Sheet::section(std::string_view key) const
+{
+    for (const Section &s : sections) {
+        if (s.key == key)
+            return &s;
+    }
+    return nullptr;
+}
 
 } // namespace pkm::sheet

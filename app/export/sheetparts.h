@@ -94,6 +94,9 @@ std::pair<double, double> valueAxis(const std::vector<double> &values);
 std::optional<Eigen::AlignedBox2d> drawnBounds(const Scene &scene, double ratio);
 /// The style the sheet's drawing uses, for a device of `unitsPerMillimetre`.
 SceneStyle drawingStyle(double unitsPerMillimetre);
+/// The dimensioned drawing of `pose` at the largest standard scale that fits A4
+/// (sheetdrawing.cpp); `poseDescription` names the pose in its caption.
+void addDrawing(const Mechanism &mechanism, const Pose &pose, const QString &poseDescription, Parts &parts);
 
 /// The scalar report entries among `names`, in the order given: the columns of a table.
 std::vector<const ReportEntry *> reportEntries(const Mechanism &mechanism, std::span<const std::string_view> names);

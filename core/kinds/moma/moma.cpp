@@ -1,6 +1,10 @@
-#include "moma.h"
+// MOMA (docs/mathematics.md, section 2): its closed forms, the design and its checks, the
+// joint variables and the direct and inverse kinematics; the analysis is in momaanalysis.cpp,
+// the planar drawing in momascene.cpp, the maps in momamaps.cpp and the solid model in moma3d.cpp.
 
-#include "mobility.h"
+#include "moma.h"
+#include "momainternal.h"
+
 #include "text.h"
 
 #include <algorithm>
@@ -11,20 +15,12 @@ namespace pkm {
 
 namespace {
 constexpr double pi = std::numbers::pi;
-
-std::string legName(int leg)
-{
-    return leg == 0 ? "1" : "2";
-}
+using moma::cross;
+using moma::legName;
 
 Eigen::Vector2d normal(const Eigen::Vector2d &a)
 {
     return {-a.y(), a.x()};
-}
-
-double cross(const Eigen::Vector2d &u, const Eigen::Vector2d &v)
-{
-    return u.x() * v.y() - u.y() * v.x();
 }
 } // namespace
 
@@ -376,7 +372,7 @@ Result<Pose> Moma::direct(double p1, double p2) const
     for (int leg = 0; leg < 2; ++leg) {
         const double w = (platform - z[leg]).dot(moma::direction(d.alpha[leg]));
         if (w * d.branch[leg] > 1e-9 * d.length[leg]) {
-            return Failure{FailureKind::Unreachable, "p" + legName(leg),
+            return Failure{FailureKind::Unreachable, joinText({"p", legName(leg)}),
                            text::format(text::translate("core", "At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past "
                                                                 "perpendicular to its guide, in its other working mode (an "
                                                                 "inverse singularity lies between); switch the mode to go on."),
@@ -416,7 +412,7 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
         // √D of a D that is zero up to rounding is ~1e-8·l: allow for it at the stroke ends
         const double tolerance = 1e-7 * std::max({1.0, d.strokeMax - d.strokeMin, l});
         if (p[leg] < d.strokeMin - tolerance || p[leg] > d.strokeMax + tolerance) {
-            return Failure{FailureKind::OutOfRange, "p" + legName(leg),
+            return Failure{FailureKind::OutOfRange, joinText({"p", legName(leg)}),
                            text::format(text::translate("core", "The platform cannot reach %1: slider %2 would have to "
                                                                 "be at p%3 = %4 mm, outside its stroke [%5, %6] mm."),
                                         {where, legName(leg), legName(leg), text::number(p[leg]),
@@ -449,12 +445,12 @@ Result<Pose> Moma::solveDirect(const Coordinates &inputs, const Pose *) const
     for (int leg = 0; leg < 2; ++leg) {
         const double p = inputs[leg];
         if (!std::isfinite(p))
-            return Failure{FailureKind::OutOfRange, "p" + legName(leg),
-                           text::format(text::translate("core", "%1 must be a finite number."), {"p" + legName(leg)})};
+            return Failure{FailureKind::OutOfRange, joinText({"p", legName(leg)}),
+                           text::format(text::translate("core", "%1 must be a finite number."), {joinText({"p", legName(leg)})})};
         if (p < m_design.strokeMin || p > m_design.strokeMax) {
-            return Failure{FailureKind::OutOfRange, "p" + legName(leg),
+            return Failure{FailureKind::OutOfRange, joinText({"p", legName(leg)}),
                            text::format(text::translate("core", "%1 = %2 mm is outside the stroke [%3, %4] mm."),
-                                        {"p" + legName(leg), text::number(p), text::number(m_design.strokeMin),
+                                        {joinText({"p", legName(leg)}), text::number(p), text::number(m_design.strokeMin),
                                          text::number(m_design.strokeMax)})};
         }
     }
@@ -471,236 +467,6 @@ Result<Pose> Moma::solveInverse(const Coordinates &outputs, const Pose *) const
         }
     }
     return inverse(outputs.head<2>());
-}
-
-// -- analysis ------------------------------------------------------------------------------
-
-namespace {
-enum Slot {
-    SlotP1, SlotP2, SlotX, SlotY,
-    SlotJp, SlotJx = SlotJp + 4, SlotJ = SlotJx + 4, SlotDetJ = SlotJ + 4, SlotDetJp, SlotDetJx, SlotCond,
-    SlotLinkAngle1, SlotLinkAngle2, SlotLinksAngle, SlotMargin,
-    SlotCount
-};
-} // namespace
-
-const ReportLayout &Moma::reportLayout() const
-{
-    static const ReportLayout layout = [] {
-        using G = ReportGroup;
-        ReportLayout l;
-        l.add(G::Pose, "p1", "p₁", QT_TRANSLATE_NOOP("core", "slider 1 position"), units::millimetre, 2);
-        l.add(G::Pose, "p2", "p₂", QT_TRANSLATE_NOOP("core", "slider 2 position"), units::millimetre, 2);
-        l.add(G::Pose, "x", "x", QT_TRANSLATE_NOOP("core", "platform x"), units::millimetre, 2);
-        l.add(G::Pose, "y", "y", QT_TRANSLATE_NOOP("core", "platform y"), units::millimetre, 2);
-        l.add(G::Jacobian, "Jp", "J_p", "J_p = diag(2p_i − 2B_i) (18)", units::millimetre, 1, 2, 2);
-        l.add(G::Jacobian, "Jx", "J_x", QT_TRANSLATE_NOOP("core", "J_x rows 2(P − Z_i) (20)"), units::millimetre, 1, 2, 2);
-        l.add(G::Jacobian, "J", "J", QT_TRANSLATE_NOOP("core", "ṗ = J·Ṗ, J = −J_p⁻¹·J_x ((21) up to its sign)"), units::none, 3, 2, 2);
-        l.add(G::Jacobian, "det_J", "det J", QT_TRANSLATE_NOOP("core", "determinant of J (0: direct, ∞: inverse singularity)"), units::none, 4);
-        l.add(G::Jacobian, "det_Jp", "det J_p", QT_TRANSLATE_NOOP("core", "0 at an inverse singularity"), units::squareMillimetre, 1);
-        l.add(G::Jacobian, "det_Jx", "det J_x", QT_TRANSLATE_NOOP("core", "0 at a direct singularity"), units::squareMillimetre, 1);
-        l.add(G::Jacobian, "cond", "κ(J)", QT_TRANSLATE_NOOP("core", "condition number of J"), units::none, 3);
-        l.add(G::Derived, "link_angle1", "ψ₁", QT_TRANSLATE_NOOP("core", "angle between link S₁ and guide 1 (90°: inverse singularity)"), units::angle, 2);
-        l.add(G::Derived, "link_angle2", "ψ₂", QT_TRANSLATE_NOOP("core", "angle between link S₂ and guide 2 (90°: inverse singularity)"), units::angle, 2);
-        l.add(G::Derived, "links_angle", "ψ₁₂", QT_TRANSLATE_NOOP("core", "angle between the links (0°, 180°: direct singularity)"), units::angle, 2);
-        l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
-        // exact values at singular poses (mechanism.h: AtSingularity)
-        using S = AtSingularity;
-        l.atSingularity("J", S::Infinite, S::Computed);
-        l.atSingularity("det_J", S::Infinite, S::Zero);
-        l.atSingularity("cond", S::Infinite, S::Infinite);
-        l.atSingularity("det_Jp", S::Zero, S::Computed);
-        l.atSingularity("det_Jx", S::Computed, S::Zero);
-        return l;
-    }();
-    return layout;
-}
-
-Singularity Moma::singularity(const Pose &pose) const
-{
-    const Eigen::Vector2d platform = pose.outputs.head<2>();
-    const Eigen::Vector2d z1 = moma::sliderJoint(m_design, 0, pose.inputs[0]);
-    const Eigen::Vector2d z2 = moma::sliderJoint(m_design, 1, pose.inputs[1]);
-    const double inverseMargin = std::min(moma::inverseMargin(m_design, 0, pose.inputs[0], platform),
-                                          moma::inverseMargin(m_design, 1, pose.inputs[1], platform));
-    const double directMargin = moma::directMargin(m_design, z1, z2, platform);
-    return classifySingularity(inverseMargin, directMargin, singularTolerance);
-}
-
-Jacobians Moma::jacobians(const Pose &pose) const
-{
-    const Eigen::Vector2d platform = pose.outputs.head<2>();
-    Eigen::Matrix2d jp = Eigen::Matrix2d::Zero(), jx;
-    for (int leg = 0; leg < 2; ++leg) {
-        const double p = pose.inputs[leg];
-        jp(leg, leg) = 2.0 * p - 2.0 * moma::projection(m_design, leg, platform); // (18)
-        jx.row(leg) = 2.0 * (platform - moma::sliderJoint(m_design, leg, p)).transpose(); // (20)
-    }
-    Jacobians j;
-    j.inputs = jp;
-    j.outputs = -jx; // J_q·q̇ = J_x·ẋ in the interface's convention
-    j.full = Eigen::Matrix2d(jp.diagonal().cwiseInverse().asDiagonal() * (-jx));
-    return j;
-}
-
-Singularity Moma::evaluate(const Pose &pose, std::span<double> v) const
-{
-    const Eigen::Vector2d platform = pose.outputs.head<2>();
-    v[SlotP1] = pose.inputs[0];
-    v[SlotP2] = pose.inputs[1];
-    v[SlotX] = platform.x();
-    v[SlotY] = platform.y();
-    std::array<Eigen::Vector2d, 2> link;
-    double detJp = 1.0;
-    for (int leg = 0; leg < 2; ++leg) {
-        const double p = pose.inputs[leg];
-        const double jp = 2.0 * p - 2.0 * moma::projection(m_design, leg, platform);
-        link[leg] = platform - moma::sliderJoint(m_design, leg, p);
-        v[SlotJp + 3 * leg] = jp;
-        v[SlotJp + 1 + leg] = 0.0; // off-diagonal zeros: slots 1 and 2 of the row-major 2×2
-        v[SlotJx + 2 * leg] = 2.0 * link[leg].x();
-        v[SlotJx + 2 * leg + 1] = 2.0 * link[leg].y();
-        v[SlotJ + 2 * leg] = -2.0 * link[leg].x() / jp;
-        v[SlotJ + 2 * leg + 1] = -2.0 * link[leg].y() / jp;
-        detJp *= jp;
-        const double cosine = std::abs(link[leg].dot(moma::direction(m_design.alpha[leg]))) / link[leg].norm();
-        v[SlotLinkAngle1 + leg] = std::acos(std::min(1.0, cosine));
-    }
-    const double detJx = 4.0 * cross(link[0], link[1]);
-    v[SlotDetJp] = detJp;
-    v[SlotDetJx] = detJx;
-    v[SlotDetJ] = detJx / detJp;
-    const Eigen::Matrix2d J = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&v[SlotJ]);
-    const double frobenius = J.squaredNorm(), det = std::abs(J.determinant());
-    const double spread = std::sqrt(std::max(0.0, frobenius * frobenius - 4.0 * det * det));
-    v[SlotCond] = det > 0 ? (frobenius + spread) / (2.0 * det) : std::numeric_limits<double>::infinity();
-    v[SlotLinksAngle] = std::atan2(std::abs(cross(link[0], link[1])), link[0].dot(link[1]));
-    const Singularity s = singularity(pose);
-    v[SlotMargin] = s.margin;
-    settleSingularValues(reportLayout(), v, s.type);
-    return s;
-}
-
-std::vector<ModeAlternative> Moma::modeNeighbours() const
-{
-    std::vector<ModeAlternative> neighbours;
-    auto add = [&](const std::string &label, const ParameterSet &changes, bool sameInputs) {
-        if (auto other = withParameters(changes))
-            neighbours.push_back({label, changes, *other, sameInputs, {}});
-    };
-    const double assembly = -double(m_design.assembly);
-    // The platform mirrored across Z₁Z₂ turns both links about the line: where that carries a
-    // link past perpendicular to its guide, the working modes flip along with the assembly.
-    const std::string mirrored = QT_TRANSLATE_NOOP("core", "other assembly mode (same slider positions)");
-    add(mirrored, {{"assembly", assembly}}, true);
-    add(mirrored, {{"assembly", assembly}, {"branch1", -double(m_design.branch[0])}}, true);
-    add(mirrored, {{"assembly", assembly}, {"branch2", -double(m_design.branch[1])}}, true);
-    add(mirrored, {{"assembly", assembly}, {"branch1", -double(m_design.branch[0])}, {"branch2", -double(m_design.branch[1])}},
-        true);
-    for (int leg = 0; leg < 2; ++leg) {
-        const std::string name = "branch" + legName(leg);
-        const std::string label = leg == 0
-            ? QT_TRANSLATE_NOOP("core", "leg 1: other working mode (same platform position)")
-            : QT_TRANSLATE_NOOP("core", "leg 2: other working mode (same platform position)");
-        const double branch = -double(m_design.branch[leg]);
-        // Moving slider i to the other root may carry Z_i across the platform's side of Z₁Z₂:
-        // then the assembly mode flips with it.
-        add(label, {{name, branch}}, false);
-        add(label, {{name, branch}, {"assembly", assembly}}, false);
-    }
-    return neighbours;
-}
-
-KinematicChain Moma::kinematicChain(const Pose &pose) const
-{
-    const std::array<Eigen::Vector2d, 2> z
-        = {moma::sliderJoint(m_design, 0, pose.inputs[0]), moma::sliderJoint(m_design, 1, pose.inputs[1])};
-    KinematicChain chain;
-    chain.links = {text::translate("core", "ground"), text::translate("core", "slider K₁"),
-                   text::translate("core", "slider K₂"), text::translate("core", "link S₁"),
-                   text::translate("core", "link S₂")};
-    for (int leg = 0; leg < 2; ++leg) {
-        chain.pairs.push_back(mobility::planarPrismatic(
-            leg == 0 ? text::translate("core", "guide PO₁") : text::translate("core", "guide PO₂"), 0, 1 + leg,
-            z[std::size_t(leg)], moma::direction(m_design.alpha[std::size_t(leg)]), true));
-        chain.pairs.push_back(
-            mobility::planarRevolute(joinText({"Z", leg == 0 ? "₁" : "₂"}), 1 + leg, 3 + leg, z[std::size_t(leg)]));
-    }
-    chain.pairs.push_back(mobility::planarRevolute("P", 3, 4, pose.outputs.head<2>()));
-    chain.description
-        = text::translate("core", "MOMA: two sliders on powered guides, two links meeting at the platform joint P");
-    return chain;
-}
-
-// -- drawing -------------------------------------------------------------------------------
-
-Scene Moma::scene(const Pose &pose) const
-{
-    const MomaDesign &d = m_design;
-    Scene s;
-    auto to3 = [](const Eigen::Vector2d &v) { return Eigen::Vector3d(v.x(), v.y(), 0.0); };
-    const Eigen::Vector2d platform = pose.outputs.head<2>();
-    const std::array<Eigen::Vector2d, 2> z = {moma::sliderJoint(d, 0, pose.inputs[0]), moma::sliderJoint(d, 1, pose.inputs[1])};
-    s.joints.push_back({to3(platform), "P", JointKind::Revolute});
-    s.joints.push_back({to3(z[0]), "Z₁", JointKind::Slider});
-    s.joints.push_back({to3(z[1]), "Z₂", JointKind::Slider});
-    s.joints.push_back({to3(d.reference[0]), "R₁", JointKind::Point});
-    s.joints.push_back({to3(d.reference[1]), "R₂", JointKind::Point});
-    s.bars.push_back({1, 0, BarKind::Link, "S₁"});
-    s.bars.push_back({2, 0, BarKind::Link, "S₂"});
-    for (int leg = 0; leg < 2; ++leg) {
-        SceneGuide guide;
-        guide.start = to3(moma::sliderJoint(d, leg, d.strokeMin));
-        guide.end = to3(moma::sliderJoint(d, leg, d.strokeMax));
-        guide.width = d.guideWidth;
-        guide.label = "PO" + std::string(leg == 0 ? "₁" : "₂");
-        s.guides.push_back(guide);
-        const double p = pose.inputs[leg];
-        if (std::abs(p) > 1.0) {
-            // p_i measured from R_i, on the side of the guide away from the link
-            const double c = cross(moma::direction(d.alpha[leg]), platform - z[leg]);
-            const double offset = (c > 0 ? -1.0 : 1.0) * (d.guideWidth + 14.0);
-            s.dimensions.push_back({3 + leg, 1 + leg, p > 0 ? offset : -offset,
-                                    joinText({leg == 0 ? "p₁ = " : "p₂ = ", text::number(p, 1)})});
-        }
-        const double gamma = std::remainder(d.alpha[leg] - 1.5 * pi, 2 * pi);
-        if (std::abs(gamma) > 1e-9 && std::abs(gamma) <= 45.0 * units::degree) {
-            s.angles.push_back({3 + leg, 1.5 * pi, gamma, 0.25 * (d.strokeMax - d.strokeMin),
-                                joinText({leg == 0 ? "γ₁ = " : "γ₂ = ", text::number(gamma / units::degree, 1), "°"})});
-        }
-    }
-    s.handles.push_back({0, text::translate("core", "drag to move the platform (inverse kinematics)")});
-    s.handles.push_back({1, text::translate("core", "drag along guide 1 to set p₁ (direct kinematics)")});
-    s.handles.push_back({2, text::translate("core", "drag along guide 2 to set p₂ (direct kinematics)")});
-    Eigen::AlignedBox3d extent;
-    for (const SceneGuide &g : s.guides) {
-        extent.extend(g.start);
-        extent.extend(g.end);
-    }
-    extent.extend(to3(d.reference[0]));
-    extent.extend(to3(d.reference[1]));
-    extent.extend(Eigen::Vector3d(m_bounds.min().x(), m_bounds.min().y(), 0.0));
-    extent.extend(Eigen::Vector3d(m_bounds.max().x(), m_bounds.max().y(), 0.0));
-    const Eigen::Vector3d pad = Eigen::Vector3d::Constant(d.guideWidth);
-    s.extent = Eigen::AlignedBox3d(extent.min() - pad, extent.max() + pad);
-    return s;
-}
-
-Result<Pose> Moma::dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const
-{
-    if (handle == 0) {
-        Coordinates outputs(2);
-        outputs << target.x(), target.y();
-        return solveInverse(outputs, &current);
-    }
-    if (handle == 1 || handle == 2) {
-        const int leg = handle - 1;
-        Coordinates inputs = current.inputs;
-        const double p = moma::direction(m_design.alpha[leg]).dot(target - m_design.reference[leg]);
-        inputs[leg] = std::clamp(p, m_design.strokeMin, m_design.strokeMax);
-        return solveDirect(inputs, &current);
-    }
-    return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};
 }
 
 } // namespace pkm

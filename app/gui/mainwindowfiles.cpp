@@ -1,0 +1,308 @@
+// The main window's files: opening, saving and recovering designs, the recent files, the
+// window layout kept between sessions, and the exports — the animation, the DXF drawing, the
+// parameter sheet and the picture of a view.
+
+#include "gui/mainwindow.h"
+#include "gui/mainwindowinternal.h"
+
+#include "gui/animationdialog.h"
+#include "gui/backgroundtask.h"
+#include "designpanel.h"
+#include "document/designsession.h"
+#include "document/document.h"
+#include "export/dxfwriter.h"
+#include "document/language.h"
+#include "linkageview.h"
+#include "linkageview3d.h"
+#include "mobilitypanel.h"
+#include "modebar.h"
+#include "pictureexport.h"
+#include "quantityformat.h"
+#include "export/sheet.h"
+#include "valuestable.h"
+#include "variablepanel.h"
+#include "gui/viewpicture.h"
+#include "workspacemapview.h"
+#include "kinds/kindmodule.h"
+#include "kinds/kindpanel.h"
+#include "kinds/sweepplotspanel.h"
+#include "kinds/workspacepanel.h"
+
+#include <qcustomplot.h>
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <utility>
+
+namespace pkm {
+
+namespace {
+using mainwindow::failureText;
+
+constexpr int settingsVersion = 1;
+} // namespace
+
+void MainWindow::openFile()
+{
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Design"), QFileInfo(m_session->filePath()).path(),
+                                                      tr("PKM Studio designs (*.pkm.json);;All files (*)"));
+    if (!path.isEmpty())
+        openDesign(path);
+}
+
+void MainWindow::openFromMenu(const QString &presetOrPath)
+{
+    if (maybeSave())
+        openDesign(presetOrPath);
+}
+
+bool MainWindow::saveFile()
+{
+    if (m_session->filePath().isEmpty())
+        return saveFileAs();
+    auto saved = m_session->save();
+    if (!saved) {
+        QMessageBox::warning(this, tr("Save Design"), failureText(saved.failure()));
+        return false;
+    }
+    showStatus(tr("Saved %1").arg(m_session->filePath()));
+    return true;
+}
+
+bool MainWindow::saveFileAs()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Design As"), m_session->filePath(),
+                                                tr("PKM Studio designs (*.pkm.json)"));
+    if (path.isEmpty())
+        return false;
+    if (!path.endsWith(QLatin1String(".json")))
+        path += QStringLiteral(".pkm.json");
+    auto saved = m_session->saveAs(path);
+    if (!saved) {
+        QMessageBox::warning(this, tr("Save Design"), failureText(saved.failure()));
+        return false;
+    }
+    showStatus(tr("Saved %1").arg(path));
+    return true;
+}
+
+void MainWindow::exportAnimationDialog()
+{
+    AnimationDialog dialog(*m_document->mechanism(), 0, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const QString base = m_session->filePath().isEmpty() ? QFileInfo(m_document->design().id).fileName()
+                                                         : QFileInfo(m_session->filePath()).completeBaseName();
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Animation"),
+                                                base.isEmpty() ? QString() : base + QStringLiteral(".gif"),
+                                                tr("Animated GIF (*.gif)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QLatin1String(".gif"), Qt::CaseInsensitive))
+        path += QStringLiteral(".gif");
+    exportAnimationTo(path, dialog.settings());
+}
+
+void MainWindow::exportAnimationTo(const QString &path, AnimationSettings settings)
+{
+    settings.name = m_session->displayName();
+    exportAnimation(this, m_document->mechanism(), m_document->pose(), settings, path,
+                    [this](const QString &message, bool error) { showStatus(message, error); });
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_session->isModified())
+        return true;
+    const auto answer = m_question(tr("Unsaved Changes"),
+                                   tr("The design “%1” has changes that are not saved. Save them?")
+                                       .arg(m_session->displayName()),
+                                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveFile();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::offerRecovery()
+{
+    for (const DesignSession::Recovery &recovery : DesignSession::pendingRecoveries()) {
+        const QString name = recovery.originalPath.isEmpty() ? recovery.title : recovery.originalPath;
+        const auto answer =
+            m_question(tr("Recover Design"),
+                       tr("PKM Studio closed unexpectedly while “%1” had unsaved changes (autosaved %2). "
+                          "Recover them?")
+                           .arg(name, QLocale().toString(recovery.saved, QLocale::ShortFormat)),
+                       QMessageBox::Yes | QMessageBox::No);
+        if (answer != QMessageBox::Yes) {
+            DesignSession::discardRecovery(recovery);
+            continue;
+        }
+        auto recovered = m_session->recover(recovery);
+        if (!recovered) {
+            showStatus(failureText(recovered.failure()), true);
+            continue;
+        }
+        m_view->fitToView();
+        showStatus(tr("Recovered “%1”: save it to keep the changes.").arg(name));
+        return; // one document at a time; older autosaves stay for the next start
+    }
+}
+
+void MainWindow::updateTitle()
+{
+    // "[*]" is where Qt shows the unsaved-changes mark.
+    setWindowTitle(tr("%1[*] — PKM Studio").arg(m_session->displayName()));
+    setWindowModified(m_session->isModified());
+}
+
+void MainWindow::updateRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = m_session->recentFiles();
+    for (const QString &path : files) {
+        QAction *action = m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
+            if (!QFileInfo::exists(path)) {
+                showStatus(tr("%1 no longer exists; removed from the recent files.").arg(path), true);
+                m_session->removeRecentFile(path);
+                return;
+            }
+            openFromMenu(path);
+        });
+        action->setToolTip(path);
+        action->setData(path);
+    }
+    m_recentMenu->setToolTipsVisible(true);
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::about()
+{
+    QMessageBox::about(this, tr("About PKM Studio"),
+                       tr("<h3>PKM Studio %1</h3><p>Design, analysis and teaching of parallel-kinematic "
+                          "mechanisms.</p><p>Licensed under the GNU General Public License, version 3 or "
+                          "later.</p>")
+                           .arg(QStringLiteral(PKM_VERSION)));
+}
+
+void MainWindow::restoreLayout()
+{
+    QSettings settings;
+    if (settings.value(QStringLiteral("layout/version")).toInt() != settingsVersion)
+        return;
+    m_restoredGeometry = restoreGeometry(settings.value(QStringLiteral("layout/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("layout/state")).toByteArray(), settingsVersion);
+    m_splitter->restoreState(settings.value(QStringLiteral("layout/splitter")).toByteArray());
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("layout/version"), settingsVersion);
+    settings.setValue(QStringLiteral("layout/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("layout/state"), saveState(settingsVersion));
+    settings.setValue(QStringLiteral("layout/splitter"), m_splitter->saveState());
+    event->accept();
+}
+
+void MainWindow::exportDrawing()
+{
+    // The linkage drawing of the current design and pose, the same file as `pkm dxf`.
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Drawing (DXF)"), QString(),
+                                                tr("DXF drawings (*.dxf);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".dxf");
+    const Design &design = m_document->design();
+    const QString title = design.title.isEmpty() ? toQString(m_document->mechanism()->kind()) : design.title;
+    dxf::DrawingOptions options;
+    options.caption = (title + QStringLiteral(" — ") + m_poseLabel->text().simplified()).toStdString();
+    const dxf::Drawing drawing = dxf::sceneDrawing(m_document->mechanism()->scene(m_document->pose()), options);
+    QSaveFile file(path); // the file is replaced only once it is complete
+    const auto size = static_cast<qint64>(drawing.dxf.size());
+    if (!file.open(QIODevice::WriteOnly) || file.write(drawing.dxf.data(), size) != size || !file.commit()) {
+        const QString message = tr("Cannot write the drawing to %1: %2.").arg(QDir::toNativeSeparators(path), file.errorString());
+        showStatus(message, true);
+        QMessageBox::warning(this, tr("Export Drawing (DXF)"), message);
+        return;
+    }
+    showStatus(tr("Wrote the drawing to %1 (DXF R12, mm).").arg(QDir::toNativeSeparators(path)));
+}
+
+void MainWindow::exportParameterSheet()
+{
+    // The parameter sheet of the current design and pose, the same file as `pkm sheet`.
+    QString filter;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Parameter Sheet"), QString(),
+        tr("PDF parameter sheets (*.pdf);;JSON (*.json);;CSV (*.csv)"), &filter);
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += filter.contains(QLatin1String("*.json")) ? QStringLiteral(".json")
+            : filter.contains(QLatin1String("*.csv"))    ? QStringLiteral(".csv")
+                                                         : QStringLiteral(".pdf");
+    const Design &design = m_document->design();
+    sheet::Source source;
+    source.design = !design.id.isEmpty() ? design.id.toStdString()
+        : !m_session->filePath().isEmpty() ? QFileInfo(m_session->filePath()).fileName().toStdString()
+                                           : design.title.toStdString();
+    source.title = design.title;
+    source.description = design.description;
+    // A planar workspace and its maps take a second or two: off the GUI thread.
+    runInBackground(
+        this, tr("Export Parameter Sheet"), tr("Computing the parameter sheet…"),
+        [mechanism = m_document->mechanism(), pose = m_document->pose(), source,
+         path](const std::atomic<bool> &) -> TaskFailure {
+            const sheet::Sheet built = kinds::buildSheet(*mechanism, pose, source);
+            if (const std::optional<std::string> failure = sheet::save(built, path.toStdString()))
+                return QString::fromStdString(*failure);
+            return std::nullopt;
+        },
+        [this, path](const TaskFailure &failure, bool) {
+            if (failure) {
+                showStatus(*failure, true);
+                QMessageBox::warning(this, tr("Export Parameter Sheet"), *failure);
+                return;
+            }
+            showStatus(tr("Wrote the parameter sheet to %1.").arg(QDir::toNativeSeparators(path)));
+        });
+}
+
+void MainWindow::saveViewPicture()
+{
+    // The 2D picture of the current design and pose, the same drawing as `pkm render`.
+    const QString path = viewpicture::savePictureAs(this, *m_document->mechanism(), m_document->pose(),
+        m_session->displayName(), viewpicture::suggestedName(m_session->filePath(), m_document->design().id),
+        m_view->size(), m_view->sceneStyle());
+    if (!path.isEmpty())
+        showStatus(tr("Wrote the 2D view to %1.").arg(QDir::toNativeSeparators(path)));
+}
+
+} // namespace pkm
