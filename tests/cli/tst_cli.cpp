@@ -445,7 +445,7 @@ void TestCli::inverseThenDirect()
     QCOMPARE(d, a * std::sqrt(1 + k * k + 2 * k * std::sin(theta * degree))); // (2)
     QCOMPARE(pose.value(QStringLiteral("theta")).toDouble(), theta);
 
-    // J = a·sin μ (DOMAIN §1), read back from the JSON.
+    // J = a·sin μ (docs/mathematics.md, section 1), read back from the JSON.
     const double mu = pose.value(QStringLiteral("mu")).toDouble();
     const double J = inverse.value(QStringLiteral("jacobian")).toObject().value(QStringLiteral("J")).toDouble();
     QCOMPARE(J, a * std::sin(mu * degree));
@@ -855,7 +855,7 @@ void TestCli::momaSingularPose()
 namespace {
 
 /// The exact area (mm²) of one form's planar workspace of the O-X glide, integrated slice by
-/// slice (DOMAIN §3): at height y, with w = √(l² − y²), the platform centre reaches
+/// slice (docs/mathematics.md, section 3): at height y, with w = √(l² − y²), the platform centre reaches
 ///   O: x ∈ [s/2 + w, L − s/2 − w]        (width L − s − 2w, positive above w = (L − s)/2)
 ///   X: x ∈ [|w − s/2|, L − |w − s/2|]    (width L + s − 2w below w = s/2, L − s + 2w above)
 /// and ∫ w dy = ½(y·w + l²·asin(y/l)). For the prototype (l = 80, s = 20, L = 130 mm) this is

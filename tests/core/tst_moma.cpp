@@ -470,7 +470,7 @@ private slots:
 
     void slidersVerticallyAligned()
     {
-        // DOMAIN §5.4: the document's direct kinematics (10–12) divides by 2(x_Z2 − x_Z1). Two
+        // docs/mathematics.md, section 2: the document's direct kinematics (10–12) divides by 2(x_Z2 − x_Z1). Two
         // horizontal guides one above the other align the slider joints vertically whenever
         // p₁ = p₂; the robust intersection must not care.
         const MomaDesign d = customDesign({-100, 0}, 0, {-100, 300}, 0, {1, 1}, 1);

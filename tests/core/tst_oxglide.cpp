@@ -61,7 +61,7 @@ double wOf(const OxGlideDesign &d, double y)
     return std::sqrt(std::max(0.0, d.rod * d.rod - y * y));
 }
 
-/// The inverse kinematics, written again from DOMAIN §3:
+/// The inverse kinematics, written again from docs/mathematics.md, section 3:
 ///   O: x_AB = x − s/2 − w, x_CD = x + s/2 + w;  X: x_AB = x − s/2 + w, x_CD = x + s/2 − w.
 Eigen::Vector2d inverseOf(const OxGlideDesign &d, int form, double x, double y)
 {
@@ -339,7 +339,7 @@ private slots:
 
     void closedFormsMatchDomain()
     {
-        // oxglide::inverse / direct are the formulas of DOMAIN §3 (with "− s" in both forms).
+        // oxglide::inverse / direct are the formulas of docs/mathematics.md, section 3 (with "− s" in both forms).
         const OxGlideDesign d = prototype();
         for (int form : {formO, formX}) {
             for (double y : {0.0, 10.0, 33.3, 60.0, 79.9, 80.0}) {
@@ -448,7 +448,7 @@ private slots:
 
     void printedXFormDirectKinematicsIsWrong()
     {
-        // DOMAIN §5.3: the document writes y = ½√(4l² − (x_CD − x_AB + s)²) for the X form. Its
+        // docs/mathematics.md, section 3: the document writes y = ½√(4l² − (x_CD − x_AB + s)²) for the X form. Its
         // own X inverse kinematics, x_AB = x − s/2 + w, x_CD = x + s/2 − w, gives
         // x_CD − x_AB = s − 2w, so "+ s" leaves 2s − 2w where −2w belongs.
         const OxGlideDesign d = prototype(formX);

@@ -228,7 +228,7 @@ private slots:
 
     void documentAccelerationIsWrong()
     {
-        // DOMAIN §5.1: (19–20) read d̈ = J + (∂J/∂θ)·θ̇, dropping θ̈ and writing θ̇ for θ̇².
+        // docs/mathematics.md, section 1: (19–20) read d̈ = J + (∂J/∂θ)·θ̇, dropping θ̈ and writing θ̇ for θ̇².
         const PJointDesign p = design(170, 0.4);
         const double theta = 20 * deg, omega = 3.0, alpha = 0.5;
         const double seed = pjoint::jacobian(p, theta) + pjoint::jacobianDerivative(p, theta) * omega;

@@ -346,7 +346,7 @@ Result<Pose> Moma::direct(double p1, double p2) const
     const double distance = between.norm();
     const double l1 = d.length[0], l2 = d.length[1];
     const double scale = std::max(l1, l2);
-    // Circle–circle intersection measured along Z₁→Z₂ (no division by x_Z2 − x_Z1: DOMAIN §5.4).
+    // Circle–circle intersection measured along Z₁→Z₂ (no division by x_Z2 − x_Z1, where the document's (10–12) fail: docs/mathematics.md, section 2).
     if (distance < 1e-9 * scale) {
         return Failure{FailureKind::Singular, "p1",
                        text::format(text::translate("core", "The slider joints Z₁ and Z₂ coincide at p₁ = %1 mm, "

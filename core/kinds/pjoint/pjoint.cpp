@@ -75,7 +75,7 @@ double jacobianDerivative(const PJointDesign &p, double theta)
 double diagonalAcceleration(const PJointDesign &p, double theta, double thetaDot, double thetaDDot)
 {
     // (18) with (19–20) corrected: the document drops θ̈ from the first term and writes θ̇
-    // where θ̇² belongs in the second (DOMAIN §5.1).
+    // where θ̇² belongs in the second (docs/mathematics.md, section 1: the document's (19–20) drop θ̈).
     return jacobian(p, theta) * thetaDDot + jacobianDerivative(p, theta) * thetaDot * thetaDot;
 }
 

@@ -44,7 +44,7 @@ double jacobianD(const PJointDesign &design, double theta);
 double jacobianTheta(const PJointDesign &design, double theta);
 /// ∂J/∂θ = −a·k·(k + sinθ)(1 + k·sinθ)/(1+k²+2k·sinθ)^{3/2}, mm/rad²
 double jacobianDerivative(const PJointDesign &design, double theta);
-/// (16–18), corrected (DOMAIN §5.1): d̈ = J·θ̈ + (∂J/∂θ)·θ̇²
+/// (16–18), corrected (docs/mathematics.md, section 1): d̈ = J·θ̈ + (∂J/∂θ)·θ̇²
 double diagonalAcceleration(const PJointDesign &design, double theta, double thetaDot, double thetaDDot);
 /// Inverse of the above: θ̈ = (d̈ − (∂J/∂θ)·θ̇²)/J
 double angularAcceleration(const PJointDesign &design, double theta, double thetaDot, double dDDot);
@@ -109,7 +109,7 @@ public:
     Scene3D scene3d(const Pose &pose) const override;
     Result<Pose> dragHandle(const Pose &current, int handle, const Eigen::Vector2d &target) const override;
 
-    /// Singularity class at θ (DOMAIN §1, (9–11)): J_θ = 0 direct, J_d = 0 inverse, both combined.
+    /// Singularity class at θ ((9–11) of the П-joint document; docs/mathematics.md, section 1): J_θ = 0 direct, J_d = 0 inverse, both combined.
     Singularity singularity(double theta) const;
     double dMin() const; ///< d(θ_min)
     double dMax() const; ///< d(θ_max)
