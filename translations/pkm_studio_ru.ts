@@ -4217,6 +4217,18 @@ Please verify the correct file name was given.</source>
         <source>The language “%1” is not available.</source>
         <translation>Язык «%1» недоступен.</translation>
     </message>
+    <message>
+        <source>&amp;Source Documents…</source>
+        <translation>&amp;Исходные документы…</translation>
+    </message>
+    <message>
+        <source>Source Documents</source>
+        <translation>Исходные документы</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
+        <translation>&lt;p&gt;PKM Studio моделирует механизмы этих четырёх документов: активный П-шарнир (1), MOMA (2), O-X glide (3), шарнирный четырёхзвенник и формулы подвижности (4). Где напечатанная формула или число неверны, программа использует исправленные; раздел README о математике перечисляет каждое исправление.&lt;/p&gt;%1</translation>
+    </message>
 </context>
 <context>
     <name>pkm::MobilityPanel</name>

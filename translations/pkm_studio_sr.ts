@@ -4217,6 +4217,18 @@ Please verify the correct file name was given.</source>
         <source>The language “%1” is not available.</source>
         <translation>Језик „%1“ није доступан.</translation>
     </message>
+    <message>
+        <source>&amp;Source Documents…</source>
+        <translation>&amp;Изворни документи…</translation>
+    </message>
+    <message>
+        <source>Source Documents</source>
+        <translation>Изворни документи</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
+        <translation>&lt;p&gt;PKM Studio моделира механизме ова четири документа: активни П-зглоб (1), MOMA (2), O-X glide (3), зглобни четвороугао и формуле покретљивости (4). Где је штампана формула или број погрешан, програм користи исправљени; одељак README-а о математици наводи свако исправљање.&lt;/p&gt;%1</translation>
+    </message>
 </context>
 <context>
     <name>pkm::MobilityPanel</name>

@@ -4217,6 +4217,18 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The language “%1” is not available.</source>
         <translation>Jezik „%1“ nije dostupan.</translation>
     </message>
+    <message>
+        <source>&amp;Source Documents…</source>
+        <translation>&amp;Izvorni dokumenti…</translation>
+    </message>
+    <message>
+        <source>Source Documents</source>
+        <translation>Izvorni dokumenti</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
+        <translation>&lt;p&gt;PKM Studio modelira mehanizme ova četiri dokumenta: aktivni P-zglob (1), MOMA (2), O-X glide (3), zglobni četvorougao i formule pokretljivosti (4). Gde je štampana formula ili broj pogrešan, program koristi ispravljeni; odeljak README-a o matematici navodi svako ispravljanje.&lt;/p&gt;%1</translation>
+    </message>
 </context>
 <context>
     <name>pkm::MobilityPanel</name>

@@ -324,6 +324,8 @@ void MainWindow::createActions()
 
     QMenu *help = menuBar()->addMenu(QString());
     translated(help->menuAction(), QT_TR_NOOP("&Help"));
+    translated(help->addAction(QString(), this, &MainWindow::sourceDocuments), QT_TR_NOOP("&Source Documents…"))
+        ->setObjectName(QStringLiteral("sourceDocumentsAction"));
     translated(help->addAction(QString(), this, &MainWindow::about), QT_TR_NOOP("&About PKM Studio"));
 
     m_toolBar = addToolBar(QString());

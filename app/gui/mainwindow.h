@@ -139,6 +139,8 @@ private:
     /// Opens a preset or file from a menu: asks about unsaved changes first.
     void openFromMenu(const QString &presetOrPath);
     void about();
+    /// Help ▸ Source Documents: the four documents the mechanisms come from, with full references.
+    void sourceDocuments();
     void restoreLayout();
 
     Document *m_document = nullptr;

@@ -207,6 +207,37 @@ void MainWindow::about()
                            .arg(QStringLiteral(PKM_VERSION)));
 }
 
+void MainWindow::sourceDocuments()
+{
+    // The four documents whose mechanisms PKM Studio models, cited as published (their titles
+    // in their own languages), so that a student can look them up.
+    const QString references = QStringLiteral(
+        "<ol>"
+        "<li>D. Milutinović, B. Kokotović, N. Slavković, S. Živanović: <i>Механизам активног "
+        "П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине</i>, "
+        "technical solution, University of Belgrade, Faculty of Mechanical Engineering, 2014.</li>"
+        "<li>G. V. Vasilić, S. T. Živanović: <i>Modeliranje i analiza rekonfigurabilnog dvoosnog "
+        "paralelnog mehanizma MOMA sa osnaženim translatornim zglobovima</i>, Tehnika, 2016, "
+        "DOI 10.5937/tehnika1601057V.</li>"
+        "<li>C. Mladenović, S. Tabaković, M. Zeljković: <i>Radni prostor O-X glide hibridnog "
+        "mehanizma</i>, Faculty of Technical Sciences, University of Novi Sad.</li>"
+        "<li>L. F. Khabibullina, F. F. Khabibullin, R. T. Islamov: <i>Параметрический синтез узлов "
+        "мехатронных систем</i>, Kazan National Research Technical University named after "
+        "A. N. Tupolev (KAI).</li>"
+        "</ol>");
+    auto *box = new QMessageBox(QMessageBox::Information, tr("Source Documents"),
+        tr("<p>PKM Studio models the mechanisms of these four documents: the active П-joint (1), "
+           "MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed "
+           "formula or number is wrong, the program uses the corrected one; the README's section on "
+           "the mathematics lists each correction.</p>%1")
+            .arg(references),
+        QMessageBox::Close, this);
+    box->setObjectName(QStringLiteral("sourceDocuments"));
+    box->setTextFormat(Qt::RichText);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
 void MainWindow::restoreLayout()
 {
     QSettings settings;

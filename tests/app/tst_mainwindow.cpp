@@ -16,6 +16,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
@@ -244,6 +245,29 @@ private slots:
         edit->setFocus();
         QTest::keyClick(edit, Qt::Key_Escape);
         QVERIFY(edit->styleSheet().isEmpty());
+    }
+
+    void helpListsTheSourceDocuments()
+    {
+        // Help ▸ Source Documents names all four documents by their authors and titles
+        MainWindow &w = *m_window;
+        auto *action = w.findChild<QAction *>(QStringLiteral("sourceDocumentsAction"));
+        QVERIFY(action);
+        action->trigger();
+        auto *box = w.findChild<QMessageBox *>(QStringLiteral("sourceDocuments"));
+        QVERIFY(box);
+        QTRY_VERIFY(box->isVisible());
+        const QString text = box->text();
+        for (const char *author : {"Milutinović", "Vasilić", "Mladenović", "Khabibullina"})
+            QVERIFY2(text.contains(QString::fromUtf8(author)), author);
+        for (const char *title : {"П-зглоба", "MOMA", "O-X glide", "мехатронных систем"})
+            QVERIFY2(text.contains(QString::fromUtf8(title)), title);
+        QVERIFY(!text.contains(QStringLiteral("seed"), Qt::CaseInsensitive));
+        box->close();
+        QTRY_VERIFY(!w.findChild<QMessageBox *>(QStringLiteral("sourceDocuments")));
+        // the window has the focus again for the tests after this one
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
     }
 
     void undoRightAfterEditingAField()
