@@ -297,6 +297,18 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             json.key("area_" + name).number(area);
         if (!modes.empty())
             json.key("area_union").number(united.unionArea);
+        // the areas known in closed form (the O-X glide's): the grid's are estimates of them
+        const PlanarWorkspace *planar = mechanism.planarWorkspace();
+        const std::vector<ExactArea> exact = planar ? planar->exactAreas() : std::vector<ExactArea> {};
+        json.key("exact_areas");
+        if (exact.empty()) {
+            json.null();
+        } else {
+            json.beginObject(true);
+            for (const ExactArea &known : exact)
+                json.key(known.key).number(known.area);
+            json.endObject();
+        }
         // a mechanism carried by an axis (the O-X glide on z): its 3D workspace is the planar
         // one extruded over that axis' travel
         if (const auto travel = carriedTravel(mechanism)) {
@@ -330,9 +342,18 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
         out = designHeading(context.prepared);
         TextTable table({false, true, false});
         table.heading("\nWorkspace" + suffix);
-        table.cells({"area", fixedText(map.summary.area, 1), "mm²"});
+        const PlanarWorkspace *planar = mechanism.planarWorkspace();
+        const std::vector<ExactArea> exact = planar ? planar->exactAreas() : std::vector<ExactArea> {};
+        // where the area is known in closed form, that is the area, and the grid's an estimate
+        for (const ExactArea &known : exact)
+            table.cells({known.key + " (exact)", fixedText(known.area, 1), "mm²"});
+        table.cells({exact.empty() ? "area" : "area (grid)", fixedText(map.summary.area, 1), "mm²"});
         if (const auto travel = carriedTravel(mechanism)) {
-            table.cells({"volume", fixedText(map.summary.area * *travel, 0), "mm³"});
+            // of the exact area where it is known, as the area above it
+            double area = map.summary.area;
+            for (const ExactArea &known : exact)
+                area = known.key == "area" ? known.area : area;
+            table.cells({"volume", fixedText(area * *travel, 0), "mm³"});
             table.cells({"", "(the area extruded over the travel of " + fixedText(*travel, 1) + " mm)", ""});
         }
         addGridRows(table, map.grid, context.resolution, box, map.summary.reachableCells);

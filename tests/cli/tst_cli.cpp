@@ -1047,6 +1047,11 @@ void TestCli::oxglideWorkspaceAreas()
         const double tolerance = QByteArray(grid) == "1600" ? 0.01 : 0.03;
         QVERIFY2(std::abs(areaO - exactO) < tolerance * exactO, qPrintable(number(areaO)));
         QVERIFY2(std::abs(areaX - exactX) < tolerance * exactX, qPrintable(number(areaX)));
+        // the closed-form areas beside the grid's estimates, the same whatever the grid
+        const QJsonObject exact = root.value(QStringLiteral("exact_areas")).toObject();
+        QVERIFY(std::abs(jsonNumber(exact, "area_O") - exactO) < 1e-9 * exactO);
+        QVERIFY(std::abs(jsonNumber(exact, "area_X") - exactX) < 1e-9 * exactX);
+        QCOMPARE(jsonNumber(exact, "area"), jsonNumber(exact, "area_O"));
         // one entry per form, the current one is O
         const QJsonArray modes = root.value(QStringLiteral("modes")).toArray();
         QCOMPARE(modes.size(), 2);
@@ -1057,8 +1062,19 @@ void TestCli::oxglideWorkspaceAreas()
             QCOMPARE(jsonNumber(mode, "area"), crossed ? areaX : areaO);
         }
     }
-    // in the X form "area" is the X workspace and the union stays the same
+    // a kind without closed-form areas says so
     int exitCode = -1;
+    const QJsonObject moma = runJson(args({"workspace", "moma-3a", "--grid", "100"}), &exitCode);
+    QCOMPARE(exitCode, 0);
+    QVERIFY(moma.contains(QStringLiteral("exact_areas")));
+    QVERIFY(moma.value(QStringLiteral("exact_areas")).isNull());
+    // and the text output gives the exact area first, the grid's marked as such
+    const Run text = runPkm(args({"workspace", "oxglide-prototype"}));
+    QCOMPARE(text.exitCode, 0);
+    QVERIFY(text.out.contains("area (exact)"));
+    QVERIFY(text.out.contains("area (grid)"));
+    QVERIFY(text.out.contains("753.3"));
+    // in the X form "area" is the X workspace and the union stays the same
     const QJsonObject crossed = runJson(args({"workspace", "oxglide-prototype", "--grid", "400", "--set", "mode=X"}),
                                         &exitCode);
     QCOMPARE(exitCode, 0);
