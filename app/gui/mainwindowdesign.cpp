@@ -162,12 +162,17 @@ void MainWindow::onPoseChanged()
     m_poseLabel->setText(summary.join(QStringLiteral("   ")));
 
     updateModes();
+    // A pose that arrives is a success: an error about an earlier move (a drag, a map click or a
+    // value beyond reach) is no longer true, whatever the next note says.
     const QString note = m_document->limitNote();
     m_view->setMessage(note);
-    if (!note.isEmpty())
+    if (!note.isEmpty()) {
         showStatus(note);
-    else if (!m_statusIsError)
+    } else {
+        if (m_statusIsError)
+            showStatus(QString());
         statusBar()->clearMessage();
+    }
 }
 
 void MainWindow::updateModes()

@@ -20,6 +20,7 @@
 #include <QJsonObject>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTest>
 
 #include <qcustomplot.h>
@@ -147,6 +148,27 @@ private slots:
         // within a pixel of the target
         const double mmPerPixel = std::abs(plot->xAxis->pixelToCoord(1) - plot->xAxis->pixelToCoord(0));
         QVERIFY2((at - target).norm() < 2 * mmPerPixel, qPrintable(QStringLiteral("at (%1, %2)").arg(at.x()).arg(at.y())));
+    }
+
+    void anErrorGoesWhenAPoseArrives()
+    {
+        // a click outside the workspace says why in red; a click that moves the platform to a
+        // good pose takes that message away
+        QVERIFY(waitForMap());
+        QCustomPlot *plot = map()->plot();
+        auto click = [plot](const Eigen::Vector2d &target) {
+            const QPoint pixel(
+                qRound(plot->xAxis->coordToPixel(target.x())), qRound(plot->yAxis->coordToPixel(target.y())));
+            QTest::mouseClick(plot, Qt::LeftButton, Qt::NoModifier, pixel);
+        };
+        const Eigen::Vector2d outside(plot->xAxis->range().lower + 1.0, plot->yAxis->range().upper - 1.0);
+        QVERIFY(std::isnan(map()->valueAt(outside)));
+        click(outside);
+        QVERIFY(!m_window->statusBar()->currentMessage().isEmpty());
+        const Eigen::Vector2d inside(-20.0, -260.0);
+        QVERIFY(!std::isnan(map()->valueAt(inside)));
+        click(inside);
+        QVERIFY2(m_window->statusBar()->currentMessage().isEmpty(), qPrintable(m_window->statusBar()->currentMessage()));
     }
 
     void modesSwitchOnlyOnAClick()

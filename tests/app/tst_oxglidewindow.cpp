@@ -218,6 +218,22 @@ private slots:
         QVERIFY(std::abs(cliPose.value(QStringLiteral("x_CD")).toDouble() - pose().inputs[1]) < 1e-9);
     }
 
+    void noBannerAfterAnotherDesign()
+    {
+        // a crossing paused at the singular pose, then another kind's preset and back: the
+        // banner and the paused crossing are gone, not greeting the new design as if true
+        QVERIFY(m_window->openDesign(QStringLiteral("oxglide-prototype")));
+        QTest::mouseClick(panel()->crossingButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(panel()->phase(), OxGlidePanel::Phase::AtCrossing, 10000);
+        QVERIFY(panel()->banner()->isVisible());
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
+        QVERIFY(m_window->openDesign(QStringLiteral("oxglide-prototype")));
+        QVERIFY(panel()->isVisible());
+        QCOMPARE(panel()->phase(), OxGlidePanel::Phase::Idle);
+        QVERIFY(!panel()->banner()->isVisible());
+        QVERIFY(!panel()->leaveOtherButton()->isVisible());
+    }
+
     void theHybridIn3d()
     {
         QVERIFY(m_window->openDesign(QStringLiteral("oxglide-prototype")));

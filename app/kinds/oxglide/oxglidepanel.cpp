@@ -8,6 +8,7 @@
 
 #include <QButtonGroup>
 #include <QEvent>
+#include <QHideEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -113,6 +114,21 @@ void OxGlidePanel::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange)
         retranslate();
     QWidget::changeEvent(event);
+}
+
+void OxGlidePanel::hideEvent(QHideEvent *event)
+{
+    // Not a minimised window (spontaneous): the panel made way for another kind's design. An
+    // animation or banner left running would greet the next O-X glide opened as if still true.
+    if (!event->spontaneous()) {
+        m_timer.stop();
+        m_phase = Phase::Idle;
+        showCrossButton();
+        m_leaveOther->hide();
+        m_leaveSame->hide();
+        showBanner({});
+    }
+    QWidget::hideEvent(event);
 }
 
 void OxGlidePanel::retranslate()

@@ -60,6 +60,8 @@ public:
 protected:
     /// A new language: every text again, the banner and the workspace plot's titles included.
     void changeEvent(QEvent *event) override;
+    /// Another kind's design took the window's place: the crossing and its banner are over.
+    void hideEvent(QHideEvent *event) override;
 
 private:
     /// Makes the banner's text in the current language.
