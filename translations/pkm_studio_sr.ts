@@ -5501,5 +5501,13 @@ Please verify the correct file name was given.</source>
         <source>The five-bar example rebuilt from the leg library (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov, fig. 1): two R̲RR legs from A₁ = (0, 0) and A₂ = (100, 0) mm, cranks 80 mm, distal links 120 mm, elbows out, the platform point above the elbows. Its poses and Jacobians are the five-bar kind&apos;s.</source>
         <translation>Пример петочланог механизма састављен из библиотеке ногу (документ о зглобном четвороуглу и покретљивости Хабибулине, Хабибулина и Исламова, сл. 1): две ноге R̲RR од A₁ = (0, 0) и A₂ = (100, 0) мм, полуге 80 мм, дисталне спојке 120 мм, лактови ка споља, тачка платформе изнад лактова. Његове позе и Јакобијан матрице исте су као код врсте петочланог механизма.</translation>
     </message>
+    <message>
+        <source>Planar parallel: a translating platform driven by two П-joints</source>
+        <translation>Равански паралелни: транслаторна платформа погоњена са два П-зглоба</translation>
+    </message>
+    <message>
+        <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
+        <translation>Равански механизам са два степена слободе и платформом сталне оријентације који Милутиновић, Кокотовић, Славковић и Живановић приказују међу применама П-зглоба („Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине”, Универзитет у Београду, Машински факултет, 2014): два лабораторијска П-зглоба (a = 170 mm, k = 0,4, дијагонала од 116,5 до 231 mm) са полугама у A₁ = (0, 0) и A₂ = (200, 0) mm и основама закренутим за α = ±30°. Спојка П-зглоба задржава свој правац, па дистални паралелограм од 200 mm од сваке спојке до тачака платформе B₁ = (−40, 0) и B₂ = (40, 0) mm задржава оријентацију платформе. Други паралелограм понавља везу првог: Чебишевљева формула даје 1, а покретљивост је 2.</translation>
+    </message>
 </context>
 </TS>

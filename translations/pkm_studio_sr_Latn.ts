@@ -5501,5 +5501,13 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The five-bar example rebuilt from the leg library (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov, fig. 1): two R̲RR legs from A₁ = (0, 0) and A₂ = (100, 0) mm, cranks 80 mm, distal links 120 mm, elbows out, the platform point above the elbows. Its poses and Jacobians are the five-bar kind&apos;s.</source>
         <translation>Primer petočlanog mehanizma sastavljen iz biblioteke nogu (dokument o zglobnom četvorouglu i pokretljivosti Habibuline, Habibulina i Islamova, sl. 1): dve noge R̲RR od A₁ = (0, 0) i A₂ = (100, 0) mm, poluge 80 mm, distalne spojke 120 mm, laktovi ka spolja, tačka platforme iznad laktova. Njegove poze i Jakobijan matrice iste su kao kod vrste petočlanog mehanizma.</translation>
     </message>
+    <message>
+        <source>Planar parallel: a translating platform driven by two П-joints</source>
+        <translation>Ravanski paralelni: translatorna platforma pogonjena sa dva P-zgloba</translation>
+    </message>
+    <message>
+        <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
+        <translation>Ravanski mehanizam sa dva stepena slobode i platformom stalne orijentacije koji Milutinović, Kokotović, Slavković i Živanović prikazuju među primenama P-zgloba („Mehanizam aktivnog P-zgloba kao ekvivalenta kombinacije obrtnog zgloba i segmenta konstantne dužine”, Univerzitet u Beogradu, Mašinski fakultet, 2014): dva laboratorijska P-zgloba (a = 170 mm, k = 0,4, dijagonala od 116,5 do 231 mm) sa polugama u A₁ = (0, 0) i A₂ = (200, 0) mm i osnovama zakrenutim za α = ±30°. Spojka P-zgloba zadržava svoj pravac, pa distalni paralelogram od 200 mm od svake spojke do tačaka platforme B₁ = (−40, 0) i B₂ = (40, 0) mm zadržava orijentaciju platforme. Drugi paralelogram ponavlja vezu prvog: Čebiševljeva formula daje 1, a pokretljivost je 2.</translation>
+    </message>
 </context>
 </TS>

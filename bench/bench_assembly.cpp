@@ -1,0 +1,198 @@
+// Benchmark: every direct solution of the pp-3rpr preset's 3-RP̲R (the sextic of the planar
+// 3-RPR forward problem, docs/mathematics.md section 5a) at the preset's stored inputs
+// q = (14.98, 15.38, 12), where all six assembly modes are real. It goes through the generic
+// interface only (the preset loader and Mechanism::assemblyModes), so it names no kind class and
+// measures what `pkm eval --all-modes` and the mode ghosts pay. The process is pinned to one
+// core so that the scheduler moving it does not show up as a slow run; each call is timed on its
+// own after a warm-up, and min, median and 95th percentile are printed.
+// Target: median ≤ LIMIT_US (argv[1], default 20 µs).
+//
+// With --map (the default; --no-map skips it) it also times the det J map of the leg-library
+// MOMA (preset pp-2prr-moma3a) against the MOMA kind's own (preset moma-3a) on the same grid,
+// one thread each, and prints the ratio of their times, which is the ratio per cell. Target:
+// ratio ≤ MAP_RATIO (--map-ratio, default 3), so that building MOMA from the leg library costs
+// no more than that against the hand-written kind.
+//
+//   bench_assembly [LIMIT_US] [--runs N] [--no-map] [--map-ratio R] [--map-size N] [--map-runs N]
+#include "document/designfile.h"
+#include "planarworkspace.h"
+
+#include <QCoreApplication>
+
+#include <sched.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+int usage(const char *program)
+{
+    std::fprintf(stderr, "usage: %s [LIMIT_US] [--runs N] [--no-map] [--map-ratio R] [--map-size N] [--map-runs N]\n",
+                 program);
+    return 2;
+}
+
+struct Stats {
+    double min, median, p95;
+};
+
+/// Sorts the samples; the 95th percentile is the sample below which 95 % lie.
+Stats statsOf(std::vector<double> &samples)
+{
+    std::sort(samples.begin(), samples.end());
+    return {samples.front(), samples[samples.size() / 2],
+            samples[std::min(samples.size() - 1, samples.size() * 95 / 100)]};
+}
+
+/// One core only: the timings compare runs, not where the scheduler put them.
+void pinToOneCore()
+{
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) == 0) {
+        for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+            if (CPU_ISSET(cpu, &set)) {
+                CPU_ZERO(&set);
+                CPU_SET(cpu, &set);
+                sched_setaffinity(0, sizeof set, &set);
+                return;
+            }
+        }
+    }
+}
+
+pkm::Design loadPreset(const char *id)
+{
+    auto design = pkm::designfile::load(QString::fromLatin1(id));
+    if (!design) {
+        std::fprintf(stderr, "error: preset %s: %s\n", id, design.failure().message.c_str());
+        std::exit(1);
+    }
+    return *design;
+}
+
+/// The assembly-mode benchmark; false when the median misses the target.
+bool benchAssemblyModes(double limitUs, int runs)
+{
+    const pkm::Design design = loadPreset("pp-3rpr");
+    const pkm::Mechanism &m = *design.mechanism;
+    const pkm::Pose &pose = design.pose;
+    std::vector<pkm::Pose> modes = m.assemblyModes(pose);
+    // the preset is the one with six real solutions: fewer means the solver lost some
+    if (modes.size() != 6) {
+        std::printf("FAIL: %zu assembly modes at the preset's inputs, 6 expected\n", modes.size());
+        return false;
+    }
+    for (int i = 0; i < 1000; ++i) // warm-up: caches, branch predictors, the core's clock
+        modes = m.assemblyModes(pose);
+
+    std::vector<double> times(static_cast<std::size_t>(runs));
+    std::size_t found = 0;
+    for (double &t : times) {
+        const auto start = Clock::now();
+        modes = m.assemblyModes(pose);
+        const auto end = Clock::now();
+        found += modes.size(); // used, so that the call is not optimised away
+        t = std::chrono::duration<double, std::micro>(end - start).count();
+    }
+    const Stats s = statsOf(times);
+    std::printf("pp-3rpr (%.*s), every assembly mode at q = (%.2f, %.2f, %.2f) mm: %zu solutions, %d runs, one core\n",
+                int(m.kind().size()), m.kind().data(), pose.inputs[0], pose.inputs[1], pose.inputs[2],
+                found / times.size(), runs);
+    std::printf("time: min %.2f us, median %.2f us, p95 %.2f us (target: median <= %.2f us)\n", s.min, s.median, s.p95,
+                limitUs);
+    if (s.median > limitUs) {
+        std::printf("FAIL: median %.2f us is over the %.2f us limit\n", s.median, limitUs);
+        return false;
+    }
+    return true;
+}
+
+/// The times of `runs` det J maps of `workspace` over `grid` on one thread after a warm-up, ms.
+Stats mapTimes(const pkm::PlanarWorkspace &workspace, const pkm::MapGrid &grid, int runs, pkm::MapSummary &summary)
+{
+    std::vector<float> values(grid.cells());
+    summary = pkm::computeMap(workspace, pkm::MapQuantity::Determinant, grid, values, {}, nullptr, 1); // warm-up
+    std::vector<double> times(static_cast<std::size_t>(runs));
+    for (double &t : times) {
+        const auto start = Clock::now();
+        summary = pkm::computeMap(workspace, pkm::MapQuantity::Determinant, grid, values, {}, nullptr, 1);
+        t = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    }
+    return statsOf(times);
+}
+
+/// The map benchmark; false when the leg library is more than `limitRatio` times slower.
+bool benchMapRatio(double limitRatio, int size, int runs)
+{
+    const pkm::Design legs = loadPreset("pp-2prr-moma3a");
+    const pkm::Design moma = loadPreset("moma-3a");
+    const pkm::PlanarWorkspace *legWorkspace = legs.mechanism->planarWorkspace();
+    const pkm::PlanarWorkspace *momaWorkspace = moma.mechanism->planarWorkspace();
+    if (!legWorkspace || !momaWorkspace) {
+        std::printf("FAIL: a preset has no planar workspace\n");
+        return false;
+    }
+    // MOMA's grid for both, so that the time ratio is the ratio per cell
+    const pkm::MapGrid grid{momaWorkspace->workspaceBounds(), size, size};
+    pkm::MapSummary legSummary, momaSummary;
+    const Stats momaTime = mapTimes(*momaWorkspace, grid, runs, momaSummary);
+    const Stats legTime = mapTimes(*legWorkspace, grid, runs, legSummary);
+    const double ratio = legTime.median / momaTime.median;
+    std::printf("det J map, %dx%d cells over MOMA 3a's bounds, one thread, %d runs\n", grid.columns, grid.rows, runs);
+    std::printf("  moma-3a         median %.3f ms (min %.3f, p95 %.3f), %zu reachable cells, %.1f ns/cell\n",
+                momaTime.median, momaTime.min, momaTime.p95, momaSummary.reachableCells,
+                momaTime.median * 1e6 / double(grid.cells()));
+    std::printf("  pp-2prr-moma3a  median %.3f ms (min %.3f, p95 %.3f), %zu reachable cells, %.1f ns/cell\n",
+                legTime.median, legTime.min, legTime.p95, legSummary.reachableCells,
+                legTime.median * 1e6 / double(grid.cells()));
+    std::printf("ratio per cell: %.2f (target: <= %.2f)\n", ratio, limitRatio);
+    if (ratio > limitRatio) {
+        std::printf("FAIL: the leg library's map is %.2f times MOMA's, over %.2f\n", ratio, limitRatio);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv); // the presets are Qt resources
+    double limitUs = 20.0, mapRatio = 3.0;
+    int runs = 20000, mapSize = 400, mapRuns = 9;
+    bool map = true;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const bool hasValue = i + 1 < argc;
+        if (arg == "--runs" && hasValue)
+            runs = std::atoi(argv[++i]);
+        else if (arg == "--no-map")
+            map = false;
+        else if (arg == "--map-ratio" && hasValue)
+            mapRatio = std::atof(argv[++i]);
+        else if (arg == "--map-size" && hasValue)
+            mapSize = std::atoi(argv[++i]);
+        else if (arg == "--map-runs" && hasValue)
+            mapRuns = std::atoi(argv[++i]);
+        else if (!arg.empty() && arg[0] != '-')
+            limitUs = std::atof(arg.c_str());
+        else
+            return usage(argv[0]);
+    }
+    if (runs < 1 || mapSize < 2 || mapRuns < 1 || !(limitUs > 0) || !(mapRatio > 0))
+        return usage(argv[0]);
+
+    pinToOneCore();
+    bool ok = benchAssemblyModes(limitUs, runs);
+    if (map)
+        ok = benchMapRatio(mapRatio, mapSize, mapRuns) && ok;
+    return ok ? 0 : 1;
+}
