@@ -3440,6 +3440,10 @@ Please verify the correct file name was given.</source>
         <source>leg 3: upper limit of the crank angle (R̲RR)</source>
         <translation>нога 3: верхний предел угла кривошипа (R̲RR)</translation>
     </message>
+    <message>
+        <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
+        <translation>Перетаскивание останавливается, не доходя до перехода O↔X при x_CD − x_AB = s = %1 мм, где стержни параллельны и платформа может качаться: чтобы продолжить, переключите форму.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

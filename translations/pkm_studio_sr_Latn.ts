@@ -3440,6 +3440,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>leg 3: upper limit of the crank angle (R̲RR)</source>
         <translation>noga 3: gornja granica ugla poluge (R̲RR)</translation>
     </message>
+    <message>
+        <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
+        <translation>Prevlačenje se zaustavlja pre prelaza O↔X pri x_CD − x_AB = s = %1 mm, gde su šipke paralelne i platforma može da se njiše: promenite oblik da biste nastavili.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -155,6 +155,25 @@ private slots:
         QVERIFY(QString::fromStdString(moved.failure().message).contains(QStringLiteral("switch the form")));
     }
 
+    void dragStopsShortOfTheCrossing()
+    {
+        // dragging the x_CD pair towards x_AB stops where the crossing animation stops, not on
+        // the combined singular pose x_CD − x_AB = s
+        QVERIFY(m_window->openDesign(QStringLiteral("oxglide-prototype")));
+        const double xAB = pose().inputs[0], l = 80.0, s = 20.0;
+        auto dragged = m_window->document()->dragHandle(2, Eigen::Vector2d(xAB + 5.0, 0.0));
+        QVERIFY(!dragged.ok());
+        QVERIFY(QString::fromStdString(dragged.failure().message).contains(QStringLiteral("stops short")));
+        QCOMPARE(form(*m_window), oxglide::formO);
+        const double run = 0.5 * (pose().inputs[1] - pose().inputs[0] - s);
+        QVERIFY2(std::abs(run - OxGlidePanel::stopMargin * l) < 1e-3, qPrintable(QString::number(run)));
+        std::vector<double> values(std::size_t(m_window->document()->mechanism()->reportLayout().size));
+        QCOMPARE(m_window->document()->mechanism()->evaluate(pose(), values).type, SingularityType::None);
+        // and away from it the pair moves freely
+        QVERIFY(m_window->document()->dragHandle(2, Eigen::Vector2d(xAB + 60.0, 0.0)).ok());
+        QVERIFY(std::abs(pose().inputs[1] - (xAB + 60.0)) < 1e-9);
+    }
+
     void switchesFormsWithTheSelector()
     {
         QVERIFY(m_window->openDesign(QStringLiteral("oxglide-prototype")));

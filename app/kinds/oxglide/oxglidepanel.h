@@ -8,6 +8,7 @@
 /// short of that pose and explains it; the user then chooses the form to leave in.
 
 #include "kinds/kindpanel.h"
+#include "kinds/oxglide/oxglide.h"
 
 #include <QTimer>
 
@@ -49,7 +50,7 @@ public:
     /// The height at which the crossing stops: the rods' margin from the singular pose is
     /// `stopMargin` there.
     double stopHeight() const;
-    static constexpr double stopMargin = 0.05; ///< w/l: rods ≈ 87° to the guides
+    static constexpr double stopMargin = oxglide::crossingStopMargin; ///< w/l: rods ≈ 87° to the guides
 
     /// Switches to form +1 (O) or −1 (X) at the current platform position (undoable); the
     /// status bar says why when that form cannot reach it.

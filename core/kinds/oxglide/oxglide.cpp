@@ -472,6 +472,17 @@ Result<Pose> OxGlide::dragHandle(const Pose &current, int handle, const Eigen::V
     if (handle == 1 || handle == 2) {
         Coordinates inputs = current.inputs;
         inputs[handle - 1] = std::clamp(target.x(), 0.0, m_design.guideLength);
+        // A drag stops short of the O↔X crossing, as the crossing animation does: on it the
+        // platform can swing, and the values there are ∞ or undefined. The document's move
+        // then ends at the last pose allowed.
+        const double run = 0.5 * (inputs[1] - inputs[0] - m_design.width) * double(m_design.form);
+        if (run < oxglide::crossingStopMargin * m_design.rod) {
+            return Failure{FailureKind::Singular, handle == 1 ? "x_AB" : "x_CD",
+                text::format(text::translate("core", "The drag stops short of the O↔X crossing at x_CD − x_AB = s = "
+                                                     "%1 mm, where the rods are parallel and the platform can swing: "
+                                                     "switch the form to go on."),
+                    {text::number(m_design.width, 2)})};
+        }
         return solveDirect(inputs, &current);
     }
     return Failure{FailureKind::UnknownName, {}, text::translate("core", "No handle with that index.")};

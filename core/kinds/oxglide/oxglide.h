@@ -44,6 +44,10 @@ struct OxGlideDesign {
 namespace oxglide {
 constexpr int formO = +1;
 constexpr int formX = -1;
+/// How far from the O↔X crossing (x_CD − x_AB = s, the rods parallel: a combined singularity)
+/// a drag of a slider pair and the GUI's crossing animation stop: w/l, with w = |x_CD − x_AB − s|/2
+/// the run of a rod along the guides. 0.05: the rods at about 87° to the guides.
+constexpr double crossingStopMargin = 0.05;
 /// "O" or "X".
 const char *formName(int form);
 /// "extended (O)" or "crossed (X)": English source, QT_TRANSLATE_NOOP("core", …).
