@@ -81,8 +81,8 @@ LegCircle circle(const PlanarLeg &leg, double q)
         break;
     }
     case LegType::PRR:
-        c.centre = leg.base + q * direction(leg.alpha);
-        c.centreRate = direction(leg.alpha);
+        c.centre = leg.base + q * leg.guideDirection();
+        c.centreRate = leg.guideDirection();
         c.radius = leg.link;
         break;
     case LegType::RPR:
@@ -146,7 +146,7 @@ Reach inverse(const PlanarLeg &leg, const Eigen::Vector2d &P, double reference, 
     }
     case LegType::PRR: {
         // the MOMA document's (7–9): q = B + β·√(B² − C), B² − C = l² − (distance from the guide)²
-        const Eigen::Vector2d u = direction(leg.alpha), r = P - leg.base;
+        const Eigen::Vector2d u = leg.guideDirection(), r = P - leg.base;
         const double across = cross(u, r);
         const double D = leg.link * leg.link - across * across;
         if (D < -tolerance * leg.link * leg.link)
@@ -182,7 +182,7 @@ int workingOf(const PlanarLeg &leg, double q, const Eigen::Vector2d &P)
     }
     case LegType::PRR:
         // (P − Z)·u = B − q = −β·√(B² − C): the link's component along the guide is −β
-        return -sign((P - c.centre).dot(direction(leg.alpha)), tolerance * leg.link);
+        return -sign((P - c.centre).dot(leg.guideDirection()), tolerance * leg.link);
     case LegType::RPR:
         return leg.working;
     }
@@ -203,7 +203,7 @@ double inverseMargin(const PlanarLeg &leg, double q, const Eigen::Vector2d &P)
         return std::abs(cross((c.centre - leg.base).normalized(), e / length));
     case LegType::PRR:
         // |cos| between link and guide (MOMA's margin)
-        return std::abs(direction(leg.alpha).dot(e)) / length;
+        return std::abs(leg.guideDirection().dot(e)) / length;
     case LegType::RPR:
         return 1.0; // J_q = −q never vanishes for a strut of positive length
     }
@@ -212,8 +212,10 @@ double inverseMargin(const PlanarLeg &leg, double q, const Eigen::Vector2d &P)
 
 Eigen::Vector2d platformPoint(const PlanarLeg &leg, const Eigen::Vector3d &X)
 {
-    const double c = std::cos(X.z()), s = std::sin(X.z());
     const Eigen::Vector2d &b = leg.platform;
+    if (X.z() == 0.0) // a 2-DOF platform keeps φ = 0: the same numbers without the sine and cosine
+        return {X.x() + b.x(), X.y() + b.y()};
+    const double c = std::cos(X.z()), s = std::sin(X.z());
     return {X.x() + c * b.x() - s * b.y(), X.y() + s * b.x() + c * b.y()};
 }
 

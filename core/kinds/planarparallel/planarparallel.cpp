@@ -221,6 +221,8 @@ Result<MechanismPtr> PlanarParallel::create(const PlanarParallelDesign &design)
 PlanarParallel::PlanarParallel(const PlanarParallelDesign &design)
     : m_design(design)
 {
+    for (PlanarLeg &leg : m_design.legs)
+        leg.guide = planar::direction(leg.alpha);
     const int n = design.legCount();
     static const std::array<const char *, 3> inputLabels = {QT_TRANSLATE_NOOP("core", "input of leg 1 (actuated)"),
                                                              QT_TRANSLATE_NOOP("core", "input of leg 2 (actuated)"),

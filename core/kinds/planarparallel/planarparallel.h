@@ -45,6 +45,8 @@
 #include "text.h"
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace pkm {
@@ -64,6 +66,16 @@ struct PlanarLeg {
     Interval range{10.0, 200.0}; ///< q_i limits of a slider, a strut or a П-joint's diagonal, mm
     Interval crankRange{-std::numbers::pi, std::numbers::pi}; ///< θ_i limits of an R̲RR crank, rad
     int working = +1;
+    /// (cos α, sin α), worked out once by the mechanism (PlanarParallel's constructor) so that a
+    /// map does not take the same sine and cosine in every cell; not finite for a leg made
+    /// outside a mechanism, which then computes it (guideDirection()).
+    Eigen::Vector2d guide = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+
+    /// The unit vector along α: the guide of a P̲RR leg, the base line of a П̲RR one.
+    Eigen::Vector2d guideDirection() const
+    {
+        return std::isfinite(guide.x()) ? guide : Eigen::Vector2d(std::cos(alpha), std::sin(alpha));
+    }
 
     /// The limits of q_i: in rad for a crank, in mm otherwise (parameters theta_i_min/max and
     /// q_i_min/max, so that every parameter keeps one unit whatever the leg type).
