@@ -5229,8 +5229,8 @@ Please verify the correct file name was given.</source>
         <translation>Цветовая шкала заканчивается на 98-м процентиле κ(J) по рабочему пространству, %1; в особых положениях κ → ∞.</translation>
     </message>
     <message>
-        <source>The colours are clipped at ±%1, the larger of the 2nd and 98th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
-        <translation>Цвета ограничены на ±%1 — большем из 2-го и 98-го процентилей |det J| по рабочему пространству: в особых положениях обратной кинематики det J → ±∞, в особых положениях прямой кинематики det J = 0.</translation>
+        <source>The colours are clipped at ±%1, the larger of the 5th and 95th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
+        <translation>Цвета ограничены на ±%1 — большем из 5-го и 95-го процентилей |det J| по рабочему пространству: в особых положениях обратной кинематики det J → ±∞, в особых положениях прямой кинематики det J = 0.</translation>
     </message>
     <message>
         <source>workspace boundary</source>

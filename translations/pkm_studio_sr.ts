@@ -5229,8 +5229,8 @@ Please verify the correct file name was given.</source>
         <translation>Скала боја се завршава на 98. перцентилу κ(J) у радном простору, %1; у сингуларитетима κ → ∞.</translation>
     </message>
     <message>
-        <source>The colours are clipped at ±%1, the larger of the 2nd and 98th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
-        <translation>Боје су ограничене на ±%1, већи од 2. и 98. перцентила |det J| у радном простору: у сингуларитетима инверзне кинематике det J → ±∞, у сингуларитетима директне кинематике 0.</translation>
+        <source>The colours are clipped at ±%1, the larger of the 5th and 95th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
+        <translation>Боје су ограничене на ±%1, већи од 5. и 95. перцентила |det J| у радном простору: у сингуларитетима инверзне кинематике det J → ±∞, у сингуларитетима директне кинематике 0.</translation>
     </message>
     <message>
         <source>workspace boundary</source>

@@ -5229,8 +5229,8 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Skala boja se završava na 98. percentilu κ(J) u radnom prostoru, %1; u singularitetima κ → ∞.</translation>
     </message>
     <message>
-        <source>The colours are clipped at ±%1, the larger of the 2nd and 98th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
-        <translation>Boje su ograničene na ±%1, veći od 2. i 98. percentila |det J| u radnom prostoru: u singularitetima inverzne kinematike det J → ±∞, u singularitetima direktne kinematike 0.</translation>
+        <source>The colours are clipped at ±%1, the larger of the 5th and 95th percentiles of |det J| over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.</source>
+        <translation>Boje su ograničene na ±%1, veći od 5. i 95. percentila |det J| u radnom prostoru: u singularitetima inverzne kinematike det J → ±∞, u singularitetima direktne kinematike 0.</translation>
     </message>
     <message>
         <source>workspace boundary</source>

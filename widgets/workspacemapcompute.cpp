@@ -37,8 +37,11 @@ namespace {
 using workspacemap::nan;
 
 /// The colours are clipped at these percentiles of the reachable, finite values, so that the
-/// spikes at inverse singularities (det J, κ → ∞) do not flatten the rest of the map.
+/// spikes at inverse singularities (det J, κ → ∞) do not flatten the rest of the map. det J's
+/// tail is heavier: in the O-X glide's O form 5 % of the cells lie beyond −23 and 2 % beyond
+/// −136, while half are between −2 and −5, so the 2nd/98th percentiles left the map almost white.
 constexpr double lowPercentile = 0.02, highPercentile = 0.98;
+constexpr double determinantLowPercentile = 0.05, determinantHighPercentile = 0.95;
 
 /// The boundary segments of workspaceOutline() joined into closed polylines, so that a dashed
 /// pen runs along the boundary instead of restarting at every cell edge. Each boundary vertex
@@ -134,7 +137,8 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
             const double high = percentile(highPercentile);
             limit = high > 1.001 ? high : std::max(10.0, result->summary.max);
         } else {
-            const double high = std::max(std::abs(percentile(lowPercentile)), std::abs(percentile(highPercentile)));
+            const double high
+                = std::max(std::abs(percentile(determinantLowPercentile)), std::abs(percentile(determinantHighPercentile)));
             limit = high > 0.0 ? high : std::max(1.0, std::max(-result->summary.min, result->summary.max));
         }
     }

@@ -211,7 +211,7 @@ void WorkspaceMapView::updateTitle()
             ? tr("The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the "
                  "singularities.")
                   .arg(significant(m_colourLimit))
-            : tr("The colours are clipped at ±%1, the larger of the 2nd and 98th percentiles of |det J| "
+            : tr("The colours are clipped at ±%1, the larger of the 5th and 95th percentiles of |det J| "
                  "over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.")
                   .arg(significant(m_colourLimit)));
 }

@@ -200,7 +200,7 @@ and the greatest finite value, the number of near-singular cells (singularity ma
                        "colour_scale" (with -o FILE.png), "seconds"}
   -o FILE.png         the map as a picture, one pixel per cell, y up, unreachable cells
                       transparent; det J blue (< 0) – white (0) – red (> 0), clipped at the
-                      98th percentile of |det J|; the condition number on a log scale from 1
+                      95th percentile of |det J|; the condition number on a log scale from 1
                       (dark) to 100 (yellow)
   -o FILE.csv         the full map: a header line x,y,value,margin and one row per reachable
                       cell (mm, from the bottom row up); a value that is not finite (det J

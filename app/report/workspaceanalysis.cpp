@@ -18,7 +18,7 @@ constexpr std::size_t maxModeParameters = 8;
 /// The condition number at the top of the colour scale of a condition map.
 constexpr double conditionColourLimit = 100.0;
 /// The percentile of |det J| at the ends of the colour scale of a det map.
-constexpr double determinantColourPercentile = 0.98;
+constexpr double determinantColourPercentile = 0.95; // the GUI's map's, see its colour limits
 
 bool reachable(float value)
 {

@@ -70,7 +70,7 @@ std::optional<double> carriedTravel(const Mechanism &mechanism);
 std::vector<std::pair<std::string, double>> namedModeAreas(
     const std::vector<const ParameterInfo *> &modes, const std::vector<ModeArea> &areas);
 
-/// The colour limit mapImage() uses by default: for det J the 98th percentile of |det J| over
+/// The colour limit mapImage() uses by default: for det J the 95th percentile of |det J| over
 /// the finite cells (so the spikes near inverse singularities do not wash the picture out),
 /// for the condition number 100.
 double mapColourLimit(std::span<const float> values, MapQuantity quantity);
