@@ -301,6 +301,7 @@ private slots:
     void oxglideInputsOfTheOtherForm();
     void oxglideWorkspaceAreas();
     void oxglideMapJson();
+    void detMapColoursShowTheBulk();
     void oxglideList();
 
     void fourbarEvalJsonHasContractKeys_data();
@@ -1422,6 +1423,38 @@ void TestCli::mapPng()
             QVERIFY(root.value(QStringLiteral("colour_scale")).toObject().value(QStringLiteral("max")).toDouble() > 0);
         }
     }
+}
+
+void TestCli::detMapColoursShowTheBulk()
+{
+    // The O-X glide's O form: half its cells have det J between −2 and −5, 2 % near −136 at the
+    // singular edge. The colours must not be stretched over the edge's spikes, or the map shows
+    // white: the bulk gets a fair share of the scale, and the clipped tail stays small.
+    QTemporaryDir directory;
+    const QString png = directory.filePath(QStringLiteral("o.png")), csv = directory.filePath(QStringLiteral("o.csv"));
+    int exitCode = -1;
+    const QJsonObject root = runJson(args({"map", "oxglide-prototype", "-o"}) << png, &exitCode);
+    QCOMPARE(exitCode, 0);
+    const double limit = root.value(QStringLiteral("colour_scale")).toObject().value(QStringLiteral("max")).toDouble();
+    QVERIFY(limit > 0.0);
+    QCOMPARE(runPkm(args({"map", "oxglide-prototype", "-o"}) << csv).exitCode, 0);
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    std::vector<double> magnitudes;
+    file.readLine(); // x,y,value,margin
+    while (!file.atEnd()) {
+        const QList<QByteArray> fields = file.readLine().trimmed().split(',');
+        bool ok = false;
+        const double value = fields.size() >= 3 ? fields[2].toDouble(&ok) : 0.0;
+        if (ok && std::isfinite(value))
+            magnitudes.push_back(std::abs(value));
+    }
+    QVERIFY(magnitudes.size() > 1000);
+    std::sort(magnitudes.begin(), magnitudes.end());
+    const double median = magnitudes[magnitudes.size() / 2];
+    const auto clipped = std::size_t(magnitudes.end() - std::upper_bound(magnitudes.begin(), magnitudes.end(), limit));
+    QVERIFY2(median >= 0.1 * limit, qPrintable(QStringLiteral("median |det J| %1, colours end at %2").arg(median).arg(limit)));
+    QVERIFY2(clipped <= magnitudes.size() / 10, qPrintable(QStringLiteral("%1 of %2 cells clipped").arg(clipped).arg(magnitudes.size())));
 }
 
 void TestCli::mapCsv()
