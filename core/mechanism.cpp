@@ -87,6 +87,16 @@ void ReportLayout::atSingularity(const char *name, AtSingularity inverse, AtSing
     }
 }
 
+void ReportLayout::atSingularityOfJ(const char *inputDeterminant)
+{
+    using S = AtSingularity;
+    atSingularity("J", S::Infinite, S::Computed);
+    atSingularity("det_J", S::Infinite, S::Zero);
+    atSingularity("cond", S::Infinite, S::Infinite);
+    atSingularity(inputDeterminant, S::Zero, S::Computed);
+    atSingularity("det_Jx", S::Computed, S::Zero);
+}
+
 void settleSingularValues(const ReportLayout &layout, std::span<double> values, SingularityType type)
 {
     if (type == SingularityType::None)

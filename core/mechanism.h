@@ -120,6 +120,11 @@ struct ReportLayout {
              int rows = 1, int cols = 1);
     /// Declares what entry `name` (added before) is at inverse and at direct singular poses.
     void atSingularity(const char *name, AtSingularity inverse, AtSingularity direct);
+    /// The marks of J = J_q⁻¹·J_x as most kinds report it: "J", "det_J" and "cond" unbounded at
+    /// an inverse singularity; "det_J" 0 and "cond" unbounded at a direct one; the inputs'
+    /// determinant `inputDeterminant` ("det_Jq", MOMA's "det_Jp") 0 at an inverse and
+    /// "det_Jx" 0 at a direct one.
+    void atSingularityOfJ(const char *inputDeterminant);
 };
 
 /// The Jacobians of a pose, from the constraint F(x, q) = 0 with inputs q and outputs x:

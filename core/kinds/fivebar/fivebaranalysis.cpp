@@ -58,12 +58,7 @@ const ReportLayout &FiveBar::reportLayout() const
         l.add(G::Derived, "margin_direct", "m_dir", QT_TRANSLATE_NOOP("core", "distance from the direct singularities, |sin ψ| (0 … 1)"), units::none, 4);
         l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
         // exact values at singular poses (mechanism.h: AtSingularity)
-        using S = AtSingularity;
-        l.atSingularity("J", S::Infinite, S::Computed);
-        l.atSingularity("det_J", S::Infinite, S::Zero);
-        l.atSingularity("cond", S::Infinite, S::Infinite);
-        l.atSingularity("det_Jq", S::Zero, S::Computed);
-        l.atSingularity("det_Jx", S::Computed, S::Zero);
+        l.atSingularityOfJ("det_Jq");
         return l;
     }();
     return layout;

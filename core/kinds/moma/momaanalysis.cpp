@@ -52,12 +52,7 @@ const ReportLayout &Moma::reportLayout() const
         l.add(G::Derived, "links_angle", "ψ₁₂", QT_TRANSLATE_NOOP("core", "angle between the links (0°, 180°: direct singularity)"), units::angle, 2);
         l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
         // exact values at singular poses (mechanism.h: AtSingularity)
-        using S = AtSingularity;
-        l.atSingularity("J", S::Infinite, S::Computed);
-        l.atSingularity("det_J", S::Infinite, S::Zero);
-        l.atSingularity("cond", S::Infinite, S::Infinite);
-        l.atSingularity("det_Jp", S::Zero, S::Computed);
-        l.atSingularity("det_Jx", S::Computed, S::Zero);
+        l.atSingularityOfJ("det_Jp");
         return l;
     }();
     return layout;

@@ -368,12 +368,7 @@ const ReportLayout &OxGlide::reportLayout() const
         l.add(G::Derived, "crossing", "x_CD − x_AB − s", QT_TRANSLATE_NOOP("core", "distance from the O↔X crossing (0 there; > 0 O, < 0 X)"), units::millimetre, 2);
         l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
         // exact values at singular poses (mechanism.h: AtSingularity)
-        using S = AtSingularity;
-        l.atSingularity("J", S::Infinite, S::Computed);
-        l.atSingularity("det_J", S::Infinite, S::Zero);
-        l.atSingularity("cond", S::Infinite, S::Infinite);
-        l.atSingularity("det_Jq", S::Zero, S::Computed);
-        l.atSingularity("det_Jx", S::Computed, S::Zero);
+        l.atSingularityOfJ("det_Jq");
         return l;
     }();
     return layout;

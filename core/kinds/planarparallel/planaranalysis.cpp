@@ -114,12 +114,7 @@ void PlanarParallel::buildReport()
     l.add(G::Jacobian, "cond", "κ(J)", QT_TRANSLATE_NOOP("core", "condition number of J"), units::none, 3);
     l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
     // exact values at singular poses (mechanism.h: AtSingularity)
-    using S = AtSingularity;
-    l.atSingularity("J", S::Infinite, S::Computed);
-    l.atSingularity("det_J", S::Infinite, S::Zero);
-    l.atSingularity("cond", S::Infinite, S::Infinite);
-    l.atSingularity("det_Jq", S::Zero, S::Computed);
-    l.atSingularity("det_Jx", S::Computed, S::Zero);
+    l.atSingularityOfJ("det_Jq");
 }
 
 Singularity PlanarParallel::evaluate(const Pose &pose, std::span<double> v) const
