@@ -3650,6 +3650,26 @@ Please verify the correct file name was given.</source>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Особое положение (комбинированное): здесь механизмом нельзя управлять.</translation>
     </message>
+    <message>
+        <source>A design keeps at most %1 bookmarks: remove one first.</source>
+        <translation>Конструкция хранит не более %1 закладок: сначала удалите одну.</translation>
+    </message>
+    <message>
+        <source>Add bookmark “%1”</source>
+        <translation>Добавить закладку «%1»</translation>
+    </message>
+    <message>
+        <source>There is no bookmark %1.</source>
+        <translation>Закладки %1 нет.</translation>
+    </message>
+    <message>
+        <source>Remove bookmark “%1”</source>
+        <translation>Удалить закладку «%1»</translation>
+    </message>
+    <message>
+        <source>Bookmark “%1”: %2</source>
+        <translation>Закладка «%1»: %2</translation>
+    </message>
 </context>
 <context>
     <name>pkm::FormWorkspaceView</name>
@@ -4232,6 +4252,70 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделирует механизмы этих четырёх документов: активный П-шарнир (1), MOMA (2), O-X glide (3), шарнирный четырёхзвенник и формулы подвижности (4). Где напечатанная формула или число неверны, программа использует исправленные; раздел README о математике перечисляет каждое исправление.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Play Toolbar</source>
+        <translation>Панель воспроизведения</translation>
+    </message>
+    <message>
+        <source>Play / &amp;Pause</source>
+        <translation>Пуск / &amp;пауза</translation>
+    </message>
+    <message>
+        <source>Move the chosen joint variable by itself, or stop it</source>
+        <translation>Двигать выбранную обобщённую координату автоматически или остановить её</translation>
+    </message>
+    <message>
+        <source>&amp;Bookmarks</source>
+        <translation>&amp;Закладки</translation>
+    </message>
+    <message>
+        <source>&amp;Add Bookmark</source>
+        <translation>&amp;Добавить закладку</translation>
+    </message>
+    <message>
+        <source>Keep this pose to come back to it (saved with the design)</source>
+        <translation>Запомнить это положение, чтобы вернуться к нему (сохраняется вместе с конструкцией)</translation>
+    </message>
+    <message>
+        <source>&amp;Previous Bookmark</source>
+        <translation>&amp;Предыдущая закладка</translation>
+    </message>
+    <message>
+        <source>&amp;Next Bookmark</source>
+        <translation>&amp;Следующая закладка</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Current Bookmark</source>
+        <translation>&amp;Удалить текущую закладку</translation>
+    </message>
+    <message>
+        <source>Bookmark %1 kept: %2</source>
+        <translation>Закладка %1 сохранена: %2</translation>
+    </message>
+    <message>
+        <source>Bookmark %1 of %2: %3</source>
+        <translation>Закладка %1 из %2: %3</translation>
+    </message>
+    <message>
+        <source>No bookmarks yet: Bookmarks ▸ Add Bookmark (Ctrl+B) keeps the pose shown.</source>
+        <translation>Закладок пока нет: Закладки ▸ Добавить закладку (Ctrl+B) запоминает показанное положение.</translation>
+    </message>
+    <message>
+        <source>&amp;Presentation Mode</source>
+        <translation>Режим &amp;презентации</translation>
+    </message>
+    <message>
+        <source>Full screen, large text, high contrast: the linkage, its plot and the sliders (F5; Esc leaves)</source>
+        <translation>Во весь экран, крупный текст, высокий контраст: механизм, его график и ползунки (F5; выход — Esc)</translation>
+    </message>
+    <message>
+        <source>&amp;Text Size</source>
+        <translation>Размер &amp;текста</translation>
+    </message>
+    <message>
+        <source>Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks.</source>
+        <translation>Режим презентации: выход — Esc или F5; Page Up и Page Down листают закладки.</translation>
     </message>
 </context>
 <context>
@@ -4954,6 +5038,88 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::PlayBar</name>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Пуск</translation>
+    </message>
+    <message>
+        <source>/s</source>
+        <translation>/с</translation>
+    </message>
+    <message>
+        <source>Play: move the chosen joint variable by itself (stops at a limit or before a singular pose)</source>
+        <translation>Пуск: выбранная обобщённая координата движется сама (останавливается на пределе или перед особым положением)</translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation>от</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>до</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>скорость</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>По кругу</translation>
+    </message>
+    <message>
+        <source>Forth and back</source>
+        <translation>Туда и обратно</translation>
+    </message>
+    <message>
+        <source>Once</source>
+        <translation>Один раз</translation>
+    </message>
+    <message>
+        <source>At the end of the range: start again, turn back, or stop</source>
+        <translation>В конце диапазона: начать сначала, повернуть обратно или остановиться</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Player</name>
+    <message>
+        <source>inverse</source>
+        <translation>обратной кинематики</translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation>прямой кинематики</translation>
+    </message>
+    <message>
+        <source>combined</source>
+        <translation>комбинированное</translation>
+    </message>
+    <message>
+        <source>close</source>
+        <translation>рядом</translation>
+    </message>
+    <message>
+        <source>Play needs a range: “from” must be below “to” for %1, and the speed above 0.</source>
+        <translation>Для воспроизведения нужен диапазон: для %1 значение «от» должно быть меньше «до», а скорость — больше 0.</translation>
+    </message>
+    <message>
+        <source>Play stopped before a singular pose (%1) at %2 = %3.</source>
+        <translation>Воспроизведение остановлено перед особым положением (%1) при %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Play reached the end of its range.</source>
+        <translation>Воспроизведение дошло до конца диапазона.</translation>
+    </message>
+    <message>
+        <source>Play turned back: %1</source>
+        <translation>Воспроизведение повернуло обратно: %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::Renderer3D</name>
     <message>
         <source>No OpenGL context is current.</source>
@@ -5084,8 +5250,8 @@ Please verify the correct file name was given.</source>
         <translation>выход</translation>
     </message>
     <message>
-        <source>Drag to set %1 (%2)</source>
-        <translation>Перетащите, чтобы задать %1 (%2)</translation>
+        <source>Drag to set %1 (%2), from %3 to %4</source>
+        <translation>Перетащите, чтобы задать %1 (%2), от %3 до %4</translation>
     </message>
 </context>
 <context>
@@ -5373,6 +5539,22 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Give either the actuated inputs or the outputs of the pose, not both.</source>
         <translation>Задайте либо приводные (входные), либо выходные координаты положения, но не те и другие вместе.</translation>
+    </message>
+    <message>
+        <source>%1: “bookmarks” is not a list.</source>
+        <translation>%1: «bookmarks» не является списком.</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 bookmarks.</source>
+        <translation>В %1 больше %2 закладок.</translation>
+    </message>
+    <message>
+        <source>%1: a bookmark&apos;s name is longer than %2 characters.</source>
+        <translation>%1: имя закладки длиннее %2 символов.</translation>
+    </message>
+    <message>
+        <source>%1: bookmark “%2” has an invalid pose value &apos;%3&apos;.</source>
+        <translation>%1: в закладке «%2» недопустимое значение положения «%3».</translation>
     </message>
 </context>
 <context>

@@ -3650,6 +3650,26 @@ Please verify the correct file name was given.</source>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Сингуларан положај (комбиновани): механизмом се овде не може управљати.</translation>
     </message>
+    <message>
+        <source>A design keeps at most %1 bookmarks: remove one first.</source>
+        <translation>Конструкција чува највише %1 обележивача: прво уклоните један.</translation>
+    </message>
+    <message>
+        <source>Add bookmark “%1”</source>
+        <translation>Додај обележивач „%1”</translation>
+    </message>
+    <message>
+        <source>There is no bookmark %1.</source>
+        <translation>Нема обележивача %1.</translation>
+    </message>
+    <message>
+        <source>Remove bookmark “%1”</source>
+        <translation>Уклони обележивач „%1”</translation>
+    </message>
+    <message>
+        <source>Bookmark “%1”: %2</source>
+        <translation>Обележивач „%1”: %2</translation>
+    </message>
 </context>
 <context>
     <name>pkm::FormWorkspaceView</name>
@@ -4232,6 +4252,70 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделира механизме ова четири документа: активни П-зглоб (1), MOMA (2), O-X glide (3), зглобни четвороугао и формуле покретљивости (4). Где је штампана формула или број погрешан, програм користи исправљени; одељак README-а о математици наводи свако исправљање.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Play Toolbar</source>
+        <translation>Трака за покретање</translation>
+    </message>
+    <message>
+        <source>Play / &amp;Pause</source>
+        <translation>Покрени / &amp;пауза</translation>
+    </message>
+    <message>
+        <source>Move the chosen joint variable by itself, or stop it</source>
+        <translation>Покреће изабрану променљиву зглоба саму од себе или је зауставља</translation>
+    </message>
+    <message>
+        <source>&amp;Bookmarks</source>
+        <translation>&amp;Обележивачи</translation>
+    </message>
+    <message>
+        <source>&amp;Add Bookmark</source>
+        <translation>&amp;Додај обележивач</translation>
+    </message>
+    <message>
+        <source>Keep this pose to come back to it (saved with the design)</source>
+        <translation>Запамти овај положај да му се вратиш (чува се уз конструкцију)</translation>
+    </message>
+    <message>
+        <source>&amp;Previous Bookmark</source>
+        <translation>&amp;Претходни обележивач</translation>
+    </message>
+    <message>
+        <source>&amp;Next Bookmark</source>
+        <translation>&amp;Следећи обележивач</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Current Bookmark</source>
+        <translation>&amp;Уклони тренутни обележивач</translation>
+    </message>
+    <message>
+        <source>Bookmark %1 kept: %2</source>
+        <translation>Обележивач %1 запамћен: %2</translation>
+    </message>
+    <message>
+        <source>Bookmark %1 of %2: %3</source>
+        <translation>Обележивач %1 од %2: %3</translation>
+    </message>
+    <message>
+        <source>No bookmarks yet: Bookmarks ▸ Add Bookmark (Ctrl+B) keeps the pose shown.</source>
+        <translation>Још нема обележивача: Обележивачи ▸ Додај обележивач (Ctrl+B) памти приказани положај.</translation>
+    </message>
+    <message>
+        <source>&amp;Presentation Mode</source>
+        <translation>Режим &amp;презентације</translation>
+    </message>
+    <message>
+        <source>Full screen, large text, high contrast: the linkage, its plot and the sliders (F5; Esc leaves)</source>
+        <translation>Цео екран, крупан текст, висок контраст: механизам, његов дијаграм и клизачи (F5; излаз Esc)</translation>
+    </message>
+    <message>
+        <source>&amp;Text Size</source>
+        <translation>Величина &amp;текста</translation>
+    </message>
+    <message>
+        <source>Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks.</source>
+        <translation>Режим презентације: излаз Esc или F5; Page Up и Page Down листају обележиваче.</translation>
     </message>
 </context>
 <context>
@@ -4954,6 +5038,88 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::PlayBar</name>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Покрени</translation>
+    </message>
+    <message>
+        <source>/s</source>
+        <translation>/s</translation>
+    </message>
+    <message>
+        <source>Play: move the chosen joint variable by itself (stops at a limit or before a singular pose)</source>
+        <translation>Покрени: изабрана променљива зглоба се креће сама (зауставља се на граници или пре сингуларног положаја)</translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation>од</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>до</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>брзина</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>У круг</translation>
+    </message>
+    <message>
+        <source>Forth and back</source>
+        <translation>Напред и назад</translation>
+    </message>
+    <message>
+        <source>Once</source>
+        <translation>Једном</translation>
+    </message>
+    <message>
+        <source>At the end of the range: start again, turn back, or stop</source>
+        <translation>На крају опсега: почни поново, врати се или стани</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Player</name>
+    <message>
+        <source>inverse</source>
+        <translation>инверзне кинематике</translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation>директне кинематике</translation>
+    </message>
+    <message>
+        <source>combined</source>
+        <translation>комбиновани</translation>
+    </message>
+    <message>
+        <source>close</source>
+        <translation>близу</translation>
+    </message>
+    <message>
+        <source>Play needs a range: “from” must be below “to” for %1, and the speed above 0.</source>
+        <translation>За покретање је потребан опсег: за %1 „од” мора бити мање од „до”, а брзина већа од 0.</translation>
+    </message>
+    <message>
+        <source>Play stopped before a singular pose (%1) at %2 = %3.</source>
+        <translation>Покретање је заустављено пре сингуларног положаја (%1) при %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Play reached the end of its range.</source>
+        <translation>Покретање је стигло до краја опсега.</translation>
+    </message>
+    <message>
+        <source>Play turned back: %1</source>
+        <translation>Покретање се вратило назад: %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::Renderer3D</name>
     <message>
         <source>No OpenGL context is current.</source>
@@ -5084,8 +5250,8 @@ Please verify the correct file name was given.</source>
         <translation>излаз</translation>
     </message>
     <message>
-        <source>Drag to set %1 (%2)</source>
-        <translation>Превуците да бисте задали %1 (%2)</translation>
+        <source>Drag to set %1 (%2), from %3 to %4</source>
+        <translation>Превуците да подесите %1 (%2), од %3 до %4</translation>
     </message>
 </context>
 <context>
@@ -5373,6 +5539,22 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Give either the actuated inputs or the outputs of the pose, not both.</source>
         <translation>Задајте или погонске (улазне) или излазне координате положаја, али не обе.</translation>
+    </message>
+    <message>
+        <source>%1: “bookmarks” is not a list.</source>
+        <translation>%1: „bookmarks” није листа.</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 bookmarks.</source>
+        <translation>%1 има више од %2 обележивача.</translation>
+    </message>
+    <message>
+        <source>%1: a bookmark&apos;s name is longer than %2 characters.</source>
+        <translation>%1: име обележивача је дуже од %2 знакова.</translation>
+    </message>
+    <message>
+        <source>%1: bookmark “%2” has an invalid pose value &apos;%3&apos;.</source>
+        <translation>%1: обележивач „%2” има неважећу вредност положаја „%3”.</translation>
     </message>
 </context>
 <context>

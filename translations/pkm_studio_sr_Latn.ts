@@ -3650,6 +3650,26 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Singularan položaj (kombinovani): mehanizmom se ovde ne može upravljati.</translation>
     </message>
+    <message>
+        <source>A design keeps at most %1 bookmarks: remove one first.</source>
+        <translation>Konstrukcija čuva najviše %1 obeleživača: prvo uklonite jedan.</translation>
+    </message>
+    <message>
+        <source>Add bookmark “%1”</source>
+        <translation>Dodaj obeleživač „%1”</translation>
+    </message>
+    <message>
+        <source>There is no bookmark %1.</source>
+        <translation>Nema obeleživača %1.</translation>
+    </message>
+    <message>
+        <source>Remove bookmark “%1”</source>
+        <translation>Ukloni obeleživač „%1”</translation>
+    </message>
+    <message>
+        <source>Bookmark “%1”: %2</source>
+        <translation>Obeleživač „%1”: %2</translation>
+    </message>
 </context>
 <context>
     <name>pkm::FormWorkspaceView</name>
@@ -4232,6 +4252,70 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio modelira mehanizme ova četiri dokumenta: aktivni P-zglob (1), MOMA (2), O-X glide (3), zglobni četvorougao i formule pokretljivosti (4). Gde je štampana formula ili broj pogrešan, program koristi ispravljeni; odeljak README-a o matematici navodi svako ispravljanje.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Play Toolbar</source>
+        <translation>Traka za pokretanje</translation>
+    </message>
+    <message>
+        <source>Play / &amp;Pause</source>
+        <translation>Pokreni / &amp;pauza</translation>
+    </message>
+    <message>
+        <source>Move the chosen joint variable by itself, or stop it</source>
+        <translation>Pokreće izabranu promenljivu zgloba samu od sebe ili je zaustavlja</translation>
+    </message>
+    <message>
+        <source>&amp;Bookmarks</source>
+        <translation>&amp;Obeleživači</translation>
+    </message>
+    <message>
+        <source>&amp;Add Bookmark</source>
+        <translation>&amp;Dodaj obeleživač</translation>
+    </message>
+    <message>
+        <source>Keep this pose to come back to it (saved with the design)</source>
+        <translation>Zapamti ovaj položaj da mu se vratiš (čuva se uz konstrukciju)</translation>
+    </message>
+    <message>
+        <source>&amp;Previous Bookmark</source>
+        <translation>&amp;Prethodni obeleživač</translation>
+    </message>
+    <message>
+        <source>&amp;Next Bookmark</source>
+        <translation>&amp;Sledeći obeleživač</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Current Bookmark</source>
+        <translation>&amp;Ukloni trenutni obeleživač</translation>
+    </message>
+    <message>
+        <source>Bookmark %1 kept: %2</source>
+        <translation>Obeleživač %1 zapamćen: %2</translation>
+    </message>
+    <message>
+        <source>Bookmark %1 of %2: %3</source>
+        <translation>Obeleživač %1 od %2: %3</translation>
+    </message>
+    <message>
+        <source>No bookmarks yet: Bookmarks ▸ Add Bookmark (Ctrl+B) keeps the pose shown.</source>
+        <translation>Još nema obeleživača: Obeleživači ▸ Dodaj obeleživač (Ctrl+B) pamti prikazani položaj.</translation>
+    </message>
+    <message>
+        <source>&amp;Presentation Mode</source>
+        <translation>Režim &amp;prezentacije</translation>
+    </message>
+    <message>
+        <source>Full screen, large text, high contrast: the linkage, its plot and the sliders (F5; Esc leaves)</source>
+        <translation>Ceo ekran, krupan tekst, visok kontrast: mehanizam, njegov dijagram i klizači (F5; izlaz Esc)</translation>
+    </message>
+    <message>
+        <source>&amp;Text Size</source>
+        <translation>Veličina &amp;teksta</translation>
+    </message>
+    <message>
+        <source>Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks.</source>
+        <translation>Režim prezentacije: izlaz Esc ili F5; Page Up i Page Down listaju obeleživače.</translation>
     </message>
 </context>
 <context>
@@ -4954,6 +5038,88 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
 </context>
 <context>
+    <name>pkm::PlayBar</name>
+    <message>
+        <source>Pause</source>
+        <translation>Pauza</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Pokreni</translation>
+    </message>
+    <message>
+        <source>/s</source>
+        <translation>/s</translation>
+    </message>
+    <message>
+        <source>Play: move the chosen joint variable by itself (stops at a limit or before a singular pose)</source>
+        <translation>Pokreni: izabrana promenljiva zgloba se kreće sama (zaustavlja se na granici ili pre singularnog položaja)</translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation>od</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>do</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>brzina</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>U krug</translation>
+    </message>
+    <message>
+        <source>Forth and back</source>
+        <translation>Napred i nazad</translation>
+    </message>
+    <message>
+        <source>Once</source>
+        <translation>Jednom</translation>
+    </message>
+    <message>
+        <source>At the end of the range: start again, turn back, or stop</source>
+        <translation>Na kraju opsega: počni ponovo, vrati se ili stani</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::Player</name>
+    <message>
+        <source>inverse</source>
+        <translation>inverzne kinematike</translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation>direktne kinematike</translation>
+    </message>
+    <message>
+        <source>combined</source>
+        <translation>kombinovani</translation>
+    </message>
+    <message>
+        <source>close</source>
+        <translation>blizu</translation>
+    </message>
+    <message>
+        <source>Play needs a range: “from” must be below “to” for %1, and the speed above 0.</source>
+        <translation>Za pokretanje je potreban opseg: za %1 „od” mora biti manje od „do”, a brzina veća od 0.</translation>
+    </message>
+    <message>
+        <source>Play stopped before a singular pose (%1) at %2 = %3.</source>
+        <translation>Pokretanje je zaustavljeno pre singularnog položaja (%1) pri %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Play reached the end of its range.</source>
+        <translation>Pokretanje je stiglo do kraja opsega.</translation>
+    </message>
+    <message>
+        <source>Play turned back: %1</source>
+        <translation>Pokretanje se vratilo nazad: %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::Renderer3D</name>
     <message>
         <source>No OpenGL context is current.</source>
@@ -5084,8 +5250,8 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>izlaz</translation>
     </message>
     <message>
-        <source>Drag to set %1 (%2)</source>
-        <translation>Prevucite da biste zadali %1 (%2)</translation>
+        <source>Drag to set %1 (%2), from %3 to %4</source>
+        <translation>Prevucite da podesite %1 (%2), od %3 do %4</translation>
     </message>
 </context>
 <context>
@@ -5373,6 +5539,22 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Give either the actuated inputs or the outputs of the pose, not both.</source>
         <translation>Zadajte ili pogonske (ulazne) ili izlazne koordinate položaja, ali ne obe.</translation>
+    </message>
+    <message>
+        <source>%1: “bookmarks” is not a list.</source>
+        <translation>%1: „bookmarks” nije lista.</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 bookmarks.</source>
+        <translation>%1 ima više od %2 obeleživača.</translation>
+    </message>
+    <message>
+        <source>%1: a bookmark&apos;s name is longer than %2 characters.</source>
+        <translation>%1: ime obeleživača je duže od %2 znakova.</translation>
+    </message>
+    <message>
+        <source>%1: bookmark “%2” has an invalid pose value &apos;%3&apos;.</source>
+        <translation>%1: obeleživač „%2” ima nevažeću vrednost položaja „%3”.</translation>
     </message>
 </context>
 <context>

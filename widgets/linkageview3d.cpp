@@ -1,11 +1,12 @@
 #include "linkageview3d.h"
 
+#include "flowlayout.h"
+
 #include <QElapsedTimer>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFrame>
-#include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QInputDialog>
@@ -355,7 +356,7 @@ View3DPanel::View3DPanel(QWidget *parent)
     : QWidget(parent)
     , m_view(new LinkageView3D(this))
 {
-    auto *bar = new QHBoxLayout;
+    auto *bar = new FlowLayout; // wraps on a narrow screen rather than widening the window
     bar->setContentsMargins(6, 4, 6, 4);
     bar->setSpacing(4);
     auto addButton = [&](const QString &name) {
@@ -401,7 +402,6 @@ View3DPanel::View3DPanel(QWidget *parent)
     connect(m_view, &LinkageView3D::projectionChanged, m_perspectiveButton, [this](Camera3D::Projection projection) {
         m_perspectiveButton->setChecked(projection == Camera3D::Projection::Perspective);
     });
-    bar->addStretch(1);
     m_saveButton = addButton(QStringLiteral("savePicture"));
     connect(m_saveButton, &QToolButton::clicked, this, &View3DPanel::savePictureAs);
     retranslate();

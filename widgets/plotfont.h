@@ -1,5 +1,8 @@
 #pragma once
-/// Fonts of the plots: a base font at a size in points, for the classroom projector.
+/// Fonts of the plots: a base font at a size in points, for the classroom projector, times the
+/// text size the user chose (textscale.h).
+
+#include "textscale.h"
 
 #include <QFont>
 
@@ -8,7 +11,7 @@ namespace pkm {
 inline QFont fontOf(const QFont &base, double points, bool bold = false)
 {
     QFont font(base);
-    font.setPointSizeF(points);
+    font.setPointSizeF(points * textscale::factor());
     font.setBold(bold);
     return font;
 }

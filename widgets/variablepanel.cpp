@@ -7,6 +7,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QSignalBlocker>
+#include <QResizeEvent>
 #include <QSlider>
 
 #include <cmath>
@@ -28,6 +29,7 @@ void VariablePanel::setMechanism(const MechanismPtr &mechanism)
     if (rebuildNeeded)
         rebuild();
     updateRanges();
+    fitLimits();
 }
 
 void VariablePanel::rebuild()
@@ -45,13 +47,16 @@ void VariablePanel::rebuild()
         Row row;
         row.name = new QLabel(this);
         row.name->setFont(big);
+        // The role wraps under the symbol where the panel is narrow (a projector at 1024×768)
+        // rather than widening the window.
+        row.name->setWordWrap(true);
         row.minimum = new QLabel(this);
         row.maximum = new QLabel(this);
         row.minimum->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         row.slider = new QSlider(Qt::Horizontal, this);
         row.slider->setObjectName(QStringLiteral("slider_") + toQString(info.name));
         row.slider->setRange(0, sliderSteps);
-        row.slider->setMinimumWidth(120);
+        row.slider->setMinimumWidth(60);
         row.spinBox = new QDoubleSpinBox(this);
         row.spinBox->setObjectName(QStringLiteral("spin_") + toQString(info.name));
         row.spinBox->setDecimals(info.decimals);
@@ -59,7 +64,7 @@ void VariablePanel::rebuild()
         row.spinBox->setAccelerated(true);
         row.spinBox->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue); // past a limit: stop at it
         row.spinBox->setFont(big);
-        row.spinBox->setMinimumWidth(140);
+        row.spinBox->setMinimumWidth(110);
         row.spinBox->setAlignment(Qt::AlignRight);
 
         connect(row.slider, &QSlider::valueChanged, this, [this, i](int position) {
@@ -95,7 +100,6 @@ void VariablePanel::describe(int i)
     const QString role = info.actuated ? tr("input, actuated") : tr("output");
     row.name->setText(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>").arg(symbol.toHtmlEscaped(), role));
     row.name->setToolTip(label);
-    row.slider->setToolTip(tr("Drag to set %1 (%2)").arg(symbol, label));
     const QString unit = unitText(info.unit);
     const QSignalBlocker blocker(row.spinBox);
     row.spinBox->setSuffix(unit.startsWith(QChar(0x00B0)) ? unit : QLatin1Char(' ') + unit);
@@ -125,6 +129,8 @@ void VariablePanel::updateRanges()
         Row &row = m_rows[i];
         row.minimum->setText(formatQuantity(range.min, info.unit, 1));
         row.maximum->setText(formatQuantity(range.max, info.unit, 1));
+        row.slider->setToolTip(tr("Drag to set %1 (%2), from %3 to %4")
+                                   .arg(toQString(info.symbol), coreLabel(info.label), row.minimum->text(), row.maximum->text()));
         // Round the spin box limits outwards to its decimals, so the exact limit is reachable.
         const double scale = std::pow(10.0, info.decimals);
         const double lo = info.unit.toDisplay(range.min), hi = info.unit.toDisplay(range.max);
@@ -133,6 +139,46 @@ void VariablePanel::updateRanges()
         row.spinBox->setSingleStep(std::pow(10.0, std::floor(std::log10(std::max(hi - lo, 1e-9))) - 2));
     }
     m_updating = false;
+}
+
+int VariablePanel::limitsWidth() const
+{
+    int minimum = 0, maximum = 0;
+    for (const Row &row : m_rows) {
+        minimum = std::max(minimum, row.minimum->sizeHint().width());
+        maximum = std::max(maximum, row.maximum->sizeHint().width());
+    }
+    return minimum + maximum + 2 * m_grid->horizontalSpacing();
+}
+
+QSize VariablePanel::minimumSizeHint() const
+{
+    QSize size = QWidget::minimumSizeHint();
+    if (!m_rows.isEmpty() && !m_rows.first().minimum->isHidden())
+        size.rwidth() -= limitsWidth();
+    return size;
+}
+
+void VariablePanel::fitLimits()
+{
+    if (m_rows.isEmpty())
+        return;
+    const bool shown = !m_rows.first().minimum->isHidden();
+    const int without = QWidget::minimumSizeHint().width() - (shown ? limitsWidth() : 0);
+    // A margin against flicker: shown again only with room to spare.
+    const bool show = width() >= without + limitsWidth() + (shown ? 0 : 20);
+    if (show == shown)
+        return;
+    for (Row &row : m_rows) {
+        row.minimum->setVisible(show);
+        row.maximum->setVisible(show);
+    }
+}
+
+void VariablePanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    fitLimits();
 }
 
 void VariablePanel::setPose(const Pose &pose)

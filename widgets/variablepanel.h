@@ -28,6 +28,9 @@ public:
     QSlider *slider(int variable) const { return m_rows.value(variable).slider; }
     QDoubleSpinBox *spinBox(int variable) const { return m_rows.value(variable).spinBox; }
     static constexpr int sliderSteps = 10000;
+    /// Narrower than with the limits beside the sliders: they hide (their values stay in the
+    /// spin boxes' ranges and tooltips) rather than widen the window.
+    QSize minimumSizeHint() const override;
 
 signals:
     /// The user moved variable `variable` (index into variableInfo()) to `value` (core units).
@@ -37,6 +40,7 @@ signals:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     struct Row {
@@ -50,6 +54,10 @@ private:
     /// The texts of row i (its name, role, tooltips and unit) in the current language.
     void describe(int i);
     void updateRanges();
+    /// The width of the limit labels' two columns with their spacing.
+    int limitsWidth() const;
+    /// Shows the limit labels where the panel is wide enough for them.
+    void fitLimits();
 
     MechanismPtr m_mechanism;
     QGridLayout *m_grid = nullptr;

@@ -67,4 +67,23 @@ bool SetParameterCommand::mergeWith(const QUndoCommand *other)
     return true;
 }
 
+SetBookmarksCommand::SetBookmarksCommand(Document *document, QList<Bookmark> before, QList<Bookmark> after,
+                                         TextMaker text)
+    : m_document(document)
+    , m_before(std::move(before))
+    , m_after(std::move(after))
+{
+    setTextMaker(std::move(text));
+}
+
+void SetBookmarksCommand::undo()
+{
+    m_document->applyBookmarks(m_before);
+}
+
+void SetBookmarksCommand::redo()
+{
+    m_document->applyBookmarks(m_after);
+}
+
 } // namespace pkm

@@ -64,4 +64,19 @@ private:
     Design m_after;
 };
 
+/// Adds or removes pose bookmarks: only the list changes, so undoing it leaves the pose and
+/// the maps as they are.
+class SetBookmarksCommand : public TranslatableCommand
+{
+public:
+    SetBookmarksCommand(Document *document, QList<Bookmark> before, QList<Bookmark> after, TextMaker text);
+    void undo() override;
+    void redo() override;
+
+private:
+    Document *m_document;
+    QList<Bookmark> m_before;
+    QList<Bookmark> m_after;
+};
+
 } // namespace pkm

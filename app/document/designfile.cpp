@@ -135,7 +135,47 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
         }
         design.pose = *solved;
     }
+    // Bookmarks are read as they are: one that no longer solves (the file was edited by hand)
+    // says so when it is chosen, rather than refusing the whole design.
+    const QJsonValue bookmarks = root.value(QStringLiteral("bookmarks"));
+    if (!bookmarks.isUndefined() && !bookmarks.isArray())
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: “bookmarks” is not a list.").arg(origin));
+    if (bookmarks.toArray().size() > maxBookmarks) {
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 has more than %2 bookmarks.")
+                                       .arg(origin, numberText(maxBookmarks)));
+    }
+    for (const QJsonValue &entry : bookmarks.toArray()) {
+        const QJsonObject object = entry.toObject();
+        Bookmark bookmark;
+        bookmark.name = object.value(QStringLiteral("name")).toString();
+        if (bookmark.name.size() > maxBookmarkName) {
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: a bookmark's name is longer than %2 characters.")
+                                           .arg(origin, numberText(maxBookmarkName)));
+        }
+        const QJsonObject values = object.value(QStringLiteral("pose")).toObject();
+        for (auto it = values.begin(); it != values.end(); ++it) {
+            if (!it.value().isDouble() || design.mechanism->variableIndex(it.key().toStdString()) < 0) {
+                return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: bookmark “%2” has an invalid pose value '%3'.")
+                                               .arg(origin, bookmark.name, it.key()));
+            }
+            bookmark.pose.append({it.key(), it.value().toDouble()});
+        }
+        design.bookmarks.append(bookmark);
+    }
     return design;
+}
+
+Bookmark bookmarkOf(const Mechanism &mechanism, const Pose &pose, const QString &name)
+{
+    Bookmark bookmark;
+    bookmark.name = name;
+    const auto &variables = mechanism.variableInfo();
+    // At the 15 digits a file keeps, so that a saved bookmark reads back as the same one.
+    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
+        const double display = variables[i].unit.toDisplay(mechanism.variableValue(pose, i));
+        bookmark.pose.append({toQString(variables[i].name), QString::number(display, 'g', 15).toDouble()});
+    }
+    return bookmark;
 }
 
 namespace {
@@ -245,6 +285,16 @@ QByteArray serialize(const Design &design)
                     shown(variables[i].unit.toDisplay(design.mechanism->variableValue(design.pose, i))));
     }
     root.insert(QStringLiteral("pose"), pose);
+    if (!design.bookmarks.isEmpty()) {
+        QJsonArray bookmarks;
+        for (const Bookmark &bookmark : design.bookmarks) {
+            QJsonObject values;
+            for (const auto &[name, value] : bookmark.pose)
+                values.insert(name, shown(value));
+            bookmarks.append(QJsonObject {{QStringLiteral("name"), bookmark.name}, {QStringLiteral("pose"), values}});
+        }
+        root.insert(QStringLiteral("bookmarks"), bookmarks);
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 

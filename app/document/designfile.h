@@ -11,12 +11,21 @@
 
 namespace pkm {
 
+/// A pose the user keeps to come back to (a teacher's bookmarks, stepped through in class):
+/// its name and every joint variable in display units, as the design file's pose.
+struct Bookmark {
+    QString name;
+    QList<QPair<QString, double>> pose;
+    bool operator==(const Bookmark &) const = default;
+};
+
 struct Design {
     QString id;          ///< preset id, or empty for a user file
     QString title;
     QString description;
     MechanismPtr mechanism;
     Pose pose;
+    QList<Bookmark> bookmarks;
 };
 
 struct PresetInfo {
@@ -35,6 +44,13 @@ inline constexpr int formatVersion = 2;
 /// A saved output may differ from the one its inputs give by this much (relative, display
 /// units) before the file is refused as inconsistent.
 inline constexpr double savedPoseTolerance = 1e-6;
+/// A design keeps at most this many bookmarks, each name at most this long (a file that says
+/// more is refused: memory stays bounded whatever a file says).
+inline constexpr int maxBookmarks = 100;
+inline constexpr int maxBookmarkName = 200;
+
+/// The bookmark of `pose` called `name`: every joint variable in display units.
+Bookmark bookmarkOf(const Mechanism &mechanism, const Pose &pose, const QString &name);
 
 /// Parses a design; `origin` names the file or preset in messages.
 Result<Design> parse(const QByteArray &json, const QString &origin);

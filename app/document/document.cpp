@@ -195,6 +195,55 @@ void Document::applyDesign(const Design &design)
     emit designChanged();
 }
 
+Result<bool> Document::addBookmark(const QString &name)
+{
+    if (m_design.bookmarks.size() >= designfile::maxBookmarks) {
+        return Failure{FailureKind::InvalidParameter, {},
+                       tr("A design keeps at most %1 bookmarks: remove one first.").arg(designfile::maxBookmarks).toStdString()};
+    }
+    QList<Bookmark> after = m_design.bookmarks;
+    after.append(designfile::bookmarkOf(*m_design.mechanism, m_design.pose, name.left(designfile::maxBookmarkName)));
+    m_undoStack.push(new SetBookmarksCommand(this, m_design.bookmarks, after,
+                                             [name] { return tr("Add bookmark “%1”").arg(name); }));
+    return true;
+}
+
+Result<bool> Document::removeBookmark(int index)
+{
+    if (index < 0 || index >= m_design.bookmarks.size())
+        return Failure{FailureKind::InvalidParameter, {}, tr("There is no bookmark %1.").arg(index + 1).toStdString()};
+    QList<Bookmark> after = m_design.bookmarks;
+    const QString name = after.takeAt(index).name;
+    m_undoStack.push(new SetBookmarksCommand(this, m_design.bookmarks, after,
+                                             [name] { return tr("Remove bookmark “%1”").arg(name); }));
+    return true;
+}
+
+Result<Pose> Document::goToBookmark(int index)
+{
+    if (index < 0 || index >= m_design.bookmarks.size())
+        return Failure{FailureKind::InvalidParameter, {}, tr("There is no bookmark %1.").arg(index + 1).toStdString()};
+    const Bookmark &bookmark = m_design.bookmarks[index];
+    // The inputs decide, the outputs must agree (as in a design file): a bookmark of another
+    // assembly mode, or one the design has changed under, is refused rather than reached in
+    // a pose it does not show.
+    auto solved = designfile::solveSavedPose(*m_design.mechanism, m_design.pose, bookmark.pose);
+    if (!solved) {
+        Failure failure = solved.failure();
+        failure.message = tr("Bookmark “%1”: %2").arg(bookmark.name, QString::fromStdString(failure.message)).toStdString();
+        return failure;
+    }
+    m_drivenVariable = 0;
+    applyPose(*solved);
+    return solved;
+}
+
+void Document::applyBookmarks(const QList<Bookmark> &bookmarks)
+{
+    m_design.bookmarks = bookmarks;
+    emit bookmarksChanged();
+}
+
 void Document::applyPose(const Pose &pose)
 {
     m_design.pose = pose;

@@ -48,6 +48,18 @@ public:
     /// Why the pose cannot go further, when a variable sits at a limit or near a singularity;
     /// empty otherwise.
     QString limitNote() const;
+
+    /// The design's pose bookmarks (designfile.h), kept in its file.
+    const QList<Bookmark> &bookmarks() const { return m_design.bookmarks; }
+    /// Keeps the current pose as a bookmark called `name` (undoable); refused past
+    /// designfile::maxBookmarks.
+    Result<bool> addBookmark(const QString &name);
+    /// Removes bookmark `index` (undoable).
+    Result<bool> removeBookmark(int index);
+    /// Moves to bookmark `index` (a pose move, like a slider's); the failure names the bookmark.
+    Result<Pose> goToBookmark(int index);
+    // Used by the undo commands only.
+    void applyBookmarks(const QList<Bookmark> &bookmarks);
     // Used by the undo commands only.
     void applyDesign(const Design &design);
 
@@ -61,6 +73,8 @@ signals:
     void designChanged();
     /// Only the pose moved: the cheap path for slider drags.
     void poseChanged();
+    /// A bookmark was added or removed (or the design replaced: designChanged says so too).
+    void bookmarksChanged();
 
 private:
     void applyPose(const Pose &pose);

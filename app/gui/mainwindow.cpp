@@ -77,7 +77,7 @@ MainWindow::MainWindow(QWidget *parent)
     });
 
     m_view = new LinkageView(this);
-    m_view->setMinimumSize(340, 300);
+    m_view->setMinimumSize(300, 220); // small enough for 1024×768 beside the docks and a plot
     m_variables = new VariablePanel(this);
     m_modeBar = new ModeBar(this);
 
@@ -207,14 +207,14 @@ void MainWindow::createDocks()
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(330);
+    scroll->setMinimumWidth(270);
     auto *designDock = m_designDock = new QDockWidget(tr("Design"), this);
     designDock->setObjectName(QStringLiteral("designDock"));
     designDock->setWidget(scroll);
     addDockWidget(Qt::LeftDockWidgetArea, designDock);
 
     m_values = new ValuesTable(this);
-    m_values->setMinimumWidth(330);
+    m_values->setMinimumWidth(270);
     auto *valuesDock = m_valuesDock = new QDockWidget(tr("Values at this pose"), this);
     valuesDock->setObjectName(QStringLiteral("valuesDock"));
     valuesDock->setWidget(m_values);
@@ -222,7 +222,7 @@ void MainWindow::createDocks()
     splitDockWidget(designDock, valuesDock, Qt::Vertical);
     // Mobility (issue 6): a tab behind the values, so it takes no room until asked for.
     m_mobility = new MobilityPanel(this);
-    m_mobility->setMinimumWidth(330);
+    m_mobility->setMinimumWidth(270);
     auto *mobilityDock = m_mobilityDock = new QDockWidget(tr("Mobility"), this);
     mobilityDock->setObjectName(QStringLiteral("mobilityDock"));
     mobilityDock->setWidget(m_mobility);
@@ -321,6 +321,9 @@ void MainWindow::createActions()
         languages->addAction(action);
         connect(action, &QAction::triggered, this, [this, code = language.code] { setLanguage(code); });
     }
+
+    createPlayControls(view);
+    createPresentationActions(view);
 
     QMenu *help = menuBar()->addMenu(QString());
     translated(help->menuAction(), QT_TR_NOOP("&Help"));

@@ -4,6 +4,7 @@
 
 #include "export/animation.h"
 #include "mechanism.h"
+#include "scenestyle.h"
 
 #include <QMainWindow>
 #include <QMessageBox>
@@ -19,6 +20,7 @@ class QDockWidget;
 class QLabel;
 class QToolBar;
 class QMenu;
+class QShortcut;
 class QSplitter;
 class QStackedWidget;
 class QTabWidget;
@@ -34,6 +36,8 @@ class ModeBar;
 class ValuesTable;
 class MobilityPanel;
 class VariablePanel;
+class PlayBar;
+class Player;
 class SweepPlotsPanel;
 class WorkspacePanel;
 class View3DPanel;
@@ -99,6 +103,20 @@ public:
     /// writes the GIF to `path`; the status bar says when it is done.
     void exportAnimationTo(const QString &path, AnimationSettings settings);
 
+    /// The Play controls and the player behind them (mainwindowplay.cpp).
+    PlayBar *playBar() const { return m_playBar; }
+    Player *player() const { return m_player; }
+    /// Starts (with the Play bar's settings) or stops Play.
+    void setPlaying(bool play);
+    /// View ▸ Presentation Mode: full screen, high contrast, the docks hidden, text at the
+    /// presentation's size (mainwindowpresentation.cpp).
+    void setPresentationMode(bool on);
+    bool isPresenting() const { return m_presenting; }
+    /// Text at `factor` × its normal size (textscale.h), everywhere in the window.
+    void setTextScale(double factor);
+    /// The bookmark shown last (index into Document::bookmarks()), or -1.
+    int currentBookmark() const { return m_currentBookmark; }
+
     /// Switches the program to the language `code` (language.h) and remembers it.
     void setLanguage(const QString &code);
 
@@ -112,6 +130,18 @@ private:
     /// change of language.
     QAction *translated(QAction *action, const char *source, const char *toolTip = nullptr);
     void createUndoActions();
+    /// The Play toolbar and the Bookmarks menu (mainwindowplay.cpp); Play's actions go into `viewMenu`.
+    void createPlayControls(QMenu *viewMenu);
+    void createPresentationActions(QMenu *viewMenu);
+    /// The linkage view's style at the current text size (and contrast, when presenting).
+    void applySceneStyle();
+    void addBookmark();
+    void goToBookmark(int index);
+    /// The next (+1) or previous (−1) bookmark, round the list.
+    void stepBookmark(int step);
+    void updateBookmarksMenu();
+    /// "θ = 30.0°   d = 183.1 mm": the pose as the status bar shows it.
+    QString poseSummary() const;
     void fillPresetsMenu();
     void retranslate();
     void createDocks();
@@ -186,6 +216,24 @@ private:
     QString m_lastStatus;
     bool m_statusIsError = false;
     bool m_restoredGeometry = false;
+    PlayBar *m_playBar = nullptr;
+    Player *m_player = nullptr;
+    QToolBar *m_playToolBar = nullptr;
+    QAction *m_playAction = nullptr;
+    QMenu *m_bookmarksMenu = nullptr;
+    QAction *m_addBookmarkAction = nullptr;
+    QAction *m_previousBookmarkAction = nullptr;
+    QAction *m_nextBookmarkAction = nullptr;
+    QAction *m_removeBookmarkAction = nullptr;
+    int m_currentBookmark = -1;
+    QFont m_baseFont;       ///< the application's font at 100 %
+    SceneStyle m_baseStyle; ///< the linkage view's style at 100 %
+    QAction *m_presentationAction = nullptr;
+    QMenu *m_textSizeMenu = nullptr;
+    QShortcut *m_leavePresentation = nullptr;
+    bool m_presenting = false;
+    QByteArray m_stateBeforePresentation;
+    bool m_maximizedBeforePresentation = false;
 };
 
 } // namespace pkm

@@ -20,6 +20,7 @@
 #include "export/sheet.h"
 #include "valuestable.h"
 #include "variablepanel.h"
+#include "playbar.h"
 #include "gui/viewpicture.h"
 #include "workspacemapview.h"
 #include "kinds/kindmodule.h"
@@ -67,6 +68,8 @@ bool MainWindow::openDesign(const QString &presetOrPath)
         showStatus(failureText(opened.failure()), true);
         return false;
     }
+    m_currentBookmark = -1; // Page Down starts at the new design's first bookmark
+    updateBookmarksMenu();
     m_view->fitToView();
     return true;
 }
@@ -80,6 +83,9 @@ void MainWindow::onDesignChanged()
     m_designPanel->setMechanism(mechanism);
     m_designPanel->setNote(designfile::presetText(design.title), designfile::presetText(design.description));
     m_variables->setMechanism(mechanism);
+    setPlaying(false); // a new design is a new lesson: Play does not carry on in it
+    m_playBar->setMechanism(mechanism);
+    updateBookmarksMenu();
     m_values->setMechanism(mechanism);
     m_mobility->setMechanism(mechanism);
     // The kind's own panel, else the generic one its outputs allow, else none: a mechanism
@@ -94,6 +100,13 @@ void MainWindow::onDesignChanged()
     if (m_currentPanel) {
         m_currentPanel->setDesign(mechanism, design.title);
         m_plots->setCurrentWidget(m_currentPanel);
+    }
+    // The stack asks for the room of its largest page; only the one shown should count, or
+    // the four-bar's panel keeps the window from fitting a projector while MOMA is open.
+    for (int i = 0; i < m_plots->count(); ++i) {
+        QWidget *page = m_plots->widget(i);
+        page->setSizePolicy(page == m_currentPanel ? QSizePolicy::Preferred : QSizePolicy::Ignored,
+                            page == m_currentPanel ? QSizePolicy::Preferred : QSizePolicy::Ignored);
     }
     m_plots->setVisible(m_currentPanel != nullptr);
     onPoseChanged();
@@ -152,14 +165,7 @@ void MainWindow::onPoseChanged()
     if (m_currentPanel)
         m_currentPanel->setPose(pose);
 
-    QStringList summary;
-    const auto &variables = mechanism->variableInfo();
-    for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
-        summary << QStringLiteral("%1 = %2").arg(toQString(variables[i].symbol),
-                                                 formatQuantity(mechanism->variableValue(pose, i), variables[i].unit,
-                                                                variables[i].decimals));
-    }
-    m_poseLabel->setText(summary.join(QStringLiteral("   ")));
+    m_poseLabel->setText(poseSummary());
 
     updateModes();
     // A pose that arrives is a success: an error about an earlier move (a drag, a map click or a

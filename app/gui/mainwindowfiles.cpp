@@ -254,6 +254,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
         return;
     }
+    setPresentationMode(false); // the layout remembered is the working one, docks and all
     QSettings settings;
     settings.setValue(QStringLiteral("layout/version"), settingsVersion);
     settings.setValue(QStringLiteral("layout/geometry"), saveGeometry());

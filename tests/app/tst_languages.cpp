@@ -133,6 +133,7 @@ QStringList englishWords(const QStringList &texts)
         QStringLiteral("max"), QStringLiteral("rec"), QStringLiteral("cos"), QStringLiteral("sin"),
         QStringLiteral("glide"), QStringLiteral("English"), QStringLiteral("Srpski"), QStringLiteral("latinica"),
         QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Bennett"), QStringLiteral("nbsp"),
+        QStringLiteral("Esc"), QStringLiteral("Page"), QStringLiteral("Down"), // key caps, printed on every keyboard
         QStringLiteral("sub"), QStringLiteral("sup"), QStringLiteral("span"), QStringLiteral("style"),
         QStringLiteral("color"), QStringLiteral("html"), QStringLiteral("href"), QStringLiteral("div"),
         QStringLiteral("font"), QStringLiteral("weight"), QStringLiteral("bold"), QStringLiteral("table"),

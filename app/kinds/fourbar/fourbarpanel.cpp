@@ -117,10 +117,11 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
         const QString name = QString::fromLatin1(linkNames[i]);
         LinkRow &row = m_rows[i];
         auto *label = new QLabel(links);
+        label->setWordWrap(true); // "AB crank" on two lines where the panel is narrow
         row.label = label;
         row.slider = new QSlider(Qt::Horizontal, links);
         row.slider->setObjectName(QStringLiteral("length_") + name);
-        row.slider->setMinimumWidth(80);
+        row.slider->setMinimumWidth(45);
         auto *spin = new LengthSpinBox(links);
         row.spinBox = spin;
         spin->setObjectName(QStringLiteral("lengthSpin_") + name);
@@ -128,7 +129,7 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
         spin->setRange(0.0, 1e5); // 0 is refused by the core with its message
         spin->setSingleStep(1.0);
         spin->setKeyboardTracking(false);
-        spin->setMinimumWidth(100);
+        spin->setMinimumWidth(80);
         label->setBuddy(spin);
         const int r = int(i) / 2, c = (int(i) % 2) * 4;
         grid->addWidget(label, r, c);
@@ -203,6 +204,7 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
     m_transmission = new QLabel(transmission);
     m_transmission->setObjectName(QStringLiteral("transmissionLabel"));
     m_transmission->setFont(fontOf(font(), 14.0, true));
+    m_transmission->setWordWrap(true); // "— poor: below 40°" under the value where narrow
     m_gauge = new TransmissionGauge(transmission);
     m_transmissionRange = new QLabel(transmission);
     m_transmissionRange->setFont(labelFont);
@@ -383,11 +385,13 @@ void FourBarPanel::showDesignInfo()
     const QString name = grashofTitle(g);
     const QString mm = unitText(units::millimetre);
     auto sum = [&mm](const std::pair<double, const char *> &a, const std::pair<double, const char *> &b) {
-        // one unbreakable piece: the label wraps between the sums, not inside one
-        return QStringLiteral("%1 + %2 = %3 + %4 = %5 %6")
-            .arg(QLatin1String(a.second), QLatin1String(b.second), lengthText(a.first), lengthText(b.first),
-                lengthText(a.first + b.first), mm)
-            .replace(QLatin1Char(' '), QChar(0x00A0));
+        // unbreakable pieces: the label wraps between the sums or before a sum's total (on a
+        // narrow projector screen), never inside a term
+        const QChar nbsp(0x00A0);
+        return QStringLiteral("%1 + %2 = %3 + %4 =")
+                   .arg(QLatin1String(a.second), QLatin1String(b.second), lengthText(a.first), lengthText(b.first))
+                   .replace(QLatin1Char(' '), nbsp)
+            + QLatin1Char(' ') + QStringLiteral("%1 %2").arg(lengthText(a.first + b.first), mm).replace(QLatin1Char(' '), nbsp);
     };
     m_grashof->setText(tr("<b>%1</b>: s + l = %2 %3 p + q = %4; %5")
                            .arg(name, sum(s, l), relation.toHtmlEscaped(), sum(p, q), meaning));

@@ -112,7 +112,7 @@ public:
     void setValues(double gamma, double minimum, double maximum);
     double value() const { return m_value; }
     QSize sizeHint() const override { return {320, 50}; }
-    QSize minimumSizeHint() const override { return {200, 50}; }
+    QSize minimumSizeHint() const override { return {140, 50}; }
 
 protected:
     void paintEvent(QPaintEvent *event) override;

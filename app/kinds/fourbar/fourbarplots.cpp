@@ -132,7 +132,7 @@ void FourBarPlots::createPanel(int index)
     p.plot = plot;
     plot->setObjectName(QStringLiteral("fourbarPlot%1").arg(index));
     plot->installEventFilter(this);
-    plot->setMinimumSize(300, 200);
+    plot->setMinimumSize(260, 150);
     const plotstyle::Header header = plotstyle::apply(plot, font());
     p.title = header.title;
     p.subtitle = header.subtitle;

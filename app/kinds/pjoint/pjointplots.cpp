@@ -159,7 +159,7 @@ void PJointPlots::createPanel(int index)
     auto *plot = new QCustomPlot;
     p.plot = plot;
     plot->installEventFilter(this);
-    plot->setMinimumSize(260, 220);
+    plot->setMinimumSize(180, 170);
     // Layers, bottom to top: background, bands, grid, family, main (this design), axes,
     // legend, overlay, cursor (plotstyle.h).
     const plotstyle::Header header = plotstyle::apply(plot, font());

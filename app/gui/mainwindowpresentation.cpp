@@ -1,0 +1,155 @@
+// The main window in front of a class: View ▸ Text Size (100 % to 250 %, remembered) and
+// View ▸ Presentation Mode — full screen, high contrast, the panels reduced to the linkage, its
+// plot or map, large sliders and the Play bar, at a text size of its own.
+
+#include "gui/mainwindow.h"
+
+#include "linkageview.h"
+#include "textscale.h"
+#include "variablepanel.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDockWidget>
+#include <QMenu>
+#include <QSettings>
+#include <QShortcut>
+#include <QToolBar>
+
+#include <cmath>
+
+namespace pkm {
+
+namespace {
+constexpr int textSizes[] = {100, 125, 150, 175, 200, 250};
+/// Settings keys: the normal window's text size and presentation mode's.
+QString textSizeKey(bool presentation)
+{
+    return presentation ? QStringLiteral("presentation/textSize") : QStringLiteral("view/textSize");
+}
+/// Presentation mode starts at 150 %: read from the back of a classroom at 1280×720.
+constexpr int defaultPresentationSize = 150;
+} // namespace
+
+void MainWindow::createPresentationActions(QMenu *viewMenu)
+{
+    m_baseFont = QApplication::font();
+    m_baseStyle = m_view->sceneStyle();
+    viewMenu->addSeparator();
+    m_presentationAction = translated(new QAction(this), QT_TR_NOOP("&Presentation Mode"),
+                                      QT_TR_NOOP("Full screen, large text, high contrast: the linkage, its plot and the sliders (F5; Esc leaves)"));
+    m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
+    m_presentationAction->setCheckable(true);
+    m_presentationAction->setShortcut(QKeySequence(Qt::Key_F5));
+    connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+    viewMenu->addAction(m_presentationAction);
+    // Esc leaves presentation mode, and only then is it taken from the fields and dialogs.
+    m_leavePresentation = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    m_leavePresentation->setEnabled(false);
+    connect(m_leavePresentation, &QShortcut::activated, this, [this] { setPresentationMode(false); });
+
+    m_textSizeMenu = viewMenu->addMenu(QString());
+    m_textSizeMenu->setObjectName(QStringLiteral("textSizeMenu"));
+    translated(m_textSizeMenu->menuAction(), QT_TR_NOOP("&Text Size"));
+    auto *sizes = new QActionGroup(this);
+    for (int percent : textSizes) {
+        QAction *action = m_textSizeMenu->addAction(QStringLiteral("%1 %").arg(percent));
+        action->setObjectName(QStringLiteral("textSize_%1").arg(percent));
+        action->setCheckable(true);
+        action->setData(percent);
+        sizes->addAction(action);
+        connect(action, &QAction::triggered, this, [this, percent] {
+            QSettings().setValue(textSizeKey(m_presenting), percent);
+            setTextScale(percent / 100.0);
+        });
+    }
+    const int remembered = QSettings().value(textSizeKey(false), 100).toInt();
+    setTextScale(remembered / 100.0);
+}
+
+void MainWindow::setTextScale(double factor)
+{
+    const double old = textscale::factor();
+    const double now = textscale::setFactor(factor);
+    // What has a font of its own is scaled; what inherits follows the application's font.
+    textscale::rescale(this, now / old);
+    QFont font = m_baseFont;
+    font.setPointSizeF(m_baseFont.pointSizeF() * now);
+    QApplication::setFont(font);
+    applySceneStyle();
+    for (QAction *action : m_textSizeMenu->actions())
+        action->setChecked(action->data().toInt() == qRound(now * 100));
+}
+
+void MainWindow::applySceneStyle()
+{
+    // Lines grow more slowly than text: at 250 % the bars would otherwise hide the joints.
+    const double text = textscale::factor();
+    const double line = 1.0 + 0.5 * (text - 1.0);
+    SceneStyle style = m_baseStyle;
+    style.fontPixels *= text;
+    style.jointFontPixels *= text;
+    style.groundWidth *= line;
+    style.barWidth *= line;
+    style.pivotRadius *= line;
+    style.arrowLength *= line;
+    style.arrowWidth *= line;
+    if (m_presenting) {
+        // High contrast for a washed-out projector: white ground, black ink, no faint grid.
+        style.background = Qt::white;
+        style.ink = Qt::black;
+        style.dimension = Qt::black;
+        style.gridMinor = QColor(0xf4, 0xf4, 0xf4);
+        style.gridMajor = QColor(0xc8, 0xc8, 0xc8);
+        style.ghostOpacity = 0.5;
+    }
+    m_view->setSceneStyle(style);
+}
+
+void MainWindow::setPresentationMode(bool on)
+{
+    if (on == m_presenting) {
+        m_presentationAction->setChecked(on);
+        return;
+    }
+    m_presenting = on;
+    m_presentationAction->setChecked(on);
+    m_leavePresentation->setEnabled(on);
+    if (on) {
+        m_stateBeforePresentation = saveState();
+        m_maximizedBeforePresentation = isMaximized();
+        for (QDockWidget *dock : findChildren<QDockWidget *>())
+            dock->hide();
+        m_toolBar->hide();
+        m_playToolBar->show();
+        // Large sliders: a handle a hand finds on a touch screen or with a wireless mouse.
+        m_variables->setStyleSheet(QStringLiteral(
+            "QSlider::groove:horizontal { height: 10px; background: #c8c8c8; border-radius: 5px; }"
+            "QSlider::handle:horizontal { width: 30px; margin: -10px 0; background: #1f5fbf; border-radius: 8px; }"));
+        QPalette palette = QApplication::palette();
+        palette.setColor(QPalette::WindowText, Qt::black);
+        palette.setColor(QPalette::Text, Qt::black);
+        palette.setColor(QPalette::ButtonText, Qt::black);
+        palette.setColor(QPalette::Base, Qt::white);
+        palette.setColor(QPalette::Window, Qt::white);
+        setPalette(palette);
+        setTextScale(QSettings().value(textSizeKey(true), defaultPresentationSize).toInt() / 100.0);
+        showFullScreen();
+        showStatus(tr("Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks."));
+    } else {
+        setPalette(QPalette());
+        m_variables->setStyleSheet(QString());
+        setTextScale(QSettings().value(textSizeKey(false), 100).toInt() / 100.0);
+        restoreState(m_stateBeforePresentation); // the docks and toolbars as they were
+        if (m_maximizedBeforePresentation)
+            showMaximized();
+        else
+            showNormal();
+        showStatus(QString());
+    }
+    applySceneStyle();
+    m_view->fitToView();
+}
+
+} // namespace pkm

@@ -1,0 +1,203 @@
+// The main window projected in a classroom: it fits 1024×768 and 1280×720 with no text cut off
+// in any of the four languages, presentation mode shows the linkage, its plot and large text
+// and gives the working layout back, and the text size reaches labels, plots and the drawing.
+#include "gui/mainwindow.h"
+
+#include "document/document.h"
+#include "document/language.h"
+#include "linkageview.h"
+#include "playbar.h"
+#include "textscale.h"
+#include "support/app.h"
+
+#include <qcustomplot.h>
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QGroupBox>
+#include <QLabel>
+#include <QMenu>
+#include <QRegularExpression>
+#include <QScreen>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTest>
+#include <QTextDocument>
+#include <QToolBar>
+
+using namespace pkm;
+using namespace pkm::test;
+
+namespace {
+
+/// The width `label` needs for its text on one line (rich text measured as laid out).
+int neededWidth(const QLabel *label)
+{
+    if (label->wordWrap())
+        return 0;
+    if (Qt::mightBeRichText(label->text()) || label->textFormat() == Qt::RichText) {
+        QTextDocument document;
+        document.setDefaultFont(label->font());
+        document.setDocumentMargin(0);
+        document.setHtml(label->text());
+        return qCeil(document.idealWidth());
+    }
+    QString text = label->text();
+    if (label->buddy()) // "&Map:" shows as "Map:", its mnemonic underlined
+        text.replace(QRegularExpression(QStringLiteral("&(.)")), QStringLiteral("\\1"));
+    int width = 0;
+    for (const QString &line : text.split(QLatin1Char('\n')))
+        width = std::max(width, label->fontMetrics().horizontalAdvance(line));
+    return width;
+}
+
+/// Every visible label and button inside `root` whose text is wider than the room it has, as
+/// "class 'text' needs N px, has M px".
+QStringList clippedTexts(QWidget *root)
+{
+    QStringList clipped;
+    const auto visible = [root](QWidget *widget) { return widget->isVisibleTo(root) && widget->width() > 0; };
+    for (QLabel *label : root->findChildren<QLabel *>()) {
+        if (!visible(label) || label->text().isEmpty() || !label->pixmap().isNull())
+            continue;
+        const int room = label->contentsRect().width() - 2 * label->margin() - label->indent() * 0;
+        const int needed = neededWidth(label);
+        if (needed > room + 1)
+            clipped << QStringLiteral("QLabel '%1' needs %2 px, has %3 px").arg(label->text().left(60)).arg(needed).arg(room);
+    }
+    for (QAbstractButton *button : root->findChildren<QAbstractButton *>()) {
+        if (!visible(button) || button->text().isEmpty())
+            continue;
+        const QSize hint = button->sizeHint();
+        if (hint.width() > button->width() + 1)
+            clipped << QStringLiteral("%1 '%2' needs %3 px, has %4 px")
+                           .arg(QString::fromLatin1(button->metaObject()->className()), button->text().left(60))
+                           .arg(hint.width())
+                           .arg(button->width());
+    }
+    for (QComboBox *box : root->findChildren<QComboBox *>()) {
+        if (!visible(box))
+            continue;
+        const int needed = box->fontMetrics().horizontalAdvance(box->currentText());
+        // the text's room: the box less its frame and drop-down arrow (about 2 em)
+        const int room = box->width() - 2 * box->fontMetrics().height();
+        if (needed > room + 1)
+            clipped << QStringLiteral("QComboBox '%1' needs %2 px, has %3 px").arg(box->currentText().left(60)).arg(needed).arg(room);
+    }
+    return clipped;
+}
+
+} // namespace
+
+class TestClassroom : public QObject
+{
+    Q_OBJECT
+
+private:
+    MainWindow *m_window = nullptr;
+
+private slots:
+    void initTestCase()
+    {
+        m_window = freshMainWindow(QSize(1280, 720));
+        QVERIFY(m_window);
+    }
+    void cleanupTestCase()
+    {
+        language::apply(QStringLiteral("en"));
+        delete m_window;
+    }
+
+    void fitsSmallScreens_data() { addEveryPresetRows(); }
+
+    /// 1024×768 with the docks, the linkage and the kind's panel side by side.
+    void fitsSmallScreens()
+    {
+        PKM_FETCH_PRESET(preset);
+        QVERIFY(m_window->openDesign(preset));
+        QCoreApplication::processEvents();
+        const QSize minimum = m_window->minimumSizeHint().expandedTo(m_window->minimumSize());
+        QVERIFY2(minimum.width() <= 1024 && minimum.height() <= 720,
+                 qPrintable(QStringLiteral("the window asks for at least %1×%2").arg(minimum.width()).arg(minimum.height())));
+    }
+
+    void nothingClippedAt1280x720_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("preset");
+        for (const char *code : {"en", "ru", "sr", "sr_Latn"}) {
+            for (const char *preset : {"pjoint-prototype", "moma-3a", "oxglide-prototype", "fourbar-example", "fivebar-example",
+                                       "pp-3rpr"}) {
+                QTest::addRow("%s %s", code, preset) << QString::fromLatin1(code) << QString::fromLatin1(preset);
+            }
+        }
+    }
+
+    void nothingClippedAt1280x720()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, preset);
+        QVERIFY(language::apply(language));
+        QVERIFY(m_window->openDesign(preset));
+        m_window->resize(1280, 720);
+        QTest::qWait(50);
+        QCoreApplication::processEvents();
+        const QStringList clipped = clippedTexts(m_window);
+        QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join(QStringLiteral("\n"))));
+        // The window keeps the size asked for: nothing pushed it wider or taller.
+        QCOMPARE(m_window->width(), 1280);
+        QCOMPARE(m_window->height(), 720);
+    }
+
+    void presentationModeAndBack()
+    {
+        language::apply(QStringLiteral("en"));
+        MainWindow &w = *m_window;
+        QVERIFY(w.openDesign(QStringLiteral("moma-3a")));
+        auto *design = w.findChild<QDockWidget *>(QStringLiteral("designDock"));
+        QVERIFY(design && design->isVisible());
+        const double before = QApplication::font().pointSizeF();
+        QAction *presentation = w.findChild<QAction *>(QStringLiteral("presentationAction"));
+        QVERIFY(presentation);
+        presentation->trigger();
+        QVERIFY(w.isPresenting());
+        QVERIFY(!design->isVisible());
+        QVERIFY(w.findChild<QToolBar *>(QStringLiteral("playToolBar"))->isVisible());
+        QVERIFY(w.linkageView()->isVisible());
+        // 150 % until the teacher picks another size for presentations
+        QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - 1.5 * before), 0.01);
+        QCOMPARE(w.linkageView()->sceneStyle().ink, QColor(Qt::black));
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        QVERIFY(design->isVisible());
+        QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - before), 0.01);
+    }
+
+    void textSizeReachesPlotsAndDrawing()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
+        QCustomPlot *plot = w.findChild<QCustomPlot *>();
+        QVERIFY(plot);
+        const double tick = plot->xAxis->tickLabelFont().pointSizeF();
+        const double label = w.linkageView()->sceneStyle().fontPixels;
+        const double app = QApplication::font().pointSizeF();
+        QAction *twice = w.findChild<QAction *>(QStringLiteral("textSize_200"));
+        QVERIFY(twice);
+        twice->trigger();
+        QCOMPARE_LT(std::abs(plot->xAxis->tickLabelFont().pointSizeF() - 2 * tick), 0.01);
+        QCOMPARE_LT(std::abs(w.linkageView()->sceneStyle().fontPixels - 2 * label), 0.01);
+        QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - 2 * app), 0.01);
+        // Remembered, and back to normal with 100 %.
+        QCOMPARE(QSettings().value(QStringLiteral("view/textSize")).toInt(), 200);
+        w.findChild<QAction *>(QStringLiteral("textSize_100"))->trigger();
+        QCOMPARE_LT(std::abs(plot->xAxis->tickLabelFont().pointSizeF() - tick), 0.01);
+        QCOMPARE_LT(std::abs(textscale::factor() - 1.0), 1e-12);
+    }
+};
+
+QTEST_MAIN(TestClassroom)
+#include "tst_classroom.moc"

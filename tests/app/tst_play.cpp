@@ -1,0 +1,271 @@
+// Play and pose bookmarks in the main window, as a teacher uses them: a joint variable moved by
+// itself forth and back, in a loop or once; stopped at a limit or before a singular pose with
+// the reason in the status bar; bookmarks kept with one key, stepped through with Page Up and
+// Page Down (a presenter's clicker) whatever has the focus, saved with the design and undone.
+#include "gui/mainwindow.h"
+#include "gui/player.h"
+
+#include "document/designfile.h"
+#include "document/document.h"
+#include "playbar.h"
+#include "variablepanel.h"
+#include "support/app.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <cmath>
+
+using namespace pkm;
+using namespace pkm::test;
+
+namespace {
+constexpr double deg = units::degree;
+
+/// The index of the П-joint's θ (its input d comes first).
+int theta(MainWindow &window)
+{
+    return window.document()->mechanism()->variableIndex("theta");
+}
+
+double variable(MainWindow &window, int index)
+{
+    return window.document()->mechanism()->variableValue(window.document()->pose(), index);
+}
+
+Singularity singularityOf(const Mechanism &mechanism, const Pose &pose)
+{
+    std::vector<double> values(mechanism.reportLayout().size);
+    return mechanism.evaluate(pose, values);
+}
+} // namespace
+
+class TestPlay : public QObject
+{
+    Q_OBJECT
+
+private:
+    MainWindow *m_window = nullptr;
+
+    void open(const QString &preset)
+    {
+        QVERIFY(m_window->openDesign(preset));
+        m_window->setPlaying(false);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        m_window = freshMainWindow(QSize(1280, 720));
+        QVERIFY(m_window);
+    }
+    void cleanupTestCase() { delete m_window; }
+
+    void forthAndBackTurnsAtTheEnds()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        PlayBar *bar = w.playBar();
+        const int t = theta(w);
+        bar->setVariable(t);
+        bar->setRange(-30 * deg, 30 * deg);
+        bar->setSpeed(60 * deg); // °/s
+        bar->setMode(PlayMode::ForthAndBack);
+        QTest::mouseClick(bar->playButton(), Qt::LeftButton);
+        QVERIFY(w.player()->isPlaying());
+        QVERIFY(bar->playButton()->isChecked());
+        const double start = variable(w, t);
+        w.player()->advance(0.1);
+        QCOMPARE_LT(std::abs(variable(w, t) - (start + 6 * deg)), 1e-9);
+        // At the upper end it stops exactly there and comes back.
+        for (int i = 0; i < 20 && variable(w, t) < 30 * deg - 1e-9; ++i)
+            w.player()->advance(0.1);
+        QCOMPARE_LT(std::abs(variable(w, t) - 30 * deg), 1e-9);
+        w.player()->advance(0.1);
+        QCOMPARE_LT(std::abs(variable(w, t) - 24 * deg), 1e-9);
+        QVERIFY(w.player()->isPlaying());
+        // The sliders, the values and the plots follow the document as with a slider's drag.
+        const QSlider *slider = w.variablePanel()->slider(t);
+        const Interval range = w.document()->mechanism()->variableRange(t);
+        QCOMPARE(slider->value(), int(std::lround((variable(w, t) - range.min) / (range.max - range.min)
+                                                  * VariablePanel::sliderSteps)));
+        QTest::mouseClick(bar->playButton(), Qt::LeftButton); // Pause
+        QVERIFY(!w.player()->isPlaying());
+    }
+
+    void onceStopsAtTheEndAndSaysSo()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        w.playBar()->setVariable(theta(w));
+        w.playBar()->setRange(0, 10 * deg);
+        w.playBar()->setSpeed(50 * deg);
+        w.playBar()->setMode(PlayMode::Once);
+        QSignalSpy stopped(w.player(), &Player::stopped);
+        w.setPlaying(true);
+        for (int i = 0; i < 5 && w.player()->isPlaying(); ++i)
+            w.player()->advance(0.1);
+        QCOMPARE(stopped.count(), 1);
+        QVERIFY(!w.player()->isPlaying());
+        QVERIFY(!w.playBar()->playButton()->isChecked());
+        QCOMPARE_LT(std::abs(variable(w, theta(w)) - 10 * deg), 1e-9);
+        QVERIFY2(w.lastStatus().contains(QStringLiteral("end of its range")), qPrintable(w.lastStatus()));
+    }
+
+    void loopStartsAgain()
+    {
+        open(QStringLiteral("fourbar-example"));
+        MainWindow &w = *m_window;
+        w.playBar()->setVariable(0); // the crank α
+        w.playBar()->setRange(0, 360 * deg);
+        w.playBar()->setSpeed(180 * deg);
+        w.playBar()->setMode(PlayMode::Loop);
+        w.setPlaying(true);
+        QVERIFY(w.player()->isPlaying());
+        double previous = variable(w, 0);
+        bool wrapped = false;
+        for (int i = 0; i < 40 && w.player()->isPlaying(); ++i) {
+            w.player()->advance(0.1);
+            wrapped = wrapped || variable(w, 0) < previous;
+            previous = variable(w, 0);
+        }
+        QVERIFY2(w.player()->isPlaying(), qPrintable(w.lastStatus()));
+        QVERIFY(wrapped);
+        w.setPlaying(false);
+    }
+
+    /// The five-bar's first crank moved alone: the other leg holds the platform on a circle
+    /// until the legs fold into a singular pose, which Play never reaches.
+    void stopsBeforeASingularPose()
+    {
+        open(QStringLiteral("fivebar-example"));
+        MainWindow &w = *m_window;
+        w.playBar()->setVariable(0);
+        const Interval range = w.document()->mechanism()->variableRange(0);
+        w.playBar()->setRange(range.min, range.max);
+        w.playBar()->setSpeed((range.max - range.min) / 5);
+        w.playBar()->setMode(PlayMode::Once);
+        QSignalSpy stopped(w.player(), &Player::stopped);
+        w.setPlaying(true);
+        for (int i = 0; i < 2000 && w.player()->isPlaying(); ++i)
+            w.player()->advance(1.0 / Player::framesPerSecond);
+        QCOMPARE(stopped.count(), 1);
+        const QString reason = stopped.first().first().toString();
+        QVERIFY(!reason.isEmpty());
+        QCOMPARE(w.lastStatus(), reason);
+        const Singularity there = singularityOf(*w.document()->mechanism(), w.document()->pose());
+        QCOMPARE(there.type, SingularityType::None);
+        QVERIFY2(there.margin > 0, qPrintable(reason));
+    }
+
+    void aNewDesignStopsPlay()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        w.playBar()->setMode(PlayMode::ForthAndBack);
+        w.setPlaying(true);
+        QVERIFY(w.player()->isPlaying());
+        QVERIFY(w.openDesign(QStringLiteral("moma-3a")));
+        QVERIFY(!w.player()->isPlaying());
+        QVERIFY(!w.playBar()->playButton()->isChecked());
+        QCOMPARE(w.playBar()->variableBox()->count(), int(w.document()->mechanism()->variableInfo().size()));
+    }
+
+    void bookmarksStepWithPageKeys()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        QAction *add = w.findChild<QAction *>(QStringLiteral("addBookmarkAction"));
+        QVERIFY(add);
+        const double thetas[] = {-40 * deg, 0, 35 * deg};
+        for (double angle : thetas) {
+            QVERIFY(w.document()->setVariable(theta(w), angle));
+            add->trigger();
+        }
+        QCOMPARE(w.document()->bookmarks().size(), 3);
+        QVERIFY(w.document()->setVariable(theta(w), 10 * deg));
+        // The clicker's key reaches the window with a slider focused, which would take it as
+        // a page step of its own.
+        QSlider *slider = w.variablePanel()->slider(theta(w));
+        slider->setFocus();
+        QTest::keyClick(slider, Qt::Key_PageDown);
+        QCOMPARE_LT(std::abs(variable(w, theta(w)) - thetas[0]), 1e-9); // after the last kept: round to the first
+        QTest::keyClick(slider, Qt::Key_PageDown);
+        QCOMPARE_LT(std::abs(variable(w, theta(w)) - thetas[1]), 1e-9);
+        QTest::keyClick(slider, Qt::Key_PageUp);
+        QTest::keyClick(slider, Qt::Key_PageUp);
+        QCOMPARE_LT(std::abs(variable(w, theta(w)) - thetas[2]), 1e-9);
+        QCOMPARE(w.currentBookmark(), 2);
+        QVERIFY(w.lastStatus().contains(QStringLiteral("3")));
+
+        // Undo forgets the last bookmark and leaves the pose where it is.
+        const double before = variable(w, theta(w));
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->bookmarks().size(), 2);
+        QCOMPARE(variable(w, theta(w)), before);
+        w.document()->undoStack()->redo();
+        QCOMPARE(w.document()->bookmarks().size(), 3);
+    }
+
+    void bookmarksAreSavedWithTheDesign()
+    {
+        MainWindow &w = *m_window;
+        QCOMPARE(w.document()->bookmarks().size(), 3);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("lesson.pkm.json"));
+        QVERIFY(designfile::save(w.document()->design(), path));
+        auto reopened = designfile::load(path);
+        QVERIFY2(reopened, reopened ? "" : reopened.failure().message.c_str());
+        QCOMPARE(reopened->bookmarks, w.document()->bookmarks());
+        QVERIFY(w.openDesign(path));
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QCOMPARE_LT(std::abs(variable(w, theta(w)) - (-40 * deg)), 1e-9);
+    }
+
+    void badBookmarksAreRefused_data()
+    {
+        QTest::addColumn<QByteArray>("bookmarks");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("not a list") << QByteArray("{}") << QStringLiteral("is not a list");
+        QTest::newRow("unknown variable") << QByteArray(R"([{"name": "x", "pose": {"nope": 1}}])")
+                                          << QStringLiteral("invalid pose value 'nope'");
+        QByteArray many = "[";
+        for (int i = 0; i <= designfile::maxBookmarks; ++i)
+            many += QByteArray(i ? "," : "") + R"({"name": "b", "pose": {"theta": 1}})";
+        QTest::newRow("too many") << many + "]" << QStringLiteral("more than 100 bookmarks");
+    }
+
+    void badBookmarksAreRefused()
+    {
+        QFETCH(QByteArray, bookmarks);
+        QFETCH(QString, message);
+        const QByteArray file = R"({"format": "pkm-studio-design", "version": 2, "mechanism": "pjoint", "bookmarks": )"
+            + bookmarks + "}";
+        auto parsed = designfile::parse(file, QStringLiteral("lesson.pkm.json"));
+        QVERIFY(!parsed);
+        QVERIFY2(QString::fromStdString(parsed.failure().message).contains(message), parsed.failure().message.c_str());
+    }
+
+    void aBookmarkThatNoLongerFitsSaysSo()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        QVERIFY(w.document()->setVariable(theta(w), 50 * deg));
+        QVERIFY(w.document()->addBookmark(QStringLiteral("far out")));
+        QVERIFY(w.document()->setParameter(QStringLiteral("theta_max"), 40.0));
+        const double now = variable(w, theta(w));
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QVERIFY2(w.lastStatus().contains(QStringLiteral("far out")), qPrintable(w.lastStatus()));
+        QCOMPARE(variable(w, theta(w)), now);
+    }
+};
+
+QTEST_MAIN(TestPlay)
+#include "tst_play.moc"

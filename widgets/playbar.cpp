@@ -1,0 +1,186 @@
+#include "playbar.h"
+
+#include "quantityformat.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QToolButton>
+
+#include <cmath>
+
+namespace pkm {
+
+PlayBar::PlayBar(QWidget *parent)
+    : QWidget(parent)
+{
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 0, 4, 0);
+    m_play = new QToolButton(this);
+    m_play->setObjectName(QStringLiteral("playButton"));
+    m_play->setCheckable(true);
+    m_play->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    connect(m_play, &QToolButton::clicked, this, [this](bool checked) { emit playRequested(checked); });
+    m_variable = new QComboBox(this);
+    m_variable->setObjectName(QStringLiteral("playVariable"));
+    m_variable->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    connect(m_variable, &QComboBox::currentIndexChanged, this, [this] {
+        describeVariable();
+        resetRange();
+    });
+    const auto spinBox = [this](const char *name) {
+        auto *box = new QDoubleSpinBox(this);
+        box->setObjectName(QLatin1String(name));
+        box->setKeyboardTracking(false);
+        box->setAlignment(Qt::AlignRight);
+        return box;
+    };
+    m_fromLabel = new QLabel(this);
+    m_from = spinBox("playFrom");
+    m_toLabel = new QLabel(this);
+    m_to = spinBox("playTo");
+    m_speedLabel = new QLabel(this);
+    m_speed = spinBox("playSpeed");
+    m_mode = new QComboBox(this);
+    m_mode->setObjectName(QStringLiteral("playMode"));
+    m_mode->addItems({QString(), QString(), QString()});
+    m_mode->setCurrentIndex(static_cast<int>(PlayMode::ForthAndBack));
+    for (QWidget *widget : std::initializer_list<QWidget *> {m_play, m_variable, m_fromLabel, m_from,
+                                                              m_toLabel, m_to, m_speedLabel, m_speed, m_mode})
+        layout->addWidget(widget);
+    layout->addStretch(1);
+    retranslate();
+}
+
+void PlayBar::setMechanism(const MechanismPtr &mechanism)
+{
+    const bool sameKind = m_mechanism && mechanism && m_mechanism->kind() == mechanism->kind();
+    const int previous = m_variable->currentIndex();
+    m_mechanism = mechanism;
+    const QSignalBlocker blocker(m_variable);
+    m_variable->clear();
+    const auto &variables = mechanism->variableInfo();
+    for (const VariableInfo &info : variables)
+        m_variable->addItem(toQString(info.symbol));
+    // A new kind starts on its first input: what a teacher would move first.
+    const int chosen = sameKind && previous >= 0 && previous < m_variable->count() ? previous : 0;
+    m_variable->setCurrentIndex(chosen);
+    const PlaySettings kept = settings();
+    describeVariable();
+    if (!sameKind)
+        resetRange();
+    else
+        setRange(kept.from, kept.to); // clamped to the new design's range by the spin boxes
+}
+
+PlaySettings PlayBar::settings() const
+{
+    PlaySettings settings;
+    settings.variable = std::max(0, m_variable->currentIndex());
+    settings.mode = static_cast<PlayMode>(m_mode->currentIndex());
+    if (!m_mechanism)
+        return settings;
+    const Unit &unit = m_mechanism->variableInfo()[std::size_t(settings.variable)].unit;
+    settings.from = unit.fromDisplay(m_from->value());
+    settings.to = unit.fromDisplay(m_to->value());
+    settings.speed = unit.fromDisplay(m_speed->value());
+    return settings;
+}
+
+void PlayBar::setVariable(int variable)
+{
+    m_variable->setCurrentIndex(variable); // describes it and resets its range
+}
+
+void PlayBar::setRange(double from, double to)
+{
+    if (!m_mechanism)
+        return;
+    const Unit &unit = m_mechanism->variableInfo()[std::size_t(std::max(0, m_variable->currentIndex()))].unit;
+    m_from->setValue(unit.toDisplay(from));
+    m_to->setValue(unit.toDisplay(to));
+}
+
+void PlayBar::setSpeed(double coreUnitsPerSecond)
+{
+    if (!m_mechanism)
+        return;
+    const Unit &unit = m_mechanism->variableInfo()[std::size_t(std::max(0, m_variable->currentIndex()))].unit;
+    m_speed->setValue(unit.toDisplay(coreUnitsPerSecond));
+}
+
+void PlayBar::setMode(PlayMode mode)
+{
+    m_mode->setCurrentIndex(static_cast<int>(mode));
+}
+
+void PlayBar::setPlaying(bool playing)
+{
+    m_playing = playing;
+    m_play->setChecked(playing);
+    // The symbols say it in every language; the word helps a first-time user.
+    m_play->setText(playing ? QStringLiteral("❚❚ ") + tr("Pause") : QStringLiteral("▶ ") + tr("Play"));
+}
+
+void PlayBar::describeVariable()
+{
+    if (!m_mechanism || m_variable->currentIndex() < 0)
+        return;
+    const int i = m_variable->currentIndex();
+    const VariableInfo &info = m_mechanism->variableInfo()[std::size_t(i)];
+    const Interval range = m_mechanism->variableRange(i);
+    const QString unit = unitText(info.unit);
+    const QString suffix = unit.startsWith(QChar(0x00B0)) ? unit : QLatin1Char(' ') + unit;
+    const double lo = info.unit.toDisplay(range.min), hi = info.unit.toDisplay(range.max);
+    const double scale = std::pow(10.0, info.decimals);
+    for (QDoubleSpinBox *box : {m_from, m_to}) {
+        box->setDecimals(info.decimals);
+        // outwards to the decimals shown, so that the exact limit stays reachable
+        box->setRange(std::floor(lo * scale) / scale, std::ceil(hi * scale) / scale);
+        box->setSuffix(suffix);
+        box->setSingleStep(std::pow(10.0, std::floor(std::log10(std::max(hi - lo, 1e-9))) - 1));
+    }
+    m_speed->setDecimals(info.decimals);
+    m_speed->setRange(std::pow(10.0, -info.decimals), std::max(1.0, 10.0 * (hi - lo)));
+    m_speed->setSuffix(suffix + tr("/s"));
+    m_speed->setSingleStep(std::pow(10.0, std::floor(std::log10(std::max(hi - lo, 1e-9))) - 1));
+    m_variable->setToolTip(coreLabel(info.label));
+}
+
+void PlayBar::resetRange()
+{
+    if (!m_mechanism || m_variable->currentIndex() < 0)
+        return;
+    const int i = m_variable->currentIndex();
+    const Interval range = m_mechanism->variableRange(i);
+    setRange(range.min, range.max);
+    // The whole range in about five seconds: slow enough to follow on a projector.
+    setSpeed((range.max - range.min) / 5.0);
+}
+
+void PlayBar::retranslate()
+{
+    setPlaying(m_playing);
+    m_play->setToolTip(tr("Play: move the chosen joint variable by itself (stops at a limit or before a singular pose)"));
+    m_fromLabel->setText(tr("from"));
+    m_toLabel->setText(tr("to"));
+    m_speedLabel->setText(tr("speed"));
+    m_mode->setItemText(static_cast<int>(PlayMode::Loop), tr("Loop"));
+    m_mode->setItemText(static_cast<int>(PlayMode::ForthAndBack), tr("Forth and back"));
+    m_mode->setItemText(static_cast<int>(PlayMode::Once), tr("Once"));
+    m_mode->setToolTip(tr("At the end of the range: start again, turn back, or stop"));
+    if (m_mechanism)
+        describeVariable();
+}
+
+void PlayBar::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+} // namespace pkm

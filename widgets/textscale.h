@@ -1,0 +1,24 @@
+#pragma once
+/// The text size the user chose (View ▸ Text Size, 100 % to 250 %): every font the program
+/// makes is its size in points times this factor (plotfont.h), and a change rescales the fonts
+/// already made, so that a classroom reads the labels, plots and maps from the back row.
+
+class QWidget;
+
+namespace pkm::textscale {
+
+inline constexpr double minimum = 1.0;
+inline constexpr double maximum = 2.5;
+
+/// The factor now, 1 unless the user chose another text size.
+double factor();
+/// Sets the factor (clamped to [minimum, maximum]) for fonts made from now on; returns it.
+double setFactor(double factor);
+
+/// Multiplies by `ratio` every font under `root` that is not simply inherited: widgets given a
+/// font of their own, and in every plot the axes' tick and label fonts, the legend and its
+/// items, the title elements and the text items. The fonts a widget inherits follow the
+/// application's font (QApplication::setFont), which the caller scales.
+void rescale(QWidget *root, double ratio);
+
+} // namespace pkm::textscale
