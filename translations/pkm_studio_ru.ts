@@ -3444,6 +3444,34 @@ Please verify the correct file name was given.</source>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Перетаскивание останавливается, не доходя до перехода O↔X при x_CD − x_AB = s = %1 мм, где стержни параллельны и платформа может качаться: чтобы продолжить, переключите форму.</translation>
     </message>
+    <message>
+        <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
+        <translation>В положении платформы %1 ноги удержали бы её только в другом режиме сборки.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
+        <translation>В положении платформы %1 нога %2 не достаёт до неё: её точка платформы слишком далеко от точки основания A%2 для её звеньев.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too near its base point A%2 for its links.</source>
+        <translation>В положении платформы %1 нога %2 не достаёт до неё: её точка платформы слишком близко к точке основания A%2 для её звеньев.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its input would leave its range.</source>
+        <translation>В положении платформы %1 нога %2 не достаёт до неё: её вход вышел бы из своего диапазона.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the input of leg %2 is undetermined.</source>
+        <translation>В положении платформы %1 вход ноги %2 не определён.</translation>
+    </message>
+    <message>
+        <source>drag to move the base point A%1 (changes the design)</source>
+        <translation>перетащите, чтобы переместить точку основания A%1 (изменяет конструкцию)</translation>
+    </message>
+    <message>
+        <source>drag to move the platform point B%1 (changes the design)</source>
+        <translation>перетащите, чтобы переместить точку платформы B%1 (изменяет конструкцию)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3649,6 +3677,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Особое положение (комбинированное): здесь механизмом нельзя управлять.</translation>
+    </message>
+    <message>
+        <source>New design from template %1</source>
+        <translation>Новая конструкция по шаблону %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Переместить %1</translation>
     </message>
 </context>
 <context>
@@ -4232,6 +4268,38 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделирует механизмы этих четырёх документов: активный П-шарнир (1), MOMA (2), O-X glide (3), шарнирный четырёхзвенник и формулы подвижности (4). Где напечатанная формула или число неверны, программа использует исправленные; раздел README о математике перечисляет каждое исправление.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>New from &amp;Template</source>
+        <translation>Создать по &amp;шаблону</translation>
+    </message>
+    <message>
+        <source>5R (two driven cranks)</source>
+        <translation>5R (два приводных кривошипа)</translation>
+    </message>
+    <message>
+        <source>5R driven by two П-joints</source>
+        <translation>5R с приводом от двух П-шарниров</translation>
+    </message>
+    <message>
+        <source>Constant orientation, 2 DOF, with two П-joints</source>
+        <translation>Постоянная ориентация, 2 степени свободы, с двумя П-шарнирами</translation>
+    </message>
+    <message>
+        <source>3-RP̲R (three struts)</source>
+        <translation>3-RP̲R (три телескопические штанги)</translation>
+    </message>
+    <message>
+        <source>3-R̲RR (three driven cranks)</source>
+        <translation>3-R̲RR (три приводных кривошипа)</translation>
+    </message>
+    <message>
+        <source>3-P̲RR (three driven sliders)</source>
+        <translation>3-P̲RR (три приводных ползуна)</translation>
+    </message>
+    <message>
+        <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
+        <translation>2-P̲RR (два приводных ползуна, MOMA 3a)</translation>
     </message>
 </context>
 <context>
@@ -4954,6 +5022,97 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::PlanarParallelPanel</name>
+    <message>
+        <source>Add leg 3</source>
+        <translation>Добавить ногу 3</translation>
+    </message>
+    <message>
+        <source>Remove leg 3</source>
+        <translation>Удалить ногу 3</translation>
+    </message>
+    <message>
+        <source>Change the platform</source>
+        <translation>Изменить платформу</translation>
+    </message>
+    <message>
+        <source>Change the type of leg %1</source>
+        <translation>Изменить тип ноги %1</translation>
+    </message>
+    <message>
+        <source>Change the working mode of leg %1</source>
+        <translation>Изменить рабочий режим ноги %1</translation>
+    </message>
+    <message>
+        <source>Legs</source>
+        <translation>Ноги</translation>
+    </message>
+    <message>
+        <source>&amp;Platform:</source>
+        <translation>&amp;Платформа:</translation>
+    </message>
+    <message>
+        <source>Add leg</source>
+        <translation>Добавить ногу</translation>
+    </message>
+    <message>
+        <source>A third leg, a strut opposite the other two: the platform becomes a free body (3 DOF).</source>
+        <translation>Третья нога, штанга напротив двух других: платформа становится свободным телом (3 степени свободы).</translation>
+    </message>
+    <message>
+        <source>Two legs: the platform becomes a point, or keeps a constant orientation if both legs are P̲RR or П̲RR.</source>
+        <translation>Две ноги: платформа становится точкой или сохраняет постоянную ориентацию, если обе ноги P̲RR или П̲RR.</translation>
+    </message>
+    <message>
+        <source>a point (2 legs, x and y)</source>
+        <translation>точка (2 ноги, x и y)</translation>
+    </message>
+    <message>
+        <source>constant orientation (2 legs, x and y)</source>
+        <translation>постоянная ориентация (2 ноги, x и y)</translation>
+    </message>
+    <message>
+        <source>free body (3 legs, x, y and φ)</source>
+        <translation>свободное тело (3 ноги, x, y и φ)</translation>
+    </message>
+    <message>
+        <source>Leg %1:</source>
+        <translation>Нога %1:</translation>
+    </message>
+    <message>
+        <source>R̲RR: driven crank and link</source>
+        <translation>R̲RR: приводной кривошип и шатун</translation>
+    </message>
+    <message>
+        <source>P̲RR: driven slider and link</source>
+        <translation>P̲RR: приводной ползун и шатун</translation>
+    </message>
+    <message>
+        <source>RP̲R: telescopic strut</source>
+        <translation>RP̲R: телескопическая штанга</translation>
+    </message>
+    <message>
+        <source>П̲RR: active П-joint and link</source>
+        <translation>П̲RR: активный П-шарнир и шатун</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s joints from the base, the actuated one underlined.</source>
+        <translation>Шарниры ноги от основания, приводной подчёркнут.</translation>
+    </message>
+    <message>
+        <source>working mode +1</source>
+        <translation>рабочий режим +1</translation>
+    </message>
+    <message>
+        <source>working mode −1</source>
+        <translation>рабочий режим −1</translation>
+    </message>
+    <message>
+        <source>+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular).</source>
+        <translation>+1: локоть слева от линии от A к точке платформы (P̲RR: ползун за основанием перпендикуляра).</translation>
+    </message>
+</context>
+<context>
     <name>pkm::Renderer3D</name>
     <message>
         <source>No OpenGL context is current.</source>
@@ -5512,6 +5671,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
         <translation>Плоский механизм с двумя степенями свободы и платформой постоянной ориентации, который Милутинович, Кокотович, Славкович и Живанович приводят среди применений П-шарнира («Механизм активного П-шарнира как эквивалент комбинации вращательного шарнира и сегмента постоянной длины», Белградский университет, машиностроительный факультет, 2014): два лабораторных П-шарнира (a = 170 мм, k = 0,4, диагональ от 116,5 до 231 мм) с кривошипами в A₁ = (0, 0) и A₂ = (200, 0) мм, основания которых повёрнуты на α = ±30°. Шатун П-шарнира сохраняет своё направление, поэтому дистальный параллелограмм длиной 200 мм от каждого шатуна к точкам платформы B₁ = (−40, 0) и B₂ = (40, 0) мм сохраняет ориентацию платформы. Второй параллелограмм повторяет связь первого: формула Чебышева даёт 1, а подвижность равна 2.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-P̲RR</source>
+        <translation>Плоский параллельный: симметричный 3-P̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-P̲RR chosen for PKM Studio: three sliders driven along the sides of an equilateral triangle of side 346.41 mm (its corners A₁, A₂, A₃ 200 mm from the centre, each guide from Aᵢ towards the next corner, stroke 0 to 346.41 mm), distal links of 150 mm and an equilateral platform of circumradius 40 mm, every slider beyond the foot of the perpendicular from its platform point (working mode +1).</source>
+        <translation>Симметричный 3-P̲RR, выбранный для PKM Studio: три ползуна с приводом вдоль сторон равностороннего треугольника со стороной 346.41 мм (его вершины A₁, A₂, A₃ в 200 мм от центра, каждая направляющая от Aᵢ к следующей вершине, ход от 0 до 346.41 мм), дистальные шатуны по 150 мм и равносторонняя платформа с радиусом описанной окружности 40 мм, каждый ползун за основанием перпендикуляра из своей точки платформы (рабочий режим +1).</translation>
     </message>
 </context>
 </TS>

@@ -3444,6 +3444,34 @@ Please verify the correct file name was given.</source>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Превлачење се зауставља пре прелаза O↔X при x_CD − x_AB = s = %1 mm, где су шипке паралелне и платформа може да се њише: промените облик да бисте наставили.</translation>
     </message>
+    <message>
+        <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
+        <translation>У положају платформе %1 ноге би је држале само у другом склопном режиму.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
+        <translation>У положају платформе %1 нога %2 не може да је достигне: њена тачка платформе је предалеко од тачке основе A%2 за њене чланове.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too near its base point A%2 for its links.</source>
+        <translation>У положају платформе %1 нога %2 не може да је достигне: њена тачка платформе је преблизу тачки основе A%2 за њене чланове.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its input would leave its range.</source>
+        <translation>У положају платформе %1 нога %2 не може да је достигне: њен улаз изашао би из свог опсега.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the input of leg %2 is undetermined.</source>
+        <translation>У положају платформе %1 улаз ноге %2 није одређен.</translation>
+    </message>
+    <message>
+        <source>drag to move the base point A%1 (changes the design)</source>
+        <translation>превуците да померите тачку основе A%1 (мења конструкцију)</translation>
+    </message>
+    <message>
+        <source>drag to move the platform point B%1 (changes the design)</source>
+        <translation>превуците да померите тачку платформе B%1 (мења конструкцију)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3649,6 +3677,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Сингуларан положај (комбиновани): механизмом се овде не може управљати.</translation>
+    </message>
+    <message>
+        <source>New design from template %1</source>
+        <translation>Нова конструкција из шаблона %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Помери %1</translation>
     </message>
 </context>
 <context>
@@ -4232,6 +4268,38 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделира механизме ова четири документа: активни П-зглоб (1), MOMA (2), O-X glide (3), зглобни четвороугао и формуле покретљивости (4). Где је штампана формула или број погрешан, програм користи исправљени; одељак README-а о математици наводи свако исправљање.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>New from &amp;Template</source>
+        <translation>Ново из &amp;шаблона</translation>
+    </message>
+    <message>
+        <source>5R (two driven cranks)</source>
+        <translation>5R (две погонске полуге)</translation>
+    </message>
+    <message>
+        <source>5R driven by two П-joints</source>
+        <translation>5R с погоном од два П-зглоба</translation>
+    </message>
+    <message>
+        <source>Constant orientation, 2 DOF, with two П-joints</source>
+        <translation>Стална оријентација, 2 степена слободе, са два П-зглоба</translation>
+    </message>
+    <message>
+        <source>3-RP̲R (three struts)</source>
+        <translation>3-RP̲R (три телескопска штапа)</translation>
+    </message>
+    <message>
+        <source>3-R̲RR (three driven cranks)</source>
+        <translation>3-R̲RR (три погонске полуге)</translation>
+    </message>
+    <message>
+        <source>3-P̲RR (three driven sliders)</source>
+        <translation>3-P̲RR (три погонска клизача)</translation>
+    </message>
+    <message>
+        <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
+        <translation>2-P̲RR (два погонска клизача, MOMA 3a)</translation>
     </message>
 </context>
 <context>
@@ -4954,6 +5022,97 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::PlanarParallelPanel</name>
+    <message>
+        <source>Add leg 3</source>
+        <translation>Додај ногу 3</translation>
+    </message>
+    <message>
+        <source>Remove leg 3</source>
+        <translation>Уклони ногу 3</translation>
+    </message>
+    <message>
+        <source>Change the platform</source>
+        <translation>Промени платформу</translation>
+    </message>
+    <message>
+        <source>Change the type of leg %1</source>
+        <translation>Промени тип ноге %1</translation>
+    </message>
+    <message>
+        <source>Change the working mode of leg %1</source>
+        <translation>Промени радни режим ноге %1</translation>
+    </message>
+    <message>
+        <source>Legs</source>
+        <translation>Ноге</translation>
+    </message>
+    <message>
+        <source>&amp;Platform:</source>
+        <translation>&amp;Платформа:</translation>
+    </message>
+    <message>
+        <source>Add leg</source>
+        <translation>Додај ногу</translation>
+    </message>
+    <message>
+        <source>A third leg, a strut opposite the other two: the platform becomes a free body (3 DOF).</source>
+        <translation>Трећа нога, штап наспрам друге две: платформа постаје слободно тело (3 степена слободе).</translation>
+    </message>
+    <message>
+        <source>Two legs: the platform becomes a point, or keeps a constant orientation if both legs are P̲RR or П̲RR.</source>
+        <translation>Две ноге: платформа постаје тачка, или задржава сталну оријентацију ако су обе ноге P̲RR или П̲RR.</translation>
+    </message>
+    <message>
+        <source>a point (2 legs, x and y)</source>
+        <translation>тачка (2 ноге, x и y)</translation>
+    </message>
+    <message>
+        <source>constant orientation (2 legs, x and y)</source>
+        <translation>стална оријентација (2 ноге, x и y)</translation>
+    </message>
+    <message>
+        <source>free body (3 legs, x, y and φ)</source>
+        <translation>слободно тело (3 ноге, x, y и φ)</translation>
+    </message>
+    <message>
+        <source>Leg %1:</source>
+        <translation>Нога %1:</translation>
+    </message>
+    <message>
+        <source>R̲RR: driven crank and link</source>
+        <translation>R̲RR: погонска полуга и спојка</translation>
+    </message>
+    <message>
+        <source>P̲RR: driven slider and link</source>
+        <translation>P̲RR: погонски клизач и спојка</translation>
+    </message>
+    <message>
+        <source>RP̲R: telescopic strut</source>
+        <translation>RP̲R: телескопски штап</translation>
+    </message>
+    <message>
+        <source>П̲RR: active П-joint and link</source>
+        <translation>П̲RR: активни П-зглоб и спојка</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s joints from the base, the actuated one underlined.</source>
+        <translation>Зглобови ноге од основе, погонски подвучен.</translation>
+    </message>
+    <message>
+        <source>working mode +1</source>
+        <translation>радни режим +1</translation>
+    </message>
+    <message>
+        <source>working mode −1</source>
+        <translation>радни режим −1</translation>
+    </message>
+    <message>
+        <source>+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular).</source>
+        <translation>+1: лакат лево од линије од A до тачке платформе (P̲RR: клизач иза подножја нормале).</translation>
+    </message>
+</context>
+<context>
     <name>pkm::Renderer3D</name>
     <message>
         <source>No OpenGL context is current.</source>
@@ -5512,6 +5671,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
         <translation>Равански механизам са два степена слободе и платформом сталне оријентације који Милутиновић, Кокотовић, Славковић и Живановић приказују међу применама П-зглоба („Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине”, Универзитет у Београду, Машински факултет, 2014): два лабораторијска П-зглоба (a = 170 mm, k = 0,4, дијагонала од 116,5 до 231 mm) са полугама у A₁ = (0, 0) и A₂ = (200, 0) mm и основама закренутим за α = ±30°. Спојка П-зглоба задржава свој правац, па дистални паралелограм од 200 mm од сваке спојке до тачака платформе B₁ = (−40, 0) и B₂ = (40, 0) mm задржава оријентацију платформе. Други паралелограм понавља везу првог: Чебишевљева формула даје 1, а покретљивост је 2.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-P̲RR</source>
+        <translation>Равански паралелни: симетрични 3-P̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-P̲RR chosen for PKM Studio: three sliders driven along the sides of an equilateral triangle of side 346.41 mm (its corners A₁, A₂, A₃ 200 mm from the centre, each guide from Aᵢ towards the next corner, stroke 0 to 346.41 mm), distal links of 150 mm and an equilateral platform of circumradius 40 mm, every slider beyond the foot of the perpendicular from its platform point (working mode +1).</source>
+        <translation>Симетрични 3-P̲RR изабран за PKM Studio: три клизача погоњена дуж страница једнакостраничног троугла странице 346.41 mm (његова темена A₁, A₂, A₃ на 200 mm од центра, свака вођица од Aᵢ ка следећем темену, ход од 0 до 346.41 mm), дисталне спојке од 150 mm и једнакостранична платформа полупречника описане кружнице 40 mm, сваки клизач иза подножја нормале из своје тачке платформе (радни режим +1).</translation>
     </message>
 </context>
 </TS>

@@ -3444,6 +3444,34 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Prevlačenje se zaustavlja pre prelaza O↔X pri x_CD − x_AB = s = %1 mm, gde su šipke paralelne i platforma može da se njiše: promenite oblik da biste nastavili.</translation>
     </message>
+    <message>
+        <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
+        <translation>U položaju platforme %1 noge bi je držale samo u drugom sklopnom režimu.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
+        <translation>U položaju platforme %1 noga %2 ne može da je dostigne: njena tačka platforme je predaleko od tačke osnove A%2 za njene članove.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too near its base point A%2 for its links.</source>
+        <translation>U položaju platforme %1 noga %2 ne može da je dostigne: njena tačka platforme je preblizu tački osnove A%2 za njene članove.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its input would leave its range.</source>
+        <translation>U položaju platforme %1 noga %2 ne može da je dostigne: njen ulaz izašao bi iz svog opsega.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the input of leg %2 is undetermined.</source>
+        <translation>U položaju platforme %1 ulaz noge %2 nije određen.</translation>
+    </message>
+    <message>
+        <source>drag to move the base point A%1 (changes the design)</source>
+        <translation>prevucite da pomerite tačku osnove A%1 (menja konstrukciju)</translation>
+    </message>
+    <message>
+        <source>drag to move the platform point B%1 (changes the design)</source>
+        <translation>prevucite da pomerite tačku platforme B%1 (menja konstrukciju)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3649,6 +3677,14 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Singularan položaj (kombinovani): mehanizmom se ovde ne može upravljati.</translation>
+    </message>
+    <message>
+        <source>New design from template %1</source>
+        <translation>Nova konstrukcija iz šablona %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Pomeri %1</translation>
     </message>
 </context>
 <context>
@@ -4232,6 +4268,38 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio modelira mehanizme ova četiri dokumenta: aktivni P-zglob (1), MOMA (2), O-X glide (3), zglobni četvorougao i formule pokretljivosti (4). Gde je štampana formula ili broj pogrešan, program koristi ispravljeni; odeljak README-a o matematici navodi svako ispravljanje.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>New from &amp;Template</source>
+        <translation>Novo iz &amp;šablona</translation>
+    </message>
+    <message>
+        <source>5R (two driven cranks)</source>
+        <translation>5R (dve pogonske poluge)</translation>
+    </message>
+    <message>
+        <source>5R driven by two П-joints</source>
+        <translation>5R s pogonom od dva P-zgloba</translation>
+    </message>
+    <message>
+        <source>Constant orientation, 2 DOF, with two П-joints</source>
+        <translation>Stalna orijentacija, 2 stepena slobode, sa dva P-zgloba</translation>
+    </message>
+    <message>
+        <source>3-RP̲R (three struts)</source>
+        <translation>3-RP̲R (tri teleskopska štapa)</translation>
+    </message>
+    <message>
+        <source>3-R̲RR (three driven cranks)</source>
+        <translation>3-R̲RR (tri pogonske poluge)</translation>
+    </message>
+    <message>
+        <source>3-P̲RR (three driven sliders)</source>
+        <translation>3-P̲RR (tri pogonska klizača)</translation>
+    </message>
+    <message>
+        <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
+        <translation>2-P̲RR (dva pogonska klizača, MOMA 3a)</translation>
     </message>
 </context>
 <context>
@@ -4954,6 +5022,97 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
 </context>
 <context>
+    <name>pkm::PlanarParallelPanel</name>
+    <message>
+        <source>Add leg 3</source>
+        <translation>Dodaj nogu 3</translation>
+    </message>
+    <message>
+        <source>Remove leg 3</source>
+        <translation>Ukloni nogu 3</translation>
+    </message>
+    <message>
+        <source>Change the platform</source>
+        <translation>Promeni platformu</translation>
+    </message>
+    <message>
+        <source>Change the type of leg %1</source>
+        <translation>Promeni tip noge %1</translation>
+    </message>
+    <message>
+        <source>Change the working mode of leg %1</source>
+        <translation>Promeni radni režim noge %1</translation>
+    </message>
+    <message>
+        <source>Legs</source>
+        <translation>Noge</translation>
+    </message>
+    <message>
+        <source>&amp;Platform:</source>
+        <translation>&amp;Platforma:</translation>
+    </message>
+    <message>
+        <source>Add leg</source>
+        <translation>Dodaj nogu</translation>
+    </message>
+    <message>
+        <source>A third leg, a strut opposite the other two: the platform becomes a free body (3 DOF).</source>
+        <translation>Treća noga, štap naspram druge dve: platforma postaje slobodno telo (3 stepena slobode).</translation>
+    </message>
+    <message>
+        <source>Two legs: the platform becomes a point, or keeps a constant orientation if both legs are P̲RR or П̲RR.</source>
+        <translation>Dve noge: platforma postaje tačka, ili zadržava stalnu orijentaciju ako su obe noge P̲RR ili P̲RR.</translation>
+    </message>
+    <message>
+        <source>a point (2 legs, x and y)</source>
+        <translation>tačka (2 noge, x i y)</translation>
+    </message>
+    <message>
+        <source>constant orientation (2 legs, x and y)</source>
+        <translation>stalna orijentacija (2 noge, x i y)</translation>
+    </message>
+    <message>
+        <source>free body (3 legs, x, y and φ)</source>
+        <translation>slobodno telo (3 noge, x, y i φ)</translation>
+    </message>
+    <message>
+        <source>Leg %1:</source>
+        <translation>Noga %1:</translation>
+    </message>
+    <message>
+        <source>R̲RR: driven crank and link</source>
+        <translation>R̲RR: pogonska poluga i spojka</translation>
+    </message>
+    <message>
+        <source>P̲RR: driven slider and link</source>
+        <translation>P̲RR: pogonski klizač i spojka</translation>
+    </message>
+    <message>
+        <source>RP̲R: telescopic strut</source>
+        <translation>RP̲R: teleskopski štap</translation>
+    </message>
+    <message>
+        <source>П̲RR: active П-joint and link</source>
+        <translation>P̲RR: aktivni P-zglob i spojka</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s joints from the base, the actuated one underlined.</source>
+        <translation>Zglobovi noge od osnove, pogonski podvučen.</translation>
+    </message>
+    <message>
+        <source>working mode +1</source>
+        <translation>radni režim +1</translation>
+    </message>
+    <message>
+        <source>working mode −1</source>
+        <translation>radni režim −1</translation>
+    </message>
+    <message>
+        <source>+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular).</source>
+        <translation>+1: lakat levo od linije od A do tačke platforme (P̲RR: klizač iza podnožja normale).</translation>
+    </message>
+</context>
+<context>
     <name>pkm::Renderer3D</name>
     <message>
         <source>No OpenGL context is current.</source>
@@ -5512,6 +5671,14 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
         <translation>Ravanski mehanizam sa dva stepena slobode i platformom stalne orijentacije koji Milutinović, Kokotović, Slavković i Živanović prikazuju među primenama P-zgloba („Mehanizam aktivnog P-zgloba kao ekvivalenta kombinacije obrtnog zgloba i segmenta konstantne dužine”, Univerzitet u Beogradu, Mašinski fakultet, 2014): dva laboratorijska P-zgloba (a = 170 mm, k = 0,4, dijagonala od 116,5 do 231 mm) sa polugama u A₁ = (0, 0) i A₂ = (200, 0) mm i osnovama zakrenutim za α = ±30°. Spojka P-zgloba zadržava svoj pravac, pa distalni paralelogram od 200 mm od svake spojke do tačaka platforme B₁ = (−40, 0) i B₂ = (40, 0) mm zadržava orijentaciju platforme. Drugi paralelogram ponavlja vezu prvog: Čebiševljeva formula daje 1, a pokretljivost je 2.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-P̲RR</source>
+        <translation>Ravanski paralelni: simetrični 3-P̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-P̲RR chosen for PKM Studio: three sliders driven along the sides of an equilateral triangle of side 346.41 mm (its corners A₁, A₂, A₃ 200 mm from the centre, each guide from Aᵢ towards the next corner, stroke 0 to 346.41 mm), distal links of 150 mm and an equilateral platform of circumradius 40 mm, every slider beyond the foot of the perpendicular from its platform point (working mode +1).</source>
+        <translation>Simetrični 3-P̲RR izabran za PKM Studio: tri klizača pogonjena duž stranica jednakostraničnog trougla stranice 346.41 mm (njegova temena A₁, A₂, A₃ na 200 mm od centra, svaka vođica od Aᵢ ka sledećem temenu, hod od 0 do 346.41 mm), distalne spojke od 150 mm i jednakostranična platforma poluprečnika opisane kružnice 40 mm, svaki klizač iza podnožja normale iz svoje tačke platforme (radni režim +1).</translation>
     </message>
 </context>
 </TS>

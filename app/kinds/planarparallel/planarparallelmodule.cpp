@@ -17,10 +17,10 @@ KindModule module()
                 {QT_TRANSLATE_NOOP("pkm::MainWindow", "5R (two driven cranks)"), "pp-5r"},
                 {QT_TRANSLATE_NOOP("pkm::MainWindow", "5R driven by two П-joints"), "pp-5r-pjoint"},
                 {QT_TRANSLATE_NOOP("pkm::MainWindow", "Constant orientation, 2 DOF, with two П-joints"), "pp-pa-pjoint"},
-                {QT_TRANSLATE_NOOP("pkm::MainWindow", "3-RPR (three struts)"), "pp-3rpr"},
-                {QT_TRANSLATE_NOOP("pkm::MainWindow", "3-RRR (three driven cranks)"), "pp-3rrr"},
-                {QT_TRANSLATE_NOOP("pkm::MainWindow", "3-PRR (three driven sliders)"), "pp-3prr"},
-                {QT_TRANSLATE_NOOP("pkm::MainWindow", "2-PRR (two driven sliders, MOMA 3a)"), "pp-2prr-moma3a"},
+                {QT_TRANSLATE_NOOP("pkm::MainWindow", "3-RP̲R (three struts)"), "pp-3rpr"},
+                {QT_TRANSLATE_NOOP("pkm::MainWindow", "3-R̲RR (three driven cranks)"), "pp-3rrr"},
+                {QT_TRANSLATE_NOOP("pkm::MainWindow", "3-P̲RR (three driven sliders)"), "pp-3prr"},
+                {QT_TRANSLATE_NOOP("pkm::MainWindow", "2-P̲RR (two driven sliders, MOMA 3a)"), "pp-2prr-moma3a"},
             }};
 }
 
