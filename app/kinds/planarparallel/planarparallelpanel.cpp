@@ -65,6 +65,12 @@ PlanarParallelPanel::PlanarParallelPanel(Document *document, QWidget *parent)
         connect(m_working[k], &QComboBox::activated, this,
                 [this, i](int index) { setWorking(i, m_working[std::size_t(i)]->itemData(index).toInt()); });
     }
+    // The choosers may shorten their texts (the full one is in the list): the map beside them
+    // keeps its width on a small screen.
+    for (QComboBox *box : {m_platform, m_types[0], m_types[1], m_types[2], m_working[0], m_working[1], m_working[2]}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(box == m_working[0] || box == m_working[1] || box == m_working[2] ? 8 : 14);
+    }
     grid->setColumnStretch(3, 1);
     layout->addWidget(m_box);
     connect(m_platform, &QComboBox::activated, this,
