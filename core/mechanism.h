@@ -179,6 +179,14 @@ public:
 
     // -- design ---------------------------------------------------------------------------
     virtual const std::vector<ParameterInfo> &parameterInfo() const = 0;
+    /// Whether parameter `name` has a say in this design (a third leg's length does not when
+    /// the platform has two legs): the design panel shows only those. Every parameter is still
+    /// stored, saved and settable.
+    virtual bool parameterApplies(std::string_view name) const
+    {
+        (void)name;
+        return true;
+    }
     /// All parameter values (stored and derived), core units.
     virtual ParameterSet parameters() const = 0;
     /// A new design with one parameter changed, validated; the failure names the culprit.

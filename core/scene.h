@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -67,9 +69,28 @@ struct SceneDimension {
 };
 
 /// A joint the user may drag; the mechanism's dragHandle() turns the target into a pose.
+///
+/// An attachment point (a base or platform point of the design) is a handle that edits the
+/// design instead: dragging it to a target T sets the parameters `xParameter`, `yParameter`
+/// (mm) to R(−frameAngle)·(T − frameOrigin), the target in the frame the point is given in
+/// (the base frame: origin 0, angle 0; a platform frame: the platform's pose). The document
+/// makes one undoable step of the whole drag.
 struct SceneHandle {
     int joint = 0;
     std::string hint; ///< what dragging does ("drag to set θ"), translated
+    std::string xParameter {}; ///< empty: a pose handle
+    std::string yParameter {};
+    Eigen::Vector2d frameOrigin = Eigen::Vector2d::Zero();
+    double frameAngle = 0.0; ///< rad
+
+    bool editsDesign() const { return !xParameter.empty(); }
+    /// The parameter values (mm) that put the point at `target`.
+    Eigen::Vector2d designPoint(const Eigen::Vector2d &target) const
+    {
+        const double c = std::cos(frameAngle), s = std::sin(frameAngle);
+        const Eigen::Vector2d d = target - frameOrigin;
+        return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
+    }
 };
 
 /// A polyline in the mechanism plane (a coupler curve, a trajectory), drawn thin; `closed`

@@ -224,6 +224,11 @@ void layoutHandles(const SceneCanvas &canvas, int activeHandle)
                 Medium::Screen);
             canvas.out.add(Circle {p, (style.pivotRadius + 7.0) * px, pen(ring, 3.0 * px, Qt::SquareCap)},
                 Layer::Joints, Medium::Screen);
+        } else if (canvas.scene.handles[i].editsDesign()) {
+            // an attachment point: a fainter, thinner ring, so the pose handles stand out
+            ring.setAlpha(90);
+            canvas.out.add(Circle {p, (style.pivotRadius + 4.0) * px, pen(ring, 1.2 * px, Qt::SquareCap)},
+                Layer::Joints, Medium::Screen);
         } else {
             ring.setAlpha(150);
             canvas.out.add(Circle {p, (style.pivotRadius + 5.0) * px, pen(ring, 2.0 * px, Qt::SquareCap)},

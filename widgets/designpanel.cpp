@@ -280,8 +280,25 @@ void DesignPanel::retranslate()
         showMessage();
 }
 
+void DesignPanel::showApplicable()
+{
+    // Only what the design uses (a two-legged platform has no third leg): the rest stays in
+    // the design, unseen, and comes back when it applies again.
+    QHash<int, bool> used;
+    for (const Row &row : std::as_const(m_rows)) {
+        const ParameterInfo &info = m_mechanism->parameterInfo()[std::size_t(row.parameter)];
+        const bool applies = m_mechanism->parameterApplies(info.name);
+        row.label->setVisible(applies);
+        row.edit->parentWidget()->setVisible(applies);
+        used[int(info.group)] = used.value(int(info.group)) || applies;
+    }
+    for (auto it = m_boxes.cbegin(); it != m_boxes.cend(); ++it)
+        it.value()->setVisible(used.value(it.key()));
+}
+
 void DesignPanel::showValues()
 {
+    showApplicable();
     const ParameterSet values = m_mechanism->parameters();
     for (const ParameterInfo &info : m_mechanism->parameterInfo()) {
         QLineEdit *edit = m_fields.value(toQString(info.name));

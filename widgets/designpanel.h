@@ -24,7 +24,8 @@ class DesignPanel : public QWidget
 public:
     explicit DesignPanel(QWidget *parent = nullptr);
 
-    /// Shows the design's values (rebuilding the fields when the kind changes) and clears marks.
+    /// Shows the design's values (rebuilding the fields when the kind changes) and clears marks;
+    /// only the parameters that apply to the design have a visible field.
     void setMechanism(const MechanismPtr &mechanism);
     /// A note about the design shown above the fields (a preset's description: where its
     /// numbers come from, what is interpreted); empty hides it.
@@ -64,6 +65,9 @@ private:
     void commit(const QString &name, bool continuous);
     void step(const QString &name, int steps);
     void showValues();
+    /// Shows the fields of the parameters that apply to the design (parameterApplies) and hides
+    /// the others, and a group with none.
+    void showApplicable();
     void setMark(QLineEdit *field, bool invalid);
     void showNote();
 

@@ -149,7 +149,10 @@ int LinkageView::handleAt(const QPointF &position) const
             continue;
         const QPointF offset = handlePosition(i) - position;
         const double distance = std::hypot(offset.x(), offset.y());
-        if (distance <= bestDistance) {
+        // On one spot a pose handle wins over an attachment point (a platform point at the
+        // platform's reference): moving the mechanism is what a drag there usually means.
+        const bool editsDesign = m_scene.handles[std::size_t(i)].editsDesign();
+        if (editsDesign ? distance < bestDistance : distance <= bestDistance) {
             best = i;
             bestDistance = distance;
         }
@@ -453,8 +456,8 @@ void LinkageView::updateCursor()
 {
     if (m_dragHandle >= 0 || m_panning)
         setCursor(Qt::ClosedHandCursor);
-    else if (m_hoverHandle >= 0)
-        setCursor(Qt::OpenHandCursor);
+    else if (m_hoverHandle >= 0 && m_hoverHandle < int(m_scene.handles.size()))
+        setCursor(m_scene.handles[std::size_t(m_hoverHandle)].editsDesign() ? Qt::SizeAllCursor : Qt::OpenHandCursor);
     else if (m_hoverGhost >= 0)
         setCursor(Qt::PointingHandCursor);
     else

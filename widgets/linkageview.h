@@ -3,6 +3,9 @@
 /// scene handle into handleDragged() requests. It never changes the pose itself: its owner
 /// answers handleDragged() by solving the mechanism and calling setScene() with the result.
 ///
+/// A handle that edits the design (an attachment point, SceneHandle::editsDesign) is dragged the
+/// same way; the owner turns its handleDragged() into a design change instead of a pose.
+///
 /// Ghost scenes — the pose in the mechanism's other modes — go faded under the real one; a
 /// hovered ghost is highlighted and named, and a click on one emits ghostClicked(). Switching
 /// is the owner's business too.

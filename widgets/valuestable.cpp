@@ -83,7 +83,16 @@ void ValuesTable::changeEvent(QEvent *event)
 
 void ValuesTable::setMechanism(const MechanismPtr &mechanism)
 {
-    const bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind();
+    // A design of the same kind may report other quantities (a leg library's third leg adds φ
+    // and a 3 × 3 J): the rows follow the report's layout, not only the kind.
+    bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind()
+        || m_mechanism->reportLayout().size != mechanism->reportLayout().size
+        || m_mechanism->reportLayout().entries.size() != mechanism->reportLayout().entries.size();
+    for (std::size_t i = 0; !rebuildNeeded && i < mechanism->reportLayout().entries.size(); ++i) {
+        const ReportEntry &was = m_mechanism->reportLayout().entries[i], &is = mechanism->reportLayout().entries[i];
+        rebuildNeeded = was.name != is.name || was.unit.symbol != is.unit.symbol || was.rows != is.rows
+            || was.cols != is.cols || was.label != is.label || was.symbol != is.symbol;
+    }
     m_mechanism = mechanism;
     if (rebuildNeeded) {
         m_pose.reset(); // a pose of another kind of mechanism

@@ -24,7 +24,14 @@ VariablePanel::VariablePanel(QWidget *parent)
 
 void VariablePanel::setMechanism(const MechanismPtr &mechanism)
 {
-    const bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind();
+    // A design of the same kind may have other variables (a leg library's third leg, a crank
+    // retyped to a slider): the rows follow the variables, not only the kind.
+    bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind()
+        || m_mechanism->variableInfo().size() != mechanism->variableInfo().size();
+    for (std::size_t i = 0; !rebuildNeeded && i < mechanism->variableInfo().size(); ++i) {
+        const VariableInfo &was = m_mechanism->variableInfo()[i], &is = mechanism->variableInfo()[i];
+        rebuildNeeded = was.name != is.name || was.unit.symbol != is.unit.symbol || was.label != is.label;
+    }
     m_mechanism = mechanism;
     if (rebuildNeeded)
         rebuild();

@@ -204,7 +204,20 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
         if (mechanism.variableIndex(value.first.toStdString()) < inputs)
             inputValues.append(value);
     }
-    auto solved = solveDisplayVariables(mechanism, home, inputValues);
+    // Solved near the file's own pose, so that of several assembly modes at these inputs (a
+    // 3-RPR has up to six) the one saved comes back.
+    Pose saved = home;
+    for (const auto &[name, display] : values) {
+        const int index = mechanism.variableIndex(name.toStdString());
+        if (index < 0)
+            continue;
+        const double value = variables[std::size_t(index)].unit.fromDisplay(display);
+        if (index < inputs && index < saved.inputs.size())
+            saved.inputs[index] = value;
+        else if (index >= inputs && index - inputs < saved.outputs.size())
+            saved.outputs[index - inputs] = value;
+    }
+    auto solved = solveDisplayVariables(mechanism, saved, inputValues);
     if (!solved)
         return solved;
     Pose pose = *solved;

@@ -86,6 +86,15 @@ Result<bool> DesignSession::open(const QString &presetOrPath)
     return true;
 }
 
+Result<bool> DesignSession::openTemplate(const QString &presetId)
+{
+    auto opened = m_document->openTemplate(presetId);
+    if (!opened)
+        return opened;
+    setFilePath(QString()); // the undo stack is past its clean state: modified
+    return true;
+}
+
 Result<bool> DesignSession::save()
 {
     Q_ASSERT(!m_filePath.isEmpty());

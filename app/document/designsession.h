@@ -48,6 +48,9 @@ public:
 
     /// Opens a preset or a file as an undoable replacement; a file joins the recent files.
     Result<bool> open(const QString &presetOrPath);
+    /// Starts a new design from a preset (Document::openTemplate): no file yet, and modified
+    /// until it is saved, so that closing asks about it.
+    Result<bool> openTemplate(const QString &presetId);
     /// Saves to filePath() (which must not be empty), atomically.
     Result<bool> save();
     /// Saves to `path` and makes it the document's file.

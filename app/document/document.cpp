@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pkm {
@@ -46,6 +47,36 @@ Result<bool> Document::open(const QString &presetOrPath)
     const QString title = loaded->title.isEmpty() ? presetOrPath : loaded->title;
     m_undoStack.push(new ReplaceDesignCommand(this, m_design, *loaded,
                                               [title] { return tr("Open %1").arg(designfile::presetText(title)); }));
+    return true;
+}
+
+Result<bool> Document::openTemplate(const QString &presetId)
+{
+    auto loaded = designfile::load(presetId);
+    if (!loaded)
+        return loaded.failure();
+    loaded->id.clear(); // the user's design from now on, not the preset
+    const QString title = loaded->title;
+    m_undoStack.push(new ReplaceDesignCommand(this, m_design, *loaded, [title] {
+        return tr("New design from template %1").arg(designfile::presetText(title));
+    }));
+    return true;
+}
+
+Result<bool> Document::setParameters(const ParameterSet &changes, const QString &mergeKey, bool continuous,
+                                     std::function<QString()> text)
+{
+    auto changed = m_design.mechanism->withParameters(changes);
+    if (!changed)
+        return changed.failure();
+    Design next = m_design;
+    next.mechanism = *changed;
+    next.pose = carryPose(*next.mechanism, m_design.pose);
+    if (next.mechanism->parameters() == m_design.mechanism->parameters())
+        return true;
+    auto *command = new SetParameterCommand(this, mergeKey, m_design, next, continuous);
+    command->setTextMaker(std::move(text));
+    m_undoStack.push(command);
     return true;
 }
 
@@ -112,6 +143,17 @@ Result<Pose> Document::dragHandle(int handle, const Eigen::Vector2d &target)
     const Scene scene = m.scene(start);
     if (handle < 0 || handle >= static_cast<int>(scene.handles.size()))
         return m.dragHandle(start, handle, target);
+    if (const SceneHandle &point = scene.handles[std::size_t(handle)]; point.editsDesign()) {
+        const Eigen::Vector2d p = point.designPoint(target);
+        const QString name = toQString(scene.joints[std::size_t(point.joint)].label);
+        auto moved = setParameters({{point.xParameter, p.x()}, {point.yParameter, p.y()}},
+                                   toQString(point.xParameter) + QLatin1Char('+') + toQString(point.yParameter),
+                                   !m_dragStarts, [name] { return tr("Move %1").arg(name); });
+        if (!moved)
+            return moved.failure();
+        m_dragStarts = false;
+        return m_design.pose;
+    }
     const Eigen::Vector2d from = scene.joints[scene.handles[handle].joint].position.head<2>();
     return moveTowards([&](double t) { return m.dragHandle(start, handle, from + t * (target - from)); });
 }
@@ -254,14 +296,20 @@ Pose Document::carryPose(const Mechanism &mechanism, const Pose &old)
 {
     // Keep the outputs (what the user looks at: θ, the platform) and let the inputs follow;
     // past a narrowed range, stop at the limit.
-    Coordinates outputs = old.outputs;
+    // A design that gains or loses an output (a third leg and the platform's angle) keeps the
+    // ones both have; a new one starts at 0.
     const int inputs = mechanism.inputCount();
+    Coordinates outputs = Coordinates::Zero(mechanism.outputCount());
+    for (int i = 0; i < std::min<int>(outputs.size(), old.outputs.size()); ++i)
+        outputs[i] = old.outputs[i];
     for (int i = 0; i < outputs.size(); ++i)
         outputs[i] = mechanism.variableRange(inputs + i).clamp(outputs[i]);
     if (auto kept = mechanism.solveInverse(outputs, &old))
         return *kept;
     // Out of the new workspace: keep the actuators where they are, if the design allows.
     Coordinates actuators = old.inputs;
+    if (actuators.size() != inputs)
+        return mechanism.homePose();
     for (int i = 0; i < actuators.size(); ++i)
         actuators[i] = mechanism.variableRange(i).clamp(actuators[i]);
     if (auto kept = mechanism.solveDirect(actuators, &old))

@@ -9,6 +9,8 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <functional>
+
 namespace pkm {
 
 class Document : public QObject
@@ -25,6 +27,17 @@ public:
 
     /// Opens a preset id or a design file as an undoable replacement of the design.
     Result<bool> open(const QString &presetOrPath);
+    /// Opens a preset as the start of a new design of the user's own (File ▸ New from
+    /// Template): undoable, not the preset any more (saving asks for a file).
+    Result<bool> openTemplate(const QString &presetId);
+    /// Changes several design parameters at once (core units) as one undo step that `text`
+    /// names; the failure names the culprit and nothing changes. `continuous` merges into the
+    /// previous step of the same `mergeKey` (a drag is one step).
+    Result<bool> setParameters(const ParameterSet &changes, const QString &mergeKey, bool continuous,
+                               std::function<QString()> text);
+    /// A drag in the linkage view begins: the next move of an attachment point starts a new
+    /// undo step, the later ones of the same drag merge into it.
+    void beginDrag() { m_dragStarts = true; }
     /// Changes one design parameter (display units); the failure names it and nothing changes.
     /// `continuous` edits (stepping with keys or wheel) merge into the previous undo step of
     /// the same parameter.
@@ -32,7 +45,9 @@ public:
     /// Moves joint variable `variable` (index into variableInfo(), core units). Values past a
     /// limit stop at the limit; the failure names the variable if no pose can be reached.
     Result<Pose> setVariable(int variable, double value);
-    /// Drags a scene handle to a point of the mechanism plane (mm).
+    /// Drags a scene handle to a point of the mechanism plane (mm). A handle that edits the
+    /// design (an attachment point, SceneHandle::editsDesign) moves that point of the design,
+    /// one undo step per drag (beginDrag()); a design that cannot be assembled is refused.
     Result<Pose> dragHandle(int handle, const Eigen::Vector2d &target);
     /// Moves the outputs (a platform position clicked on a map) by inverse kinematics.
     Result<Pose> moveOutputsTo(const Coordinates &outputs);
@@ -91,6 +106,7 @@ private:
     int m_drivenVariable = 0; ///< the variable the user moved last (index into variableInfo())
     std::vector<ModeAlternative> m_modeNeighbours;
     bool m_lastMoveWasPartial = false;
+    bool m_dragStarts = true;
 };
 
 } // namespace pkm

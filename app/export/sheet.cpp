@@ -110,7 +110,8 @@ void addParameters(const Mechanism &mechanism, Parts &parts)
         ParameterGroup::Actuator, ParameterGroup::Mode, ParameterGroup::Drawing};
     for (ParameterGroup group : order) {
         for (const ParameterInfo &info : mechanism.parameterInfo()) {
-            if (info.group != group)
+            // what the design uses: a two-legged platform's sheet lists no third leg
+            if (info.group != group || !mechanism.parameterApplies(info.name))
                 continue;
             Item item {info.name, utf8(info.symbol), coreLabel(info.label),
                 numberCell(report::parameterDisplayValue(values, info), info.decimals), std::string(info.unit.symbol),

@@ -143,6 +143,7 @@ MainWindow::MainWindow(QWidget *parent)
             m_variables->setPose(m_document->pose()); // the slider goes back to where the pose is
         }
     });
+    connect(m_view, &LinkageView::dragStarted, m_document, &Document::beginDrag); // one undo step per drag
     connect(m_view, &LinkageView::handleDragged, this, [this](int handle, const Eigen::Vector2d &target) {
         auto solved = m_document->dragHandle(handle, target);
         if (!solved)
@@ -259,6 +260,24 @@ void MainWindow::createActions()
     translated(file->menuAction(), QT_TR_NOOP("&File"));
     QAction *open = translated(file->addAction(QString(), this, &MainWindow::openFile), QT_TR_NOOP("&Open Design…"));
     open->setShortcut(QKeySequence::Open);
+    // New from Template: each kind module's designs to start from, opened as new, unsaved designs
+    QMenu *templates = file->addMenu(QString());
+    translated(templates->menuAction(), QT_TR_NOOP("New from &Template"));
+    templates->setObjectName(QStringLiteral("templateMenu"));
+    for (const KindModule &module : kinds::modules()) {
+        for (const DesignTemplate &start : module.templates) {
+            const QString id = QString::fromUtf8(start.preset);
+            QAction *action = translated(templates->addAction(QString(), this, [this, id] {
+                if (!maybeSave())
+                    return;
+                if (auto opened = m_session->openTemplate(id); !opened)
+                    showStatus(failureText(opened.failure()), true);
+                else
+                    m_view->fitToView();
+            }), start.title);
+            action->setObjectName(QStringLiteral("template_") + id);
+        }
+    }
     m_recentMenu = file->addMenu(QString());
     translated(m_recentMenu->menuAction(), QT_TR_NOOP("Open &Recent"));
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));

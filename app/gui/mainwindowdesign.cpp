@@ -188,7 +188,8 @@ void MainWindow::updateModes()
     QStringList current;
     const ParameterSet values = mechanism->parameters();
     for (const ParameterInfo &info : mechanism->parameterInfo()) {
-        if (info.group == ParameterGroup::Mode && info.domain.min == -1.0 && info.domain.max == 1.0) {
+        if (info.group == ParameterGroup::Mode && info.domain.min == -1.0 && info.domain.max == 1.0
+            && mechanism->parameterApplies(info.name)) {
             const double v = values.at(info.name);
             QString text = v > 0 ? QStringLiteral("+1") : QStringLiteral("−1");
             for (const auto &[name, choice] : info.choices) {

@@ -18,12 +18,21 @@ namespace pkm {
 class Document;
 class KindPanel;
 
+/// A design to start from (File ▸ New from Template): a preset opened as a new design of the
+/// user's own.
+struct DesignTemplate {
+    const char *title = nullptr;  ///< the menu's text, marked QT_TRANSLATE_NOOP("pkm::MainWindow", …)
+    const char *preset = nullptr; ///< the preset id it copies
+};
+
 struct KindModule {
     std::string_view kind; ///< the core kind id ("pjoint")
     /// The panel beside the linkage, made once by the main window (nullptr: the generic one).
     KindPanel *(*createPanel)(Document *document, QWidget *parent) = nullptr;
     /// The sections of the parameter sheet only this kind has (nullptr: the generic ones).
     sheet::KindSections sheetSections = nullptr;
+    /// The designs of this kind to start from, in the menu's order.
+    std::vector<DesignTemplate> templates = {};
 };
 
 namespace kinds {

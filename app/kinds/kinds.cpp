@@ -6,6 +6,7 @@
 #include "kinds/fourbar/fourbarmodule.h"
 #include "kinds/oxglide/oxglidemodule.h"
 #include "kinds/pjoint/pjointmodule.h"
+#include "kinds/planarparallel/planarparallelmodule.h"
 
 namespace pkm::kinds {
 
@@ -15,6 +16,7 @@ const std::vector<KindModule> &modules()
         pjointkind::module(),
         oxglidekind::module(),
         fourbarkind::module(),
+        planarparallelkind::module(),
     };
     return all;
 }

@@ -107,7 +107,12 @@ private slots:
         PKM_FETCH_PRESET(preset);
         QVERIFY(m_window->openDesign(preset));
         QCoreApplication::processEvents();
+        // the generic panel's map, or the one inside the kind's own panel (the leg library's)
         WorkspaceMapView *map = m_window->workspacePanel()->mapView();
+        for (WorkspaceMapView *shown : m_window->findChildren<WorkspaceMapView *>()) {
+            if (shown->isVisible())
+                map = shown;
+        }
         if (map->isVisible()) { // its picture is to show the map, not "computing…"
             QSignalSpy ready(map, &WorkspaceMapView::mapReady);
             QVERIFY(!map->busy() || ready.wait(20000));

@@ -61,6 +61,7 @@ const std::map<QString, ExpectedMobility> &expectedMobility()
         {QStringLiteral("pp-2prr-moma3a"), {2, -1, 2, 2, true}},
         {QStringLiteral("pp-3rpr"), {3, -3, 3, 3, true}},
         {QStringLiteral("pp-3rrr"), {3, -3, 3, 3, true}},
+        {QStringLiteral("pp-3prr"), {3, -3, 3, 3, true}},
         {QStringLiteral("pp-5r-pjoint"), {2, -13, 2, 2, true}},
         // the second distal parallelogram repeats the first one's constraint on φ: Chebyshev
         // counts it and gives 1, one planar loop equation is redundant, the mobility is 2

@@ -194,6 +194,11 @@ Result<bool> checkLeg(const PlanarLeg &leg, int i, PlatformType platform)
 
 Result<MechanismPtr> PlanarParallel::create(const PlanarParallelDesign &design)
 {
+    return assemble(design, nullptr);
+}
+
+Result<MechanismPtr> PlanarParallel::assemble(const PlanarParallelDesign &design, const Eigen::Vector3d *reference)
+{
     if (auto checked = table().checkDesign(design); !checked)
         return checked.failure();
     const int n = design.legCount();
@@ -212,9 +217,21 @@ Result<MechanismPtr> PlanarParallel::create(const PlanarParallelDesign &design)
             return invalid("B1x", text::translate("core", "The platform points B₁, B₂, B₃ coincide: the platform's angle is undetermined."));
     }
     std::shared_ptr<PlanarParallel> made(new PlanarParallel(design));
-    if (made->m_home.inputs.size() == 0)
+    if (made->m_home.inputs.size() == 0 && reference) {
+        // the grid of inputs missed it, but the pose the edit starts from may still assemble
+        Coordinates outputs(n == 3 ? 3 : 2);
+        outputs[0] = reference->x();
+        outputs[1] = reference->y();
+        if (n == 3)
+            outputs[2] = reference->z();
+        if (auto pose = made->solveInverse(outputs))
+            made->m_home = *pose;
+    }
+    if (made->m_home.inputs.size() == 0) {
+        const std::string none = text::translate("core", "The mechanism cannot be assembled anywhere in its input ranges and modes.");
         return Failure{FailureKind::Unreachable, "assembly",
-                       text::translate("core", "The mechanism cannot be assembled anywhere in its input ranges and modes.")};
+                       reference ? joinText({none, " ", made->assemblyFailure(*reference)}) : none};
+    }
     return MechanismPtr(made);
 }
 

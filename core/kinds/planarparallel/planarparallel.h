@@ -150,6 +150,24 @@ public:
     static const ParameterTable<PlanarParallelDesign> &table();
 
     const PlanarParallelDesign &design() const { return m_design; }
+    /// The changed design, validated; when it cannot be assembled anywhere, the message names
+    /// the leg that cannot reach this design's home pose and why (planardesign.cpp).
+    Result<MechanismPtr> withParameters(const ParameterSet &changes) const override;
+    /// Only the parameters of the legs the platform has, and of each leg only those its type
+    /// uses (a crank's length for R̲RR, a guide's direction for P̲RR and П̲RR, …).
+    bool parameterApplies(std::string_view name) const override;
+    /// The parameter changes (core units) that give this design the platform `platform` and
+    /// the leg types `types` while it holds the platform where `pose` has it: the number of
+    /// legs follows the platform (a third leg, a strut, is placed opposite the other two), a
+    /// leg whose type changes or that no longer reaches its platform point gets dimensions
+    /// that reach it (fitLeg), and the platform points are zero for a point, a bar for a
+    /// platform of constant orientation (whose legs become П̲RR unless they are P̲RR) and a
+    /// triangle for a free one. The editor applies them as one step (planardesign.cpp).
+    ParameterSet restructure(const Pose &pose, PlatformType platform, const std::array<LegType, 3> &types) const;
+    /// `leg` as a leg of type `type` whose distal end reaches P in its working mode, away from
+    /// its singular poses: the base point and the working mode are kept, the lengths and the
+    /// limits scale with |P − A|.
+    static PlanarLeg fitLeg(PlanarLeg leg, LegType type, const Eigen::Vector2d &P);
     std::string_view kind() const override { return "planar-parallel"; }
 
     const std::vector<VariableInfo> &variableInfo() const override { return m_variables; }
@@ -196,6 +214,12 @@ public:
 
 private:
     explicit PlanarParallel(const PlanarParallelDesign &design);
+    /// create() that, given the platform pose an edit starts from, takes it as the home pose
+    /// when the grid of inputs finds none, and otherwise says which leg fails there.
+    static Result<MechanismPtr> assemble(const PlanarParallelDesign &design, const Eigen::Vector3d *reference);
+    /// Why this design cannot hold the platform at X: the first leg that cannot reach it and
+    /// why, or the other assembly mode (planardesign.cpp).
+    std::string assemblyFailure(const Eigen::Vector3d &X) const;
     /// The Jacobians without allocation: J_q (diagonal) and J_x, n × n in the top-left corner.
     void jacobianParts(const Pose &pose, Eigen::Matrix3d &jq, Eigen::Matrix3d &jx) const;
     /// Inverse kinematics of every leg and the 2-DOF assembly check; the culprit leg on failure.

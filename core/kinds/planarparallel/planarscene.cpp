@@ -158,6 +158,7 @@ Scene PlanarParallel::scene(const Pose &pose) const
     const int reference = joint(X.head<2>(), n == 2 && m_design.platform == PlatformType::Point ? "P" : "O_P",
                                 m_design.platform == PlatformType::Point ? JointKind::Revolute : JointKind::Point);
     std::array<int, 3> ends{};
+    std::array<int, 3> bases{};
     for (int i = 0; i < n; ++i) {
         const std::size_t k = std::size_t(i);
         const PlanarLeg &leg = m_design.legs[k];
@@ -169,12 +170,13 @@ Scene PlanarParallel::scene(const Pose &pose) const
         switch (leg.type) {
         case LegType::RRR: {
             const int a = joint(leg.base, joinText({"A", sub}), JointKind::Ground);
+            bases[k] = a;
             proximal = joint(c.centre, joinText({"C", sub}), JointKind::Revolute);
             s.bars.push_back({a, proximal, BarKind::Crank, joinText({"r", sub})});
             break;
         }
         case LegType::PRR: {
-            joint(leg.base, joinText({"A", sub}), JointKind::Point);
+            bases[k] = joint(leg.base, joinText({"A", sub}), JointKind::Point);
             proximal = joint(c.centre, joinText({"C", sub}), JointKind::Slider);
             SceneGuide guide;
             guide.start = to3(leg.base + leg.range.min * planar::direction(leg.alpha));
@@ -185,6 +187,7 @@ Scene PlanarParallel::scene(const Pose &pose) const
         }
         case LegType::RPR: {
             const int a = joint(leg.base, joinText({"A", sub}), JointKind::Ground);
+            bases[k] = a;
             const double body = 0.45 * leg.range.min;
             s.actuators.push_back({a, ends[k], body, std::max(8.0, 0.12 * body), std::max(3.0, 0.04 * body), joinText({"q", sub})});
             break;
@@ -194,6 +197,7 @@ Scene PlanarParallel::scene(const Pose &pose) const
             const Eigen::Vector2d base = planar::direction(leg.alpha) * leg.ratio * leg.lever;
             const int o = joint(leg.base - base, joinText({"O", sub}), JointKind::Ground);
             const int b = joint(leg.base, joinText({"A", sub}), JointKind::Ground);
+            bases[k] = b;
             proximal = joint(c.centre, joinText({"C", sub}), JointKind::Revolute);
             const int other = joint(c.centre - base, "", JointKind::Revolute);
             s.bars.push_back({o, b, BarKind::Ground, ""});
@@ -223,6 +227,27 @@ Scene PlanarParallel::scene(const Pose &pose) const
             s.bars.push_back({reference, ends[0], BarKind::Platform, ""});
     }
     s.handles.push_back({reference, text::translate("core", "drag to move the platform (inverse kinematics)")});
+    // The attachment points edit the design: A_i in the base frame, B_i in the platform's
+    // (a point platform has none of its own: its legs meet at the platform's point).
+    for (int i = 0; i < n; ++i) {
+        const std::string number = std::to_string(i + 1);
+        SceneHandle a;
+        a.joint = bases[std::size_t(i)];
+        a.hint = text::format(text::translate("core", "drag to move the base point A%1 (changes the design)"), {number});
+        a.xParameter = joinText({"A", number, "x"});
+        a.yParameter = joinText({"A", number, "y"});
+        s.handles.push_back(a);
+        if (m_design.platform == PlatformType::Point)
+            continue;
+        SceneHandle b;
+        b.joint = ends[std::size_t(i)];
+        b.hint = text::format(text::translate("core", "drag to move the platform point B%1 (changes the design)"), {number});
+        b.xParameter = joinText({"B", number, "x"});
+        b.yParameter = joinText({"B", number, "y"});
+        b.frameOrigin = X.head<2>();
+        b.frameAngle = X.z();
+        s.handles.push_back(b);
+    }
     Eigen::AlignedBox3d extent;
     for (const SceneJoint &j : s.joints)
         extent.extend(j.position);

@@ -1,0 +1,216 @@
+// The leg library's editor in the main window, as the user does it: start a 3-RPR from
+// File ▸ New from Template, drag a platform point in the linkage view (the parameter follows,
+// the map is computed again, one undo step restores it), save and reopen the design, retype a
+// leg and add and remove one, and see an edit that cannot be assembled refused with one message
+// naming the leg while the design stays; the design panel shows only what the legs use.
+#include "gui/mainwindow.h"
+
+#include "designpanel.h"
+#include "document/designsession.h"
+#include "document/document.h"
+#include "kinds/planarparallel/planarparallel.h"
+#include "kinds/planarparallel/planarparallelpanel.h"
+#include "kinds/workspacepanel.h"
+#include "linkageview.h"
+#include "workspacemapview.h"
+#include "support/app.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace pkm;
+using namespace pkm::test;
+
+namespace {
+const PlanarParallel &legsOf(const MainWindow &w)
+{
+    return dynamic_cast<const PlanarParallel &>(*w.document()->mechanism());
+}
+
+/// Waits until the map shows the current design (a new design is computed off the GUI thread).
+bool mapFollows(WorkspaceMapView *map, const MechanismPtr &mechanism)
+{
+    QSignalSpy ready(map, &WorkspaceMapView::mapReady);
+    for (int i = 0; i < 40 && (map->mechanism() != mechanism || map->busy()); ++i)
+        ready.wait(500);
+    return map->mechanism() == mechanism && !map->busy();
+}
+} // namespace
+
+class TestPlanarParallelEditor : public QObject
+{
+    Q_OBJECT
+
+private:
+    MainWindow *m_window = nullptr;
+    QTemporaryDir m_dir;
+    PlanarParallelPanel *panel() const { return m_window->kindPanel<PlanarParallelPanel>(); }
+    WorkspaceMapView *map() const { return panel()->mapPanel()->mapView(); }
+    bool fieldShown(const char *name) const
+    {
+        QLineEdit *field = m_window->designPanel()->field(QString::fromLatin1(name));
+        return field && field->isVisibleTo(m_window->designPanel());
+    }
+
+private slots:
+    void initTestCase()
+    {
+        m_window = freshMainWindow({1800, 1000});
+        QVERIFY(m_window);
+        m_window->setQuestion([](const QString &, const QString &, QMessageBox::StandardButtons) {
+            return QMessageBox::Discard;
+        });
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void startsFromTheTemplate()
+    {
+        QAction *start = m_window->findChild<QAction *>(QStringLiteral("template_pp-3rpr"));
+        QVERIFY(start);
+        for (const char *id : {"pp-5r", "pp-5r-pjoint", "pp-pa-pjoint", "pp-3rrr", "pp-3prr", "pp-2prr-moma3a"})
+            QVERIFY2(m_window->findChild<QAction *>(QStringLiteral("template_") + QLatin1String(id)), id);
+        start->trigger();
+        QCOMPARE(m_window->document()->mechanism()->kind(), std::string_view("planar-parallel"));
+        QCOMPARE(legsOf(*m_window).design().legCount(), 3);
+        // a new design of the user's own: no file, not the preset, modified until saved
+        QVERIFY(m_window->session()->filePath().isEmpty());
+        QVERIFY(m_window->document()->design().id.isEmpty());
+        QVERIFY(m_window->session()->isModified());
+        QVERIFY(panel()->isVisible());
+        QVERIFY(mapFollows(map(), m_window->document()->mechanism()));
+        // the legs editor shows three struts on a free body
+        QCOMPARE(panel()->platformBox()->currentData().toInt(), int(PlatformType::Free));
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(panel()->typeBox(i)->currentData().toInt(), int(LegType::RPR));
+    }
+
+    void showsOnlyWhatTheLegsUse()
+    {
+        for (const char *name : {"A3x", "B2y", "q1_min", "q3_max", "assembly", "phi_map"})
+            QVERIFY2(fieldShown(name), name);
+        // struts: no cranks, links, guides, П-joints or working modes
+        for (const char *name : {"r1", "l2", "alpha3", "a1", "k2", "working3", "theta1_min"})
+            QVERIFY2(!fieldShown(name), name);
+    }
+
+    void dragsAnAttachmentPoint()
+    {
+        LinkageView *view = m_window->linkageView();
+        const Scene scene = view->scene();
+        int handle = -1;
+        for (int i = 0; i < int(scene.handles.size()); ++i) {
+            if (scene.handles[std::size_t(i)].xParameter == "B2x")
+                handle = i;
+        }
+        QVERIFY(handle > 0);
+        const double before = legsOf(*m_window).design().legs[1].platform.x();
+        const MechanismPtr original = m_window->document()->mechanism();
+        const int steps = m_window->document()->undoStack()->count();
+        const QPointF from = view->handlePosition(handle);
+        QCOMPARE(view->handleAt(from), handle);
+        // a short drag to the right: B₂ moves out along the platform's x (φ of the home pose)
+        drag(view, from, from + QPointF(24.0, 0.0), 6);
+        const double after = legsOf(*m_window).design().legs[1].platform.x();
+        const double phi = m_window->document()->pose().outputs[2];
+        const double expected = 24.0 / view->mapping().scale * std::cos(phi);
+        QVERIFY2(std::abs(after - before - expected) < 0.05 * std::abs(expected) + 1e-3,
+                 qPrintable(QStringLiteral("%1 → %2").arg(before).arg(after)));
+        // the whole drag is one undo step, and the map follows the new design
+        QCOMPARE(m_window->document()->undoStack()->count(), steps + 1);
+        QVERIFY(mapFollows(map(), m_window->document()->mechanism()));
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(legsOf(*m_window).design().legs[1].platform.x(), before);
+        QCOMPARE(m_window->document()->mechanism(), original);
+        QVERIFY(mapFollows(map(), original));
+        m_window->document()->undoStack()->redo();
+        QCOMPARE(legsOf(*m_window).design().legs[1].platform.x(), after);
+    }
+
+    void savesAndReopens()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("my-3rpr.pkm.json"));
+        QVERIFY(m_window->session()->saveAs(path).ok());
+        const ParameterSet saved = m_window->document()->mechanism()->parameters();
+        const Pose pose = m_window->document()->pose();
+        QVERIFY(m_window->openDesign(QStringLiteral("pp-5r")));
+        QVERIFY2(m_window->openDesign(path), qPrintable(m_window->lastStatus()));
+        QCOMPARE(m_window->document()->mechanism()->parameters().size(), saved.size());
+        for (const auto &[name, value] : saved)
+            QVERIFY2(std::abs(m_window->document()->mechanism()->parameters().at(name) - value) < 1e-6, name.c_str());
+        for (int i = 0; i < pose.outputs.size(); ++i)
+            QVERIFY(std::abs(m_window->document()->pose().outputs[i] - pose.outputs[i]) < 1e-6);
+    }
+
+    void retypesALeg()
+    {
+        const Pose pose = m_window->document()->pose();
+        QComboBox *type = panel()->typeBox(0);
+        type->setCurrentIndex(type->findData(int(LegType::RRR)));
+        emit type->activated(type->currentIndex());
+        QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RRR);
+        // the platform stays; a crank's parameters appear, the strut's stroke goes
+        for (int i = 0; i < 3; ++i)
+            QVERIFY(std::abs(m_window->document()->pose().outputs[i] - pose.outputs[i]) < 1e-9);
+        QVERIFY(fieldShown("r1") && fieldShown("theta1_min") && fieldShown("working1"));
+        QVERIFY(!fieldShown("q1_min"));
+        QVERIFY(panel()->workingBox(0)->isVisibleTo(panel()));
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RPR);
+        QCOMPARE(panel()->typeBox(0)->currentData().toInt(), int(LegType::RPR));
+    }
+
+    void removesAndAddsALeg()
+    {
+        QTest::mouseClick(panel()->removeLegButton(), Qt::LeftButton);
+        QCOMPARE(legsOf(*m_window).design().legCount(), 2);
+        QCOMPARE(legsOf(*m_window).design().platform, PlatformType::Point);
+        QVERIFY(!panel()->typeBox(2)->isVisibleTo(panel()));
+        // the third leg's parameters and the platform points no longer show
+        for (const char *name : {"A3x", "q3_max", "leg3_type", "B1x", "phi_map"})
+            QVERIFY2(!fieldShown(name), name);
+        QVERIFY(panel()->addLegButton()->isEnabled());
+        QTest::mouseClick(panel()->addLegButton(), Qt::LeftButton);
+        QCOMPARE(legsOf(*m_window).design().legCount(), 3);
+        QVERIFY(fieldShown("A3x"));
+    }
+
+    void refusesADesignThatCannotAssemble()
+    {
+        const MechanismPtr kept = m_window->document()->mechanism();
+        const int steps = m_window->document()->undoStack()->count();
+        // leg 2 moved far away: its strut cannot reach the platform
+        QLineEdit *field = m_window->designPanel()->field(QStringLiteral("A2x"));
+        QVERIFY(field);
+        field->setText(QLocale().toString(5000));
+        emit field->editingFinished();
+        QCOMPARE(m_window->document()->mechanism(), kept);
+        QCOMPARE(m_window->document()->undoStack()->count(), steps);
+        const QString message = m_window->designPanel()->message();
+        QVERIFY2(message.contains(QStringLiteral("leg 2")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("The last valid design is kept.")), qPrintable(message));
+        QVERIFY2(m_window->lastStatus().contains(QStringLiteral("leg 2")), qPrintable(m_window->lastStatus()));
+    }
+
+    void refusesADragThatCannotAssemble()
+    {
+        // the base point of a 5R dragged far away: its leg cannot reach the platform
+        QVERIFY(m_window->openDesign(QStringLiteral("pp-5r")));
+        const MechanismPtr kept = m_window->document()->mechanism();
+        m_window->document()->beginDrag();
+        auto moved = m_window->document()->dragHandle(1, Eigen::Vector2d(-2000.0, 0.0));
+        QVERIFY(!moved);
+        QVERIFY2(QString::fromStdString(moved.failure().message).contains(QStringLiteral("leg 1")),
+                 moved.failure().message.c_str());
+        QCOMPARE(m_window->document()->mechanism(), kept);
+    }
+};
+
+QTEST_MAIN(TestPlanarParallelEditor)
+#include "tst_planarparalleleditor.moc"
