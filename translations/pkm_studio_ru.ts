@@ -3444,6 +3444,246 @@ Please verify the correct file name was given.</source>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Перетаскивание останавливается, не доходя до перехода O↔X при x_CD − x_AB = s = %1 мм, где стержни параллельны и платформа может качаться: чтобы продолжить, переключите форму.</translation>
     </message>
+    <message>
+        <source>eq. %1 of the П-joint document</source>
+        <translation>формула %1 документа о П-шарнире</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the П-joint document</source>
+        <translation>рис. %1 документа о П-шарнире</translation>
+    </message>
+    <message>
+        <source>the П-joint document</source>
+        <translation>документ о П-шарнире</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the MOMA document</source>
+        <translation>формула %1 документа о MOMA</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the MOMA document</source>
+        <translation>рис. %1 документа о MOMA</translation>
+    </message>
+    <message>
+        <source>the MOMA document</source>
+        <translation>документ о MOMA</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the O-X glide document</source>
+        <translation>формула %1 документа об O-X glide</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the O-X glide document</source>
+        <translation>рис. %1 документа об O-X glide</translation>
+    </message>
+    <message>
+        <source>the O-X glide document</source>
+        <translation>документ об O-X glide</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the four-bar and mobility document</source>
+        <translation>формула %1 документа о четырёхзвеннике и подвижности</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the four-bar and mobility document</source>
+        <translation>рис. %1 документа о четырёхзвеннике и подвижности</translation>
+    </message>
+    <message>
+        <source>the four-bar and mobility document</source>
+        <translation>документ о четырёхзвеннике и подвижности</translation>
+    </message>
+    <message>
+        <source>PKM Studio&apos;s model</source>
+        <translation>модель PKM Studio</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 1 (0: inverse singularity)</source>
+        <translation>Якобиан входа ветви 1 (0: особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 2 (0: inverse singularity)</source>
+        <translation>Якобиан входа ветви 2 (0: особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>Output Jacobian (0: direct singularity)</source>
+        <translation>Якобиан выхода (0: особое положение прямой кинематики)</translation>
+    </message>
+    <message>
+        <source>Determinant of J</source>
+        <translation>Определитель J</translation>
+    </message>
+    <message>
+        <source>J = J_q⁻¹·J_x maps lengths to angles, so det J is in rad²/mm², not dimensionless as MOMA&apos;s and the O-X glide&apos;s.</source>
+        <translation>J = J_q⁻¹·J_x переводит длины в углы, поэтому det J измеряется в рад²/мм², а не безразмерен, как у MOMA и O-X glide.</translation>
+    </message>
+    <message>
+        <source>Transmission angle between the distal links</source>
+        <translation>Угол передачи между шатунами</translation>
+    </message>
+    <message>
+        <source>Distance from the inverse singularities</source>
+        <translation>Удаление от особых положений обратной кинематики</translation>
+    </message>
+    <message>
+        <source>Distance from the direct singularities</source>
+        <translation>Удаление от особых положений прямой кинематики</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Угол передачи γ в C</translation>
+    </message>
+    <message>
+        <source>Angle at D from DA to DB</source>
+        <translation>Угол в D от DA до DB</translation>
+    </message>
+    <message>
+        <source>Rocker angle</source>
+        <translation>Угол коромысла</translation>
+    </message>
+    <message>
+        <source>The document takes the arctan of the ratio, which is 180° off wherever CD − BC·cos γ &lt; 0; the program uses atan2.</source>
+        <translation>В документе берётся arctg отношения, что даёт ошибку в 180° везде, где CD − BC·cos γ &lt; 0; программа использует atan2.</translation>
+    </message>
+    <message>
+        <source>Angle at B</source>
+        <translation>Угол в B</translation>
+    </message>
+    <message>
+        <source>Transfer function dδ/dα</source>
+        <translation>Передаточная функция dδ/dα</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (8) and (9) give the rocker&apos;s counter-clockwise rate dθ₃/dt = −dδ/dt; the program&apos;s ω₃ and i₃₁ are their negatives.</source>
+        <translation>Формулы (8) и (9) документа дают скорость коромысла против часовой стрелки dθ₃/dt = −dδ/dt; ω₃ и i₃₁ программы — те же величины с обратным знаком.</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity</source>
+        <translation>Угловая скорость коромысла</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration at constant ω₁</source>
+        <translation>Угловое ускорение коромысла при постоянной ω₁</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (14) agrees with neither sign of the exact second derivative; the program differentiates the loop closure twice.</source>
+        <translation>Формула (14) документа не совпадает с точной второй производной ни при каком знаке; программа дважды дифференцирует уравнение замыкания контура.</translation>
+    </message>
+    <message>
+        <source>Input Jacobian (0: inverse singularity)</source>
+        <translation>Якобиан входа (0: особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>Projection on guide %1</source>
+        <translation>Проекция на направляющую %1</translation>
+    </message>
+    <message>
+        <source>Reach of link %1</source>
+        <translation>Досягаемость звена %1</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics of leg %1</source>
+        <translation>Обратная кинематика ветви %1</translation>
+    </message>
+    <message>
+        <source>The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², the same number without cancelling two large ones.</source>
+        <translation>Программа вычисляет B_i² − C_i как l_i² − (a_i × (P − R_i))²: то же число, но без вычитания двух больших чисел.</translation>
+    </message>
+    <message>
+        <source>Direct kinematics: P along Z₁→Z₂</source>
+        <translation>Прямая кинематика: P вдоль Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (10–12) divide by x_Z2 − x_Z1 and fail with the slider joints one above the other; the program intersects the circles measured along Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</source>
+        <translation>Формулы (10–12) документа делят на x_Z2 − x_Z1 и не работают, когда шарниры ползунов стоят один над другим; программа пересекает окружности, отсчитывая вдоль Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</translation>
+    </message>
+    <message>
+        <source>From J_p·ṗ + J_x·Ṗ = 0 the program&apos;s J is −J_p⁻¹·J_x; the document&apos;s (21) has no minus sign. For the 2×2 J the determinant is the same.</source>
+        <translation>Из J_p·ṗ + J_x·Ṗ = 0 в программе J = −J_p⁻¹·J_x; в формуле (21) документа минуса нет. Для матрицы J 2×2 определитель тот же.</translation>
+    </message>
+    <message>
+        <source>Run of a rod along the guides</source>
+        <translation>Вынос тяги вдоль направляющих</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics, %1 form</source>
+        <translation>Обратная кинематика, форма %1</translation>
+    </message>
+    <message>
+        <source>Direct kinematics, both forms</source>
+        <translation>Прямая кинематика, обе формы</translation>
+    </message>
+    <message>
+        <source>The document prints “+ s” in the X form&apos;s direct kinematics, which contradicts its own inverse kinematics; with “− s” both forms return their poses exactly. The sign of x_CD − x_AB − s is the form.</source>
+        <translation>В прямой кинематике формы X документ печатает «+ s», что противоречит его же обратной кинематике; с «− s» обе формы точно возвращают свои положения. Знак x_CD − x_AB − s и есть форма.</translation>
+    </message>
+    <message>
+        <source>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] from the constraints (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (rods perpendicular to the guides or parallel to each other) is singular.</source>
+        <translation>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] из уравнений связей (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (тяги перпендикулярны направляющим или параллельны друг другу) — особое положение.</translation>
+    </message>
+    <message>
+        <source>Condition number of J</source>
+        <translation>Число обусловленности J</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics</source>
+        <translation>Обратная кинематика</translation>
+    </message>
+    <message>
+        <source>Direct kinematics</source>
+        <translation>Прямая кинематика</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Угол передачи</translation>
+    </message>
+    <message>
+        <source>Output torque at F_max</source>
+        <translation>Выходной момент при F_max</translation>
+    </message>
+    <message>
+        <source>J in mm/rad times F in N gives N·mm; 10⁻³ turns it into N·m.</source>
+        <translation>J в мм/рад, умноженный на F в Н, даёт Н·мм; множитель 10⁻³ переводит в Н·м.</translation>
+    </message>
+    <message>
+        <source>Output speed at ḋ_max</source>
+        <translation>Выходная скорость при ḋ_max</translation>
+    </message>
+    <message>
+        <source>Motor torque at F_max</source>
+        <translation>Момент двигателя при F_max</translation>
+    </message>
+    <message>
+        <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
+        <translation>В таблице 1 нет КПД винтовой передачи η; в примерах принято 0,4.</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
+        <translation>Производная J, для ускорения d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
+    </message>
+    <message>
+        <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
+        <translation>В формулах ускорения (19–20) документа в первом члене потеряно θ̈, а вместо θ̇² написано θ̇; программа использует d̈ = J·θ̈ + (∂J/∂θ)·θ̇², что совпадает с численной второй производной.</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): constraint</source>
+        <translation>Ветвь %1 (%2): уравнение связи</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s angle</source>
+        <translation>Ветвь %1 (%2): угол П-шарнира</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
+        <translation>Ветвь %1 (%2): якобиан П-шарнира</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
+        <translation>Строка ветви в J_x содержит этот J множителем, поэтому особое положение самого П-шарнира (θ = ±90°) — особое положение прямой кинематики всего механизма (документ о П-шарнире, раздел 4).</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
+        <translation>Ветвь %1 (%2): якобиан входа (0: особое положение обратной кинематики)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3649,6 +3889,13 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Особое положение (комбинированное): здесь механизмом нельзя управлять.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::EquationsPanel</name>
+    <message>
+        <source>This kind lists no equations.</source>
+        <translation>Для этого вида механизма уравнения не заданы.</translation>
     </message>
 </context>
 <context>
@@ -4232,6 +4479,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделирует механизмы этих четырёх документов: активный П-шарнир (1), MOMA (2), O-X glide (3), шарнирный четырёхзвенник и формулы подвижности (4). Где напечатанная формула или число неверны, программа использует исправленные; раздел README о математике перечисляет каждое исправление.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Уравнения</translation>
     </message>
 </context>
 <context>

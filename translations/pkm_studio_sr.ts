@@ -3444,6 +3444,246 @@ Please verify the correct file name was given.</source>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Превлачење се зауставља пре прелаза O↔X при x_CD − x_AB = s = %1 mm, где су шипке паралелне и платформа може да се њише: промените облик да бисте наставили.</translation>
     </message>
+    <message>
+        <source>eq. %1 of the П-joint document</source>
+        <translation>јед. %1 рада о П-зглобу</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the П-joint document</source>
+        <translation>сл. %1 рада о П-зглобу</translation>
+    </message>
+    <message>
+        <source>the П-joint document</source>
+        <translation>рад о П-зглобу</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the MOMA document</source>
+        <translation>јед. %1 рада о MOMA</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the MOMA document</source>
+        <translation>сл. %1 рада о MOMA</translation>
+    </message>
+    <message>
+        <source>the MOMA document</source>
+        <translation>рад о MOMA</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the O-X glide document</source>
+        <translation>јед. %1 рада о O-X glide</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the O-X glide document</source>
+        <translation>сл. %1 рада о O-X glide</translation>
+    </message>
+    <message>
+        <source>the O-X glide document</source>
+        <translation>рад о O-X glide</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the four-bar and mobility document</source>
+        <translation>јед. %1 рада о зглобном четвороуглу и покретљивости</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the four-bar and mobility document</source>
+        <translation>сл. %1 рада о зглобном четвороуглу и покретљивости</translation>
+    </message>
+    <message>
+        <source>the four-bar and mobility document</source>
+        <translation>рад о зглобном четвороуглу и покретљивости</translation>
+    </message>
+    <message>
+        <source>PKM Studio&apos;s model</source>
+        <translation>модел програма PKM Studio</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 1 (0: inverse singularity)</source>
+        <translation>Јакобијан улаза ноге 1 (0: сингуларитет инверзне кинематике)</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 2 (0: inverse singularity)</source>
+        <translation>Јакобијан улаза ноге 2 (0: сингуларитет инверзне кинематике)</translation>
+    </message>
+    <message>
+        <source>Output Jacobian (0: direct singularity)</source>
+        <translation>Јакобијан излаза (0: сингуларитет директне кинематике)</translation>
+    </message>
+    <message>
+        <source>Determinant of J</source>
+        <translation>Детерминанта J</translation>
+    </message>
+    <message>
+        <source>J = J_q⁻¹·J_x maps lengths to angles, so det J is in rad²/mm², not dimensionless as MOMA&apos;s and the O-X glide&apos;s.</source>
+        <translation>J = J_q⁻¹·J_x пресликава дужине у углове, па је det J у rad²/mm², а не бездимензионалан као код MOMA и O-X glide.</translation>
+    </message>
+    <message>
+        <source>Transmission angle between the distal links</source>
+        <translation>Угао преноса између спојки</translation>
+    </message>
+    <message>
+        <source>Distance from the inverse singularities</source>
+        <translation>Удаљеност од сингуларитета инверзне кинематике</translation>
+    </message>
+    <message>
+        <source>Distance from the direct singularities</source>
+        <translation>Удаљеност од сингуларитета директне кинематике</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Угао преноса γ у C</translation>
+    </message>
+    <message>
+        <source>Angle at D from DA to DB</source>
+        <translation>Угао у D од DA до DB</translation>
+    </message>
+    <message>
+        <source>Rocker angle</source>
+        <translation>Угао клацкалице</translation>
+    </message>
+    <message>
+        <source>The document takes the arctan of the ratio, which is 180° off wherever CD − BC·cos γ &lt; 0; the program uses atan2.</source>
+        <translation>Рад узима arctg количника, што греши за 180° где год је CD − BC·cos γ &lt; 0; програм користи atan2.</translation>
+    </message>
+    <message>
+        <source>Angle at B</source>
+        <translation>Угао у B</translation>
+    </message>
+    <message>
+        <source>Transfer function dδ/dα</source>
+        <translation>Преносна функција dδ/dα</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (8) and (9) give the rocker&apos;s counter-clockwise rate dθ₃/dt = −dδ/dt; the program&apos;s ω₃ and i₃₁ are their negatives.</source>
+        <translation>Једначине (8) и (9) из рада дају брзину клацкалице супротно од казаљке на сату dθ₃/dt = −dδ/dt; ω₃ и i₃₁ у програму су исте величине са супротним знаком.</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity</source>
+        <translation>Угаона брзина клацкалице</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration at constant ω₁</source>
+        <translation>Угаоно убрзање клацкалице при константној ω₁</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (14) agrees with neither sign of the exact second derivative; the program differentiates the loop closure twice.</source>
+        <translation>Једначина (14) из рада се не слаже са тачним другим изводом ни са једним знаком; програм двапут диференцира једначину затварања контуре.</translation>
+    </message>
+    <message>
+        <source>Input Jacobian (0: inverse singularity)</source>
+        <translation>Јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
+    </message>
+    <message>
+        <source>Projection on guide %1</source>
+        <translation>Пројекција на вођицу %1</translation>
+    </message>
+    <message>
+        <source>Reach of link %1</source>
+        <translation>Домет спојке %1</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics of leg %1</source>
+        <translation>Инверзна кинематика ноге %1</translation>
+    </message>
+    <message>
+        <source>The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², the same number without cancelling two large ones.</source>
+        <translation>Програм рачуна B_i² − C_i као l_i² − (a_i × (P − R_i))²: исти број, без одузимања два велика броја.</translation>
+    </message>
+    <message>
+        <source>Direct kinematics: P along Z₁→Z₂</source>
+        <translation>Директна кинематика: P дуж Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (10–12) divide by x_Z2 − x_Z1 and fail with the slider joints one above the other; the program intersects the circles measured along Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</source>
+        <translation>Једначине (10–12) из рада деле са x_Z2 − x_Z1 и не важе кад су зглобови клизача један изнад другог; програм сече кругове мерећи дуж Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</translation>
+    </message>
+    <message>
+        <source>From J_p·ṗ + J_x·Ṗ = 0 the program&apos;s J is −J_p⁻¹·J_x; the document&apos;s (21) has no minus sign. For the 2×2 J the determinant is the same.</source>
+        <translation>Из J_p·ṗ + J_x·Ṗ = 0 у програму је J = −J_p⁻¹·J_x; у једначини (21) из рада нема минуса. За матрицу J 2×2 детерминанта је иста.</translation>
+    </message>
+    <message>
+        <source>Run of a rod along the guides</source>
+        <translation>Пројекција шипке дуж вођица</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics, %1 form</source>
+        <translation>Инверзна кинематика, облик %1</translation>
+    </message>
+    <message>
+        <source>Direct kinematics, both forms</source>
+        <translation>Директна кинематика, оба облика</translation>
+    </message>
+    <message>
+        <source>The document prints “+ s” in the X form&apos;s direct kinematics, which contradicts its own inverse kinematics; with “− s” both forms return their poses exactly. The sign of x_CD − x_AB − s is the form.</source>
+        <translation>Рад у директној кинематици облика X штампа „+ s”, што противречи његовој инверзној кинематици; са „− s” оба облика тачно враћају своје положаје. Знак x_CD − x_AB − s је облик.</translation>
+    </message>
+    <message>
+        <source>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] from the constraints (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (rods perpendicular to the guides or parallel to each other) is singular.</source>
+        <translation>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] из једначина веза (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (шипке управне на вођице или паралелне међусобно) је сингуларитет.</translation>
+    </message>
+    <message>
+        <source>Condition number of J</source>
+        <translation>Број условљености J</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics</source>
+        <translation>Инверзна кинематика</translation>
+    </message>
+    <message>
+        <source>Direct kinematics</source>
+        <translation>Директна кинематика</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Угао преноса</translation>
+    </message>
+    <message>
+        <source>Output torque at F_max</source>
+        <translation>Излазни момент при F_max</translation>
+    </message>
+    <message>
+        <source>J in mm/rad times F in N gives N·mm; 10⁻³ turns it into N·m.</source>
+        <translation>J у mm/rad пута F у N даје N·mm; чинилац 10⁻³ претвара то у N·m.</translation>
+    </message>
+    <message>
+        <source>Output speed at ḋ_max</source>
+        <translation>Излазна угаона брзина при ḋ_max</translation>
+    </message>
+    <message>
+        <source>Motor torque at F_max</source>
+        <translation>Момент мотора при F_max</translation>
+    </message>
+    <message>
+        <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
+        <translation>Табела 1 не даје степен искоришћења вретена η; примери узимају 0,4.</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
+        <translation>Извод од J, за убрзање d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
+    </message>
+    <message>
+        <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
+        <translation>У убрзању (19–20) из рада првом члану недостаје θ̈, а уместо θ̇² пише θ̇; програм користи d̈ = J·θ̈ + (∂J/∂θ)·θ̇², што се слаже са нумеричким другим изводом.</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): constraint</source>
+        <translation>Нога %1 (%2): једначина везе</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s angle</source>
+        <translation>Нога %1 (%2): угао П-зглоба</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
+        <translation>Нога %1 (%2): Јакобијан П-зглоба</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
+        <translation>Ред ноге у J_x садржи овај J као чинилац, па је сингуларитет самог П-зглоба (θ = ±90°) сингуларитет директне кинематике целог механизма (рад о П-зглобу, одељак 4).</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
+        <translation>Нога %1 (%2): Јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3649,6 +3889,13 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Сингуларан положај (комбиновани): механизмом се овде не може управљати.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::EquationsPanel</name>
+    <message>
+        <source>This kind lists no equations.</source>
+        <translation>За ову врсту механизма једначине нису наведене.</translation>
     </message>
 </context>
 <context>
@@ -4232,6 +4479,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделира механизме ова четири документа: активни П-зглоб (1), MOMA (2), O-X glide (3), зглобни четвороугао и формуле покретљивости (4). Где је штампана формула или број погрешан, програм користи исправљени; одељак README-а о математици наводи свако исправљање.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Једначине</translation>
     </message>
 </context>
 <context>

@@ -3444,6 +3444,246 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Prevlačenje se zaustavlja pre prelaza O↔X pri x_CD − x_AB = s = %1 mm, gde su šipke paralelne i platforma može da se njiše: promenite oblik da biste nastavili.</translation>
     </message>
+    <message>
+        <source>eq. %1 of the П-joint document</source>
+        <translation>jed. %1 rada o P-zglobu</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the П-joint document</source>
+        <translation>sl. %1 rada o P-zglobu</translation>
+    </message>
+    <message>
+        <source>the П-joint document</source>
+        <translation>rad o P-zglobu</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the MOMA document</source>
+        <translation>jed. %1 rada o MOMA</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the MOMA document</source>
+        <translation>sl. %1 rada o MOMA</translation>
+    </message>
+    <message>
+        <source>the MOMA document</source>
+        <translation>rad o MOMA</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the O-X glide document</source>
+        <translation>jed. %1 rada o O-X glide</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the O-X glide document</source>
+        <translation>sl. %1 rada o O-X glide</translation>
+    </message>
+    <message>
+        <source>the O-X glide document</source>
+        <translation>rad o O-X glide</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the four-bar and mobility document</source>
+        <translation>jed. %1 rada o zglobnom četvorouglu i pokretljivosti</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the four-bar and mobility document</source>
+        <translation>sl. %1 rada o zglobnom četvorouglu i pokretljivosti</translation>
+    </message>
+    <message>
+        <source>the four-bar and mobility document</source>
+        <translation>rad o zglobnom četvorouglu i pokretljivosti</translation>
+    </message>
+    <message>
+        <source>PKM Studio&apos;s model</source>
+        <translation>model programa PKM Studio</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 1 (0: inverse singularity)</source>
+        <translation>Jakobijan ulaza noge 1 (0: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 2 (0: inverse singularity)</source>
+        <translation>Jakobijan ulaza noge 2 (0: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>Output Jacobian (0: direct singularity)</source>
+        <translation>Jakobijan izlaza (0: singularitet direktne kinematike)</translation>
+    </message>
+    <message>
+        <source>Determinant of J</source>
+        <translation>Determinanta J</translation>
+    </message>
+    <message>
+        <source>J = J_q⁻¹·J_x maps lengths to angles, so det J is in rad²/mm², not dimensionless as MOMA&apos;s and the O-X glide&apos;s.</source>
+        <translation>J = J_q⁻¹·J_x preslikava dužine u uglove, pa je det J u rad²/mm², a ne bezdimenzionalan kao kod MOMA i O-X glide.</translation>
+    </message>
+    <message>
+        <source>Transmission angle between the distal links</source>
+        <translation>Ugao prenosa između spojki</translation>
+    </message>
+    <message>
+        <source>Distance from the inverse singularities</source>
+        <translation>Udaljenost od singulariteta inverzne kinematike</translation>
+    </message>
+    <message>
+        <source>Distance from the direct singularities</source>
+        <translation>Udaljenost od singulariteta direktne kinematike</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Ugao prenosa γ u C</translation>
+    </message>
+    <message>
+        <source>Angle at D from DA to DB</source>
+        <translation>Ugao u D od DA do DB</translation>
+    </message>
+    <message>
+        <source>Rocker angle</source>
+        <translation>Ugao klackalice</translation>
+    </message>
+    <message>
+        <source>The document takes the arctan of the ratio, which is 180° off wherever CD − BC·cos γ &lt; 0; the program uses atan2.</source>
+        <translation>Rad uzima arctg količnika, što greši za 180° gde god je CD − BC·cos γ &lt; 0; program koristi atan2.</translation>
+    </message>
+    <message>
+        <source>Angle at B</source>
+        <translation>Ugao u B</translation>
+    </message>
+    <message>
+        <source>Transfer function dδ/dα</source>
+        <translation>Prenosna funkcija dδ/dα</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (8) and (9) give the rocker&apos;s counter-clockwise rate dθ₃/dt = −dδ/dt; the program&apos;s ω₃ and i₃₁ are their negatives.</source>
+        <translation>Jednačine (8) i (9) iz rada daju brzinu klackalice suprotno od kazaljke na satu dθ₃/dt = −dδ/dt; ω₃ i i₃₁ u programu su iste veličine sa suprotnim znakom.</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity</source>
+        <translation>Ugaona brzina klackalice</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration at constant ω₁</source>
+        <translation>Ugaono ubrzanje klackalice pri konstantnoj ω₁</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (14) agrees with neither sign of the exact second derivative; the program differentiates the loop closure twice.</source>
+        <translation>Jednačina (14) iz rada se ne slaže sa tačnim drugim izvodom ni sa jednim znakom; program dvaput diferencira jednačinu zatvaranja konture.</translation>
+    </message>
+    <message>
+        <source>Input Jacobian (0: inverse singularity)</source>
+        <translation>Jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>Projection on guide %1</source>
+        <translation>Projekcija na vođicu %1</translation>
+    </message>
+    <message>
+        <source>Reach of link %1</source>
+        <translation>Domet spojke %1</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics of leg %1</source>
+        <translation>Inverzna kinematika noge %1</translation>
+    </message>
+    <message>
+        <source>The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², the same number without cancelling two large ones.</source>
+        <translation>Program računa B_i² − C_i kao l_i² − (a_i × (P − R_i))²: isti broj, bez oduzimanja dva velika broja.</translation>
+    </message>
+    <message>
+        <source>Direct kinematics: P along Z₁→Z₂</source>
+        <translation>Direktna kinematika: P duž Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (10–12) divide by x_Z2 − x_Z1 and fail with the slider joints one above the other; the program intersects the circles measured along Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</source>
+        <translation>Jednačine (10–12) iz rada dele sa x_Z2 − x_Z1 i ne važe kad su zglobovi klizača jedan iznad drugog; program seče krugove mereći duž Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</translation>
+    </message>
+    <message>
+        <source>From J_p·ṗ + J_x·Ṗ = 0 the program&apos;s J is −J_p⁻¹·J_x; the document&apos;s (21) has no minus sign. For the 2×2 J the determinant is the same.</source>
+        <translation>Iz J_p·ṗ + J_x·Ṗ = 0 u programu je J = −J_p⁻¹·J_x; u jednačini (21) iz rada nema minusa. Za matricu J 2×2 determinanta je ista.</translation>
+    </message>
+    <message>
+        <source>Run of a rod along the guides</source>
+        <translation>Projekcija šipke duž vođica</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics, %1 form</source>
+        <translation>Inverzna kinematika, oblik %1</translation>
+    </message>
+    <message>
+        <source>Direct kinematics, both forms</source>
+        <translation>Direktna kinematika, oba oblika</translation>
+    </message>
+    <message>
+        <source>The document prints “+ s” in the X form&apos;s direct kinematics, which contradicts its own inverse kinematics; with “− s” both forms return their poses exactly. The sign of x_CD − x_AB − s is the form.</source>
+        <translation>Rad u direktnoj kinematici oblika X štampa „+ s”, što protivreči njegovoj inverznoj kinematici; sa „− s” oba oblika tačno vraćaju svoje položaje. Znak x_CD − x_AB − s je oblik.</translation>
+    </message>
+    <message>
+        <source>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] from the constraints (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (rods perpendicular to the guides or parallel to each other) is singular.</source>
+        <translation>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] iz jednačina veza (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (šipke upravne na vođice ili paralelne međusobno) je singularitet.</translation>
+    </message>
+    <message>
+        <source>Condition number of J</source>
+        <translation>Broj uslovljenosti J</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics</source>
+        <translation>Inverzna kinematika</translation>
+    </message>
+    <message>
+        <source>Direct kinematics</source>
+        <translation>Direktna kinematika</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Ugao prenosa</translation>
+    </message>
+    <message>
+        <source>Output torque at F_max</source>
+        <translation>Izlazni moment pri F_max</translation>
+    </message>
+    <message>
+        <source>J in mm/rad times F in N gives N·mm; 10⁻³ turns it into N·m.</source>
+        <translation>J u mm/rad puta F u N daje N·mm; činilac 10⁻³ pretvara to u N·m.</translation>
+    </message>
+    <message>
+        <source>Output speed at ḋ_max</source>
+        <translation>Izlazna ugaona brzina pri ḋ_max</translation>
+    </message>
+    <message>
+        <source>Motor torque at F_max</source>
+        <translation>Moment motora pri F_max</translation>
+    </message>
+    <message>
+        <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
+        <translation>Tabela 1 ne daje stepen iskorišćenja vretena η; primeri uzimaju 0,4.</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
+        <translation>Izvod od J, za ubrzanje d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
+    </message>
+    <message>
+        <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
+        <translation>U ubrzanju (19–20) iz rada prvom članu nedostaje θ̈, a umesto θ̇² piše θ̇; program koristi d̈ = J·θ̈ + (∂J/∂θ)·θ̇², što se slaže sa numeričkim drugim izvodom.</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): constraint</source>
+        <translation>Noga %1 (%2): jednačina veze</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s angle</source>
+        <translation>Noga %1 (%2): ugao P-zgloba</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
+        <translation>Noga %1 (%2): Jakobijan P-zgloba</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
+        <translation>Red noge u J_x sadrži ovaj J kao činilac, pa je singularitet samog P-zgloba (θ = ±90°) singularitet direktne kinematike celog mehanizma (rad o P-zglobu, odeljak 4).</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
+        <translation>Noga %1 (%2): Jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3649,6 +3889,13 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Singular pose (combined): the mechanism cannot be driven here.</source>
         <translation>Singularan položaj (kombinovani): mehanizmom se ovde ne može upravljati.</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::EquationsPanel</name>
+    <message>
+        <source>This kind lists no equations.</source>
+        <translation>Za ovu vrstu mehanizma jednačine nisu navedene.</translation>
     </message>
 </context>
 <context>
@@ -4232,6 +4479,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio modelira mehanizme ova četiri dokumenta: aktivni P-zglob (1), MOMA (2), O-X glide (3), zglobni četvorougao i formule pokretljivosti (4). Gde je štampana formula ili broj pogrešan, program koristi ispravljeni; odeljak README-a o matematici navodi svako ispravljanje.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Jednačine</translation>
     </message>
 </context>
 <context>
