@@ -3,10 +3,12 @@
 // reading as the values table reads it, and follows the pose and the design.
 //
 // With PKM_GRAB_DIR set, the window with the dock raised is written there for the O-X glide
-// (equations-window.png), and for the П-joint at θ = 30° (equations-pjoint.png).
+// (equations-window.png), for the П-joint at θ = 30° (equations-pjoint.png) and in Russian
+// (equations-ru.png).
 #include "gui/mainwindow.h"
 
 #include "document/document.h"
+#include "document/language.h"
 #include "equationspanel.h"
 #include "support/app.h"
 #include "valuestable.h"
@@ -91,6 +93,29 @@ private slots:
             QVERIFY(m_window->grab().save(QDir(dir).filePath(QStringLiteral("equations-pjoint.png"))));
         }
         dock("valuesDock")->raise(); // as a new user finds the window
+    }
+
+    /// Another language: the titles, sources and notes in it, the numbers in its locale, as the
+    /// values table writes them.
+    void followsTheLanguage()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));
+        dock("equationsDock")->raise();
+        QVERIFY(QTest::qWaitFor([this] { return panel()->isVisible(); }));
+        QVERIFY(language::apply(QStringLiteral("ru")));
+        // the widgets hear of the change from the event loop
+        QVERIFY(QTest::qWaitFor([this] { return panel()->toPlainText().contains(QStringLiteral("Обратная кинематика")); }));
+        const QString text = panel()->toPlainText();
+        QVERIFY2(text.contains(QStringLiteral("Обратная кинематика")), qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("документа о П-шарнире")));
+        QVERIFY(panel()->resultText(0).contains(QLatin1Char(','))); // "…,.. мм"
+        compareWithValues();
+        const QString dir = qEnvironmentVariable("PKM_GRAB_DIR");
+        if (!dir.isEmpty())
+            QVERIFY(m_window->grab().save(QDir(dir).filePath(QStringLiteral("equations-ru.png"))));
+        QVERIFY(language::apply(QStringLiteral("en")));
+        QVERIFY(QTest::qWaitFor([this] { return panel()->toPlainText().contains(QStringLiteral("Inverse kinematics")); }));
+        dock("valuesDock")->raise();
     }
 };
 
