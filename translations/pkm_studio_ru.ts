@@ -3684,6 +3684,10 @@ Please verify the correct file name was given.</source>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
         <translation>Ветвь %1 (%2): якобиан входа (0: особое положение обратной кинематики)</translation>
     </message>
+    <message>
+        <source>Output resolution per motor step</source>
+        <translation>Выходное разрешение на шаг двигателя</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -3684,6 +3684,10 @@ Please verify the correct file name was given.</source>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
         <translation>Нога %1 (%2): Јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
     </message>
+    <message>
+        <source>Output resolution per motor step</source>
+        <translation>Излазна резолуција по кораку мотора</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -3684,6 +3684,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
         <translation>Noga %1 (%2): Jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
     </message>
+    <message>
+        <source>Output resolution per motor step</source>
+        <translation>Izlazna rezolucija po koraku motora</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -91,6 +91,14 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .resultName = "speed",
                     .formula = p.speedMax / J.value,
                     .source = cite(Document::PJoint, "(8)")});
+    list.push_back({.title = text::translate("core", "Output resolution per motor step"),
+                    .symbolic = "Δθ = Δd / J",
+                    .substituted = "%1 / %2 · 180°/π", // J in mm/rad, Δθ shown in degrees
+                    .numbers = {parameter(mechanism, "step"), J},
+                    .result = report.number("resolution"),
+                    .resultName = "resolution",
+                    .formula = p.step / J.value,
+                    .source = citeFigure(Document::PJoint, "15")});
     list.push_back({.title = text::translate("core", "Motor torque at F_max"),
                     .symbolic = "T_M = F_max·h/(2π·η)·10⁻³",
                     .substituted = "%1·%2/(2π·%3)·10⁻³",
