@@ -115,28 +115,28 @@ enum class Reference { Equation, Figure, Whole };
 const char *documentPattern(Document document, Reference reference)
 {
     switch (document) {
-    case Document::PJoint:
+    case Document::PJointDocument:
         switch (reference) {
         case Reference::Equation: return QT_TRANSLATE_NOOP("core", "eq. %1 of the П-joint document");
         case Reference::Figure: return QT_TRANSLATE_NOOP("core", "fig. %1 of the П-joint document");
         case Reference::Whole: return QT_TRANSLATE_NOOP("core", "the П-joint document");
         }
         break;
-    case Document::Moma:
+    case Document::MomaDocument:
         switch (reference) {
         case Reference::Equation: return QT_TRANSLATE_NOOP("core", "eq. %1 of the MOMA document");
         case Reference::Figure: return QT_TRANSLATE_NOOP("core", "fig. %1 of the MOMA document");
         case Reference::Whole: return QT_TRANSLATE_NOOP("core", "the MOMA document");
         }
         break;
-    case Document::OxGlide:
+    case Document::OxGlideDocument:
         switch (reference) {
         case Reference::Equation: return QT_TRANSLATE_NOOP("core", "eq. %1 of the O-X glide document");
         case Reference::Figure: return QT_TRANSLATE_NOOP("core", "fig. %1 of the O-X glide document");
         case Reference::Whole: return QT_TRANSLATE_NOOP("core", "the O-X glide document");
         }
         break;
-    case Document::FourBar:
+    case Document::FourBarDocument:
         switch (reference) {
         case Reference::Equation: return QT_TRANSLATE_NOOP("core", "eq. %1 of the four-bar and mobility document");
         case Reference::Figure: return QT_TRANSLATE_NOOP("core", "fig. %1 of the four-bar and mobility document");

@@ -83,7 +83,7 @@ inline EquationNumber angle(double rad) { return {rad, units::angle, 2}; }
 inline EquationNumber plain(double value, int decimals = 4) { return {value, units::none, decimals}; }
 
 /// The documents the equations come from (docs/mathematics.md, Sources).
-enum class Document { PJoint, Moma, OxGlide, FourBar };
+enum class Document { PJointDocument, MomaDocument, OxGlideDocument, FourBarDocument };
 /// "eq. (2) of the П-joint document", translated; `numbers` as printed there ("(3–5)"), or
 /// empty for a formula the document prints without a number ("the O-X glide document").
 std::string cite(Document document, std::string_view numbers);

@@ -34,7 +34,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = plain(std::cos(gamma.value)),
                     .formula = (bc * bc + cd * cd - ab * ab - ad * ad) / (2.0 * bc * cd) +
                                ab * ad / (bc * cd) * std::cos(alpha.value),
-                    .source = cite(Document::FourBar, "(5)")});
+                    .source = cite(Document::FourBarDocument, "(5)")});
     list.push_back({.title = text::translate("core", "Angle at D from DA to DB"),
                     .symbolic = "δ₁ = atan2(AB·sin α, AD − AB·cos α)",
                     .substituted = "atan2(%1·sin %2, %3 − %1·cos %2)",
@@ -42,7 +42,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = delta1,
                     .resultName = "delta1",
                     .formula = std::atan2(ab * std::sin(alpha.value), ad - ab * std::cos(alpha.value)),
-                    .source = cite(Document::FourBar, "(4)")});
+                    .source = cite(Document::FourBarDocument, "(4)")});
     list.push_back({.title = text::translate("core", "Rocker angle"),
                     .symbolic = "δ = δ₁ + atan2(BC·sin γ, CD − BC·cos γ)",
                     .substituted = "%1 + atan2(%2·sin %3, %4 − %2·cos %3)",
@@ -50,7 +50,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = delta,
                     .resultName = "delta",
                     .formula = std::fmod(delta1.value + std::atan2(bc * std::sin(gamma.value), cd - bc * std::cos(gamma.value)) + turn, turn),
-                    .source = cite(Document::FourBar, "(3, 6)"),
+                    .source = cite(Document::FourBarDocument, "(3, 6)"),
                     .note = text::translate("core", "The document takes the arctan of the ratio, which is 180° off wherever "
                                                     "CD − BC·cos γ < 0; the program uses atan2.")});
     list.push_back({.title = text::translate("core", "Angle at B"),
@@ -60,7 +60,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = beta,
                     .resultName = "beta",
                     .formula = std::fmod(4.0 * turn - (alpha.value + gamma.value + delta.value), turn),
-                    .source = cite(Document::FourBar, "(7)")});
+                    .source = cite(Document::FourBarDocument, "(7)")});
     list.push_back({.title = text::translate("core", "Transfer function dδ/dα"),
                     .symbolic = "i₃₁ = −AB·sin β / (CD·sin γ)",
                     .substituted = "−%1·sin %2 / (%3·sin %4)",
@@ -68,7 +68,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = i31,
                     .resultName = "i31",
                     .formula = -ab * std::sin(beta.value) / (cd * std::sin(gamma.value)),
-                    .source = cite(Document::FourBar, "(9)"),
+                    .source = cite(Document::FourBarDocument, "(9)"),
                     .note = text::translate("core", "The document's (8) and (9) give the rocker's counter-clockwise rate "
                                                     "dθ₃/dt = −dδ/dt; the program's ω₃ and i₃₁ are their negatives.")});
     const EquationNumber omega1 = report.number("omega1");
@@ -79,12 +79,12 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = report.number("omega3"),
                     .resultName = "omega3",
                     .formula = omega1.value * i31.value,
-                    .source = cite(Document::FourBar, "(8)")});
+                    .source = cite(Document::FourBarDocument, "(8)")});
     list.push_back({.title = text::translate("core", "Rocker angular acceleration at constant ω₁"),
                     .symbolic = "ε₃ = d²δ/dt²",
                     .result = report.number("epsilon3"),
                     .resultName = "epsilon3",
-                    .source = cite(Document::FourBar, "(10–14)"),
+                    .source = cite(Document::FourBarDocument, "(10–14)"),
                     .note = text::translate("core", "The document's (14) agrees with neither sign of the exact second "
                                                     "derivative; the program differentiates the loop closure twice.")});
     list.push_back({.title = text::translate("core", "Input Jacobian (0: inverse singularity)"),

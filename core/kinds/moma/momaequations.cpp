@@ -39,14 +39,14 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                         .numbers = {angle(alpha), x, length(R.x()), y, length(R.y())},
                         .result = length(B),
                         .formula = std::cos(alpha) * (P.x() - R.x()) + std::sin(alpha) * (P.y() - R.y()),
-                        .source = cite(Document::Moma, "(8)")});
+                        .source = cite(Document::MomaDocument, "(8)")});
         list.push_back({.title = text::format(text::translate("core", "Reach of link %1"), {legText}),
                         .symbolic = symbol("C%1 = (x − x_R%2)² + (y − y_R%2)² − l%1²", leg),
                         .substituted = "(%1 − %2)² + (%3 − %4)² − %5²",
                         .numbers = {x, length(R.x()), y, length(R.y()), length(l)},
                         .result = {C, units::squareMillimetre, 1},
                         .formula = (P.x() - R.x()) * (P.x() - R.x()) + (P.y() - R.y()) * (P.y() - R.y()) - l * l,
-                        .source = cite(Document::Moma, "(9)")});
+                        .source = cite(Document::MomaDocument, "(9)")});
         const double beta = m.branch[std::size_t(leg)];
         list.push_back({.title = text::format(text::translate("core", "Inverse kinematics of leg %1"), {legText}),
                         .symbolic = symbol("p%1 = B%1 + β%1·√(B%1² − C%1)", leg),
@@ -55,7 +55,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                         .result = p,
                         .resultName = leg == 0 ? "p1" : "p2",
                         .formula = B + beta * std::sqrt(B * B - C),
-                        .source = cite(Document::Moma, "(7)"),
+                        .source = cite(Document::MomaDocument, "(7)"),
                         .note = leg == 0 ? text::translate("core", "The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², "
                                                                    "the same number without cancelling two large ones.")
                                          : std::string()});
@@ -71,7 +71,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     // the program's P measured along Z₁→Z₂
                     .result = length((P - Z1).dot(Z2 - Z1) / e),
                     .formula = (l1 * l1 - l2 * l2 + e * e) / (2.0 * e),
-                    .source = cite(Document::Moma, "(10–12)"),
+                    .source = cite(Document::MomaDocument, "(10–12)"),
                     .note = text::translate("core", "The document's (10–12) divide by x_Z2 − x_Z1 and fail with the slider "
                                                     "joints one above the other; the program intersects the circles "
                                                     "measured along Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).")});
@@ -82,7 +82,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = report.number("det_Jp"),
                     .resultName = "det_Jp",
                     .formula = jp[0] * jp[1],
-                    .source = cite(Document::Moma, "(18)")});
+                    .source = cite(Document::MomaDocument, "(18)")});
     list.push_back({.title = text::translate("core", "Output Jacobian (0: direct singularity)"),
                     .symbolic = "det J_x = 4·(P − Z₁)×(P − Z₂)",
                     .substituted = "4·(%1·%2 − %3·%4)",
@@ -90,7 +90,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = report.number("det_Jx"),
                     .resultName = "det_Jx",
                     .formula = 4.0 * (L[0].x() * L[1].y() - L[0].y() * L[1].x()),
-                    .source = cite(Document::Moma, "(20)")});
+                    .source = cite(Document::MomaDocument, "(20)")});
     const EquationNumber detJx = report.number("det_Jx"), detJp = report.number("det_Jp");
     list.push_back({.title = text::translate("core", "Determinant of J"),
                     .symbolic = "det J = det J_x / det J_p",
@@ -99,7 +99,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .result = report.number("det_J"),
                     .resultName = "det_J",
                     .formula = detJx.value / detJp.value,
-                    .source = cite(Document::Moma, "(21)"),
+                    .source = cite(Document::MomaDocument, "(21)"),
                     .note = text::translate("core", "From J_p·ṗ + J_x·Ṗ = 0 the program's J is −J_p⁻¹·J_x; the document's "
                                                     "(21) has no minus sign. For the 2×2 J the determinant is the same.")});
     return list;

@@ -25,7 +25,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
     const double w = std::sqrt(std::max(0.0, g.rod * g.rod - y.value * y.value));
     const bool O = g.form == formO;
     const std::string form = text::label(formTitle(g.form));
-    const std::string source = cite(Document::OxGlide, "");
+    const std::string source = cite(Document::OxGlideDocument, "");
 
     std::vector<Equation> list;
     list.push_back({.title = text::translate("core", "Run of a rod along the guides"),

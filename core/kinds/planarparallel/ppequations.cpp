@@ -64,7 +64,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
             break;
         case LegType::PRR:
             constraint.symbolic = legSymbol("|P%1 − C%1| = l%1, C%1 = A%1 + q%1·(cos α%1, sin α%1)", i);
-            constraint.source = cite(Document::Moma, "(5–6)");
+            constraint.source = cite(Document::MomaDocument, "(5–6)");
             break;
         case LegType::RPR:
             constraint.symbolic = legSymbol("|P%1 − A%1| = q%1", i);
@@ -85,7 +85,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                             .numbers = {q, length(a), plain(k)},
                             .result = angle(c.theta),
                             .formula = std::asin((d * d - a * a * (1.0 + k * k)) / (2.0 * a * a * k)),
-                            .source = cite(Document::PJoint, "(3–5)")});
+                            .source = cite(Document::PJointDocument, "(3–5)")});
             list.push_back({.title = text::format(text::translate("core", "Leg %1 (%2): the П-joint's Jacobian"),
                                                   {legText, legTypeName(leg.type)}),
                             .symbolic = legSymbol("J%1 = a%1²k%1·cos θ%1 / d%1", i),
@@ -93,7 +93,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                             .numbers = {length(a), plain(k), angle(c.theta), q},
                             .result = {c.pjointRate, units::millimetrePerRadian, 3},
                             .formula = a * a * k * std::cos(c.theta) / d,
-                            .source = cite(Document::PJoint, "(7)"),
+                            .source = cite(Document::PJointDocument, "(7)"),
                             .note = text::translate("core", "The leg's row of J_x carries this J as a factor, so the "
                                                             "П-joint's own singularity (θ = ±90°) is a direct singularity "
                                                             "of the whole mechanism (the П-joint document, section 4).")});
