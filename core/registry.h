@@ -1,6 +1,7 @@
 #pragma once
 /// The mechanisms PKM Studio knows, by kind id. Adding a mechanism means adding one entry here.
 
+#include "equations.h"
 #include "mechanism.h"
 
 #include <string_view>
@@ -14,6 +15,9 @@ struct MechanismKind {
     /// Builds a validated design from named values; missing ones take the kind's defaults,
     /// unknown names are refused.
     Result<MechanismPtr> (*create)(const ParameterSet &parameters);
+    /// The kind's governing equations with the numbers of a pose (equations.h), from its own
+    /// folder (kinds/<kind>/<kind>equations.cpp); `mechanism` is of this kind.
+    std::vector<Equation> (*equations)(const Mechanism &mechanism, const Pose &pose) = nullptr;
 };
 
 const std::vector<MechanismKind> &mechanismKinds();

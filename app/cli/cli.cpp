@@ -243,7 +243,23 @@ std::vector<std::pair<std::string, double>> displayOutputs(const Mechanism &mech
     return outputs;
 }
 
-std::string evalText(const PreparedDesign &prepared, bool allModes)
+/// The kind's governing equations at the pose (core/equations.h), as the GUI's Equations
+/// panel shows them: title and source, the formula, the numbers put in, and the note.
+void addEquationRows(std::string &out, const Mechanism &mechanism, const Pose &pose)
+{
+    out += "\nEquations\n";
+    for (const Equation &equation : mechanismEquations(mechanism, pose)) {
+        out += joinText({"\n", equation.title, " (", equation.source, ")\n  "});
+        std::string text = equationText(equation);
+        for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3))
+            text.replace(at, 1, "\n  ");
+        out += joinText({text, "\n"});
+        if (!equation.note.empty())
+            out += joinText({"  note: ", equation.note, "\n"});
+    }
+}
+
+std::string evalText(const PreparedDesign &prepared, bool allModes, bool equations)
 {
     const Mechanism &mechanism = *prepared.mechanism;
     const ReportLayout &layout = mechanism.reportLayout();
@@ -327,6 +343,8 @@ std::string evalText(const PreparedDesign &prepared, bool allModes)
             table.text(warning);
     }
     table.render(out);
+    if (equations)
+        addEquationRows(out, mechanism, prepared.pose);
     return out;
 }
 
@@ -389,7 +407,7 @@ int printOutput(std::FILE *out, std::FILE *err, std::string_view text)
     return finishOutput(out, err, std::fwrite(text.data(), 1, text.size(), out) == text.size());
 }
 
-std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes)
+std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes, bool equations)
 {
     const ReportLayout &layout = mechanism.reportLayout();
     std::vector<double> values(static_cast<std::size_t>(layout.size));
@@ -408,6 +426,22 @@ std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes
             json.beginObject(true);
             for (const auto &[name, value] : displayOutputs(mechanism, mode))
                 json.key(name).number(value);
+            json.endObject();
+        }
+        json.endArray();
+    }
+    if (equations) {
+        json.key("equations");
+        json.beginArray();
+        for (const Equation &equation : mechanismEquations(mechanism, pose)) {
+            json.beginObject();
+            json.key("title").string(equation.title);
+            json.key("symbolic").string(equation.symbolic);
+            json.key("substituted").string(fillEquation(equation, plainEquationNumber));
+            json.key("result").number(equation.result.unit.toDisplay(equation.result.value));
+            json.key("unit").string(equation.result.unit.symbol);
+            json.key("source").string(equation.source);
+            json.key("note").string(equation.note);
             json.endObject();
         }
         json.endArray();
@@ -460,8 +494,8 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
         return printOutput(out, err, invocation.json ? showJson(*prepared) : showText(*prepared));
     if (invocation.command == Command::Eval) {
         return printOutput(
-            out, err, invocation.json ? evalJson(*prepared->mechanism, prepared->pose, invocation.allModes) + "\n"
-                                : evalText(*prepared, invocation.allModes));
+            out, err, invocation.json ? evalJson(*prepared->mechanism, prepared->pose, invocation.allModes, invocation.equations) + "\n"
+                                : evalText(*prepared, invocation.allModes, invocation.equations));
     }
     if (invocation.command == Command::Workspace || invocation.command == Command::Map)
         return runWorkspaceCommand(*prepared, invocation, out, err);

@@ -49,7 +49,10 @@ struct PreparedDesign;
 /// {"mechanism", "parameters", "pose", "jacobian", "singularity", "derived"}.
 /// With `allModes` it adds "assembly_modes": [{output: value, …}, …], every real assembly
 /// mode at the pose's inputs (Mechanism::assemblyModes), in display units.
-std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes = false);
+/// With `equations` it adds "equations": [{"title", "symbolic", "substituted", "result", "unit",
+/// "source", "note"}, …], the kind's governing equations with the pose's numbers put in
+/// (core/equations.h); "result" in display units, null where it is not finite.
+std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes = false, bool equations = false);
 
 /// The first lines of show, eval, workspace and map: "Design     moma-3a: …" and
 /// "Mechanism  moma (…)".

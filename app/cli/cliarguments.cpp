@@ -26,6 +26,7 @@ enum OptionFlag : unsigned {
     OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption, --one-way
     OptionLanguage = 1u << 9, ///< --lang CODE
     OptionModes = 1u << 10, ///< --all-modes
+    OptionEquations = 1u << 11, ///< --equations
 };
 
 struct CommandSpec {
@@ -39,7 +40,7 @@ struct CommandSpec {
 constexpr std::array<CommandSpec, 8> commandSpecs = {{
     {Command::List, "list", OptionJson},
     {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
-    {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet | OptionModes},
+    {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet | OptionModes | OptionEquations},
     {Command::Sweep, "sweep", OptionDesign | OptionJson | OptionCsv | OptionSet | OptionSweep},
     {Command::Workspace, "workspace", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionOutput,
         {"png", "svg"}},
@@ -83,6 +84,8 @@ unsigned optionFlag(std::string_view option)
         return OptionLanguage;
     if (option == "--all-modes")
         return OptionModes;
+    if (option == "--equations")
+        return OptionEquations;
     return 0;
 }
 
@@ -247,10 +250,13 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
         if (!(flag & command.options)) {
             return usageFailure(option, "'" + option + "' is not an option of " + quotedCommand + seeHelp + ".");
         }
-        if (flag == OptionJson || flag == OptionCsv || flag == OptionModes) {
+        if (flag == OptionJson || flag == OptionCsv || flag == OptionModes || flag == OptionEquations) {
             if (inlineValue)
                 return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
-            (flag == OptionJson ? invocation.json : flag == OptionCsv ? invocation.csv : invocation.allModes) = true;
+            (flag == OptionJson        ? invocation.json
+             : flag == OptionCsv       ? invocation.csv
+             : flag == OptionModes     ? invocation.allModes
+                                       : invocation.equations) = true;
             continue;
         }
         if (option == "--orthographic" || option == "--no-caption" || option == "--one-way") {

@@ -50,6 +50,7 @@ struct Invocation {
     bool json = false;
     bool csv = false;
     bool allModes = false; ///< --all-modes (eval): every assembly mode at the inputs
+    bool equations = false; ///< --equations (eval): the governing equations with the pose's numbers
     std::optional<std::string> design;
     std::vector<Setting> sets;
     std::optional<std::string> var;

@@ -81,7 +81,7 @@ the quantities eval and sweep report, with units; and the design warnings.
                        limits are null
 )";
 
-constexpr std::string_view evalHelp = R"(Usage: pkm eval DESIGN [--set NAME=VALUE]... [--all-modes] [--json]
+constexpr std::string_view evalHelp = R"(Usage: pkm eval DESIGN [--set NAME=VALUE]... [--all-modes] [--equations] [--json]
 
 Solves one pose of the design and prints every coordinate, the Jacobians, the singularity
 class and the derived quantities, in display units.
@@ -107,6 +107,12 @@ class and the derived quantities, in display units.
                       of the direct kinematics in the design's working modes, the pose's
                       own marked *); with --json "assembly_modes": [{"x", "y", …}, …],
                       the outputs of each in display units
+  --equations         also the mechanism's governing equations with the source documents'
+                      equation numbers, each with the pose's numbers put in and its result,
+                      and a note where the program departs from the printed formula (as
+                      the GUI's Equations panel); with --json "equations": [{"title",
+                      "symbolic", "substituted", "result", "unit", "source", "note"}, …],
+                      "result" in display units and null where it is not finite (∞ or —)
 )";
 
 constexpr std::string_view sweepHelp

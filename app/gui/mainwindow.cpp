@@ -8,6 +8,7 @@
 #include "gui/animationdialog.h"
 #include "gui/backgroundtask.h"
 #include "designpanel.h"
+#include "equationspanel.h"
 #include "document/designsession.h"
 #include "document/document.h"
 #include "document/language.h"
@@ -229,6 +230,14 @@ void MainWindow::createDocks()
     mobilityDock->setWidget(m_mobility);
     addDockWidget(Qt::LeftDockWidgetArea, mobilityDock);
     tabifyDockWidget(valuesDock, mobilityDock);
+    // The equations (issue 18): another tab behind the values, the same numbers in formulas.
+    m_equations = new EquationsPanel(this);
+    m_equations->setMinimumWidth(330);
+    auto *equationsDock = m_equationsDock = new QDockWidget(tr("Equations"), this);
+    equationsDock->setObjectName(QStringLiteral("equationsDock"));
+    equationsDock->setWidget(m_equations);
+    addDockWidget(Qt::LeftDockWidgetArea, equationsDock);
+    tabifyDockWidget(mobilityDock, equationsDock);
     // The values in front; a tab raised before the window is shown does not stick. A restored
     // layout keeps the tab it had.
     QTimer::singleShot(0, this, [this, valuesDock] {
@@ -447,6 +456,7 @@ void MainWindow::retranslate()
     m_designDock->setWindowTitle(tr("Design"));
     m_valuesDock->setWindowTitle(tr("Values at this pose"));
     m_mobilityDock->setWindowTitle(tr("Mobility"));
+    m_equationsDock->setWindowTitle(tr("Equations"));
     m_viewTabs->setTabText(0, tr("2D"));
     m_viewTabs->setTabText(1, tr("3D"));
     m_viewTabs->setTabToolTip(1, tr("The mechanism in 3D: drag to turn it, right-drag to pan, wheel to zoom"));

@@ -28,6 +28,7 @@ class QTabWidget;
 namespace pkm {
 
 class DesignPanel;
+class EquationsPanel;
 class DesignSession;
 class Document;
 class KindPanel;
@@ -57,6 +58,8 @@ public:
     ValuesTable *valuesTable() const { return m_values; }
     /// The Mobility dock's panel (tabified with the values).
     MobilityPanel *mobilityPanel() const { return m_mobility; }
+    /// The Equations dock's panel (tabified with the values).
+    EquationsPanel *equationsPanel() const { return m_equations; }
     ModeBar *modeBar() const { return m_modeBar; }
     /// The generic panel of a planar kind without a panel of its own (the workspace map).
     WorkspacePanel *workspacePanel() const { return m_workspacePanel; }
@@ -187,6 +190,7 @@ private:
     QDockWidget *m_designDock = nullptr;
     QDockWidget *m_valuesDock = nullptr;
     QDockWidget *m_mobilityDock = nullptr;
+    QDockWidget *m_equationsDock = nullptr;
     struct TranslatedAction {
         QPointer<QAction> action;
         const char *source = nullptr;
@@ -201,6 +205,7 @@ private:
     DesignPanel *m_designPanel = nullptr;
     ValuesTable *m_values = nullptr;
     MobilityPanel *m_mobility = nullptr;
+    EquationsPanel *m_equations = nullptr;
     /// The panels the kinds' modules made, by kind id.
     std::vector<std::pair<std::string, KindPanel *>> m_kindPanels;
     WorkspacePanel *m_workspacePanel = nullptr;

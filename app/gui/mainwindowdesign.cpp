@@ -13,6 +13,7 @@
 #include "document/language.h"
 #include "linkageview.h"
 #include "linkageview3d.h"
+#include "equationspanel.h"
 #include "mobilitypanel.h"
 #include "modebar.h"
 #include "pictureexport.h"
@@ -88,6 +89,7 @@ void MainWindow::onDesignChanged()
     updateBookmarksMenu();
     m_values->setMechanism(mechanism);
     m_mobility->setMechanism(mechanism);
+    m_equations->setMechanism(mechanism);
     // The kind's own panel, else the generic one its outputs allow, else none: a mechanism
     // without plots gives the linkage the room rather than showing another mechanism's plots.
     m_currentPanel = mechanism->planarWorkspace() ? static_cast<KindPanel *>(m_workspacePanel)
@@ -160,6 +162,7 @@ void MainWindow::onPoseChanged()
     m_variables->setPose(pose);
     m_values->setPose(pose);
     m_mobility->setPose(pose);
+    m_equations->setPose(pose);
     m_view->setScene(mechanism->scene(pose));
     update3d(false);
     if (m_currentPanel)

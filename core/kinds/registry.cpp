@@ -1,11 +1,17 @@
 #include "registry.h"
 
 #include "fivebar/fivebar.h"
+#include "fivebar/fivebarequations.h"
 #include "fourbar/fourbar.h"
+#include "fourbar/fourbarequations.h"
 #include "moma/moma.h"
+#include "moma/momaequations.h"
 #include "oxglide/oxglide.h"
+#include "oxglide/oxglideequations.h"
 #include "pjoint/pjoint.h"
+#include "pjoint/pjointequations.h"
 #include "planarparallel/planarparallel.h"
+#include "planarparallel/ppequations.h"
 #include "text.h"
 
 namespace pkm {
@@ -13,12 +19,12 @@ namespace pkm {
 const std::vector<MechanismKind> &mechanismKinds()
 {
     static const std::vector<MechanismKind> kinds = {
-        {"pjoint", QT_TRANSLATE_NOOP("core", "Active П-joint"), &PJoint::createFrom},
-        {"moma", QT_TRANSLATE_NOOP("core", "MOMA 2-axis parallel mechanism"), &Moma::createFrom},
-        {"oxglide", QT_TRANSLATE_NOOP("core", "O-X glide hybrid mechanism"), &OxGlide::createFrom},
-        {"fourbar", QT_TRANSLATE_NOOP("core", "Planar four-bar linkage"), &FourBar::createFrom},
-        {"fivebar", QT_TRANSLATE_NOOP("core", "Planar five-bar linkage"), &FiveBar::createFrom},
-        {"planar-parallel", QT_TRANSLATE_NOOP("core", "Planar parallel mechanism (leg library)"), &PlanarParallel::createFrom},
+        {"pjoint", QT_TRANSLATE_NOOP("core", "Active П-joint"), &PJoint::createFrom, &pjoint::equations},
+        {"moma", QT_TRANSLATE_NOOP("core", "MOMA 2-axis parallel mechanism"), &Moma::createFrom, &moma::equations},
+        {"oxglide", QT_TRANSLATE_NOOP("core", "O-X glide hybrid mechanism"), &OxGlide::createFrom, &oxglide::equations},
+        {"fourbar", QT_TRANSLATE_NOOP("core", "Planar four-bar linkage"), &FourBar::createFrom, &fourbar::equations},
+        {"fivebar", QT_TRANSLATE_NOOP("core", "Planar five-bar linkage"), &FiveBar::createFrom, &fivebar::equations},
+        {"planar-parallel", QT_TRANSLATE_NOOP("core", "Planar parallel mechanism (leg library)"), &PlanarParallel::createFrom, &planar::equations},
     };
     return kinds;
 }

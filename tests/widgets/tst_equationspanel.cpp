@@ -1,0 +1,113 @@
+// The equations panel (widgets/equationspanel.h): for every kind its equations are shown and each
+// result reads exactly as the values panel shows the same quantity; the text follows the pose
+// (a hidden panel catches up when shown); at a singular pose it says ∞ or —, as the values do.
+
+#include "equationspanel.h"
+#include "kinds/oxglide/oxglide.h"
+#include "support/kinematics.h"
+#include "valuestable.h"
+
+#include <QRegularExpression>
+#include <QTest>
+
+#include <cmath>
+
+using namespace pkm;
+
+class TestEquationsPanel : public QObject
+{
+    Q_OBJECT
+
+    /// Every result that is a scalar of the report reads as the values panel reads it.
+    static void compareWithValues(const EquationsPanel &panel, const ValuesTable &values, const Mechanism &m)
+    {
+        const std::vector<Equation> &equations = panel.shownEquations();
+        QVERIFY(!equations.empty());
+        int compared = 0;
+        for (int i = 0; i < int(equations.size()); ++i) {
+            const std::string &name = equations[std::size_t(i)].resultName;
+            const ReportEntry *entry = name.empty() ? nullptr : m.reportLayout().find(name);
+            QVERIFY(panel.substitutedText(i).endsWith(panel.resultText(i)));
+            if (!entry || entry->rows * entry->cols != 1)
+                continue;
+            QCOMPARE(panel.resultText(i), values.valueText(QString::fromStdString(name)));
+            ++compared;
+        }
+        QVERIFY2(compared >= 2, "too few results to hold against the values panel");
+    }
+
+private slots:
+    void readsAsTheValuesPanel_data() { test::addKindRows(); }
+    void readsAsTheValuesPanel()
+    {
+        QFETCH(QString, kind);
+        const MechanismPtr m = test::makeKind(kind.toStdString());
+        EquationsPanel panel;
+        ValuesTable values;
+        panel.show();
+        panel.setMechanism(m);
+        values.setMechanism(m);
+        Pose pose = m->homePose();
+        panel.setPose(pose);
+        values.setPose(pose);
+        compareWithValues(panel, values, *m);
+        // another pose: the first variable at three quarters of its range
+        const Interval range = m->variableRange(0);
+        if (auto moved = m->solveWith(pose, 0, range.min + 0.75 * (range.max - range.min))) {
+            panel.setPose(*moved);
+            values.setPose(*moved);
+            compareWithValues(panel, values, *m);
+        }
+    }
+
+    void followsThePose()
+    {
+        const MechanismPtr m = test::makeKind("pjoint");
+        const int theta = m->variableIndex("theta");
+        EquationsPanel panel;
+        panel.show();
+        panel.setMechanism(m);
+        auto at0 = m->solveWith(m->homePose(), theta, 0.0);
+        auto at30 = m->solveWith(m->homePose(), theta, 30.0 * units::degree);
+        QVERIFY(at0 && at30);
+        panel.setPose(*at0);
+        QCOMPARE(panel.resultText(0), QStringLiteral("183.10 mm"));
+        QVERIFY(panel.toPlainText().contains(QStringLiteral("sin 0.00°")));
+        panel.setPose(*at30);
+        QCOMPARE(panel.resultText(0), QStringLiteral("212.33 mm")); // 170·√(1.16 + 0.8·sin 30°)
+        QVERIFY(panel.toPlainText().contains(QStringLiteral("sin 30.00°")));
+        // hidden (a tab behind another): no work until it is shown, then the latest pose
+        panel.hide();
+        panel.setPose(*at0);
+        QCOMPARE(panel.resultText(0), QStringLiteral("212.33 mm"));
+        panel.show();
+        QCOMPARE(panel.resultText(0), QStringLiteral("183.10 mm"));
+    }
+
+    void singularPoseSaysSo()
+    {
+        const MechanismPtr m = test::makeKind("oxglide");
+        const OxGlideDesign &g = static_cast<const OxGlide &>(*m).design();
+        Pose crossing; // the O↔X crossing, rods parallel and perpendicular to the guides
+        crossing.inputs = test::triple(65.0 - 0.5 * g.width, 65.0 + 0.5 * g.width, 0.0);
+        crossing.outputs = test::pair(65.0, g.rod);
+        EquationsPanel panel;
+        ValuesTable values;
+        panel.show();
+        panel.setMechanism(m);
+        values.setMechanism(m);
+        panel.setPose(crossing);
+        values.setPose(crossing);
+        compareWithValues(panel, values, *m);
+        QStringList results;
+        for (int i = 0; i < int(panel.shownEquations().size()); ++i)
+            results << panel.resultText(i);
+        QVERIFY(results.contains(QStringLiteral("—"))); // det J: 0 and ∞ at once
+        QVERIFY(results.contains(QStringLiteral("∞")));  // κ(J)
+        QVERIFY2(!QRegularExpression(QStringLiteral("[0-9]{10,}")).match(panel.toPlainText()).hasMatch(),
+                 qPrintable(panel.toPlainText()));
+    }
+};
+
+QTEST_MAIN(TestEquationsPanel)
+#include "tst_equationspanel.moc"
