@@ -3463,6 +3463,10 @@ Please verify the correct file name was given.</source>
         <source>The animation was cancelled.</source>
         <translation>Анимация отменена.</translation>
     </message>
+    <message>
+        <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
+        <translation>Имя видеофайла должно оканчиваться на .mp4 или .webm: %1.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::AnimationDialog</name>
@@ -3529,6 +3533,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Wrote %1 (%2 kB)</source>
         <translation>Записан файл %1 (%2 КБ)</translation>
+    </message>
+    <message>
+        <source>Animated GIF</source>
+        <translation>Анимированный GIF</translation>
+    </message>
+    <message>
+        <source>MP4 video (H.264, 30 frames/s)</source>
+        <translation>Видео MP4 (H.264, 30 кадров/с)</translation>
+    </message>
+    <message>
+        <source>WebM video (VP9, 30 frames/s)</source>
+        <translation>Видео WebM (VP9, 30 кадров/с)</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Формат</translation>
+    </message>
+    <message>
+        <source>A GIF&apos;s speed; a video plays 30 frames per second.</source>
+        <translation>Скорость GIF; видео воспроизводится с частотой 30 кадров в секунду.</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Анимированный GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4)</source>
+        <translation>Видео MP4 (*.mp4)</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>Видео WebM (*.webm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Encoding %n frame(s)…</source>
+        <translation>
+            <numerusform>Кодирование %n кадра…</numerusform>
+            <numerusform>Кодирование %n кадров…</numerusform>
+            <numerusform>Кодирование %n кадров…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4034,10 +4078,6 @@ Please verify the correct file name was given.</source>
         <translation>Сохранить конструкцию &amp;как…</translation>
     </message>
     <message>
-        <source>Export &amp;Animation (GIF)…</source>
-        <translation>Экспорт &amp;анимации (GIF)…</translation>
-    </message>
-    <message>
         <source>Export &amp;Drawing (DXF)…</source>
         <translation>Экспорт &amp;чертежа (DXF)…</translation>
     </message>
@@ -4128,14 +4168,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>PKM Studio designs (*.pkm.json)</source>
         <translation>Конструкции PKM Studio (*.pkm.json)</translation>
-    </message>
-    <message>
-        <source>Export Animation</source>
-        <translation>Экспорт анимации</translation>
-    </message>
-    <message>
-        <source>Animated GIF (*.gif)</source>
-        <translation>Анимированный GIF (*.gif)</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -4232,6 +4264,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделирует механизмы этих четырёх документов: активный П-шарнир (1), MOMA (2), O-X glide (3), шарнирный четырёхзвенник и формулы подвижности (4). Где напечатанная формула или число неверны, программа использует исправленные; раздел README о математике перечисляет каждое исправление.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF, MP4, WebM)…</source>
+        <translation>Экспорт &amp;анимации (GIF, MP4, WebM)…</translation>
     </message>
 </context>
 <context>
@@ -5086,6 +5122,53 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Drag to set %1 (%2)</source>
         <translation>Перетащите, чтобы задать %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VideoWriter</name>
+    <message>
+        <source>A video is %1 to %2 pixels wide and %1 to %3 high, in even numbers (e.g. 1280x720 or 1920x1080), not %4x%5.</source>
+        <translation>Ширина видео — от %1 до %2 пикселей, высота — от %1 до %3, чётными числами (например, 1280x720 или 1920x1080), а не %4x%5.</translation>
+    </message>
+    <message>
+        <source>Cannot write &apos;%1&apos;: %2.</source>
+        <translation>Не удаётся записать «%1»: %2.</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>неизвестная ошибка</translation>
+    </message>
+    <message>
+        <source>This build of FFmpeg&apos;s libavformat cannot write %1 files.</source>
+        <translation>Эта сборка libavformat (FFmpeg) не умеет записывать файлы %1.</translation>
+    </message>
+    <message>
+        <source>FFmpeg is out of memory.</source>
+        <translation>FFmpeg не хватает памяти.</translation>
+    </message>
+    <message>
+        <source>FFmpeg could not start the %1 encoder (%2): %3.</source>
+        <translation>FFmpeg не удалось запустить кодировщик %1 (%2): %3.</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian&apos;s libavcodec has it).</source>
+        <translation>В libavcodec (FFmpeg) здесь нет кодировщика H.264: для MP4 нужен libx264 (в libavcodec из Debian он есть).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian&apos;s libavcodec has it).</source>
+        <translation>В libavcodec (FFmpeg) здесь нет кодировщика VP9 или VP8: для WebM нужен libvpx (в libavcodec из Debian он есть).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libswscale cannot convert the frames to YUV 4:2:0.</source>
+        <translation>libswscale (FFmpeg) не может преобразовать кадры в YUV 4:2:0.</translation>
+    </message>
+    <message>
+        <source>The video is not open.</source>
+        <translation>Видео не открыто.</translation>
+    </message>
+    <message>
+        <source>A video needs at least one frame.</source>
+        <translation>Видео должно содержать хотя бы один кадр.</translation>
     </message>
 </context>
 <context>

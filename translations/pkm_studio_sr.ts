@@ -3463,6 +3463,10 @@ Please verify the correct file name was given.</source>
         <source>The animation was cancelled.</source>
         <translation>Анимација је отказана.</translation>
     </message>
+    <message>
+        <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
+        <translation>Име видео-датотеке се завршава на .mp4 или .webm: %1.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::AnimationDialog</name>
@@ -3529,6 +3533,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Wrote %1 (%2 kB)</source>
         <translation>Уписано %1 (%2 kB)</translation>
+    </message>
+    <message>
+        <source>Animated GIF</source>
+        <translation>Анимирани GIF</translation>
+    </message>
+    <message>
+        <source>MP4 video (H.264, 30 frames/s)</source>
+        <translation>MP4 видео (H.264, 30 кадрова/s)</translation>
+    </message>
+    <message>
+        <source>WebM video (VP9, 30 frames/s)</source>
+        <translation>WebM видео (VP9, 30 кадрова/s)</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Формат</translation>
+    </message>
+    <message>
+        <source>A GIF&apos;s speed; a video plays 30 frames per second.</source>
+        <translation>Брзина GIF-а; видео се пушта са 30 кадрова у секунди.</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Анимирани GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4)</source>
+        <translation>MP4 видео (*.mp4)</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>WebM видео (*.webm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Encoding %n frame(s)…</source>
+        <translation>
+            <numerusform>Кодирање %n кадра…</numerusform>
+            <numerusform>Кодирање %n кадра…</numerusform>
+            <numerusform>Кодирање %n кадрова…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4034,10 +4078,6 @@ Please verify the correct file name was given.</source>
         <translation>Сачувај конструкцију &amp;као…</translation>
     </message>
     <message>
-        <source>Export &amp;Animation (GIF)…</source>
-        <translation>Извези &amp;анимацију (GIF)…</translation>
-    </message>
-    <message>
         <source>Export &amp;Drawing (DXF)…</source>
         <translation>Извези &amp;цртеж (DXF)…</translation>
     </message>
@@ -4128,14 +4168,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>PKM Studio designs (*.pkm.json)</source>
         <translation>Конструкције PKM Studio (*.pkm.json)</translation>
-    </message>
-    <message>
-        <source>Export Animation</source>
-        <translation>Извоз анимације</translation>
-    </message>
-    <message>
-        <source>Animated GIF (*.gif)</source>
-        <translation>Анимирани GIF (*.gif)</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -4232,6 +4264,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio моделира механизме ова четири документа: активни П-зглоб (1), MOMA (2), O-X glide (3), зглобни четвороугао и формуле покретљивости (4). Где је штампана формула или број погрешан, програм користи исправљени; одељак README-а о математици наводи свако исправљање.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF, MP4, WebM)…</source>
+        <translation>Извези &amp;анимацију (GIF, MP4, WebM)…</translation>
     </message>
 </context>
 <context>
@@ -5086,6 +5122,53 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Drag to set %1 (%2)</source>
         <translation>Превуците да бисте задали %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VideoWriter</name>
+    <message>
+        <source>A video is %1 to %2 pixels wide and %1 to %3 high, in even numbers (e.g. 1280x720 or 1920x1080), not %4x%5.</source>
+        <translation>Видео је широк од %1 до %2 и висок од %1 до %3 пиксела, у парним бројевима (нпр. 1280x720 или 1920x1080), а не %4x%5.</translation>
+    </message>
+    <message>
+        <source>Cannot write &apos;%1&apos;: %2.</source>
+        <translation>Не може да се упише „%1“: %2.</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>непозната грешка</translation>
+    </message>
+    <message>
+        <source>This build of FFmpeg&apos;s libavformat cannot write %1 files.</source>
+        <translation>Ова верзија FFmpeg-ове библиотеке libavformat не може да пише %1 датотеке.</translation>
+    </message>
+    <message>
+        <source>FFmpeg is out of memory.</source>
+        <translation>FFmpeg-у је понестало меморије.</translation>
+    </message>
+    <message>
+        <source>FFmpeg could not start the %1 encoder (%2): %3.</source>
+        <translation>FFmpeg није могао да покрене %1 кодер (%2): %3.</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ов libavcodec овде нема H.264 кодер: за MP4 је потребан libx264 (Debian-ов libavcodec га има).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ов libavcodec овде нема VP9 ни VP8 кодер: за WebM је потребан libvpx (Debian-ов libavcodec га има).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libswscale cannot convert the frames to YUV 4:2:0.</source>
+        <translation>FFmpeg-ов libswscale не може да претвори кадрове у YUV 4:2:0.</translation>
+    </message>
+    <message>
+        <source>The video is not open.</source>
+        <translation>Видео није отворен.</translation>
+    </message>
+    <message>
+        <source>A video needs at least one frame.</source>
+        <translation>Видео мора да има бар један кадар.</translation>
     </message>
 </context>
 <context>

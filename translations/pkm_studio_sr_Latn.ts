@@ -3463,6 +3463,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The animation was cancelled.</source>
         <translation>Animacija je otkazana.</translation>
     </message>
+    <message>
+        <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
+        <translation>Ime video-datoteke se završava na .mp4 ili .webm: %1.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::AnimationDialog</name>
@@ -3529,6 +3533,46 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Wrote %1 (%2 kB)</source>
         <translation>Upisano %1 (%2 kB)</translation>
+    </message>
+    <message>
+        <source>Animated GIF</source>
+        <translation>Animirani GIF</translation>
+    </message>
+    <message>
+        <source>MP4 video (H.264, 30 frames/s)</source>
+        <translation>MP4 video (H.264, 30 kadrova/s)</translation>
+    </message>
+    <message>
+        <source>WebM video (VP9, 30 frames/s)</source>
+        <translation>WebM video (VP9, 30 kadrova/s)</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>A GIF&apos;s speed; a video plays 30 frames per second.</source>
+        <translation>Brzina GIF-a; video se pušta sa 30 kadrova u sekundi.</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Animirani GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4)</source>
+        <translation>MP4 video (*.mp4)</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>WebM video (*.webm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Encoding %n frame(s)…</source>
+        <translation>
+            <numerusform>Kodiranje %n kadra…</numerusform>
+            <numerusform>Kodiranje %n kadra…</numerusform>
+            <numerusform>Kodiranje %n kadrova…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4034,10 +4078,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Sačuvaj konstrukciju &amp;kao…</translation>
     </message>
     <message>
-        <source>Export &amp;Animation (GIF)…</source>
-        <translation>Izvezi &amp;animaciju (GIF)…</translation>
-    </message>
-    <message>
         <source>Export &amp;Drawing (DXF)…</source>
         <translation>Izvezi &amp;crtež (DXF)…</translation>
     </message>
@@ -4128,14 +4168,6 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>PKM Studio designs (*.pkm.json)</source>
         <translation>Konstrukcije PKM Studio (*.pkm.json)</translation>
-    </message>
-    <message>
-        <source>Export Animation</source>
-        <translation>Izvoz animacije</translation>
-    </message>
-    <message>
-        <source>Animated GIF (*.gif)</source>
-        <translation>Animirani GIF (*.gif)</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -4232,6 +4264,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>&lt;p&gt;PKM Studio models the mechanisms of these four documents: the active П-joint (1), MOMA (2), the O-X glide (3), the four-bar and the mobility formulas (4). Where a printed formula or number is wrong, the program uses the corrected one; the README&apos;s section on the mathematics lists each correction.&lt;/p&gt;%1</source>
         <translation>&lt;p&gt;PKM Studio modelira mehanizme ova četiri dokumenta: aktivni P-zglob (1), MOMA (2), O-X glide (3), zglobni četvorougao i formule pokretljivosti (4). Gde je štampana formula ili broj pogrešan, program koristi ispravljeni; odeljak README-a o matematici navodi svako ispravljanje.&lt;/p&gt;%1</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF, MP4, WebM)…</source>
+        <translation>Izvezi &amp;animaciju (GIF, MP4, WebM)…</translation>
     </message>
 </context>
 <context>
@@ -5086,6 +5122,53 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Drag to set %1 (%2)</source>
         <translation>Prevucite da biste zadali %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VideoWriter</name>
+    <message>
+        <source>A video is %1 to %2 pixels wide and %1 to %3 high, in even numbers (e.g. 1280x720 or 1920x1080), not %4x%5.</source>
+        <translation>Video je širok od %1 do %2 i visok od %1 do %3 piksela, u parnim brojevima (npr. 1280x720 ili 1920x1080), a ne %4x%5.</translation>
+    </message>
+    <message>
+        <source>Cannot write &apos;%1&apos;: %2.</source>
+        <translation>Ne može da se upiše „%1“: %2.</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>nepoznata greška</translation>
+    </message>
+    <message>
+        <source>This build of FFmpeg&apos;s libavformat cannot write %1 files.</source>
+        <translation>Ova verzija FFmpeg-ove biblioteke libavformat ne može da piše %1 datoteke.</translation>
+    </message>
+    <message>
+        <source>FFmpeg is out of memory.</source>
+        <translation>FFmpeg-u je ponestalo memorije.</translation>
+    </message>
+    <message>
+        <source>FFmpeg could not start the %1 encoder (%2): %3.</source>
+        <translation>FFmpeg nije mogao da pokrene %1 koder (%2): %3.</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ov libavcodec ovde nema H.264 koder: za MP4 je potreban libx264 (Debian-ov libavcodec ga ima).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ov libavcodec ovde nema VP9 ni VP8 koder: za WebM je potreban libvpx (Debian-ov libavcodec ga ima).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libswscale cannot convert the frames to YUV 4:2:0.</source>
+        <translation>FFmpeg-ov libswscale ne može da pretvori kadrove u YUV 4:2:0.</translation>
+    </message>
+    <message>
+        <source>The video is not open.</source>
+        <translation>Video nije otvoren.</translation>
+    </message>
+    <message>
+        <source>A video needs at least one frame.</source>
+        <translation>Video mora da ima bar jedan kadar.</translation>
     </message>
 </context>
 <context>
