@@ -333,6 +333,9 @@ private slots:
                 progress = dialog; // this export's
         }
         QVERIFY(progress);
+        // The bar counts the frames (forth and back: 200 + 198), filled as they are encoded.
+        QTRY_COMPARE_WITH_TIMEOUT(progress->maximum(), 200 + 198, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(progress->value() > 0, 30000);
         auto *cancelButton = progress->findChild<QPushButton *>();
         QVERIFY(cancelButton);
         cancelButton->click(); // as the user does: QProgressDialog says "canceled"
