@@ -173,10 +173,16 @@ struct VideoWriter::Private {
     static int writeToFile(void *opaque, WriteBuffer data, int size)
     {
         auto *d = static_cast<Private *>(opaque);
-        if (d->file->write(reinterpret_cast<const char *>(data), size) != size) {
-            if (d->ioError.isEmpty())
-                d->ioError = d->file->errorString();
-            return AVERROR(EIO);
+        // A nearly full disk takes part of a write; the next one fails with the reason.
+        const char *bytes = reinterpret_cast<const char *>(data);
+        for (qint64 done = 0; done < size;) {
+            const qint64 written = d->file->write(bytes + done, size - done);
+            if (written <= 0) {
+                if (d->ioError.isEmpty())
+                    d->ioError = d->file->errorString();
+                return AVERROR(EIO);
+            }
+            done += written;
         }
         return size;
     }
@@ -316,7 +322,9 @@ bool VideoWriter::open(const QString &path, VideoFormat format, QSize size, QStr
         0, 1 << 16, 1 << 16);
 
     d->file = std::make_unique<QSaveFile>(path);
-    if (!d->file->open(QIODevice::WriteOnly))
+    // Unbuffered: libavformat buffers already, and a full disk then fails the write that hit
+    // it, with the system's reason, rather than a later flush without one.
+    if (!d->file->open(QIODevice::WriteOnly | QIODevice::Unbuffered))
         return fail(d->fileFailure(d->file->errorString()));
     constexpr int bufferSize = 1 << 16;
     auto *buffer = static_cast<unsigned char *>(av_malloc(bufferSize));
