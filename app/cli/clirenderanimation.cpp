@@ -45,8 +45,9 @@ int runRenderAnimation(const PreparedDesign &prepared, const Invocation &invocat
     const std::string &name = *invocation.var;
     const int variable = mechanism.variableIndex(name);
     if (variable < 0) {
-        printError(err, joinText({"--var ", name, ": an animation moves a pose variable of the ",
-                                  std::string(mechanism.kind()), " (see 'pkm show ", prepared.origin, "')."}));
+        printError(err,
+            joinText({"--var ", name, ": an animation moves a pose variable of the ", std::string(mechanism.kind()),
+                " (see 'pkm show ", prepared.origin, "')."}));
         return CliUsageError;
     }
     const QString path = QString::fromStdString(*invocation.output);
@@ -54,7 +55,8 @@ int runRenderAnimation(const PreparedDesign &prepared, const Invocation &invocat
     const QSize size(invocation.width, invocation.height);
     if (video) {
         if (const QString problem = videoSizeProblem(size); !problem.isEmpty()) {
-            printError(err, "--size " + std::to_string(size.width()) + "x" + std::to_string(size.height()) + ": "
+            printError(err,
+                "--size " + std::to_string(size.width()) + "x" + std::to_string(size.height()) + ": "
                     + problem.toStdString());
             return CliUsageError;
         }

@@ -87,7 +87,7 @@ QString videoSizeProblem(QSize size)
     if (size.width() < minVideoSide || size.height() < minVideoSide || size.width() > maxVideoWidth
         || size.height() > maxVideoHeight || size.width() % 2 != 0 || size.height() % 2 != 0) {
         return VideoWriter::tr("A video is %1 to %2 pixels wide and %1 to %3 high, in even numbers (e.g. 1280x720 or "
-                  "1920x1080), not %4x%5.")
+                               "1920x1080), not %4x%5.")
             .arg(minVideoSide)
             .arg(maxVideoWidth)
             .arg(maxVideoHeight)
@@ -134,7 +134,8 @@ struct VideoWriter::Private {
         QString reason = why.trimmed();
         while (reason.endsWith(QLatin1Char('.')))
             reason.chop(1);
-        return VideoWriter::tr("Cannot write '%1': %2.").arg(path, reason.isEmpty() ? VideoWriter::tr("unknown error") : reason);
+        return VideoWriter::tr("Cannot write '%1': %2.")
+            .arg(path, reason.isEmpty() ? VideoWriter::tr("unknown error") : reason);
     }
 
     /// The failure of an FFmpeg call: the file's own reason when writing it failed.
@@ -195,10 +196,17 @@ struct VideoWriter::Private {
             return d->file->size();
         qint64 target = 0;
         switch (whence & ~AVSEEK_FORCE) {
-        case SEEK_SET: target = offset; break;
-        case SEEK_CUR: target = d->file->pos() + offset; break;
-        case SEEK_END: target = d->file->size() + offset; break;
-        default: return AVERROR(EINVAL);
+        case SEEK_SET:
+            target = offset;
+            break;
+        case SEEK_CUR:
+            target = d->file->pos() + offset;
+            break;
+        case SEEK_END:
+            target = d->file->size() + offset;
+            break;
+        default:
+            return AVERROR(EINVAL);
         }
         if (!d->file->seek(target)) {
             if (d->ioError.isEmpty())
@@ -292,8 +300,10 @@ bool VideoWriter::open(const QString &path, VideoFormat format, QSize size, QStr
                             .arg(container, tried, ffmpegError(openCode)));
         }
         return fail(format == VideoFormat::Mp4
-                ? VideoWriter::tr("FFmpeg's libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian's libavcodec has it).")
-                : VideoWriter::tr("FFmpeg's libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian's libavcodec has it)."));
+                ? VideoWriter::tr(
+                    "FFmpeg's libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian's libavcodec has it).")
+                : VideoWriter::tr("FFmpeg's libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian's "
+                                  "libavcodec has it)."));
     }
 
     if (avformat_alloc_output_context2(&d->format, output, nullptr, nullptr) < 0 || !d->format)
@@ -318,8 +328,8 @@ bool VideoWriter::open(const QString &path, VideoFormat format, QSize size, QStr
         AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND, nullptr, nullptr, nullptr);
     if (!d->scale)
         return fail(VideoWriter::tr("FFmpeg's libswscale cannot convert the frames to YUV 4:2:0."));
-    sws_setColorspaceDetails(d->scale, sws_getCoefficients(SWS_CS_DEFAULT), 1, sws_getCoefficients(SWS_CS_ITU709), 0,
-        0, 1 << 16, 1 << 16);
+    sws_setColorspaceDetails(
+        d->scale, sws_getCoefficients(SWS_CS_DEFAULT), 1, sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16);
 
     d->file = std::make_unique<QSaveFile>(path);
     // Unbuffered: libavformat buffers already, and a full disk then fails the write that hit
@@ -328,7 +338,9 @@ bool VideoWriter::open(const QString &path, VideoFormat format, QSize size, QStr
         return fail(d->fileFailure(d->file->errorString()));
     constexpr int bufferSize = 1 << 16;
     auto *buffer = static_cast<unsigned char *>(av_malloc(bufferSize));
-    d->io = buffer ? avio_alloc_context(buffer, bufferSize, 1, d.get(), nullptr, Private::writeToFile, Private::seekInFile) : nullptr;
+    d->io = buffer
+        ? avio_alloc_context(buffer, bufferSize, 1, d.get(), nullptr, Private::writeToFile, Private::seekInFile)
+        : nullptr;
     if (!d->io) {
         av_free(buffer);
         return fail(VideoWriter::tr("FFmpeg is out of memory."));
@@ -347,9 +359,8 @@ bool VideoWriter::addFrame(const QImage &frame, QString *error)
             *error = VideoWriter::tr("The video is not open.");
         return false;
     }
-    const QImage sized = frame.size() == d->size
-        ? frame
-        : frame.scaled(d->size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+    const QImage sized
+        = frame.size() == d->size ? frame : frame.scaled(d->size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
     const QImage rgb = sized.convertToFormat(QImage::Format_RGB32);
     if (const int code = av_frame_make_writable(d->frame); code < 0) {
         if (error)

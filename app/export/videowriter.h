@@ -19,7 +19,7 @@
 namespace pkm {
 
 enum class VideoFormat {
-    Mp4,  ///< MP4 with H.264 (libx264), yuv420p: plays everywhere, presentation programs included
+    Mp4, ///< MP4 with H.264 (libx264), yuv420p: plays everywhere, presentation programs included
     WebM, ///< WebM with VP9 (libvpx-vp9), or VP8 (libvpx): free codecs, for web pages
 };
 

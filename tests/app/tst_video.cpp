@@ -33,12 +33,12 @@ namespace {
 
 /// What libavformat reads back from a video file.
 struct Probe {
-    QString error;     ///< empty when the file opened
+    QString error; ///< empty when the file opened
     QString container; ///< libavformat's demuxer, e.g. "mov,mp4,m4a,3gp,3g2,mj2"
-    QString codec;     ///< "h264", "vp9"
+    QString codec; ///< "h264", "vp9"
     QSize size;
     QString pixelFormat;
-    int frames = 0;    ///< decoded frames
+    int frames = 0; ///< decoded frames
     AVRational rate {0, 1};
 };
 
@@ -63,8 +63,8 @@ Probe probe(const QString &path)
         result.container = QString::fromLatin1(format->iformat->name);
         result.codec = QString::fromLatin1(avcodec_get_name(stream->codecpar->codec_id));
         result.size = QSize(stream->codecpar->width, stream->codecpar->height);
-        result.pixelFormat = QString::fromLatin1(
-            av_get_pix_fmt_name(static_cast<AVPixelFormat>(stream->codecpar->format)));
+        result.pixelFormat
+            = QString::fromLatin1(av_get_pix_fmt_name(static_cast<AVPixelFormat>(stream->codecpar->format)));
         result.rate = stream->avg_frame_rate;
         const AVCodec *decoder = avcodec_find_decoder(stream->codecpar->codec_id);
         codec = decoder ? avcodec_alloc_context3(decoder) : nullptr;
@@ -125,10 +125,9 @@ Run run(const QStringList &arguments)
 QStringList crank(int steps, const QString &path, const QStringList &more = {})
 {
     return QStringList {QStringLiteral("render"), QStringLiteral("fourbar-example"), QStringLiteral("--var"),
-                        QStringLiteral("alpha"), QStringLiteral("--from"), QStringLiteral("0"), QStringLiteral("--to"),
-                        QStringLiteral("90"), QStringLiteral("--steps"), QString::number(steps), QStringLiteral("-o"),
-                        path}
-        + more;
+               QStringLiteral("alpha"), QStringLiteral("--from"), QStringLiteral("0"), QStringLiteral("--to"),
+               QStringLiteral("90"), QStringLiteral("--steps"), QString::number(steps), QStringLiteral("-o"), path}
+    + more;
 }
 
 AnimationSettings sweep(const Mechanism &mechanism, int frames)
@@ -162,8 +161,8 @@ private slots:
         for (const QSize size : {QSize(321, 240), QSize(320, 241), QSize(3842, 2160), QSize(30, 30)}) {
             const QString problem = videoSizeProblem(size);
             QVERIFY2(problem.contains(QStringLiteral("%1x%2").arg(size.width()).arg(size.height()))
-                         && problem.contains(QStringLiteral("even")),
-                     qPrintable(problem));
+                    && problem.contains(QStringLiteral("even")),
+                qPrintable(problem));
         }
     }
 
@@ -176,7 +175,7 @@ private slots:
         QVERIFY2(written.out.startsWith(QStringLiteral("Wrote %1 (MP4 video, H.264, 6 frames of 320 × 240 pixels at "
                                                        "30 frames/s, 0.2 s, forth and back)")
                                             .arg(path)),
-                 qPrintable(written.out));
+            qPrintable(written.out));
         QVERIFY(written.err.isEmpty());
         const Probe video = probe(path);
         QVERIFY2(video.error.isEmpty(), qPrintable(video.error));
@@ -193,10 +192,11 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("crank.webm"));
-        const Run written = run(crank(3, path, {QStringLiteral("--one-way"), QStringLiteral("--size"),
-                                                QStringLiteral("320x240")}));
+        const Run written
+            = run(crank(3, path, {QStringLiteral("--one-way"), QStringLiteral("--size"), QStringLiteral("320x240")}));
         QVERIFY2(written.status == 0, qPrintable(written.err));
-        QVERIFY2(written.out.contains(QStringLiteral("(WebM video, VP9, 3 frames of 320 × 240 pixels")), qPrintable(written.out));
+        QVERIFY2(written.out.contains(QStringLiteral("(WebM video, VP9, 3 frames of 320 × 240 pixels")),
+            qPrintable(written.out));
         const Probe video = probe(path);
         QVERIFY2(video.error.isEmpty(), qPrintable(video.error));
         QVERIFY2(video.container.contains(QStringLiteral("webm")), qPrintable(video.container));
@@ -225,9 +225,9 @@ private slots:
             const Run refused = run(crank(3, path, {QStringLiteral("--size"), size}));
             QCOMPARE(refused.status, 2);
             QVERIFY(refused.out.isEmpty());
-            QVERIFY2(refused.err.contains(QStringLiteral("--size ") + size) && refused.err.contains(QStringLiteral("even"))
-                         && refused.err.count(QLatin1Char('\n')) == 1,
-                     qPrintable(refused.err));
+            QVERIFY2(refused.err.contains(QStringLiteral("--size ") + size)
+                    && refused.err.contains(QStringLiteral("even")) && refused.err.count(QLatin1Char('\n')) == 1,
+                qPrintable(refused.err));
         }
         // --view 3d has no video
         const Run view = run(crank(3, path, {QStringLiteral("--view"), QStringLiteral("3d")}));
@@ -250,13 +250,13 @@ private slots:
         old.close();
         std::atomic<bool> cancel {false};
         int reported = 0;
-        const VideoExport written = writeAnimationVideo(*mechanism, *poses, settings, path, &cancel,
-                                                        [&](int done, int total) {
-                                                            reported = done;
-                                                            QCOMPARE(total, 20 + 18);
-                                                            if (done == 5)
-                                                                cancel = true;
-                                                        });
+        const VideoExport written
+            = writeAnimationVideo(*mechanism, *poses, settings, path, &cancel, [&](int done, int total) {
+                  reported = done;
+                  QCOMPARE(total, 20 + 18);
+                  if (done == 5)
+                      cancel = true;
+              });
         QVERIFY(written.cancelled);
         QVERIFY(!written.ok());
         QCOMPARE(reported, 5);
@@ -316,8 +316,8 @@ private slots:
         settings.size = QSize(320, 240);
         window.exportAnimationTo(path, settings);
         QVERIFY(!QFile::exists(path)); // encoded off the GUI thread: not there yet
-        QTRY_VERIFY2_WITH_TIMEOUT(window.lastStatus().startsWith(QStringLiteral("Wrote")),
-                                  qPrintable(window.lastStatus()), 60000);
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            window.lastStatus().startsWith(QStringLiteral("Wrote")), qPrintable(window.lastStatus()), 60000);
         const Probe video = probe(path);
         QCOMPARE(video.codec, QStringLiteral("h264"));
         QCOMPARE(video.frames, 6 + 4);
@@ -340,7 +340,7 @@ private slots:
         QVERIFY(cancelButton);
         cancelButton->click(); // as the user does: QProgressDialog says "canceled"
         QTRY_VERIFY2_WITH_TIMEOUT(window.lastStatus() == QStringLiteral("Animation export cancelled."),
-                                  qPrintable(window.lastStatus()), 60000);
+            qPrintable(window.lastStatus()), 60000);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList {QStringLiteral("sweep.mp4")});
     }
 };
