@@ -8,6 +8,7 @@ packages=(
     qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-svg-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
     libeigen3-dev libqcustomplot-dev libgl-dev libqt6opengl6-dev libgl1-mesa-dri libgif-dev
+    libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
     xvfb xauth
     fonts-dejavu-core locales
     python3-numpy

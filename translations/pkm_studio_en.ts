@@ -83,6 +83,13 @@
             <numerusform>Drawing %n frames…</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Encoding %n frame(s)…</source>
+        <translation>
+            <numerusform>Encoding %n frame…</numerusform>
+            <numerusform>Encoding %n frames…</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>pkm::MobilityPanel</name>

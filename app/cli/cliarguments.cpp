@@ -33,7 +33,7 @@ struct CommandSpec {
     Command command;
     std::string_view name;
     unsigned options;
-    std::array<std::string_view, 4> outputTypes {}; ///< the extensions -o takes (empty: unused)
+    std::array<std::string_view, 6> outputTypes {}; ///< the extensions -o takes (empty: unused)
     bool needsOutput = false; ///< -o FILE is required
 };
 
@@ -47,7 +47,7 @@ constexpr std::array<CommandSpec, 8> commandSpecs = {{
     {Command::Map, "map", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput,
         {"png", "csv"}},
     {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture | OptionSweep,
-        {"png", "svg", "pdf", "gif"}, true},
+        {"png", "svg", "pdf", "gif", "mp4", "webm"}, true},
     {Command::Sheet, "sheet", OptionDesign | OptionSet | OptionOutput | OptionLanguage, {"pdf", "json", "csv"}, true},
 }};
 
@@ -120,7 +120,7 @@ bool isHelp(const std::string &argument)
 }
 
 /// "a .png, .svg or .pdf file"
-std::string fileTypes(const std::array<std::string_view, 4> &types)
+std::string fileTypes(const std::array<std::string_view, 6> &types)
 {
     std::vector<std::string_view> used;
     for (std::string_view type : types) {
@@ -387,8 +387,9 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
     }
     if (invocation.json && invocation.csv)
         return usageFailure("--csv", "--csv and --json exclude each other: give one.");
-    const bool animation = invocation.command == Command::Render && invocation.output
-        && fileExtension(*invocation.output) == "gif";
+    const std::string outputType = invocation.output ? fileExtension(*invocation.output) : std::string();
+    const bool video = outputType == "mp4" || outputType == "webm";
+    const bool animation = invocation.command == Command::Render && (outputType == "gif" || video);
     if (invocation.command == Command::Render && !animation) {
         const std::optional<std::string> &sweepOption = invocation.var ? std::optional<std::string>("--var")
             : invocation.from                                          ? std::optional<std::string>("--from")
@@ -398,16 +399,18 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
                                 : std::nullopt;
         if (sweepOption) {
             return usageFailure(*sweepOption,
-                *sweepOption + " makes an animation: it needs -o FILE.gif" + seeHelp + ".");
+                *sweepOption + " makes an animation: it needs -o FILE.gif, FILE.mp4 or FILE.webm" + seeHelp + ".");
         }
     }
     if (animation) {
         if (!invocation.sizeGiven) {
-            invocation.width = defaultAnimationWidth;
-            invocation.height = defaultAnimationHeight;
+            invocation.width = video ? defaultVideoWidth : defaultAnimationWidth;
+            invocation.height = video ? defaultVideoHeight : defaultAnimationHeight;
         }
-        if (invocation.view.value_or("2d") != "2d")
-            return usageFailure("--view", "An animated GIF is drawn from the 2D view: leave out --view 3d.");
+        if (invocation.view.value_or("2d") != "2d") {
+            return usageFailure("--view", std::string(video ? "A video" : "An animated GIF")
+                    + " is drawn from the 2D view: leave out --view 3d.");
+        }
         if (invocation.steps && (*invocation.steps < minAnimationSteps || *invocation.steps > maxAnimationSteps)) {
             return usageFailure("--steps",
                 "--steps " + std::to_string(*invocation.steps) + ": an animation has "

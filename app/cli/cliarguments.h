@@ -32,6 +32,10 @@ inline constexpr int minAnimationSteps = 2;
 inline constexpr int maxAnimationSteps = 1000;
 inline constexpr int defaultAnimationWidth = 960;
 inline constexpr int defaultAnimationHeight = 720;
+/// A video's default size (-o FILE.mp4|.webm): 720p, the projector's; the limits are the
+/// encoder's (export/videowriter.h), checked when the video is opened.
+inline constexpr int defaultVideoWidth = 1280;
+inline constexpr int defaultVideoHeight = 720;
 
 /// One --set NAME=VALUE.
 struct Setting {

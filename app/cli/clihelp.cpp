@@ -29,6 +29,9 @@ Commands:
   render DESIGN --var NAME --from A --to B --steps K [--one-way] -o FILE.gif
                                            an animated GIF of the 2D drawing as NAME
                                            moves from A to B
+  render DESIGN --var NAME --from A --to B --steps K [--one-way] -o FILE.mp4|.webm
+                                           the same as a video: H.264 or VP9, 30
+                                           frames/s, 1280x720 unless --size WxH
   sheet  DESIGN [--set N=V]... [--lang CODE] -o FILE.pdf|.json|.csv
                                            the parameter sheet for building the
                                            prototype: parameters, dimensions, key
@@ -221,7 +224,7 @@ constexpr std::string_view renderHelp = R"(Usage: pkm render DESIGN [--set NAME=
                   [--camera front|top|side|iso] [--orthographic] [--no-caption]
                   -o FILE.png|FILE.svg|FILE.pdf
        pkm render DESIGN [--set NAME=VALUE]... --var NAME --from A --to B --steps K
-                  [--one-way] [--size WxH] [--no-caption] -o FILE.gif
+                  [--one-way] [--size WxH] [--no-caption] -o FILE.gif|FILE.mp4|FILE.webm
 
 Draws the mechanism in a pose — the design's stored pose, or the one the --set values
 give — and writes the picture to FILE. The 2D drawing is fitted to the range of motion, so
@@ -253,6 +256,12 @@ frames) draws the 2D picture at K evenly spaced values, each pose solved from th
 before so the mechanism stays in its mode, 50 ms per frame, looping; it plays back to A
 unless --one-way (for a crank that turns fully). Default size 960x720. A value without
 a pose stops it with status 3, naming the frame.
+
+A video: -o FILE.mp4 (H.264, yuv420p) or -o FILE.webm (VP9, or VP8 where libvpx has no
+VP9) with the same options draws the same frames, one per step, at 30 frames/s: --steps 90
+--one-way is 3 seconds. Default size 1280x720 (--size 1920x1080 for full HD); a video's
+sides are even, 32 to 3840 wide and 32 to 2160 high. Each frame is encoded as soon as it is
+drawn. An encoder that cannot be started or a full disk exits with status 1, no file left.
 
 Prints one line: Wrote FILE, with the size and the view. The file is written completely
 or not at all (a temporary file renamed at the end); on an error nothing is written and

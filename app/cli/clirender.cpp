@@ -3,7 +3,6 @@
 #include "camera3d.h"
 #include "cli/cli.h"
 #include "document/savefile.h"
-#include "export/animation.h"
 #include "export/scenepicture.h"
 #include "export/workspacepictures.h"
 #include "linkageview.h"
@@ -289,54 +288,6 @@ QString renderCaption(const PreparedDesign &prepared)
 
 // -- the command ---------------------------------------------------------------------------
 
-namespace {
-/// `pkm render … --var N --from A --to B --steps K -o FILE.gif`: the 2D picture of every step.
-int runAnimation(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
-{
-    const Mechanism &mechanism = *prepared.mechanism;
-    const std::string &name = *invocation.var;
-    const int variable = mechanism.variableIndex(name);
-    if (variable < 0) {
-        printError(err, joinText({"--var ", name, ": an animation moves a pose variable of the ",
-                                  std::string(mechanism.kind()), " (see 'pkm show ", prepared.origin, "')."}));
-        return CliUsageError;
-    }
-    if (!prepared.note.empty())
-        printError(err, "note: " + prepared.note);
-    const Unit &unit = mechanism.variableInfo()[variable].unit;
-    AnimationSettings settings;
-    settings.variable = variable;
-    settings.from = unit.fromDisplay(*invocation.from);
-    settings.to = unit.fromDisplay(*invocation.to);
-    settings.frames = static_cast<int>(*invocation.steps);
-    settings.bounce = !invocation.oneWay;
-    settings.size = QSize(invocation.width, invocation.height);
-    settings.caption = invocation.caption;
-    settings.name = QFileInfo(QString::fromStdString(prepared.origin)).fileName();
-    auto gif = renderAnimation(mechanism, prepared.pose, settings);
-    if (!gif) {
-        printError(err, "--var " + name + ": " + gif.failure().message);
-        return cliExitCode(gif.failure());
-    }
-    if (const auto failure = files::saveBytes(*invocation.output, *gif)) {
-        printError(err, *failure);
-        return CliOutputError;
-    }
-    const int frames = settings.bounce && settings.frames > 2 ? 2 * settings.frames - 2 : settings.frames;
-    std::string line("Wrote ");
-    line.append(*invocation.output)
-        .append(" (animated GIF, ")
-        .append(std::to_string(frames))
-        .append(" frames of ")
-        .append(std::to_string(invocation.width))
-        .append(" × ")
-        .append(std::to_string(invocation.height))
-        .append(" pixels, ")
-        .append(settings.bounce ? "forth and back)\n" : "one way)\n");
-    return printOutput(out, err, line);
-}
-} // namespace
-
 void enableXvfbRerun(const QString &program, const QStringList &arguments)
 {
     xvfbRerun() = XvfbRerun {program, arguments};
@@ -410,8 +361,8 @@ int runRenderCommand(const PreparedDesign &prepared, const Invocation &invocatio
 
     const std::string &path = *invocation.output;
     const std::string extension = fileExtension(path);
-    if (extension == "gif")
-        return runAnimation(prepared, invocation, out, err);
+    if (extension == "gif" || extension == "mp4" || extension == "webm")
+        return runRenderAnimation(prepared, invocation, out, err);
     const QString caption = invocation.caption ? renderCaption(prepared) : QString();
     const QString title = renderCaption(prepared);
 

@@ -31,6 +31,11 @@ namespace pkm::cli {
 /// with status 3.
 int runRenderCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err);
 
+/// `pkm render … --var N --from A --to B --steps K -o FILE.gif|.mp4|.webm`: the 2D picture of
+/// every step, as an animated GIF or a video (clirenderanimation.cpp); runRenderCommand()'s
+/// part for those files.
+int runRenderAnimation(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err);
+
 /// What main() of `pkm` must set up before its application object exists.
 struct RenderSetup {
     bool guiApplication = false; ///< a QGuiApplication rather than a QCoreApplication

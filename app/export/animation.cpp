@@ -2,6 +2,7 @@
 
 #include "export/scenepicture.h"
 #include "export/gifwriter.h"
+#include "export/videowriter.h"
 #include "quantityformat.h"
 #include "scenepainter.h"
 #include "text.h"
@@ -65,33 +66,88 @@ Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose 
     return poses;
 }
 
-QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose> &poses,
-                              const AnimationSettings &settings, const std::atomic<bool> *cancel)
+int animationFrameCount(int poses, bool bounce)
+{
+    return bounce && poses > 2 ? 2 * poses - 2 : poses;
+}
+
+namespace {
+/// The poses in playing order: back again without repeating the turning points, so the loop
+/// runs smoothly.
+std::vector<const Pose *> frameOrder(const std::vector<Pose> &poses, bool bounce)
 {
     std::vector<const Pose *> order;
     for (const Pose &pose : poses)
         order.push_back(&pose);
-    if (settings.bounce && poses.size() > 2) {
-        // back again without repeating the turning points, so the loop runs smoothly
+    if (bounce && poses.size() > 2) {
         for (auto it = poses.rbegin() + 1; it + 1 != poses.rend(); ++it)
             order.push_back(&*it);
     }
+    return order;
+}
+} // namespace
+
+QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings)
+{
+    const SceneStyle style;
+    QImage image(settings.size, QImage::Format_RGB32);
+    image.fill(style.background);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    const QString caption = settings.caption ? pictures::poseCaption(mechanism, pose, settings.name) : QString();
+    pictures::paintScenePicture(painter, QRectF(image.rect()), mechanism.scene(pose), style, caption);
+    painter.end();
+    return image;
+}
+
+QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose> &poses,
+                              const AnimationSettings &settings, const std::atomic<bool> *cancel)
+{
+    const std::vector<const Pose *> order = frameOrder(poses, settings.bounce);
     QList<QImage> frames;
     frames.reserve(static_cast<qsizetype>(order.size()));
-    const SceneStyle style;
     for (const Pose *pose : order) {
         if (cancel && cancel->load())
             return {};
-        QImage image(settings.size, QImage::Format_RGB32);
-        image.fill(style.background);
-        QPainter painter(&image);
-        painter.setRenderHint(QPainter::Antialiasing, true);
-        const QString caption = settings.caption ? pictures::poseCaption(mechanism, *pose, settings.name) : QString();
-        pictures::paintScenePicture(painter, QRectF(image.rect()), mechanism.scene(*pose), style, caption);
-        painter.end();
-        frames.append(image);
+        frames.append(animationFrame(mechanism, *pose, settings));
     }
     return frames;
+}
+
+VideoExport writeAnimationVideo(const Mechanism &mechanism, const std::vector<Pose> &poses,
+                                const AnimationSettings &settings, const QString &path,
+                                const std::atomic<bool> *cancel, const AnimationProgress &progress)
+{
+    VideoExport result;
+    const auto format = videoFormatForPath(path);
+    if (!format) {
+        result.error = QCoreApplication::translate("pkm::Animation", "A video file's name ends in .mp4 or .webm: %1.")
+                           .arg(path);
+        return result;
+    }
+    VideoWriter writer;
+    if (!writer.open(path, *format, settings.size, &result.error))
+        return result;
+    result.codec = writer.codecName();
+    const std::vector<const Pose *> order = frameOrder(poses, settings.bounce);
+    const int total = static_cast<int>(order.size());
+    for (int i = 0; i < total; ++i) {
+        if (cancel && cancel->load()) {
+            result.cancelled = true;
+            return result; // the writer discards its temporary file
+        }
+        if (!writer.addFrame(animationFrame(mechanism, *order[i], settings), &result.error))
+            return result;
+        if (progress)
+            progress(i + 1, total);
+    }
+    if (cancel && cancel->load()) {
+        result.cancelled = true;
+        return result;
+    }
+    if (writer.finish(&result.error))
+        result.frames = writer.framesWritten();
+    return result;
 }
 
 Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start, const AnimationSettings &settings,

@@ -1,7 +1,8 @@
 #pragma once
 /// Animations of a sweep: one pose variable moved evenly from one value to another, each pose
-/// drawn as the 2D picture `pkm render` makes, for an animated GIF (gifwriter.h). Shared by
-/// `pkm render … -o FILE.gif` and the GUI's File → Export Animation.
+/// drawn as the 2D picture `pkm render` makes, for an animated GIF (gifwriter.h) or a video
+/// (videowriter.h). Shared by `pkm render … -o FILE.gif|.mp4|.webm` and the GUI's File →
+/// Export Animation.
 
 #include "mechanism.h"
 
@@ -11,6 +12,7 @@
 #include <QString>
 
 #include <atomic>
+#include <functional>
 #include <vector>
 
 namespace pkm {
@@ -22,7 +24,7 @@ struct AnimationSettings {
     int frames = 60;     ///< poses from `from` to `to`, both included (≥ 2)
     bool bounce = true;  ///< play back to the start, so that a loop has no jump
     QSize size {960, 720};
-    int frameMilliseconds = 50;
+    int frameMilliseconds = 50; ///< GIF only: a video has videoFramesPerSecond
     bool caption = true; ///< the pose under each frame
     QString name;        ///< the design's name in the caption
 };
@@ -35,6 +37,12 @@ inline constexpr int maxAnimationFrames = 1000;
 Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose &start,
                                          const AnimationSettings &settings);
 
+/// How many frames `poses` poses make: forth and back without repeating the turning points.
+int animationFrameCount(int poses, bool bounce);
+
+/// The picture of one pose, as every frame of GIF and video is drawn; thread-safe.
+QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings);
+
 /// The frames of the poses (bounced if asked); thread-safe (QImage and QPainter only). Stops
 /// early, returning no frames, once `*cancel` becomes true.
 QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose> &poses,
@@ -43,5 +51,24 @@ QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose
 /// Poses, frames and GIF in one: the GIF's bytes, or the failure.
 Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start, const AnimationSettings &settings,
                                    const std::atomic<bool> *cancel = nullptr);
+
+/// What writeAnimationVideo() did.
+struct VideoExport {
+    QString error;          ///< one sentence; empty when the file was written (or cancelled)
+    bool cancelled = false; ///< `*cancel` became true: no file was written
+    QString codec;          ///< "H.264", "VP9" or "VP8"
+    int frames = 0;         ///< frames written
+    bool ok() const { return error.isEmpty() && !cancelled; }
+};
+
+/// Frames done so far and the total; called from the thread that encodes.
+using AnimationProgress = std::function<void(int done, int total)>;
+
+/// Writes the video of `poses` to `path` (MP4 or WebM by its extension, settings.size, 30
+/// frames/s): each frame is drawn and encoded before the next is drawn, so memory stays that
+/// of one frame whatever the length; the file appears only once complete. Thread-safe.
+VideoExport writeAnimationVideo(const Mechanism &mechanism, const std::vector<Pose> &poses,
+                                const AnimationSettings &settings, const QString &path,
+                                const std::atomic<bool> *cancel = nullptr, const AnimationProgress &progress = {});
 
 } // namespace pkm

@@ -1,5 +1,6 @@
 #include "gui/animationdialog.h"
 
+#include "export/videowriter.h"
 #include "gui/backgroundtask.h"
 #include "quantityformat.h"
 
@@ -8,6 +9,7 @@
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QFileInfo>
 #include <QLabel>
@@ -22,6 +24,9 @@ namespace pkm {
 namespace {
 const QList<QSize> pictureSizes {{640, 480}, {960, 720}, {1280, 960}, {1600, 1200}};
 constexpr int defaultSize = 1; // 960 × 720: sharp on a projector, a few MB for a minute of frames
+// A projector's 720p (the default) and full HD.
+const QList<QSize> videoSizes {defaultVideoSize, fullHdVideoSize};
+const QStringList formatExtensions {QStringLiteral("gif"), QStringLiteral("mp4"), QStringLiteral("webm")};
 } // namespace
 
 AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidget *parent)
@@ -36,6 +41,11 @@ AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidg
         label->setBuddy(field);
         form->addRow(label, field);
     };
+
+    m_format = new QComboBox(this);
+    for (const QString &extension : formatExtensions)
+        m_format->addItem(QString(), extension);
+    addRow(m_format);
 
     m_variable = new QComboBox(this);
     const auto &variables = mechanism.variableInfo();
@@ -60,10 +70,8 @@ AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidg
     addRow(m_frameTime);
 
     m_size = new QComboBox(this);
-    for (const QSize &size : pictureSizes)
-        m_size->addItem(QString(), size);
-    m_size->setCurrentIndex(defaultSize);
     addRow(m_size);
+    showSizes();
 
     m_bounce = new QCheckBox(this);
     m_bounce->setChecked(true);
@@ -76,6 +84,7 @@ AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidg
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     form->addRow(buttons);
 
+    connect(m_format, &QComboBox::currentIndexChanged, this, &AnimationDialog::selectFormat);
     connect(m_variable, &QComboBox::currentIndexChanged, this, &AnimationDialog::selectVariable);
     m_variable->setCurrentIndex(std::clamp(variable, 0, static_cast<int>(variables.size()) - 1));
     selectVariable(m_variable->currentIndex());
@@ -97,6 +106,10 @@ void AnimationDialog::setRowLabel(QWidget *field, const QString &text)
 void AnimationDialog::retranslate()
 {
     setWindowTitle(tr("Export Animation"));
+    m_format->setItemText(0, tr("Animated GIF"));
+    m_format->setItemText(1, tr("MP4 video (H.264, 30 frames/s)"));
+    m_format->setItemText(2, tr("WebM video (VP9, 30 frames/s)"));
+    setRowLabel(m_format, tr("Format"));
     const auto &variables = m_mechanism.variableInfo();
     for (int i = 0; i < m_variable->count() && i < static_cast<int>(variables.size()); ++i) {
         const VariableInfo &info = variables[i];
@@ -107,6 +120,7 @@ void AnimationDialog::retranslate()
     setRowLabel(m_to, tr("To"));
     setRowLabel(m_frames, tr("Frames"));
     m_frameTime->setSuffix(tr(" ms per frame"));
+    m_frameTime->setToolTip(tr("A GIF's speed; a video plays 30 frames per second."));
     setRowLabel(m_frameTime, tr("Speed"));
     for (int i = 0; i < m_size->count(); ++i) {
         const QSize size = m_size->itemData(i).toSize();
@@ -116,6 +130,33 @@ void AnimationDialog::retranslate()
     m_bounce->setText(tr("Play back to the start (a smooth loop)"));
     m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Export…"));
     showRangeUnit();
+}
+
+QString AnimationDialog::fileExtension() const
+{
+    return m_format->currentData().toString();
+}
+
+void AnimationDialog::showSizes()
+{
+    const bool video = fileExtension() != QLatin1String("gif");
+    const QSize chosen = m_size->currentData().toSize();
+    const QList<QSize> &sizes = video ? videoSizes : pictureSizes;
+    {
+        const QSignalBlocker blocker(m_size);
+        m_size->clear();
+        for (const QSize &size : sizes)
+            m_size->addItem(tr("%1 × %2 pixels").arg(QLocale().toString(size.width()), QLocale().toString(size.height())),
+                            size);
+    }
+    const int kept = static_cast<int>(sizes.indexOf(chosen));
+    m_size->setCurrentIndex(kept >= 0 ? kept : video ? 0 : defaultSize);
+    m_frameTime->setEnabled(!video); // a video's frame rate is fixed
+}
+
+void AnimationDialog::selectFormat()
+{
+    showSizes();
 }
 
 void AnimationDialog::showRangeUnit()
@@ -159,22 +200,68 @@ AnimationSettings AnimationDialog::settings() const
     return settings;
 }
 
+QString chooseAnimationPath(QWidget *parent, const QString &baseName, const QString &extension)
+{
+    const QString filters = AnimationDialog::tr("Animated GIF (*.gif)") + QStringLiteral(";;")
+        + AnimationDialog::tr("MP4 video (*.mp4)") + QStringLiteral(";;") + AnimationDialog::tr("WebM video (*.webm)");
+    const QStringList filterList = filters.split(QStringLiteral(";;"));
+    QString filter = filterList.value(std::max<qsizetype>(0, formatExtensions.indexOf(extension)));
+    QString path = QFileDialog::getSaveFileName(parent, AnimationDialog::tr("Export Animation"),
+                                                baseName.isEmpty() ? QString() : baseName + QLatin1Char('.') + extension,
+                                                filters, &filter);
+    if (path.isEmpty())
+        return {};
+    // The name's own extension decides (the user may type "lecture.mp4" with GIF chosen).
+    if (!formatExtensions.contains(QFileInfo(path).suffix().toLower())) {
+        const qsizetype chosen = filterList.indexOf(filter);
+        path += QLatin1Char('.') + formatExtensions.value(chosen >= 0 ? chosen : formatExtensions.indexOf(extension));
+    }
+    return path;
+}
+
+namespace {
+/// The GIF: every frame drawn, then encoded at once (giflib takes the frames together).
+TaskFailure writeGif(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings,
+                     const QString &path, const std::atomic<bool> &cancel)
+{
+    const Result<QByteArray> gif = renderAnimation(mechanism, pose, settings, &cancel);
+    if (cancel)
+        return std::nullopt;
+    if (!gif)
+        return QString::fromStdString(gif.failure().message);
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(*gif) != gif->size() || !file.commit())
+        return AnimationDialog::tr("Cannot write %1: %2.").arg(path, file.errorString());
+    return std::nullopt;
+}
+
+/// The video: poses first (they may fail, naming the frame), then frame by frame.
+TaskFailure writeVideo(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings,
+                       const QString &path, const std::atomic<bool> &cancel, const TaskProgress &progress)
+{
+    auto poses = animationPoses(mechanism, pose, settings);
+    if (!poses)
+        return QString::fromStdString(poses.failure().message);
+    const VideoExport written = writeAnimationVideo(mechanism, *poses, settings, path, &cancel, progress);
+    if (written.cancelled || written.ok())
+        return std::nullopt;
+    return written.error;
+}
+} // namespace
+
 void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, const AnimationSettings &settings,
                      const QString &path, const std::function<void(const QString &, bool)> &done)
 {
-    runInBackground(
+    const bool video = videoFormatForPath(path).has_value();
+    const int frames = animationFrameCount(settings.frames, settings.bounce);
+    runWithProgress(
         parent, AnimationDialog::tr("Export Animation"),
-        AnimationDialog::tr("Drawing %n frame(s)…", nullptr, settings.frames),
-        [mechanism = std::move(mechanism), pose, settings, path](const std::atomic<bool> &cancel) -> TaskFailure {
-            const Result<QByteArray> gif = renderAnimation(*mechanism, pose, settings, &cancel);
-            if (cancel)
-                return std::nullopt;
-            if (!gif)
-                return QString::fromStdString(gif.failure().message);
-            QSaveFile file(path);
-            if (!file.open(QIODevice::WriteOnly) || file.write(*gif) != gif->size() || !file.commit())
-                return AnimationDialog::tr("Cannot write %1: %2.").arg(path, file.errorString());
-            return std::nullopt;
+        video ? AnimationDialog::tr("Encoding %n frame(s)…", nullptr, frames)
+              : AnimationDialog::tr("Drawing %n frame(s)…", nullptr, settings.frames),
+        [mechanism = std::move(mechanism), pose, settings, path, video](const std::atomic<bool> &cancel,
+                                                                        const TaskProgress &progress) -> TaskFailure {
+            return video ? writeVideo(*mechanism, pose, settings, path, cancel, progress)
+                         : writeGif(*mechanism, pose, settings, path, cancel);
         },
         [path, done](const TaskFailure &failure, bool cancelled) {
             if (cancelled)

@@ -1,6 +1,7 @@
 #pragma once
-/// File → Export Animation: which pose variable to sweep, over what range, in how many frames
-/// and at what size; the GIF is drawn off the GUI thread.
+/// File → Export Animation: an animated GIF, an MP4 (H.264) or a WebM video; which pose
+/// variable to sweep, over what range, in how many frames and at what size. The file is drawn
+/// (and a video encoded, frame by frame) off the GUI thread, with a progress bar and Cancel.
 
 #include "export/animation.h"
 
@@ -32,6 +33,11 @@ public:
     QDoubleSpinBox *fromBox() const { return m_from; }
     QDoubleSpinBox *toBox() const { return m_to; }
     QSpinBox *framesBox() const { return m_frames; }
+    QComboBox *formatBox() const { return m_format; }
+    QComboBox *sizeBox() const { return m_size; }
+
+    /// The chosen format's file extension: "gif", "mp4" or "webm".
+    QString fileExtension() const;
 
 protected:
     /// A new language: labels, lists and units again, the choices kept.
@@ -43,10 +49,14 @@ private:
     /// The unit after the range's values, in the current language.
     void showRangeUnit();
     void setRowLabel(QWidget *field, const QString &text);
+    /// The sizes the format offers (a video's are even, 720p and 1080p); the speed is a GIF's.
+    void selectFormat();
+    void showSizes();
 
     const Mechanism &m_mechanism;
     QFormLayout *m_form = nullptr;
     QDialogButtonBox *m_buttons = nullptr;
+    QComboBox *m_format = nullptr;
     QComboBox *m_variable = nullptr;
     QDoubleSpinBox *m_from = nullptr;
     QDoubleSpinBox *m_to = nullptr;
@@ -56,8 +66,14 @@ private:
     QCheckBox *m_bounce = nullptr;
 };
 
+/// Asks where to write the animation: a file name ending in .gif, .mp4 or .webm (`extension`
+/// added when the name has none of them); empty when the user cancels.
+QString chooseAnimationPath(QWidget *parent, const QString &baseName, const QString &extension);
+
 /// Draws the animation off the GUI thread (a progress dialog offers to cancel) and writes it to
-/// `path` atomically; `done` gets the message for the status bar and whether it is an error.
+/// `path` atomically — an animated GIF, or a video when `path` ends in .mp4 or .webm, encoded
+/// one frame at a time; cancelling leaves no file. `done` gets the message for the status bar
+/// and whether it is an error.
 void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, const AnimationSettings &settings,
                      const QString &path, const std::function<void(const QString &, bool)> &done);
 

@@ -4,22 +4,45 @@
 #include <QFutureWatcher>
 #include <QPointer>
 #include <QProgressDialog>
+#include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
 #include <memory>
 
 namespace pkm {
 
-void runInBackground(QWidget *parent, const QString &title, const QString &label,
-                     std::function<TaskFailure(const std::atomic<bool> &cancel)> work,
+namespace {
+/// How far the work is, written by its thread and read by the GUI's timer.
+struct Progress {
+    std::atomic<int> done {0};
+    std::atomic<int> total {0}; ///< 0: not known (a busy bar)
+};
+} // namespace
+
+void runWithProgress(QWidget *parent, const QString &title, const QString &label,
+                     std::function<TaskFailure(const std::atomic<bool> &cancel, const TaskProgress &progress)> work,
                      std::function<void(const TaskFailure &failure, bool cancelled)> done)
 {
     auto cancel = std::make_shared<std::atomic<bool>>(false);
+    auto state = std::make_shared<Progress>();
     QPointer<QProgressDialog> progress = new QProgressDialog(label, QCoreApplication::translate("pkm::BackgroundTask", "Cancel"), 0, 0, parent);
     progress->setWindowTitle(title);
     progress->setMinimumDuration(500);
     progress->setAttribute(Qt::WA_DeleteOnClose);
+    // The bar stays full while the last step finishes (a video's index): closed by the end only.
+    progress->setAutoClose(false);
+    progress->setAutoReset(false);
     QObject::connect(progress, &QProgressDialog::canceled, progress, [cancel] { *cancel = true; });
+    auto *timer = new QTimer(progress);
+    QObject::connect(timer, &QTimer::timeout, progress, [progress, state] {
+        const int total = state->total;
+        if (total > 0 && progress) {
+            progress->setMaximum(total);
+            progress->setValue(std::min(state->done.load(), total));
+        }
+    });
+    timer->start(100);
 
     auto *watcher = new QFutureWatcher<TaskFailure>(parent);
     QObject::connect(watcher, &QFutureWatcher<TaskFailure>::finished, parent, [watcher, progress, cancel, done] {
@@ -32,7 +55,21 @@ void runInBackground(QWidget *parent, const QString &title, const QString &label
         }
         done(failure, cancelled);
     });
-    watcher->setFuture(QtConcurrent::run([work = std::move(work), cancel] { return work(*cancel); }));
+    const TaskProgress report = [state](int doneSteps, int total) {
+        state->done = doneSteps;
+        state->total = total;
+    };
+    watcher->setFuture(QtConcurrent::run([work = std::move(work), cancel, report] { return work(*cancel, report); }));
+}
+
+void runInBackground(QWidget *parent, const QString &title, const QString &label,
+                     std::function<TaskFailure(const std::atomic<bool> &cancel)> work,
+                     std::function<void(const TaskFailure &failure, bool cancelled)> done)
+{
+    runWithProgress(
+        parent, title, label,
+        [work = std::move(work)](const std::atomic<bool> &cancel, const TaskProgress &) { return work(cancel); },
+        std::move(done));
 }
 
 } // namespace pkm

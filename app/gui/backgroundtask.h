@@ -1,7 +1,8 @@
 #pragma once
 /// Long exports (an animation, a parameter sheet with its workspace maps) run off the GUI
 /// thread: a progress dialog appears after half a second and offers to cancel, and the result
-/// comes back on the GUI thread.
+/// comes back on the GUI thread. Work that knows how far it is (a video's frames) fills the
+/// dialog's bar.
 
 #include <QString>
 
@@ -21,6 +22,15 @@ using TaskFailure = std::optional<QString>;
 /// user cancelled; it is dropped if `parent` is gone by then.
 void runInBackground(QWidget *parent, const QString &title, const QString &label,
                      std::function<TaskFailure(const std::atomic<bool> &cancel)> work,
+                     std::function<void(const TaskFailure &failure, bool cancelled)> done);
+
+/// Tells the progress dialog that `done` of `total` steps are done; callable from the work's
+/// thread at any rate (the dialog looks ten times a second).
+using TaskProgress = std::function<void(int done, int total)>;
+
+/// runInBackground() with a progress bar: `work` reports through its TaskProgress.
+void runWithProgress(QWidget *parent, const QString &title, const QString &label,
+                     std::function<TaskFailure(const std::atomic<bool> &cancel, const TaskProgress &progress)> work,
                      std::function<void(const TaskFailure &failure, bool cancelled)> done);
 
 } // namespace pkm

@@ -298,7 +298,7 @@ void MainWindow::createActions()
     QAction *saveAs = translated(file->addAction(QString(), this, &MainWindow::saveFileAs), QT_TR_NOOP("Save Design &As…"));
     saveAs->setShortcut(QKeySequence::SaveAs);
     file->addSeparator();
-    translated(file->addAction(QString(), this, &MainWindow::exportAnimationDialog), QT_TR_NOOP("Export &Animation (GIF)…"))
+    translated(file->addAction(QString(), this, &MainWindow::exportAnimationDialog), QT_TR_NOOP("Export &Animation (GIF, MP4, WebM)…"))
         ->setObjectName(QStringLiteral("exportAnimationAction"));
     translated(file->addAction(QString(), this, &MainWindow::exportDrawing), QT_TR_NOOP("Export &Drawing (DXF)…"))
         ->setObjectName(QStringLiteral("exportDxfAction"));

@@ -116,13 +116,9 @@ void MainWindow::exportAnimationDialog()
         return;
     const QString base = m_session->filePath().isEmpty() ? QFileInfo(m_document->design().id).fileName()
                                                          : QFileInfo(m_session->filePath()).completeBaseName();
-    QString path = QFileDialog::getSaveFileName(this, tr("Export Animation"),
-                                                base.isEmpty() ? QString() : base + QStringLiteral(".gif"),
-                                                tr("Animated GIF (*.gif)"));
+    const QString path = chooseAnimationPath(this, base, dialog.fileExtension());
     if (path.isEmpty())
         return;
-    if (!path.endsWith(QLatin1String(".gif"), Qt::CaseInsensitive))
-        path += QStringLiteral(".gif");
     exportAnimationTo(path, dialog.settings());
 }
 

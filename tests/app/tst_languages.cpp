@@ -128,7 +128,7 @@ QStringList englishWords(const QStringList &texts)
     static const QRegularExpression word(QStringLiteral("(?<![\\w_])[A-Za-z]{3,}(?![\\w_])"));
     static const QStringList same = {
         QStringLiteral("PKM"), QStringLiteral("Studio"), QStringLiteral("MOMA"), QStringLiteral("DXF"),
-        QStringLiteral("GIF"), QStringLiteral("PDF"), QStringLiteral("JSON"), QStringLiteral("CSV"),
+        QStringLiteral("GIF"), QStringLiteral("WebM"), QStringLiteral("PDF"), QStringLiteral("JSON"), QStringLiteral("CSV"),
         QStringLiteral("PNG"), QStringLiteral("SVG"), QStringLiteral("det"), QStringLiteral("min"),
         QStringLiteral("max"), QStringLiteral("rec"), QStringLiteral("cos"), QStringLiteral("sin"),
         QStringLiteral("glide"), QStringLiteral("English"), QStringLiteral("Srpski"), QStringLiteral("latinica"),

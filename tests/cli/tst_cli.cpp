@@ -1849,7 +1849,7 @@ void TestCli::renderErrors_data()
     QTest::newRow("--size fractional") << args({"render", "moma-3a", "--size", "800x600.5", "-o", "OUT.png"}) << 2
                                        << QStringLiteral("--size 800x600.5");
     QTest::newRow("unknown extension") << args({"render", "moma-3a", "-o", "OUT.bmp"}) << 2 << QStringLiteral(".bmp");
-    QTest::newRow("no extension") << args({"render", "moma-3a", "-o", "OUT"}) << 2 << QStringLiteral(".png, .svg, .pdf or .gif");
+    QTest::newRow("no extension") << args({"render", "moma-3a", "-o", "OUT"}) << 2 << QStringLiteral(".png, .svg, .pdf, .gif, .mp4 or .webm");
     QTest::newRow("missing -o") << args({"render", "moma-3a"}) << 2 << QStringLiteral("-o FILE");
     QTest::newRow("missing -o in 3d") << args({"render", "moma-3a", "--view", "3d"}) << 2 << QStringLiteral("-o FILE");
     QTest::newRow("bad --camera") << args({"render", "moma-3a", "--view", "3d", "--camera", "diagonal", "-o", "OUT.png"})
@@ -1871,6 +1871,20 @@ void TestCli::renderErrors_data()
                                         << QStringLiteral("no-such-design");
     QTest::newRow("folder missing") << args({"render", "moma-3a", "-o", "OUT/missing/x.png"}) << 1
                                     << QStringLiteral("missing/x.png");
+    // A video's sides are even and at most 4K UHD's (export/videowriter.h).
+    const QStringList crank = args({"render", "fourbar-example", "--var", "alpha", "--from", "0", "--to", "90",
+                                    "--steps", "3"});
+    QTest::newRow("video --size odd") << crank + args({"--size", "641x480", "-o", "OUT.mp4"}) << 2
+                                      << QStringLiteral("--size 641x480: A video is 32 to 3840 pixels wide");
+    QTest::newRow("video --size past 4K") << crank + args({"--size", "4000x2000", "-o", "OUT.webm"}) << 2
+                                          << QStringLiteral("--size 4000x2000");
+    QTest::newRow("video in 3d") << crank + args({"--view", "3d", "-o", "OUT.mp4"}) << 2
+                                 << QStringLiteral("A video is drawn from the 2D view");
+    QTest::newRow("video folder missing") << crank + args({"-o", "OUT/missing/x.webm"}) << 1
+                                          << QStringLiteral("missing/x.webm");
+    QTest::newRow("video, --var unknown") << args({"render", "fourbar-example", "--var", "zz", "--from", "0", "--to",
+                                                   "1", "--steps", "3", "-o", "OUT.mp4"})
+                                          << 2 << QStringLiteral("--var zz");
 }
 
 void TestCli::renderErrors()
