@@ -3444,6 +3444,278 @@ Please verify the correct file name was given.</source>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Перетаскивание останавливается, не доходя до перехода O↔X при x_CD − x_AB = s = %1 мм, где стержни параллельны и платформа может качаться: чтобы продолжить, переключите форму.</translation>
     </message>
+    <message>
+        <source>eq. %1 of the П-joint document</source>
+        <translation>формула %1 документа о П-шарнире</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the П-joint document</source>
+        <translation>рис. %1 документа о П-шарнире</translation>
+    </message>
+    <message>
+        <source>the П-joint document</source>
+        <translation>документ о П-шарнире</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the MOMA document</source>
+        <translation>формула %1 документа о MOMA</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the MOMA document</source>
+        <translation>рис. %1 документа о MOMA</translation>
+    </message>
+    <message>
+        <source>the MOMA document</source>
+        <translation>документ о MOMA</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the O-X glide document</source>
+        <translation>формула %1 документа об O-X glide</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the O-X glide document</source>
+        <translation>рис. %1 документа об O-X glide</translation>
+    </message>
+    <message>
+        <source>the O-X glide document</source>
+        <translation>документ об O-X glide</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the four-bar and mobility document</source>
+        <translation>формула %1 документа о четырёхзвеннике и подвижности</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the four-bar and mobility document</source>
+        <translation>рис. %1 документа о четырёхзвеннике и подвижности</translation>
+    </message>
+    <message>
+        <source>the four-bar and mobility document</source>
+        <translation>документ о четырёхзвеннике и подвижности</translation>
+    </message>
+    <message>
+        <source>PKM Studio&apos;s model</source>
+        <translation>модель PKM Studio</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 1 (0: inverse singularity)</source>
+        <translation>Якобиан входа ветви 1 (0: особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 2 (0: inverse singularity)</source>
+        <translation>Якобиан входа ветви 2 (0: особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>Output Jacobian (0: direct singularity)</source>
+        <translation>Якобиан выхода (0: особое положение прямой кинематики)</translation>
+    </message>
+    <message>
+        <source>Determinant of J</source>
+        <translation>Определитель J</translation>
+    </message>
+    <message>
+        <source>J = J_q⁻¹·J_x maps lengths to angles, so det J is in rad²/mm², not dimensionless as MOMA&apos;s and the O-X glide&apos;s.</source>
+        <translation>J = J_q⁻¹·J_x переводит длины в углы, поэтому det J измеряется в рад²/мм², а не безразмерен, как у MOMA и O-X glide.</translation>
+    </message>
+    <message>
+        <source>Transmission angle between the distal links</source>
+        <translation>Угол передачи между шатунами</translation>
+    </message>
+    <message>
+        <source>Distance from the inverse singularities</source>
+        <translation>Удаление от особых положений обратной кинематики</translation>
+    </message>
+    <message>
+        <source>Distance from the direct singularities</source>
+        <translation>Удаление от особых положений прямой кинематики</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Угол передачи γ в C</translation>
+    </message>
+    <message>
+        <source>Angle at D from DA to DB</source>
+        <translation>Угол в D от DA до DB</translation>
+    </message>
+    <message>
+        <source>Rocker angle</source>
+        <translation>Угол коромысла</translation>
+    </message>
+    <message>
+        <source>The document takes the arctan of the ratio, which is 180° off wherever CD − BC·cos γ &lt; 0; the program uses atan2.</source>
+        <translation>В документе берётся arctg отношения, что даёт ошибку в 180° везде, где CD − BC·cos γ &lt; 0; программа использует atan2.</translation>
+    </message>
+    <message>
+        <source>Angle at B</source>
+        <translation>Угол в B</translation>
+    </message>
+    <message>
+        <source>Transfer function dδ/dα</source>
+        <translation>Передаточная функция dδ/dα</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (8) and (9) give the rocker&apos;s counter-clockwise rate dθ₃/dt = −dδ/dt; the program&apos;s ω₃ and i₃₁ are their negatives.</source>
+        <translation>Формулы (8) и (9) документа дают скорость коромысла против часовой стрелки dθ₃/dt = −dδ/dt; ω₃ и i₃₁ программы — те же величины с обратным знаком.</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity</source>
+        <translation>Угловая скорость коромысла</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration at constant ω₁</source>
+        <translation>Угловое ускорение коромысла при постоянной ω₁</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (14) agrees with neither sign of the exact second derivative; the program differentiates the loop closure twice.</source>
+        <translation>Формула (14) документа не совпадает с точной второй производной ни при каком знаке; программа дважды дифференцирует уравнение замыкания контура.</translation>
+    </message>
+    <message>
+        <source>Input Jacobian (0: inverse singularity)</source>
+        <translation>Якобиан входа (0: особое положение обратной кинематики)</translation>
+    </message>
+    <message>
+        <source>Projection on guide %1</source>
+        <translation>Проекция на направляющую %1</translation>
+    </message>
+    <message>
+        <source>Reach of link %1</source>
+        <translation>Досягаемость звена %1</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics of leg %1</source>
+        <translation>Обратная кинематика ветви %1</translation>
+    </message>
+    <message>
+        <source>The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², the same number without cancelling two large ones.</source>
+        <translation>Программа вычисляет B_i² − C_i как l_i² − (a_i × (P − R_i))²: то же число, но без вычитания двух больших чисел.</translation>
+    </message>
+    <message>
+        <source>Direct kinematics: P along Z₁→Z₂</source>
+        <translation>Прямая кинематика: P вдоль Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (10–12) divide by x_Z2 − x_Z1 and fail with the slider joints one above the other; the program intersects the circles measured along Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</source>
+        <translation>Формулы (10–12) документа делят на x_Z2 − x_Z1 и не работают, когда шарниры ползунов стоят один над другим; программа пересекает окружности, отсчитывая вдоль Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</translation>
+    </message>
+    <message>
+        <source>From J_p·ṗ + J_x·Ṗ = 0 the program&apos;s J is −J_p⁻¹·J_x; the document&apos;s (21) has no minus sign. For the 2×2 J the determinant is the same.</source>
+        <translation>Из J_p·ṗ + J_x·Ṗ = 0 в программе J = −J_p⁻¹·J_x; в формуле (21) документа минуса нет. Для матрицы J 2×2 определитель тот же.</translation>
+    </message>
+    <message>
+        <source>Run of a rod along the guides</source>
+        <translation>Вынос тяги вдоль направляющих</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics, %1 form</source>
+        <translation>Обратная кинематика, форма %1</translation>
+    </message>
+    <message>
+        <source>Direct kinematics, both forms</source>
+        <translation>Прямая кинематика, обе формы</translation>
+    </message>
+    <message>
+        <source>The document prints “+ s” in the X form&apos;s direct kinematics, which contradicts its own inverse kinematics; with “− s” both forms return their poses exactly. The sign of x_CD − x_AB − s is the form.</source>
+        <translation>В прямой кинематике формы X документ печатает «+ s», что противоречит его же обратной кинематике; с «− s» обе формы точно возвращают свои положения. Знак x_CD − x_AB − s и есть форма.</translation>
+    </message>
+    <message>
+        <source>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] from the constraints (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (rods perpendicular to the guides or parallel to each other) is singular.</source>
+        <translation>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] из уравнений связей (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (тяги перпендикулярны направляющим или параллельны друг другу) — особое положение.</translation>
+    </message>
+    <message>
+        <source>Condition number of J</source>
+        <translation>Число обусловленности J</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics</source>
+        <translation>Обратная кинематика</translation>
+    </message>
+    <message>
+        <source>Direct kinematics</source>
+        <translation>Прямая кинематика</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Угол передачи</translation>
+    </message>
+    <message>
+        <source>Output torque at F_max</source>
+        <translation>Выходной момент при F_max</translation>
+    </message>
+    <message>
+        <source>J in mm/rad times F in N gives N·mm; 10⁻³ turns it into N·m.</source>
+        <translation>J в мм/рад, умноженный на F в Н, даёт Н·мм; множитель 10⁻³ переводит в Н·м.</translation>
+    </message>
+    <message>
+        <source>Output speed at ḋ_max</source>
+        <translation>Выходная скорость при ḋ_max</translation>
+    </message>
+    <message>
+        <source>Output resolution per motor step</source>
+        <translation>Выходное разрешение на шаг двигателя</translation>
+    </message>
+    <message>
+        <source>Motor torque at F_max</source>
+        <translation>Момент двигателя при F_max</translation>
+    </message>
+    <message>
+        <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
+        <translation>В таблице 1 нет КПД винтовой передачи η; в примерах принято 0,4.</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
+        <translation>Производная J, для ускорения d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
+    </message>
+    <message>
+        <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
+        <translation>В формулах ускорения (19–20) документа в первом члене потеряно θ̈, а вместо θ̇² написано θ̇; программа использует d̈ = J·θ̈ + (∂J/∂θ)·θ̇², что совпадает с численной второй производной.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
+        <translation>В положении платформы %1 ноги удержали бы её только в другом режиме сборки.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
+        <translation>В положении платформы %1 нога %2 не достаёт до неё: её точка платформы слишком далеко от точки основания A%2 для её звеньев.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too near its base point A%2 for its links.</source>
+        <translation>В положении платформы %1 нога %2 не достаёт до неё: её точка платформы слишком близко к точке основания A%2 для её звеньев.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its input would leave its range.</source>
+        <translation>В положении платформы %1 нога %2 не достаёт до неё: её вход вышел бы из своего диапазона.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the input of leg %2 is undetermined.</source>
+        <translation>В положении платформы %1 вход ноги %2 не определён.</translation>
+    </message>
+    <message>
+        <source>drag to move the base point A%1 (changes the design)</source>
+        <translation>перетащите, чтобы переместить точку основания A%1 (изменяет конструкцию)</translation>
+    </message>
+    <message>
+        <source>drag to move the platform point B%1 (changes the design)</source>
+        <translation>перетащите, чтобы переместить точку платформы B%1 (изменяет конструкцию)</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): constraint</source>
+        <translation>Ветвь %1 (%2): уравнение связи</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s angle</source>
+        <translation>Ветвь %1 (%2): угол П-шарнира</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
+        <translation>Ветвь %1 (%2): якобиан П-шарнира</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
+        <translation>Строка ветви в J_x содержит этот J множителем, поэтому особое положение самого П-шарнира (θ = ±90°) — особое положение прямой кинематики всего механизма (документ о П-шарнире, раздел 4).</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
+        <translation>Ветвь %1 (%2): якобиан входа (0: особое положение обратной кинематики)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3462,6 +3734,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The animation was cancelled.</source>
         <translation>Анимация отменена.</translation>
+    </message>
+    <message>
+        <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
+        <translation>Имя видеофайла должно оканчиваться на .mp4 или .webm: %1.</translation>
     </message>
 </context>
 <context>
@@ -3529,6 +3805,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Wrote %1 (%2 kB)</source>
         <translation>Записан файл %1 (%2 КБ)</translation>
+    </message>
+    <message>
+        <source>Animated GIF</source>
+        <translation>Анимированный GIF</translation>
+    </message>
+    <message>
+        <source>MP4 video (H.264, 30 frames/s)</source>
+        <translation>Видео MP4 (H.264, 30 кадров/с)</translation>
+    </message>
+    <message>
+        <source>WebM video (VP9, 30 frames/s)</source>
+        <translation>Видео WebM (VP9, 30 кадров/с)</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Формат</translation>
+    </message>
+    <message>
+        <source>A GIF&apos;s speed; a video plays 30 frames per second.</source>
+        <translation>Скорость GIF; видео воспроизводится с частотой 30 кадров в секунду.</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Анимированный GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4)</source>
+        <translation>Видео MP4 (*.mp4)</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>Видео WebM (*.webm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Encoding %n frame(s)…</source>
+        <translation>
+            <numerusform>Кодирование %n кадра…</numerusform>
+            <numerusform>Кодирование %n кадров…</numerusform>
+            <numerusform>Кодирование %n кадров…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3669,6 +3985,21 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Bookmark “%1”: %2</source>
         <translation>Закладка «%1»: %2</translation>
+    </message>
+    <message>
+        <source>New design from template %1</source>
+        <translation>Новая конструкция по шаблону %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Переместить %1</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::EquationsPanel</name>
+    <message>
+        <source>This kind lists no equations.</source>
+        <translation>Для этого вида механизма уравнения не заданы.</translation>
     </message>
 </context>
 <context>
@@ -4054,10 +4385,6 @@ Please verify the correct file name was given.</source>
         <translation>Сохранить конструкцию &amp;как…</translation>
     </message>
     <message>
-        <source>Export &amp;Animation (GIF)…</source>
-        <translation>Экспорт &amp;анимации (GIF)…</translation>
-    </message>
-    <message>
         <source>Export &amp;Drawing (DXF)…</source>
         <translation>Экспорт &amp;чертежа (DXF)…</translation>
     </message>
@@ -4148,14 +4475,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>PKM Studio designs (*.pkm.json)</source>
         <translation>Конструкции PKM Studio (*.pkm.json)</translation>
-    </message>
-    <message>
-        <source>Export Animation</source>
-        <translation>Экспорт анимации</translation>
-    </message>
-    <message>
-        <source>Animated GIF (*.gif)</source>
-        <translation>Анимированный GIF (*.gif)</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -4316,6 +4635,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks.</source>
         <translation>Режим презентации: выход — Esc или F5; Page Up и Page Down листают закладки.</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Уравнения</translation>
+    </message>
+    <message>
+        <source>New from &amp;Template</source>
+        <translation>Создать по &amp;шаблону</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF, MP4, WebM)…</source>
+        <translation>Экспорт &amp;анимации (GIF, MP4, WebM)…</translation>
+    </message>
+    <message>
+        <source>5R (two driven cranks)</source>
+        <translation>5R (два приводных кривошипа)</translation>
+    </message>
+    <message>
+        <source>5R driven by two П-joints</source>
+        <translation>5R с приводом от двух П-шарниров</translation>
+    </message>
+    <message>
+        <source>Constant orientation, 2 DOF, with two П-joints</source>
+        <translation>Постоянная ориентация, 2 степени свободы, с двумя П-шарнирами</translation>
+    </message>
+    <message>
+        <source>3-RP̲R (three struts)</source>
+        <translation>3-RP̲R (три телескопические штанги)</translation>
+    </message>
+    <message>
+        <source>3-R̲RR (three driven cranks)</source>
+        <translation>3-R̲RR (три приводных кривошипа)</translation>
+    </message>
+    <message>
+        <source>3-P̲RR (three driven sliders)</source>
+        <translation>3-P̲RR (три приводных ползуна)</translation>
+    </message>
+    <message>
+        <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
+        <translation>2-P̲RR (два приводных ползуна, MOMA 3a)</translation>
     </message>
 </context>
 <context>
@@ -5038,6 +5397,113 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::PlanarParallelPanel</name>
+    <message>
+        <source>Add leg 3</source>
+        <translation>Добавить ногу 3</translation>
+    </message>
+    <message>
+        <source>Remove leg 3</source>
+        <translation>Удалить ногу 3</translation>
+    </message>
+    <message>
+        <source>Change the platform</source>
+        <translation>Изменить платформу</translation>
+    </message>
+    <message>
+        <source>Change the type of leg %1</source>
+        <translation>Изменить тип ноги %1</translation>
+    </message>
+    <message>
+        <source>Change the working mode of leg %1</source>
+        <translation>Изменить рабочий режим ноги %1</translation>
+    </message>
+    <message>
+        <source>Legs</source>
+        <translation>Ноги</translation>
+    </message>
+    <message>
+        <source>&amp;Platform:</source>
+        <translation>&amp;Платформа:</translation>
+    </message>
+    <message>
+        <source>Add leg</source>
+        <translation>Добавить ногу</translation>
+    </message>
+    <message>
+        <source>A third leg, a strut opposite the other two: the platform becomes a free body (3 DOF).</source>
+        <translation>Третья нога, штанга напротив двух других: платформа становится свободным телом (3 степени свободы).</translation>
+    </message>
+    <message>
+        <source>Two legs: the platform becomes a point, or keeps a constant orientation if both legs are P̲RR or П̲RR.</source>
+        <translation>Две ноги: платформа становится точкой или сохраняет постоянную ориентацию, если обе ноги P̲RR или П̲RR.</translation>
+    </message>
+    <message>
+        <source>a point (2 legs, x and y)</source>
+        <translation>точка (2 ноги, x и y)</translation>
+    </message>
+    <message>
+        <source>constant orientation (2 legs, x and y)</source>
+        <translation>постоянная ориентация (2 ноги, x и y)</translation>
+    </message>
+    <message>
+        <source>free body (3 legs, x, y and φ)</source>
+        <translation>свободное тело (3 ноги, x, y и φ)</translation>
+    </message>
+    <message>
+        <source>Leg %1:</source>
+        <translation>Нога %1:</translation>
+    </message>
+    <message>
+        <source>R̲RR: driven crank and link</source>
+        <translation>R̲RR: приводной кривошип и шатун</translation>
+    </message>
+    <message>
+        <source>P̲RR: driven slider and link</source>
+        <translation>P̲RR: приводной ползун и шатун</translation>
+    </message>
+    <message>
+        <source>RP̲R: telescopic strut</source>
+        <translation>RP̲R: телескопическая штанга</translation>
+    </message>
+    <message>
+        <source>П̲RR: active П-joint and link</source>
+        <translation>П̲RR: активный П-шарнир и шатун</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s joints from the base, the actuated one underlined.</source>
+        <translation>Шарниры ноги от основания, приводной подчёркнут.</translation>
+    </message>
+    <message>
+        <source>working mode +1</source>
+        <translation>рабочий режим +1</translation>
+    </message>
+    <message>
+        <source>working mode −1</source>
+        <translation>рабочий режим −1</translation>
+    </message>
+    <message>
+        <source>+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular).</source>
+        <translation>+1: локоть слева от линии от A к точке платформы (P̲RR: ползун за основанием перпендикуляра).</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>точка</translation>
+    </message>
+    <message>
+        <source>constant orientation</source>
+        <translation>постоянная ориентация</translation>
+    </message>
+    <message>
+        <source>free body</source>
+        <translation>свободное тело</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <translation>режим %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::PlayBar</name>
     <message>
         <source>Pause</source>
@@ -5252,6 +5718,53 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Drag to set %1 (%2), from %3 to %4</source>
         <translation>Перетащите, чтобы задать %1 (%2), от %3 до %4</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VideoWriter</name>
+    <message>
+        <source>A video is %1 to %2 pixels wide and %1 to %3 high, in even numbers (e.g. 1280x720 or 1920x1080), not %4x%5.</source>
+        <translation>Ширина видео — от %1 до %2 пикселей, высота — от %1 до %3, чётными числами (например, 1280x720 или 1920x1080), а не %4x%5.</translation>
+    </message>
+    <message>
+        <source>Cannot write &apos;%1&apos;: %2.</source>
+        <translation>Не удаётся записать «%1»: %2.</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>неизвестная ошибка</translation>
+    </message>
+    <message>
+        <source>This build of FFmpeg&apos;s libavformat cannot write %1 files.</source>
+        <translation>Эта сборка libavformat (FFmpeg) не умеет записывать файлы %1.</translation>
+    </message>
+    <message>
+        <source>FFmpeg is out of memory.</source>
+        <translation>FFmpeg не хватает памяти.</translation>
+    </message>
+    <message>
+        <source>FFmpeg could not start the %1 encoder (%2): %3.</source>
+        <translation>FFmpeg не удалось запустить кодировщик %1 (%2): %3.</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian&apos;s libavcodec has it).</source>
+        <translation>В libavcodec (FFmpeg) здесь нет кодировщика H.264: для MP4 нужен libx264 (в libavcodec из Debian он есть).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian&apos;s libavcodec has it).</source>
+        <translation>В libavcodec (FFmpeg) здесь нет кодировщика VP9 или VP8: для WebM нужен libvpx (в libavcodec из Debian он есть).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libswscale cannot convert the frames to YUV 4:2:0.</source>
+        <translation>libswscale (FFmpeg) не может преобразовать кадры в YUV 4:2:0.</translation>
+    </message>
+    <message>
+        <source>The video is not open.</source>
+        <translation>Видео не открыто.</translation>
+    </message>
+    <message>
+        <source>A video needs at least one frame.</source>
+        <translation>Видео должно содержать хотя бы один кадр.</translation>
     </message>
 </context>
 <context>
@@ -5694,6 +6207,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
         <translation>Плоский механизм с двумя степенями свободы и платформой постоянной ориентации, который Милутинович, Кокотович, Славкович и Живанович приводят среди применений П-шарнира («Механизм активного П-шарнира как эквивалент комбинации вращательного шарнира и сегмента постоянной длины», Белградский университет, машиностроительный факультет, 2014): два лабораторных П-шарнира (a = 170 мм, k = 0,4, диагональ от 116,5 до 231 мм) с кривошипами в A₁ = (0, 0) и A₂ = (200, 0) мм, основания которых повёрнуты на α = ±30°. Шатун П-шарнира сохраняет своё направление, поэтому дистальный параллелограмм длиной 200 мм от каждого шатуна к точкам платформы B₁ = (−40, 0) и B₂ = (40, 0) мм сохраняет ориентацию платформы. Второй параллелограмм повторяет связь первого: формула Чебышева даёт 1, а подвижность равна 2.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-P̲RR</source>
+        <translation>Плоский параллельный: симметричный 3-P̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-P̲RR chosen for PKM Studio: three sliders driven along the sides of an equilateral triangle of side 346.41 mm (its corners A₁, A₂, A₃ 200 mm from the centre, each guide from Aᵢ towards the next corner, stroke 0 to 346.41 mm), distal links of 150 mm and an equilateral platform of circumradius 40 mm, every slider beyond the foot of the perpendicular from its platform point (working mode +1).</source>
+        <translation>Симметричный 3-P̲RR, выбранный для PKM Studio: три ползуна с приводом вдоль сторон равностороннего треугольника со стороной 346.41 мм (его вершины A₁, A₂, A₃ в 200 мм от центра, каждая направляющая от Aᵢ к следующей вершине, ход от 0 до 346.41 мм), дистальные шатуны по 150 мм и равносторонняя платформа с радиусом описанной окружности 40 мм, каждый ползун за основанием перпендикуляра из своей точки платформы (рабочий режим +1).</translation>
     </message>
 </context>
 </TS>

@@ -3444,6 +3444,278 @@ Please verify the correct file name was given.</source>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Превлачење се зауставља пре прелаза O↔X при x_CD − x_AB = s = %1 mm, где су шипке паралелне и платформа може да се њише: промените облик да бисте наставили.</translation>
     </message>
+    <message>
+        <source>eq. %1 of the П-joint document</source>
+        <translation>јед. %1 рада о П-зглобу</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the П-joint document</source>
+        <translation>сл. %1 рада о П-зглобу</translation>
+    </message>
+    <message>
+        <source>the П-joint document</source>
+        <translation>рад о П-зглобу</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the MOMA document</source>
+        <translation>јед. %1 рада о MOMA</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the MOMA document</source>
+        <translation>сл. %1 рада о MOMA</translation>
+    </message>
+    <message>
+        <source>the MOMA document</source>
+        <translation>рад о MOMA</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the O-X glide document</source>
+        <translation>јед. %1 рада о O-X glide</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the O-X glide document</source>
+        <translation>сл. %1 рада о O-X glide</translation>
+    </message>
+    <message>
+        <source>the O-X glide document</source>
+        <translation>рад о O-X glide</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the four-bar and mobility document</source>
+        <translation>јед. %1 рада о зглобном четвороуглу и покретљивости</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the four-bar and mobility document</source>
+        <translation>сл. %1 рада о зглобном четвороуглу и покретљивости</translation>
+    </message>
+    <message>
+        <source>the four-bar and mobility document</source>
+        <translation>рад о зглобном четвороуглу и покретљивости</translation>
+    </message>
+    <message>
+        <source>PKM Studio&apos;s model</source>
+        <translation>модел програма PKM Studio</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 1 (0: inverse singularity)</source>
+        <translation>Јакобијан улаза ноге 1 (0: сингуларитет инверзне кинематике)</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 2 (0: inverse singularity)</source>
+        <translation>Јакобијан улаза ноге 2 (0: сингуларитет инверзне кинематике)</translation>
+    </message>
+    <message>
+        <source>Output Jacobian (0: direct singularity)</source>
+        <translation>Јакобијан излаза (0: сингуларитет директне кинематике)</translation>
+    </message>
+    <message>
+        <source>Determinant of J</source>
+        <translation>Детерминанта J</translation>
+    </message>
+    <message>
+        <source>J = J_q⁻¹·J_x maps lengths to angles, so det J is in rad²/mm², not dimensionless as MOMA&apos;s and the O-X glide&apos;s.</source>
+        <translation>J = J_q⁻¹·J_x пресликава дужине у углове, па је det J у rad²/mm², а не бездимензионалан као код MOMA и O-X glide.</translation>
+    </message>
+    <message>
+        <source>Transmission angle between the distal links</source>
+        <translation>Угао преноса између спојки</translation>
+    </message>
+    <message>
+        <source>Distance from the inverse singularities</source>
+        <translation>Удаљеност од сингуларитета инверзне кинематике</translation>
+    </message>
+    <message>
+        <source>Distance from the direct singularities</source>
+        <translation>Удаљеност од сингуларитета директне кинематике</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Угао преноса γ у C</translation>
+    </message>
+    <message>
+        <source>Angle at D from DA to DB</source>
+        <translation>Угао у D од DA до DB</translation>
+    </message>
+    <message>
+        <source>Rocker angle</source>
+        <translation>Угао клацкалице</translation>
+    </message>
+    <message>
+        <source>The document takes the arctan of the ratio, which is 180° off wherever CD − BC·cos γ &lt; 0; the program uses atan2.</source>
+        <translation>Рад узима arctg количника, што греши за 180° где год је CD − BC·cos γ &lt; 0; програм користи atan2.</translation>
+    </message>
+    <message>
+        <source>Angle at B</source>
+        <translation>Угао у B</translation>
+    </message>
+    <message>
+        <source>Transfer function dδ/dα</source>
+        <translation>Преносна функција dδ/dα</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (8) and (9) give the rocker&apos;s counter-clockwise rate dθ₃/dt = −dδ/dt; the program&apos;s ω₃ and i₃₁ are their negatives.</source>
+        <translation>Једначине (8) и (9) из рада дају брзину клацкалице супротно од казаљке на сату dθ₃/dt = −dδ/dt; ω₃ и i₃₁ у програму су исте величине са супротним знаком.</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity</source>
+        <translation>Угаона брзина клацкалице</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration at constant ω₁</source>
+        <translation>Угаоно убрзање клацкалице при константној ω₁</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (14) agrees with neither sign of the exact second derivative; the program differentiates the loop closure twice.</source>
+        <translation>Једначина (14) из рада се не слаже са тачним другим изводом ни са једним знаком; програм двапут диференцира једначину затварања контуре.</translation>
+    </message>
+    <message>
+        <source>Input Jacobian (0: inverse singularity)</source>
+        <translation>Јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
+    </message>
+    <message>
+        <source>Projection on guide %1</source>
+        <translation>Пројекција на вођицу %1</translation>
+    </message>
+    <message>
+        <source>Reach of link %1</source>
+        <translation>Домет спојке %1</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics of leg %1</source>
+        <translation>Инверзна кинематика ноге %1</translation>
+    </message>
+    <message>
+        <source>The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², the same number without cancelling two large ones.</source>
+        <translation>Програм рачуна B_i² − C_i као l_i² − (a_i × (P − R_i))²: исти број, без одузимања два велика броја.</translation>
+    </message>
+    <message>
+        <source>Direct kinematics: P along Z₁→Z₂</source>
+        <translation>Директна кинематика: P дуж Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (10–12) divide by x_Z2 − x_Z1 and fail with the slider joints one above the other; the program intersects the circles measured along Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</source>
+        <translation>Једначине (10–12) из рада деле са x_Z2 − x_Z1 и не важе кад су зглобови клизача један изнад другог; програм сече кругове мерећи дуж Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</translation>
+    </message>
+    <message>
+        <source>From J_p·ṗ + J_x·Ṗ = 0 the program&apos;s J is −J_p⁻¹·J_x; the document&apos;s (21) has no minus sign. For the 2×2 J the determinant is the same.</source>
+        <translation>Из J_p·ṗ + J_x·Ṗ = 0 у програму је J = −J_p⁻¹·J_x; у једначини (21) из рада нема минуса. За матрицу J 2×2 детерминанта је иста.</translation>
+    </message>
+    <message>
+        <source>Run of a rod along the guides</source>
+        <translation>Пројекција шипке дуж вођица</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics, %1 form</source>
+        <translation>Инверзна кинематика, облик %1</translation>
+    </message>
+    <message>
+        <source>Direct kinematics, both forms</source>
+        <translation>Директна кинематика, оба облика</translation>
+    </message>
+    <message>
+        <source>The document prints “+ s” in the X form&apos;s direct kinematics, which contradicts its own inverse kinematics; with “− s” both forms return their poses exactly. The sign of x_CD − x_AB − s is the form.</source>
+        <translation>Рад у директној кинематици облика X штампа „+ s”, што противречи његовој инверзној кинематици; са „− s” оба облика тачно враћају своје положаје. Знак x_CD − x_AB − s је облик.</translation>
+    </message>
+    <message>
+        <source>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] from the constraints (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (rods perpendicular to the guides or parallel to each other) is singular.</source>
+        <translation>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] из једначина веза (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (шипке управне на вођице или паралелне међусобно) је сингуларитет.</translation>
+    </message>
+    <message>
+        <source>Condition number of J</source>
+        <translation>Број условљености J</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics</source>
+        <translation>Инверзна кинематика</translation>
+    </message>
+    <message>
+        <source>Direct kinematics</source>
+        <translation>Директна кинематика</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Угао преноса</translation>
+    </message>
+    <message>
+        <source>Output torque at F_max</source>
+        <translation>Излазни момент при F_max</translation>
+    </message>
+    <message>
+        <source>J in mm/rad times F in N gives N·mm; 10⁻³ turns it into N·m.</source>
+        <translation>J у mm/rad пута F у N даје N·mm; чинилац 10⁻³ претвара то у N·m.</translation>
+    </message>
+    <message>
+        <source>Output speed at ḋ_max</source>
+        <translation>Излазна угаона брзина при ḋ_max</translation>
+    </message>
+    <message>
+        <source>Output resolution per motor step</source>
+        <translation>Излазна резолуција по кораку мотора</translation>
+    </message>
+    <message>
+        <source>Motor torque at F_max</source>
+        <translation>Момент мотора при F_max</translation>
+    </message>
+    <message>
+        <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
+        <translation>Табела 1 не даје степен искоришћења вретена η; примери узимају 0,4.</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
+        <translation>Извод од J, за убрзање d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
+    </message>
+    <message>
+        <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
+        <translation>У убрзању (19–20) из рада првом члану недостаје θ̈, а уместо θ̇² пише θ̇; програм користи d̈ = J·θ̈ + (∂J/∂θ)·θ̇², што се слаже са нумеричким другим изводом.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
+        <translation>У положају платформе %1 ноге би је држале само у другом склопном режиму.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
+        <translation>У положају платформе %1 нога %2 не може да је достигне: њена тачка платформе је предалеко од тачке основе A%2 за њене чланове.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too near its base point A%2 for its links.</source>
+        <translation>У положају платформе %1 нога %2 не може да је достигне: њена тачка платформе је преблизу тачки основе A%2 за њене чланове.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its input would leave its range.</source>
+        <translation>У положају платформе %1 нога %2 не може да је достигне: њен улаз изашао би из свог опсега.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the input of leg %2 is undetermined.</source>
+        <translation>У положају платформе %1 улаз ноге %2 није одређен.</translation>
+    </message>
+    <message>
+        <source>drag to move the base point A%1 (changes the design)</source>
+        <translation>превуците да померите тачку основе A%1 (мења конструкцију)</translation>
+    </message>
+    <message>
+        <source>drag to move the platform point B%1 (changes the design)</source>
+        <translation>превуците да померите тачку платформе B%1 (мења конструкцију)</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): constraint</source>
+        <translation>Нога %1 (%2): једначина везе</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s angle</source>
+        <translation>Нога %1 (%2): угао П-зглоба</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
+        <translation>Нога %1 (%2): Јакобијан П-зглоба</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
+        <translation>Ред ноге у J_x садржи овај J као чинилац, па је сингуларитет самог П-зглоба (θ = ±90°) сингуларитет директне кинематике целог механизма (рад о П-зглобу, одељак 4).</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
+        <translation>Нога %1 (%2): Јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3462,6 +3734,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The animation was cancelled.</source>
         <translation>Анимација је отказана.</translation>
+    </message>
+    <message>
+        <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
+        <translation>Име видео-датотеке се завршава на .mp4 или .webm: %1.</translation>
     </message>
 </context>
 <context>
@@ -3529,6 +3805,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Wrote %1 (%2 kB)</source>
         <translation>Уписано %1 (%2 kB)</translation>
+    </message>
+    <message>
+        <source>Animated GIF</source>
+        <translation>Анимирани GIF</translation>
+    </message>
+    <message>
+        <source>MP4 video (H.264, 30 frames/s)</source>
+        <translation>MP4 видео (H.264, 30 кадрова/s)</translation>
+    </message>
+    <message>
+        <source>WebM video (VP9, 30 frames/s)</source>
+        <translation>WebM видео (VP9, 30 кадрова/s)</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Формат</translation>
+    </message>
+    <message>
+        <source>A GIF&apos;s speed; a video plays 30 frames per second.</source>
+        <translation>Брзина GIF-а; видео се пушта са 30 кадрова у секунди.</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Анимирани GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4)</source>
+        <translation>MP4 видео (*.mp4)</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>WebM видео (*.webm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Encoding %n frame(s)…</source>
+        <translation>
+            <numerusform>Кодирање %n кадра…</numerusform>
+            <numerusform>Кодирање %n кадра…</numerusform>
+            <numerusform>Кодирање %n кадрова…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3669,6 +3985,21 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Bookmark “%1”: %2</source>
         <translation>Обележивач „%1”: %2</translation>
+    </message>
+    <message>
+        <source>New design from template %1</source>
+        <translation>Нова конструкција из шаблона %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Помери %1</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::EquationsPanel</name>
+    <message>
+        <source>This kind lists no equations.</source>
+        <translation>За ову врсту механизма једначине нису наведене.</translation>
     </message>
 </context>
 <context>
@@ -4054,10 +4385,6 @@ Please verify the correct file name was given.</source>
         <translation>Сачувај конструкцију &amp;као…</translation>
     </message>
     <message>
-        <source>Export &amp;Animation (GIF)…</source>
-        <translation>Извези &amp;анимацију (GIF)…</translation>
-    </message>
-    <message>
         <source>Export &amp;Drawing (DXF)…</source>
         <translation>Извези &amp;цртеж (DXF)…</translation>
     </message>
@@ -4148,14 +4475,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>PKM Studio designs (*.pkm.json)</source>
         <translation>Конструкције PKM Studio (*.pkm.json)</translation>
-    </message>
-    <message>
-        <source>Export Animation</source>
-        <translation>Извоз анимације</translation>
-    </message>
-    <message>
-        <source>Animated GIF (*.gif)</source>
-        <translation>Анимирани GIF (*.gif)</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -4316,6 +4635,46 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks.</source>
         <translation>Режим презентације: излаз Esc или F5; Page Up и Page Down листају обележиваче.</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Једначине</translation>
+    </message>
+    <message>
+        <source>New from &amp;Template</source>
+        <translation>Ново из &amp;шаблона</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF, MP4, WebM)…</source>
+        <translation>Извези &amp;анимацију (GIF, MP4, WebM)…</translation>
+    </message>
+    <message>
+        <source>5R (two driven cranks)</source>
+        <translation>5R (две погонске полуге)</translation>
+    </message>
+    <message>
+        <source>5R driven by two П-joints</source>
+        <translation>5R с погоном од два П-зглоба</translation>
+    </message>
+    <message>
+        <source>Constant orientation, 2 DOF, with two П-joints</source>
+        <translation>Стална оријентација, 2 степена слободе, са два П-зглоба</translation>
+    </message>
+    <message>
+        <source>3-RP̲R (three struts)</source>
+        <translation>3-RP̲R (три телескопска штапа)</translation>
+    </message>
+    <message>
+        <source>3-R̲RR (three driven cranks)</source>
+        <translation>3-R̲RR (три погонске полуге)</translation>
+    </message>
+    <message>
+        <source>3-P̲RR (three driven sliders)</source>
+        <translation>3-P̲RR (три погонска клизача)</translation>
+    </message>
+    <message>
+        <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
+        <translation>2-P̲RR (два погонска клизача, MOMA 3a)</translation>
     </message>
 </context>
 <context>
@@ -5038,6 +5397,113 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::PlanarParallelPanel</name>
+    <message>
+        <source>Add leg 3</source>
+        <translation>Додај ногу 3</translation>
+    </message>
+    <message>
+        <source>Remove leg 3</source>
+        <translation>Уклони ногу 3</translation>
+    </message>
+    <message>
+        <source>Change the platform</source>
+        <translation>Промени платформу</translation>
+    </message>
+    <message>
+        <source>Change the type of leg %1</source>
+        <translation>Промени тип ноге %1</translation>
+    </message>
+    <message>
+        <source>Change the working mode of leg %1</source>
+        <translation>Промени радни режим ноге %1</translation>
+    </message>
+    <message>
+        <source>Legs</source>
+        <translation>Ноге</translation>
+    </message>
+    <message>
+        <source>&amp;Platform:</source>
+        <translation>&amp;Платформа:</translation>
+    </message>
+    <message>
+        <source>Add leg</source>
+        <translation>Додај ногу</translation>
+    </message>
+    <message>
+        <source>A third leg, a strut opposite the other two: the platform becomes a free body (3 DOF).</source>
+        <translation>Трећа нога, штап наспрам друге две: платформа постаје слободно тело (3 степена слободе).</translation>
+    </message>
+    <message>
+        <source>Two legs: the platform becomes a point, or keeps a constant orientation if both legs are P̲RR or П̲RR.</source>
+        <translation>Две ноге: платформа постаје тачка, или задржава сталну оријентацију ако су обе ноге P̲RR или П̲RR.</translation>
+    </message>
+    <message>
+        <source>a point (2 legs, x and y)</source>
+        <translation>тачка (2 ноге, x и y)</translation>
+    </message>
+    <message>
+        <source>constant orientation (2 legs, x and y)</source>
+        <translation>стална оријентација (2 ноге, x и y)</translation>
+    </message>
+    <message>
+        <source>free body (3 legs, x, y and φ)</source>
+        <translation>слободно тело (3 ноге, x, y и φ)</translation>
+    </message>
+    <message>
+        <source>Leg %1:</source>
+        <translation>Нога %1:</translation>
+    </message>
+    <message>
+        <source>R̲RR: driven crank and link</source>
+        <translation>R̲RR: погонска полуга и спојка</translation>
+    </message>
+    <message>
+        <source>P̲RR: driven slider and link</source>
+        <translation>P̲RR: погонски клизач и спојка</translation>
+    </message>
+    <message>
+        <source>RP̲R: telescopic strut</source>
+        <translation>RP̲R: телескопски штап</translation>
+    </message>
+    <message>
+        <source>П̲RR: active П-joint and link</source>
+        <translation>П̲RR: активни П-зглоб и спојка</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s joints from the base, the actuated one underlined.</source>
+        <translation>Зглобови ноге од основе, погонски подвучен.</translation>
+    </message>
+    <message>
+        <source>working mode +1</source>
+        <translation>радни режим +1</translation>
+    </message>
+    <message>
+        <source>working mode −1</source>
+        <translation>радни режим −1</translation>
+    </message>
+    <message>
+        <source>+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular).</source>
+        <translation>+1: лакат лево од линије од A до тачке платформе (P̲RR: клизач иза подножја нормале).</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>тачка</translation>
+    </message>
+    <message>
+        <source>constant orientation</source>
+        <translation>стална оријентација</translation>
+    </message>
+    <message>
+        <source>free body</source>
+        <translation>слободно тело</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <translation>режим %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::PlayBar</name>
     <message>
         <source>Pause</source>
@@ -5252,6 +5718,53 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Drag to set %1 (%2), from %3 to %4</source>
         <translation>Превуците да подесите %1 (%2), од %3 до %4</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VideoWriter</name>
+    <message>
+        <source>A video is %1 to %2 pixels wide and %1 to %3 high, in even numbers (e.g. 1280x720 or 1920x1080), not %4x%5.</source>
+        <translation>Видео је широк од %1 до %2 и висок од %1 до %3 пиксела, у парним бројевима (нпр. 1280x720 или 1920x1080), а не %4x%5.</translation>
+    </message>
+    <message>
+        <source>Cannot write &apos;%1&apos;: %2.</source>
+        <translation>Не може да се упише „%1“: %2.</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>непозната грешка</translation>
+    </message>
+    <message>
+        <source>This build of FFmpeg&apos;s libavformat cannot write %1 files.</source>
+        <translation>Ова верзија FFmpeg-ове библиотеке libavformat не може да пише %1 датотеке.</translation>
+    </message>
+    <message>
+        <source>FFmpeg is out of memory.</source>
+        <translation>FFmpeg-у је понестало меморије.</translation>
+    </message>
+    <message>
+        <source>FFmpeg could not start the %1 encoder (%2): %3.</source>
+        <translation>FFmpeg није могао да покрене %1 кодер (%2): %3.</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ов libavcodec овде нема H.264 кодер: за MP4 је потребан libx264 (Debian-ов libavcodec га има).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ов libavcodec овде нема VP9 ни VP8 кодер: за WebM је потребан libvpx (Debian-ов libavcodec га има).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libswscale cannot convert the frames to YUV 4:2:0.</source>
+        <translation>FFmpeg-ов libswscale не може да претвори кадрове у YUV 4:2:0.</translation>
+    </message>
+    <message>
+        <source>The video is not open.</source>
+        <translation>Видео није отворен.</translation>
+    </message>
+    <message>
+        <source>A video needs at least one frame.</source>
+        <translation>Видео мора да има бар један кадар.</translation>
     </message>
 </context>
 <context>
@@ -5694,6 +6207,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
         <translation>Равански механизам са два степена слободе и платформом сталне оријентације који Милутиновић, Кокотовић, Славковић и Живановић приказују међу применама П-зглоба („Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине”, Универзитет у Београду, Машински факултет, 2014): два лабораторијска П-зглоба (a = 170 mm, k = 0,4, дијагонала од 116,5 до 231 mm) са полугама у A₁ = (0, 0) и A₂ = (200, 0) mm и основама закренутим за α = ±30°. Спојка П-зглоба задржава свој правац, па дистални паралелограм од 200 mm од сваке спојке до тачака платформе B₁ = (−40, 0) и B₂ = (40, 0) mm задржава оријентацију платформе. Други паралелограм понавља везу првог: Чебишевљева формула даје 1, а покретљивост је 2.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-P̲RR</source>
+        <translation>Равански паралелни: симетрични 3-P̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-P̲RR chosen for PKM Studio: three sliders driven along the sides of an equilateral triangle of side 346.41 mm (its corners A₁, A₂, A₃ 200 mm from the centre, each guide from Aᵢ towards the next corner, stroke 0 to 346.41 mm), distal links of 150 mm and an equilateral platform of circumradius 40 mm, every slider beyond the foot of the perpendicular from its platform point (working mode +1).</source>
+        <translation>Симетрични 3-P̲RR изабран за PKM Studio: три клизача погоњена дуж страница једнакостраничног троугла странице 346.41 mm (његова темена A₁, A₂, A₃ на 200 mm од центра, свака вођица од Aᵢ ка следећем темену, ход од 0 до 346.41 mm), дисталне спојке од 150 mm и једнакостранична платформа полупречника описане кружнице 40 mm, сваки клизач иза подножја нормале из своје тачке платформе (радни режим +1).</translation>
     </message>
 </context>
 </TS>

@@ -3444,6 +3444,278 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The drag stops short of the O↔X crossing at x_CD − x_AB = s = %1 mm, where the rods are parallel and the platform can swing: switch the form to go on.</source>
         <translation>Prevlačenje se zaustavlja pre prelaza O↔X pri x_CD − x_AB = s = %1 mm, gde su šipke paralelne i platforma može da se njiše: promenite oblik da biste nastavili.</translation>
     </message>
+    <message>
+        <source>eq. %1 of the П-joint document</source>
+        <translation>jed. %1 rada o P-zglobu</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the П-joint document</source>
+        <translation>sl. %1 rada o P-zglobu</translation>
+    </message>
+    <message>
+        <source>the П-joint document</source>
+        <translation>rad o P-zglobu</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the MOMA document</source>
+        <translation>jed. %1 rada o MOMA</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the MOMA document</source>
+        <translation>sl. %1 rada o MOMA</translation>
+    </message>
+    <message>
+        <source>the MOMA document</source>
+        <translation>rad o MOMA</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the O-X glide document</source>
+        <translation>jed. %1 rada o O-X glide</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the O-X glide document</source>
+        <translation>sl. %1 rada o O-X glide</translation>
+    </message>
+    <message>
+        <source>the O-X glide document</source>
+        <translation>rad o O-X glide</translation>
+    </message>
+    <message>
+        <source>eq. %1 of the four-bar and mobility document</source>
+        <translation>jed. %1 rada o zglobnom četvorouglu i pokretljivosti</translation>
+    </message>
+    <message>
+        <source>fig. %1 of the four-bar and mobility document</source>
+        <translation>sl. %1 rada o zglobnom četvorouglu i pokretljivosti</translation>
+    </message>
+    <message>
+        <source>the four-bar and mobility document</source>
+        <translation>rad o zglobnom četvorouglu i pokretljivosti</translation>
+    </message>
+    <message>
+        <source>PKM Studio&apos;s model</source>
+        <translation>model programa PKM Studio</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 1 (0: inverse singularity)</source>
+        <translation>Jakobijan ulaza noge 1 (0: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>Input Jacobian of leg 2 (0: inverse singularity)</source>
+        <translation>Jakobijan ulaza noge 2 (0: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>Output Jacobian (0: direct singularity)</source>
+        <translation>Jakobijan izlaza (0: singularitet direktne kinematike)</translation>
+    </message>
+    <message>
+        <source>Determinant of J</source>
+        <translation>Determinanta J</translation>
+    </message>
+    <message>
+        <source>J = J_q⁻¹·J_x maps lengths to angles, so det J is in rad²/mm², not dimensionless as MOMA&apos;s and the O-X glide&apos;s.</source>
+        <translation>J = J_q⁻¹·J_x preslikava dužine u uglove, pa je det J u rad²/mm², a ne bezdimenzionalan kao kod MOMA i O-X glide.</translation>
+    </message>
+    <message>
+        <source>Transmission angle between the distal links</source>
+        <translation>Ugao prenosa između spojki</translation>
+    </message>
+    <message>
+        <source>Distance from the inverse singularities</source>
+        <translation>Udaljenost od singulariteta inverzne kinematike</translation>
+    </message>
+    <message>
+        <source>Distance from the direct singularities</source>
+        <translation>Udaljenost od singulariteta direktne kinematike</translation>
+    </message>
+    <message>
+        <source>Transmission angle γ at C</source>
+        <translation>Ugao prenosa γ u C</translation>
+    </message>
+    <message>
+        <source>Angle at D from DA to DB</source>
+        <translation>Ugao u D od DA do DB</translation>
+    </message>
+    <message>
+        <source>Rocker angle</source>
+        <translation>Ugao klackalice</translation>
+    </message>
+    <message>
+        <source>The document takes the arctan of the ratio, which is 180° off wherever CD − BC·cos γ &lt; 0; the program uses atan2.</source>
+        <translation>Rad uzima arctg količnika, što greši za 180° gde god je CD − BC·cos γ &lt; 0; program koristi atan2.</translation>
+    </message>
+    <message>
+        <source>Angle at B</source>
+        <translation>Ugao u B</translation>
+    </message>
+    <message>
+        <source>Transfer function dδ/dα</source>
+        <translation>Prenosna funkcija dδ/dα</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (8) and (9) give the rocker&apos;s counter-clockwise rate dθ₃/dt = −dδ/dt; the program&apos;s ω₃ and i₃₁ are their negatives.</source>
+        <translation>Jednačine (8) i (9) iz rada daju brzinu klackalice suprotno od kazaljke na satu dθ₃/dt = −dδ/dt; ω₃ i i₃₁ u programu su iste veličine sa suprotnim znakom.</translation>
+    </message>
+    <message>
+        <source>Rocker angular velocity</source>
+        <translation>Ugaona brzina klackalice</translation>
+    </message>
+    <message>
+        <source>Rocker angular acceleration at constant ω₁</source>
+        <translation>Ugaono ubrzanje klackalice pri konstantnoj ω₁</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (14) agrees with neither sign of the exact second derivative; the program differentiates the loop closure twice.</source>
+        <translation>Jednačina (14) iz rada se ne slaže sa tačnim drugim izvodom ni sa jednim znakom; program dvaput diferencira jednačinu zatvaranja konture.</translation>
+    </message>
+    <message>
+        <source>Input Jacobian (0: inverse singularity)</source>
+        <translation>Jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
+    </message>
+    <message>
+        <source>Projection on guide %1</source>
+        <translation>Projekcija na vođicu %1</translation>
+    </message>
+    <message>
+        <source>Reach of link %1</source>
+        <translation>Domet spojke %1</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics of leg %1</source>
+        <translation>Inverzna kinematika noge %1</translation>
+    </message>
+    <message>
+        <source>The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², the same number without cancelling two large ones.</source>
+        <translation>Program računa B_i² − C_i kao l_i² − (a_i × (P − R_i))²: isti broj, bez oduzimanja dva velika broja.</translation>
+    </message>
+    <message>
+        <source>Direct kinematics: P along Z₁→Z₂</source>
+        <translation>Direktna kinematika: P duž Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>The document&apos;s (10–12) divide by x_Z2 − x_Z1 and fail with the slider joints one above the other; the program intersects the circles measured along Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</source>
+        <translation>Jednačine (10–12) iz rada dele sa x_Z2 − x_Z1 i ne važe kad su zglobovi klizača jedan iznad drugog; program seče krugove mereći duž Z₁→Z₂: P = Z₁ + s·u + σ·h·n, h = √(l₁² − s²).</translation>
+    </message>
+    <message>
+        <source>From J_p·ṗ + J_x·Ṗ = 0 the program&apos;s J is −J_p⁻¹·J_x; the document&apos;s (21) has no minus sign. For the 2×2 J the determinant is the same.</source>
+        <translation>Iz J_p·ṗ + J_x·Ṗ = 0 u programu je J = −J_p⁻¹·J_x; u jednačini (21) iz rada nema minusa. Za matricu J 2×2 determinanta je ista.</translation>
+    </message>
+    <message>
+        <source>Run of a rod along the guides</source>
+        <translation>Projekcija šipke duž vođica</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics, %1 form</source>
+        <translation>Inverzna kinematika, oblik %1</translation>
+    </message>
+    <message>
+        <source>Direct kinematics, both forms</source>
+        <translation>Direktna kinematika, oba oblika</translation>
+    </message>
+    <message>
+        <source>The document prints “+ s” in the X form&apos;s direct kinematics, which contradicts its own inverse kinematics; with “− s” both forms return their poses exactly. The sign of x_CD − x_AB − s is the form.</source>
+        <translation>Rad u direktnoj kinematici oblika X štampa „+ s”, što protivreči njegovoj inverznoj kinematici; sa „− s” oba oblika tačno vraćaju svoje položaje. Znak x_CD − x_AB − s je oblik.</translation>
+    </message>
+    <message>
+        <source>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] from the constraints (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (rods perpendicular to the guides or parallel to each other) is singular.</source>
+        <translation>J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂] iz jednačina veza (x ∓ s/2 − x_i)² + y² − l² = 0; w = 0 (šipke upravne na vođice ili paralelne međusobno) je singularitet.</translation>
+    </message>
+    <message>
+        <source>Condition number of J</source>
+        <translation>Broj uslovljenosti J</translation>
+    </message>
+    <message>
+        <source>Inverse kinematics</source>
+        <translation>Inverzna kinematika</translation>
+    </message>
+    <message>
+        <source>Direct kinematics</source>
+        <translation>Direktna kinematika</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Ugao prenosa</translation>
+    </message>
+    <message>
+        <source>Output torque at F_max</source>
+        <translation>Izlazni moment pri F_max</translation>
+    </message>
+    <message>
+        <source>J in mm/rad times F in N gives N·mm; 10⁻³ turns it into N·m.</source>
+        <translation>J u mm/rad puta F u N daje N·mm; činilac 10⁻³ pretvara to u N·m.</translation>
+    </message>
+    <message>
+        <source>Output speed at ḋ_max</source>
+        <translation>Izlazna ugaona brzina pri ḋ_max</translation>
+    </message>
+    <message>
+        <source>Output resolution per motor step</source>
+        <translation>Izlazna rezolucija po koraku motora</translation>
+    </message>
+    <message>
+        <source>Motor torque at F_max</source>
+        <translation>Moment motora pri F_max</translation>
+    </message>
+    <message>
+        <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
+        <translation>Tabela 1 ne daje stepen iskorišćenja vretena η; primeri uzimaju 0,4.</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
+        <translation>Izvod od J, za ubrzanje d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
+    </message>
+    <message>
+        <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
+        <translation>U ubrzanju (19–20) iz rada prvom članu nedostaje θ̈, a umesto θ̇² piše θ̇; program koristi d̈ = J·θ̈ + (∂J/∂θ)·θ̇², što se slaže sa numeričkim drugim izvodom.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
+        <translation>U položaju platforme %1 noge bi je držale samo u drugom sklopnom režimu.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
+        <translation>U položaju platforme %1 noga %2 ne može da je dostigne: njena tačka platforme je predaleko od tačke osnove A%2 za njene članove.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too near its base point A%2 for its links.</source>
+        <translation>U položaju platforme %1 noga %2 ne može da je dostigne: njena tačka platforme je preblizu tački osnove A%2 za njene članove.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 leg %2 cannot reach it: its input would leave its range.</source>
+        <translation>U položaju platforme %1 noga %2 ne može da je dostigne: njen ulaz izašao bi iz svog opsega.</translation>
+    </message>
+    <message>
+        <source>At the platform&apos;s position %1 the input of leg %2 is undetermined.</source>
+        <translation>U položaju platforme %1 ulaz noge %2 nije određen.</translation>
+    </message>
+    <message>
+        <source>drag to move the base point A%1 (changes the design)</source>
+        <translation>prevucite da pomerite tačku osnove A%1 (menja konstrukciju)</translation>
+    </message>
+    <message>
+        <source>drag to move the platform point B%1 (changes the design)</source>
+        <translation>prevucite da pomerite tačku platforme B%1 (menja konstrukciju)</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): constraint</source>
+        <translation>Noga %1 (%2): jednačina veze</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s angle</source>
+        <translation>Noga %1 (%2): ugao P-zgloba</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
+        <translation>Noga %1 (%2): Jakobijan P-zgloba</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
+        <translation>Red noge u J_x sadrži ovaj J kao činilac, pa je singularitet samog P-zgloba (θ = ±90°) singularitet direktne kinematike celog mehanizma (rad o P-zglobu, odeljak 4).</translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
+        <translation>Noga %1 (%2): Jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -3462,6 +3734,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>The animation was cancelled.</source>
         <translation>Animacija je otkazana.</translation>
+    </message>
+    <message>
+        <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
+        <translation>Ime video-datoteke se završava na .mp4 ili .webm: %1.</translation>
     </message>
 </context>
 <context>
@@ -3529,6 +3805,46 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Wrote %1 (%2 kB)</source>
         <translation>Upisano %1 (%2 kB)</translation>
+    </message>
+    <message>
+        <source>Animated GIF</source>
+        <translation>Animirani GIF</translation>
+    </message>
+    <message>
+        <source>MP4 video (H.264, 30 frames/s)</source>
+        <translation>MP4 video (H.264, 30 kadrova/s)</translation>
+    </message>
+    <message>
+        <source>WebM video (VP9, 30 frames/s)</source>
+        <translation>WebM video (VP9, 30 kadrova/s)</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>A GIF&apos;s speed; a video plays 30 frames per second.</source>
+        <translation>Brzina GIF-a; video se pušta sa 30 kadrova u sekundi.</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>Animirani GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4)</source>
+        <translation>MP4 video (*.mp4)</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>WebM video (*.webm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Encoding %n frame(s)…</source>
+        <translation>
+            <numerusform>Kodiranje %n kadra…</numerusform>
+            <numerusform>Kodiranje %n kadra…</numerusform>
+            <numerusform>Kodiranje %n kadrova…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3669,6 +3985,21 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Bookmark “%1”: %2</source>
         <translation>Obeleživač „%1”: %2</translation>
+    </message>
+    <message>
+        <source>New design from template %1</source>
+        <translation>Nova konstrukcija iz šablona %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Pomeri %1</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::EquationsPanel</name>
+    <message>
+        <source>This kind lists no equations.</source>
+        <translation>Za ovu vrstu mehanizma jednačine nisu navedene.</translation>
     </message>
 </context>
 <context>
@@ -4054,10 +4385,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Sačuvaj konstrukciju &amp;kao…</translation>
     </message>
     <message>
-        <source>Export &amp;Animation (GIF)…</source>
-        <translation>Izvezi &amp;animaciju (GIF)…</translation>
-    </message>
-    <message>
         <source>Export &amp;Drawing (DXF)…</source>
         <translation>Izvezi &amp;crtež (DXF)…</translation>
     </message>
@@ -4148,14 +4475,6 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>PKM Studio designs (*.pkm.json)</source>
         <translation>Konstrukcije PKM Studio (*.pkm.json)</translation>
-    </message>
-    <message>
-        <source>Export Animation</source>
-        <translation>Izvoz animacije</translation>
-    </message>
-    <message>
-        <source>Animated GIF (*.gif)</source>
-        <translation>Animirani GIF (*.gif)</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -4316,6 +4635,46 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks.</source>
         <translation>Režim prezentacije: izlaz Esc ili F5; Page Up i Page Down listaju obeleživače.</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Jednačine</translation>
+    </message>
+    <message>
+        <source>New from &amp;Template</source>
+        <translation>Novo iz &amp;šablona</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation (GIF, MP4, WebM)…</source>
+        <translation>Izvezi &amp;animaciju (GIF, MP4, WebM)…</translation>
+    </message>
+    <message>
+        <source>5R (two driven cranks)</source>
+        <translation>5R (dve pogonske poluge)</translation>
+    </message>
+    <message>
+        <source>5R driven by two П-joints</source>
+        <translation>5R s pogonom od dva P-zgloba</translation>
+    </message>
+    <message>
+        <source>Constant orientation, 2 DOF, with two П-joints</source>
+        <translation>Stalna orijentacija, 2 stepena slobode, sa dva P-zgloba</translation>
+    </message>
+    <message>
+        <source>3-RP̲R (three struts)</source>
+        <translation>3-RP̲R (tri teleskopska štapa)</translation>
+    </message>
+    <message>
+        <source>3-R̲RR (three driven cranks)</source>
+        <translation>3-R̲RR (tri pogonske poluge)</translation>
+    </message>
+    <message>
+        <source>3-P̲RR (three driven sliders)</source>
+        <translation>3-P̲RR (tri pogonska klizača)</translation>
+    </message>
+    <message>
+        <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
+        <translation>2-P̲RR (dva pogonska klizača, MOMA 3a)</translation>
     </message>
 </context>
 <context>
@@ -5038,6 +5397,113 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
 </context>
 <context>
+    <name>pkm::PlanarParallelPanel</name>
+    <message>
+        <source>Add leg 3</source>
+        <translation>Dodaj nogu 3</translation>
+    </message>
+    <message>
+        <source>Remove leg 3</source>
+        <translation>Ukloni nogu 3</translation>
+    </message>
+    <message>
+        <source>Change the platform</source>
+        <translation>Promeni platformu</translation>
+    </message>
+    <message>
+        <source>Change the type of leg %1</source>
+        <translation>Promeni tip noge %1</translation>
+    </message>
+    <message>
+        <source>Change the working mode of leg %1</source>
+        <translation>Promeni radni režim noge %1</translation>
+    </message>
+    <message>
+        <source>Legs</source>
+        <translation>Noge</translation>
+    </message>
+    <message>
+        <source>&amp;Platform:</source>
+        <translation>&amp;Platforma:</translation>
+    </message>
+    <message>
+        <source>Add leg</source>
+        <translation>Dodaj nogu</translation>
+    </message>
+    <message>
+        <source>A third leg, a strut opposite the other two: the platform becomes a free body (3 DOF).</source>
+        <translation>Treća noga, štap naspram druge dve: platforma postaje slobodno telo (3 stepena slobode).</translation>
+    </message>
+    <message>
+        <source>Two legs: the platform becomes a point, or keeps a constant orientation if both legs are P̲RR or П̲RR.</source>
+        <translation>Dve noge: platforma postaje tačka, ili zadržava stalnu orijentaciju ako su obe noge P̲RR ili P̲RR.</translation>
+    </message>
+    <message>
+        <source>a point (2 legs, x and y)</source>
+        <translation>tačka (2 noge, x i y)</translation>
+    </message>
+    <message>
+        <source>constant orientation (2 legs, x and y)</source>
+        <translation>stalna orijentacija (2 noge, x i y)</translation>
+    </message>
+    <message>
+        <source>free body (3 legs, x, y and φ)</source>
+        <translation>slobodno telo (3 noge, x, y i φ)</translation>
+    </message>
+    <message>
+        <source>Leg %1:</source>
+        <translation>Noga %1:</translation>
+    </message>
+    <message>
+        <source>R̲RR: driven crank and link</source>
+        <translation>R̲RR: pogonska poluga i spojka</translation>
+    </message>
+    <message>
+        <source>P̲RR: driven slider and link</source>
+        <translation>P̲RR: pogonski klizač i spojka</translation>
+    </message>
+    <message>
+        <source>RP̲R: telescopic strut</source>
+        <translation>RP̲R: teleskopski štap</translation>
+    </message>
+    <message>
+        <source>П̲RR: active П-joint and link</source>
+        <translation>P̲RR: aktivni P-zglob i spojka</translation>
+    </message>
+    <message>
+        <source>The leg&apos;s joints from the base, the actuated one underlined.</source>
+        <translation>Zglobovi noge od osnove, pogonski podvučen.</translation>
+    </message>
+    <message>
+        <source>working mode +1</source>
+        <translation>radni režim +1</translation>
+    </message>
+    <message>
+        <source>working mode −1</source>
+        <translation>radni režim −1</translation>
+    </message>
+    <message>
+        <source>+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular).</source>
+        <translation>+1: lakat levo od linije od A do tačke platforme (P̲RR: klizač iza podnožja normale).</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>tačka</translation>
+    </message>
+    <message>
+        <source>constant orientation</source>
+        <translation>stalna orijentacija</translation>
+    </message>
+    <message>
+        <source>free body</source>
+        <translation>slobodno telo</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <translation>režim %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::PlayBar</name>
     <message>
         <source>Pause</source>
@@ -5252,6 +5718,53 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Drag to set %1 (%2), from %3 to %4</source>
         <translation>Prevucite da podesite %1 (%2), od %3 do %4</translation>
+    </message>
+</context>
+<context>
+    <name>pkm::VideoWriter</name>
+    <message>
+        <source>A video is %1 to %2 pixels wide and %1 to %3 high, in even numbers (e.g. 1280x720 or 1920x1080), not %4x%5.</source>
+        <translation>Video je širok od %1 do %2 i visok od %1 do %3 piksela, u parnim brojevima (npr. 1280x720 ili 1920x1080), a ne %4x%5.</translation>
+    </message>
+    <message>
+        <source>Cannot write &apos;%1&apos;: %2.</source>
+        <translation>Ne može da se upiše „%1“: %2.</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>nepoznata greška</translation>
+    </message>
+    <message>
+        <source>This build of FFmpeg&apos;s libavformat cannot write %1 files.</source>
+        <translation>Ova verzija FFmpeg-ove biblioteke libavformat ne može da piše %1 datoteke.</translation>
+    </message>
+    <message>
+        <source>FFmpeg is out of memory.</source>
+        <translation>FFmpeg-u je ponestalo memorije.</translation>
+    </message>
+    <message>
+        <source>FFmpeg could not start the %1 encoder (%2): %3.</source>
+        <translation>FFmpeg nije mogao da pokrene %1 koder (%2): %3.</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no H.264 encoder: MP4 needs libx264 (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ov libavcodec ovde nema H.264 koder: za MP4 je potreban libx264 (Debian-ov libavcodec ga ima).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libavcodec here has no VP9 or VP8 encoder: WebM needs libvpx (Debian&apos;s libavcodec has it).</source>
+        <translation>FFmpeg-ov libavcodec ovde nema VP9 ni VP8 koder: za WebM je potreban libvpx (Debian-ov libavcodec ga ima).</translation>
+    </message>
+    <message>
+        <source>FFmpeg&apos;s libswscale cannot convert the frames to YUV 4:2:0.</source>
+        <translation>FFmpeg-ov libswscale ne može da pretvori kadrove u YUV 4:2:0.</translation>
+    </message>
+    <message>
+        <source>The video is not open.</source>
+        <translation>Video nije otvoren.</translation>
+    </message>
+    <message>
+        <source>A video needs at least one frame.</source>
+        <translation>Video mora da ima bar jedan kadar.</translation>
     </message>
 </context>
 <context>
@@ -5694,6 +6207,14 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>The 2-DOF planar mechanism with a platform of constant orientation that Milutinović, Kokotović, Slavković and Živanović show among the applications of the П-joint (Механизам активног П-зглоба као еквивалента комбинације обртног зглоба и сегмента константне дужине, University of Belgrade, Faculty of Mechanical Engineering, 2014): two laboratory П-joints (a = 170 mm, k = 0.4, diagonal 116.5 to 231 mm) with their cranks at A₁ = (0, 0) and A₂ = (200, 0) mm and their bases turned by α = ±30°. The coupler of a П-joint keeps its direction, so a distal parallelogram of 200 mm from each coupler to the platform points B₁ = (−40, 0) and B₂ = (40, 0) mm keeps the platform&apos;s orientation. The second parallelogram repeats the first one&apos;s constraint: Chebyshev&apos;s count gives 1, the mobility is 2.</source>
         <translation>Ravanski mehanizam sa dva stepena slobode i platformom stalne orijentacije koji Milutinović, Kokotović, Slavković i Živanović prikazuju među primenama P-zgloba („Mehanizam aktivnog P-zgloba kao ekvivalenta kombinacije obrtnog zgloba i segmenta konstantne dužine”, Univerzitet u Beogradu, Mašinski fakultet, 2014): dva laboratorijska P-zgloba (a = 170 mm, k = 0,4, dijagonala od 116,5 do 231 mm) sa polugama u A₁ = (0, 0) i A₂ = (200, 0) mm i osnovama zakrenutim za α = ±30°. Spojka P-zgloba zadržava svoj pravac, pa distalni paralelogram od 200 mm od svake spojke do tačaka platforme B₁ = (−40, 0) i B₂ = (40, 0) mm zadržava orijentaciju platforme. Drugi paralelogram ponavlja vezu prvog: Čebiševljeva formula daje 1, a pokretljivost je 2.</translation>
+    </message>
+    <message>
+        <source>Planar parallel: a symmetric 3-P̲RR</source>
+        <translation>Ravanski paralelni: simetrični 3-P̲RR</translation>
+    </message>
+    <message>
+        <source>A symmetric 3-P̲RR chosen for PKM Studio: three sliders driven along the sides of an equilateral triangle of side 346.41 mm (its corners A₁, A₂, A₃ 200 mm from the centre, each guide from Aᵢ towards the next corner, stroke 0 to 346.41 mm), distal links of 150 mm and an equilateral platform of circumradius 40 mm, every slider beyond the foot of the perpendicular from its platform point (working mode +1).</source>
+        <translation>Simetrični 3-P̲RR izabran za PKM Studio: tri klizača pogonjena duž stranica jednakostraničnog trougla stranice 346.41 mm (njegova temena A₁, A₂, A₃ na 200 mm od centra, svaka vođica od Aᵢ ka sledećem temenu, hod od 0 do 346.41 mm), distalne spojke od 150 mm i jednakostranična platforma poluprečnika opisane kružnice 40 mm, svaki klizač iza podnožja normale iz svoje tačke platforme (radni režim +1).</translation>
     </message>
 </context>
 </TS>

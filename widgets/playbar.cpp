@@ -46,6 +46,7 @@ PlayBar::PlayBar(QWidget *parent)
     m_speed = spinBox("playSpeed");
     m_mode = new QComboBox(this);
     m_mode->setObjectName(QStringLiteral("playMode"));
+    m_mode->setSizeAdjustPolicy(QComboBox::AdjustToContents); // the new language's words fit
     m_mode->addItems({QString(), QString(), QString()});
     m_mode->setCurrentIndex(static_cast<int>(PlayMode::ForthAndBack));
     for (QWidget *widget : std::initializer_list<QWidget *> {m_play, m_variable, m_fromLabel, m_from,

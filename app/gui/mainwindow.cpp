@@ -232,7 +232,7 @@ void MainWindow::createDocks()
     tabifyDockWidget(valuesDock, mobilityDock);
     // The equations (issue 18): another tab behind the values, the same numbers in formulas.
     m_equations = new EquationsPanel(this);
-    m_equations->setMinimumWidth(330);
+    m_equations->setMinimumWidth(270);
     auto *equationsDock = m_equationsDock = new QDockWidget(tr("Equations"), this);
     equationsDock->setObjectName(QStringLiteral("equationsDock"));
     equationsDock->setWidget(m_equations);

@@ -120,6 +120,13 @@ private slots:
         QVERIFY(m_window->openDesign(preset));
         QCoreApplication::processEvents();
         const QSize minimum = m_window->minimumSizeHint().expandedTo(m_window->minimumSize());
+        if (qEnvironmentVariableIsSet("PKM_DEBUG_SIZES")) {
+            for (QWidget *w : m_window->findChildren<QWidget *>()) {
+                const QSize m = w->minimumSizeHint().expandedTo(w->minimumSize());
+                if (w->isVisibleTo(m_window) && m.width() > 200)
+                    qDebug() << w->metaObject()->className() << w->objectName() << m;
+            }
+        }
         QVERIFY2(minimum.width() <= 1024 && minimum.height() <= 720,
                  qPrintable(QStringLiteral("the window asks for at least %1×%2").arg(minimum.width()).arg(minimum.height())));
     }

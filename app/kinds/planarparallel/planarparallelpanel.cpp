@@ -65,12 +65,10 @@ PlanarParallelPanel::PlanarParallelPanel(Document *document, QWidget *parent)
         connect(m_working[k], &QComboBox::activated, this,
                 [this, i](int index) { setWorking(i, m_working[std::size_t(i)]->itemData(index).toInt()); });
     }
-    // The choosers may shorten their texts (the full one is in the list): the map beside them
-    // keeps its width on a small screen.
-    for (QComboBox *box : {m_platform, m_types[0], m_types[1], m_types[2], m_working[0], m_working[1], m_working[2]}) {
-        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        box->setMinimumContentsLength(box == m_working[0] || box == m_working[1] || box == m_working[2] ? 8 : 14);
-    }
+    // The choosers show their whole text (none is cut on a projector); the panel's width is
+    // checked against 1024×768 in every language (tst_classroom).
+    for (QComboBox *box : {m_platform, m_types[0], m_types[1], m_types[2], m_working[0], m_working[1], m_working[2]})
+        box->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     grid->setColumnStretch(3, 1);
     layout->addWidget(m_box);
     connect(m_platform, &QComboBox::activated, this,
@@ -173,25 +171,31 @@ void PlanarParallelPanel::retranslate()
     {
         const QSignalBlocker blocker(m_platform);
         m_platform->clear();
-        m_platform->addItem(tr("a point (2 legs, x and y)"), int(PlatformType::Point));
-        m_platform->addItem(tr("constant orientation (2 legs, x and y)"), int(PlatformType::Translating));
-        m_platform->addItem(tr("free body (3 legs, x, y and φ)"), int(PlatformType::Free));
-    }
-    for (int i = 0; i < 3; ++i) {
-        const std::size_t k = std::size_t(i);
-        m_legLabels[k]->setText(tr("Leg %1:").arg(legName(i)));
-        const QSignalBlocker types(m_types[k]), working(m_working[k]);
-        m_types[k]->clear();
-        // the underlined joint is the actuated one
-        m_types[k]->addItem(tr("R̲RR: driven crank and link"), int(LegType::RRR));
-        m_types[k]->addItem(tr("P̲RR: driven slider and link"), int(LegType::PRR));
-        m_types[k]->addItem(tr("RP̲R: telescopic strut"), int(LegType::RPR));
-        m_types[k]->addItem(tr("П̲RR: active П-joint and link"), int(LegType::PiRR));
-        m_types[k]->setToolTip(tr("The leg's joints from the base, the actuated one underlined."));
-        m_working[k]->clear();
-        m_working[k]->addItem(tr("working mode +1"), 1);
-        m_working[k]->addItem(tr("working mode −1"), -1);
-        m_working[k]->setToolTip(tr("+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular)."));
+        // Short names in the box, the whole sentence as the item's tooltip: the panel keeps
+        // the width of the map beside it on a 1024×768 projector in every language.
+        const auto add = [](QComboBox *box, const QString &name, const QString &description, int data) {
+            box->addItem(name, data);
+            box->setItemData(box->count() - 1, description, Qt::ToolTipRole);
+        };
+        add(m_platform, tr("point"), tr("a point (2 legs, x and y)"), int(PlatformType::Point));
+        add(m_platform, tr("constant orientation"), tr("constant orientation (2 legs, x and y)"), int(PlatformType::Translating));
+        add(m_platform, tr("free body"), tr("free body (3 legs, x, y and φ)"), int(PlatformType::Free));
+        for (int i = 0; i < 3; ++i) {
+            const std::size_t k = std::size_t(i);
+            m_legLabels[k]->setText(tr("Leg %1:").arg(legName(i)));
+            const QSignalBlocker types(m_types[k]), working(m_working[k]);
+            m_types[k]->clear();
+            // the underlined joint is the actuated one; the codes are the same in every language
+            add(m_types[k], QStringLiteral("R̲RR"), tr("R̲RR: driven crank and link"), int(LegType::RRR));
+            add(m_types[k], QStringLiteral("P̲RR"), tr("P̲RR: driven slider and link"), int(LegType::PRR));
+            add(m_types[k], QStringLiteral("RP̲R"), tr("RP̲R: telescopic strut"), int(LegType::RPR));
+            add(m_types[k], QStringLiteral("П̲RR"), tr("П̲RR: active П-joint and link"), int(LegType::PiRR));
+            m_types[k]->setToolTip(tr("The leg's joints from the base, the actuated one underlined."));
+            m_working[k]->clear();
+            add(m_working[k], tr("mode %1").arg(QStringLiteral("+1")), tr("working mode +1"), 1);
+            add(m_working[k], tr("mode %1").arg(QStringLiteral("−1")), tr("working mode −1"), -1);
+            m_working[k]->setToolTip(tr("+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular)."));
+        }
     }
     if (m_mechanism)
         showDesign();
