@@ -4358,7 +4358,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Values at this pose</source>
-        <translation>Значения в этом положении</translation>
+        <translation>Значения</translation>
     </message>
     <message>
         <source>Mobility</source>

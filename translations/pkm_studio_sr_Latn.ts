@@ -4358,7 +4358,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Values at this pose</source>
-        <translation>Vrednosti u ovom položaju</translation>
+        <translation>Vrednosti</translation>
     </message>
     <message>
         <source>Mobility</source>

@@ -96,21 +96,15 @@ void setFittedText(QCPTextElement *element, const QString &text)
     fitText(element);
 }
 
-void fitText(QCPTextElement *element)
+QString wrapped(const QString &text, const QFont &font, int width)
 {
-    const QString text = element->property(fullTextProperty).toString();
-    const QFontMetrics metrics(element->font());
-    const int width = element->parentPlot()->width() - 16; // a little air at both ends
+    const QFontMetrics metrics(font);
     const auto fits = [&metrics, width](const QString &line) { return metrics.horizontalAdvance(line) <= width; };
-    if (width <= 0 || fits(text)) {
-        element->setText(text);
-        return;
-    }
+    if (width <= 0 || fits(text))
+        return text;
     const QStringList clauses = text.split(QStringLiteral("; "));
-    if (clauses.size() > 1 && std::all_of(clauses.cbegin(), clauses.cend(), fits)) {
-        element->setText(clauses.join(QStringLiteral(";\n")));
-        return;
-    }
+    if (clauses.size() > 1 && std::all_of(clauses.cbegin(), clauses.cend(), fits))
+        return clauses.join(QStringLiteral(";\n"));
     QStringList lines;
     QString line;
     for (const QString &word : text.split(QLatin1Char(' '))) {
@@ -123,7 +117,14 @@ void fitText(QCPTextElement *element)
         }
     }
     lines << line;
-    element->setText(lines.join(QLatin1Char('\n')));
+    return lines.join(QLatin1Char('\n'));
+}
+
+void fitText(QCPTextElement *element)
+{
+    const QString text = element->property(fullTextProperty).toString();
+    // a little air at both ends
+    element->setText(wrapped(text, element->font(), element->parentPlot()->width() - 16));
 }
 
 } // namespace pkm::plotstyle

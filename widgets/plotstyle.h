@@ -41,5 +41,8 @@ Header apply(QCustomPlot *plot, const QFont &base);
 /// plot or a longer language. fitText() breaks it again for a new width (on a resize).
 void setFittedText(QCPTextElement *element, const QString &text);
 void fitText(QCPTextElement *element);
+/// `text` broken into lines no wider than `width` pixels in `font` (after "; " if that is
+/// enough, else between words); unchanged where it fits or `width` is not positive.
+QString wrapped(const QString &text, const QFont &font, int width);
 
 } // namespace pkm::plotstyle

@@ -6,6 +6,7 @@
 #include "workspacemapviewinternal.h"
 
 #include "plotfont.h"
+#include "plotstyle.h"
 #include "plotfit.h"
 #include "plotticker.h"
 #include "quantityformat.h"
@@ -205,8 +206,10 @@ void WorkspaceMapView::updateTitle()
                              .arg(formatQuantity(m_summary.area, units::squareMillimetre, 0), symbol,
                                  significant(m_summary.min), significant(m_summary.max)));
     }
-    m_colorScale->setLabel(condition ? tr("κ(J), log scale (colours end at %1)").arg(significant(m_colourLimit))
-                                     : tr("det J (colours clipped at ±%1)").arg(significant(m_colourLimit)));
+    // Along the scale, broken into lines where the map is short (a projector at 1280×720).
+    const QString scaleLabel = condition ? tr("κ(J), log scale (colours end at %1)").arg(significant(m_colourLimit))
+                                         : tr("det J (colours clipped at ±%1)").arg(significant(m_colourLimit));
+    m_colorScale->setLabel(plotstyle::wrapped(scaleLabel, m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
     m_plot->setToolTip(condition
             ? tr("The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the "
                  "singularities.")
@@ -237,8 +240,15 @@ void WorkspaceMapView::updateLegend()
         m_comparisonOutline->setName(text);
     }
 
-    // Two columns when they fit beside the colour scale, else one; filled row by row.
+    // A long name (a singular curve's meaning in Russian) wraps rather than run off the plot.
     QCPLegend *legend = m_plot->legend;
+    const int textRoom = m_plot->width() - legend->margins().left() - legend->margins().right()
+        - legend->iconSize().width() - legend->iconTextPadding() - 12;
+    for (QCPAbstractPlottable *plottable : {static_cast<QCPAbstractPlottable *>(m_outline),
+                                            static_cast<QCPAbstractPlottable *>(m_inverse),
+                                            static_cast<QCPAbstractPlottable *>(m_direct)})
+        plottable->setName(plotstyle::wrapped(plottable->name(), legend->font(), textRoom));
+    // Two columns when they fit beside the colour scale, else one; filled row by row.
     int widest = 0, count = 0;
     for (int j = 0; j < legend->itemCount(); ++j)
         if (const QCPAbstractLegendItem *item = legend->item(j)) {
@@ -361,6 +371,7 @@ void WorkspaceMapView::mouseReleased(QMouseEvent *event)
 bool WorkspaceMapView::eventFilter(QObject *watched, QEvent *event)
 {
     if (watched == m_plot && event->type() == QEvent::Resize) {
+        updateTitle();
         updateLegend();
         updateBusy();
     }

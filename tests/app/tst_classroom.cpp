@@ -24,6 +24,7 @@
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTest>
 #include <QTextDocument>
 #include <QToolBar>
@@ -77,6 +78,17 @@ QStringList clippedTexts(QWidget *root)
                            .arg(QString::fromLatin1(button->metaObject()->className()), button->text().left(60))
                            .arg(hint.width())
                            .arg(button->width());
+    }
+    // Tabs (the docks tabified with the values) elide a text that does not fit.
+    for (QTabBar *bar : root->findChildren<QTabBar *>()) {
+        if (!visible(bar))
+            continue;
+        for (int i = 0; i < bar->count(); ++i) {
+            const int needed = bar->fontMetrics().horizontalAdvance(bar->tabText(i));
+            const int room = bar->tabRect(i).width() - bar->fontMetrics().averageCharWidth();
+            if (needed > room)
+                clipped << QStringLiteral("tab '%1' needs %2 px, has %3 px").arg(bar->tabText(i)).arg(needed).arg(room);
+        }
     }
     for (QComboBox *box : root->findChildren<QComboBox *>()) {
         if (!visible(box))
