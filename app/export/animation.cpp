@@ -156,14 +156,22 @@ Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start
     auto poses = animationPoses(mechanism, start, settings);
     if (!poses)
         return poses.failure();
-    const QList<QImage> frames = animationFrames(mechanism, *poses, settings, cancel);
-    if (frames.isEmpty())
-        return Failure{FailureKind::InvalidParameter, {},
-                       message(QCoreApplication::translate("pkm::Animation", "The animation was cancelled."))};
+    // Drawn and encoded one frame at a time: memory holds one frame and the compressed GIF,
+    // whatever the number of frames.
     QString error;
     GifOptions options;
     options.frameMilliseconds = settings.frameMilliseconds;
-    const QByteArray gif = encodeGif(frames, options, &error);
+    GifEncoder encoder;
+    if (!encoder.begin(settings.size, options, &error))
+        return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
+    for (const Pose *pose : frameOrder(*poses, settings.bounce)) {
+        if (cancel && cancel->load())
+            return Failure{FailureKind::InvalidParameter, {},
+                           message(QCoreApplication::translate("pkm::Animation", "The animation was cancelled."))};
+        if (!encoder.addFrame(animationFrame(mechanism, *pose, settings), &error))
+            return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
+    }
+    const QByteArray gif = encoder.finish(&error);
     if (gif.isEmpty())
         return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
     return gif;

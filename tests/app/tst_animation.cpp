@@ -102,6 +102,37 @@ private slots:
         QVERIFY(error.contains(QStringLiteral("same size")));
     }
 
+    /// Frames are encoded as they are drawn: 200 frames of 800 × 600 pixels (over 380 MB had
+    /// they been kept) raise the process's peak memory by a small fraction of that.
+    void memoryDoesNotGrowWithFrames()
+    {
+        const auto peakKilobytes = [] {
+            QFile status(QStringLiteral("/proc/self/status"));
+            if (!status.open(QIODevice::ReadOnly))
+                return -1LL;
+            for (const QByteArray &line : status.readAll().split('\n')) {
+                if (line.startsWith("VmHWM:"))
+                    return line.mid(6).trimmed().split(' ').first().toLongLong();
+            }
+            return -1LL;
+        };
+        auto mechanism = createMechanism("fourbar", {});
+        QVERIFY(mechanism);
+        AnimationSettings settings;
+        settings.variable = 0;
+        settings.from = 0.0;
+        settings.to = 2 * 3.141592653589793;
+        settings.frames = 101;
+        settings.bounce = true; // 200 frames
+        settings.size = QSize(800, 600);
+        const long long before = peakKilobytes();
+        QVERIFY(before > 0);
+        auto gif = renderAnimation(**mechanism, (*mechanism)->homePose(), settings);
+        QVERIFY2(gif, gif ? "" : gif.failure().message.c_str());
+        const long long grown = peakKilobytes() - before;
+        QVERIFY2(grown < 60 * 1024, qPrintable(QStringLiteral("peak memory grew by %1 MB").arg(grown / 1024)));
+    }
+
     void posesFollowTheVariable()
     {
         const MechanismPtr mechanism = prototype();
