@@ -232,6 +232,35 @@ void Camera3D::fit(const Eigen::AlignedBox3d &box)
     m_clipBounds.extend(box);
 }
 
+void Camera3D::fitPoints(const std::vector<Eigen::Vector3d> &points)
+{
+    const Eigen::Vector3d r = right(), u = up(), b = back();
+    Eigen::AlignedBox3d frame; // the points in the camera's axes
+    for (const Eigen::Vector3d &point : points) {
+        if (point.allFinite())
+            frame.extend(Eigen::Vector3d(point.dot(r), point.dot(u), point.dot(b)));
+    }
+    if (frame.isEmpty())
+        return;
+    // The centre of the outline across the view, and of the depth along it.
+    const Eigen::Vector3d c = frame.center();
+    const Eigen::Vector3d centre = c.x() * r + c.y() * u + c.z() * b;
+    const double tanY = std::tan(0.5 * m_fieldOfViewDegrees * pi / 180.0), tanX = tanY * aspect();
+    const double inside = 1.0 - fitMargin;
+    double distance = 0.0;
+    for (const Eigen::Vector3d &point : points) {
+        if (!point.allFinite())
+            continue;
+        const Eigen::Vector3d offset = point - centre;
+        const double x = std::abs(offset.dot(r)), y = std::abs(offset.dot(u)), z = offset.dot(b);
+        const double depthOffset = m_projection == Projection::Perspective ? z : 0.0;
+        distance = std::max({distance, depthOffset + x / (inside * tanX), depthOffset + y / (inside * tanY)});
+        m_clipBounds.extend(point);
+    }
+    m_target = centre;
+    m_distance = std::max(distance, 1e-3);
+}
+
 void Camera3D::standardOrientation(StandardView view, double &yaw, double &pitch)
 {
     switch (view) {

@@ -15,6 +15,7 @@
 
 #include <numbers>
 #include <optional>
+#include <vector>
 
 namespace pkm {
 
@@ -109,6 +110,10 @@ public:
     /// inside the viewport with fitMargin to spare, in the current projection. Extends
     /// clipBounds() by the box. An empty box changes nothing.
     void fit(const Eigen::AlignedBox3d &box);
+    /// As fit(box), for the points themselves (a model's vertices): the view is centred on
+    /// their projected outline rather than on a box around them, so a tall or slanted model
+    /// seen from an angle fills the view instead of a box corner's worth of empty space.
+    void fitPoints(const std::vector<Eigen::Vector3d> &points);
     /// Sets the orientation of a standard view; target and distance stay (fit() after it).
     void setStandardView(StandardView view);
     static void standardOrientation(StandardView view, double &yaw, double &pitch);

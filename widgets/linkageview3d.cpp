@@ -194,7 +194,7 @@ void LinkageView3D::setCamera(const Camera3D &camera)
 void LinkageView3D::fit()
 {
     syncViewport();
-    m_camera.fit(m_renderer.modelBounds());
+    m_camera.fitPoints(m_renderer.modelPoints()); // the model as posed, tightly
     m_camera.setClipBounds(m_renderer.drawnBounds());
     m_userMoved = false;
     requestFrame();

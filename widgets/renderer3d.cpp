@@ -213,6 +213,19 @@ void Renderer3D::setScene(const Scene3D &scene)
     m_dirty = true;
 }
 
+std::vector<Eigen::Vector3d> Renderer3D::modelPoints() const
+{
+    std::vector<Eigen::Vector3d> points;
+    points.reserve(m_mesh.vertices().size());
+    for (const MeshVertex &vertex : m_mesh.vertices())
+        points.emplace_back(vertex.position[0], vertex.position[1], vertex.position[2]);
+    if (points.empty() && !m_modelBounds.isEmpty()) { // no solid yet: the corners of its extent
+        for (int corner = 0; corner < 8; ++corner)
+            points.push_back(m_modelBounds.corner(Eigen::AlignedBox3d::CornerType(corner)));
+    }
+    return points;
+}
+
 Eigen::AlignedBox3d Renderer3D::drawnBounds() const
 {
     Eigen::AlignedBox3d box = m_modelBounds;

@@ -70,6 +70,9 @@ public:
     const GroundGrid &grid() const { return m_grid; }
     /// What fitting frames: the extent and the solids.
     Eigen::AlignedBox3d modelBounds() const { return m_modelBounds; }
+    /// The model's vertices in the pose shown (what Fit frames; the grid is not in it); the
+    /// corners of modelBounds() while there is no solid.
+    std::vector<Eigen::Vector3d> modelPoints() const;
     /// What must never be clipped: the model and the grid.
     Eigen::AlignedBox3d drawnBounds() const;
 

@@ -84,6 +84,8 @@ private slots:
     void standardViewsLookAlongTheirAxes();
     void fitShowsAllCorners_data();
     void fitShowsAllCorners();
+    void fitPointsFillsTheView_data() { projections(); }
+    void fitPointsFillsTheView();
     void panKeepsPointUnderCursor_data() { projections(); }
     void panKeepsPointUnderCursor();
     void zoomKeepsPointUnderCursor_data() { projections(); }
@@ -110,6 +112,42 @@ private:
         QTest::newRow("orthographic") << Projection::Orthographic;
     }
 };
+
+/// A tall slanted bar seen isometrically: every point is inside the viewport, the outline is
+/// centred and fills it along one axis, where fitting the bar's box leaves much of it empty.
+void TestCamera3D::fitPointsFillsTheView()
+{
+    QFETCH(Projection, projection);
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i <= 20; ++i) {
+        const double t = i / 20.0;
+        points.emplace_back(40.0 * t, 300.0 * t, -25.0 * t);
+        points.emplace_back(40.0 * t + 10.0, 300.0 * t, -25.0 * t + 10.0);
+    }
+    Camera3D c;
+    c.setViewport(640, 480);
+    c.setProjection(projection);
+    c.setStandardView(Camera3D::StandardView::Isometric);
+    c.fitPoints(points);
+    Eigen::AlignedBox2d outline;
+    for (const Eigen::Vector3d &p : points) {
+        const Eigen::Vector2d pixel = c.project(p);
+        QVERIFY2(pixel.x() >= 0 && pixel.x() <= 640 && pixel.y() >= 0 && pixel.y() <= 480,
+                 qPrintable(QStringLiteral("(%1, %2) off the view").arg(pixel.x()).arg(pixel.y())));
+        outline.extend(pixel);
+    }
+    const double fill = std::max(outline.sizes().x() / 640.0, outline.sizes().y() / 480.0);
+    QVERIFY2(fill > 0.8, qPrintable(QStringLiteral("the points fill %1 of the view").arg(fill)));
+    if (projection == Projection::Orthographic)
+        QVERIFY((outline.center() - Eigen::Vector2d(320, 240)).norm() < 1.0);
+
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d &p : points)
+        box.extend(p);
+    Camera3D boxed = c;
+    boxed.fit(box);
+    QVERIFY(c.distance() < boxed.distance()); // closer than the box would allow
+}
 
 void TestCamera3D::viewMatrixIsRigid()
 {
