@@ -9,6 +9,10 @@
 // each step is a drag of the platform handle, then the repaint of the view, the map's pose
 // marker, the ghosts, panels and values.
 //
+// With "pp-3rpr" (issue: leg library) the 3-RPR's platform is dragged the same way while its
+// map is visible: each step solves all three struts' inverse kinematics and repaints. Target:
+// ≤ 8 ms, as for MOMA.
+//
 // With "3d" as the third argument ("bench_gui 33 pjoint-prototype 3d", under Xvfb with Mesa's
 // software renderer) the 3D tab is shown instead of the 2D view: each step includes building
 // the solid model, tessellating, uploading and drawing it, and waiting for the GL frame to
@@ -56,7 +60,11 @@ int main(int argc, char *argv[])
         // wait for the map, so that it is on screen during the drag
         QElapsedTimer wait;
         wait.start();
-        auto *map = window.workspacePanel()->mapView();
+        // the map on screen: the generic panel's, or the one inside a kind's own panel
+        pkm::WorkspaceMapView *map = window.workspacePanel()->mapView();
+        for (pkm::WorkspaceMapView *candidate : window.findChildren<pkm::WorkspaceMapView *>())
+            if (candidate->isVisible())
+                map = candidate;
         while ((map->busy() || map->summary().reachableCells == 0) && wait.elapsed() < 10000)
             QApplication::processEvents(QEventLoop::AllEvents, 10);
         if (map->summary().reachableCells == 0 || !map->isVisible()) {
@@ -76,6 +84,18 @@ int main(int argc, char *argv[])
     QApplication::processEvents();
     window.repaint();
     const pkm::Pose home = window.document()->pose();
+    // The handle that moves the platform (attachment points edit the design instead).
+    int platformHandle = 0;
+    const pkm::Scene scene = window.document()->mechanism()->scene(home);
+    for (int h = 0; h < static_cast<int>(scene.handles.size()); ++h) {
+        if (!scene.handles[std::size_t(h)].editsDesign()) {
+            platformHandle = h;
+            break;
+        }
+    }
+    // A loop that stays inside the workspace: 25 mm for MOMA, 4 % of the design's size
+    // for a small one (the 3-RPR's struts are 12 to 30 mm).
+    const double radius = std::min(25.0, 0.04 * scene.extent.sizes().head<2>().maxCoeff());
     const int framesBefore = view3d->frameCount();
 
     const int steps = 600;
@@ -89,10 +109,10 @@ int main(int argc, char *argv[])
         const double thetaDeg = (i / 200) % 2 == 0 ? -60 + 120 * u : 60 - 120 * u;
         timer.start();
         if (platform) {
-            // a loop of radius 25 mm about the start, as a hand drags the platform
+            // a loop about the start, as a hand drags the platform
             const double angle = 2 * 3.141592653589793 * i / 200.0;
-            const Eigen::Vector2d target = home.outputs.head<2>() + 25.0 * Eigen::Vector2d(std::cos(angle) - 1, std::sin(angle));
-            window.document()->dragHandle(0, target);
+            const Eigen::Vector2d target = home.outputs.head<2>() + radius * Eigen::Vector2d(std::cos(angle) - 1, std::sin(angle));
+            window.document()->dragHandle(platformHandle, target);
         } else {
             window.document()->setVariable(window.document()->mechanism()->variableIndex("theta"), thetaDeg * pkm::units::degree);
         }
