@@ -2,6 +2,7 @@
 
 #include <qcustomplot.h>
 
+#include <QSet>
 #include <QWidget>
 
 #include <algorithm>
@@ -22,32 +23,31 @@ QFont scaled(QFont font, double ratio)
 
 void rescalePlot(QCustomPlot *plot, double ratio)
 {
+    // Each axis once: a colour scale's axis is also among the axis rects' axes.
+    QSet<QCPAxis *> axes;
     for (QCPAxisRect *rect : plot->axisRects()) {
-        for (QCPAxis *axis : rect->axes()) {
-            if (!axis)
-                continue;
-            axis->setTickLabelFont(scaled(axis->tickLabelFont(), ratio));
-            axis->setLabelFont(scaled(axis->labelFont(), ratio));
-        }
+        for (QCPAxis *axis : rect->axes())
+            axes.insert(axis);
     }
-    // Legends and titles may sit anywhere in the layout (a colour scale's own axis included).
-    QList<QCPLayoutElement *> elements = plot->plotLayout()->elements(true);
+    // Legends and titles may sit anywhere in the layout.
+    const QList<QCPLayoutElement *> elements = plot->plotLayout()->elements(true);
     for (QCPLayoutElement *element : elements) {
         if (!element)
             continue;
         if (auto *text = qobject_cast<QCPTextElement *>(element))
             text->setFont(scaled(text->font(), ratio));
-        if (auto *legend = qobject_cast<QCPLegend *>(element)) {
+        // The legend passes its font on to every item it holds: scaling the items as well
+        // would scale them twice.
+        if (auto *legend = qobject_cast<QCPLegend *>(element))
             legend->setFont(scaled(legend->font(), ratio));
-            for (int i = 0; i < legend->itemCount(); ++i) {
-                if (QCPAbstractLegendItem *item = legend->item(i)) // an empty cell is null
-                    item->setFont(scaled(item->font(), ratio));
-            }
-        }
-        if (auto *scale = qobject_cast<QCPColorScale *>(element); scale && scale->axis()) {
-            scale->axis()->setTickLabelFont(scaled(scale->axis()->tickLabelFont(), ratio));
-            scale->axis()->setLabelFont(scaled(scale->axis()->labelFont(), ratio));
-        }
+        if (auto *scale = qobject_cast<QCPColorScale *>(element); scale && scale->axis())
+            axes.insert(scale->axis());
+    }
+    for (QCPAxis *axis : std::as_const(axes)) {
+        if (!axis)
+            continue;
+        axis->setTickLabelFont(scaled(axis->tickLabelFont(), ratio));
+        axis->setLabelFont(scaled(axis->labelFont(), ratio));
     }
     for (int i = 0; i < plot->itemCount(); ++i) {
         if (auto *text = qobject_cast<QCPItemText *>(plot->item(i)))

@@ -126,6 +126,7 @@ void ValuesTable::rebuild()
         item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
         item->setData(0, Qt::UserRole, toQString(entry.name));
         item->setToolTip(2, label); // the column may be too narrow for it
+        item->setToolTip(0, label); // or off the dock's edge: the symbol tells what it is
         m_items.push_back(item);
     }
     addGroup(tr("Singularity"));

@@ -195,14 +195,15 @@ void WorkspaceMapView::updateTitle()
     const bool condition = m_shownQuantity == MapQuantity::Condition;
     const QString symbol = condition ? QStringLiteral("κ(J)") : QStringLiteral("det J"); // symbols
     if (m_mapBounds.isEmpty()) {
-        m_title->setText(tr("Workspace map"));
+        plotstyle::setFittedText(m_title, tr("Workspace map"));
         m_colorScale->setLabel(QString());
         return;
     }
     if (m_summary.reachableCells == 0) {
-        m_title->setText(tr("Workspace empty in the design's working and assembly modes"));
+        plotstyle::setFittedText(m_title, tr("Workspace empty in the design's working and assembly modes"));
     } else {
-        m_title->setText(tr("Workspace %1 · %2 from %3 to %4")
+        // broken into lines where the map is narrow (between words, never cut off)
+        plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4")
                              .arg(formatQuantity(m_summary.area, units::squareMillimetre, 0), symbol,
                                  significant(m_summary.min), significant(m_summary.max)));
     }

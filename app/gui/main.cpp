@@ -1,4 +1,4 @@
-// pkm-studio: the desktop application. Usage: pkm-studio [--3d] [PRESET-ID | DESIGN.pkm.json]
+// pkm-studio: the desktop application. Usage: pkm-studio [--3d] [--presentation] [PRESET-ID | DESIGN.pkm.json]
 #include "document/designsession.h"
 #include "document/document.h"
 #include "document/language.h"
@@ -35,6 +35,9 @@ int main(int argc, char *argv[])
                                                 "default: pjoint-prototype."));
     const QCommandLineOption show3d(QStringLiteral("3d"), QStringLiteral("Start with the 3D view of the linkage."));
     parser.addOption(show3d);
+    const QCommandLineOption presentation(QStringLiteral("presentation"),
+                                          QStringLiteral("Start in presentation mode (full screen, large text; Esc leaves it)."));
+    parser.addOption(presentation);
     const QCommandLineOption languageOption(
         QStringLiteral("lang"),
         QStringLiteral("Language for this run: en, sr (Serbian, Cyrillic), sr_Latn (Serbian, Latin) or ru; "
@@ -70,6 +73,8 @@ int main(int argc, char *argv[])
     } else {
         window.show();
     }
+    if (parser.isSet(presentation))
+        window.setPresentationMode(true);
     // After the window is up, so that the question has a parent to sit on.
     QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
     return app.exec();

@@ -138,6 +138,8 @@ private:
     void createPresentationActions(QMenu *viewMenu);
     /// The linkage view's style at the current text size (and contrast, when presenting).
     void applySceneStyle();
+    /// The sliders large in presentation mode, as usual otherwise (new sliders included).
+    void styleSliders();
     void addBookmark();
     void goToBookmark(int index);
     /// The next (+1) or previous (−1) bookmark, round the list.
@@ -238,6 +240,7 @@ private:
     QShortcut *m_leavePresentation = nullptr;
     bool m_presenting = false;
     QByteArray m_stateBeforePresentation;
+    QByteArray m_splitterBeforePresentation;
     bool m_maximizedBeforePresentation = false;
 };
 

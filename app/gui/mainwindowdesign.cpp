@@ -84,6 +84,7 @@ void MainWindow::onDesignChanged()
     m_designPanel->setMechanism(mechanism);
     m_designPanel->setNote(designfile::presetText(design.title), designfile::presetText(design.description));
     m_variables->setMechanism(mechanism);
+    styleSliders(); // a new kind's sliders, large when presenting
     setPlaying(false); // a new design is a new lesson: Play does not carry on in it
     m_playBar->setMechanism(mechanism);
     updateBookmarksMenu();

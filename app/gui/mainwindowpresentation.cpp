@@ -14,7 +14,11 @@
 #include <QDockWidget>
 #include <QMenu>
 #include <QSettings>
+#include <QScreen>
 #include <QShortcut>
+#include <QSlider>
+#include <QSplitter>
+#include <QTimer>
 #include <QToolBar>
 
 #include <cmath>
@@ -30,6 +34,12 @@ QString textSizeKey(bool presentation)
 }
 /// Presentation mode starts at 150 %: read from the back of a classroom at 1280×720.
 constexpr int defaultPresentationSize = 150;
+QString presentationSliderStyle()
+{
+    return QStringLiteral(
+        "QSlider::groove:horizontal { height: 10px; background: #c8c8c8; border-radius: 5px; }"
+        "QSlider::handle:horizontal { width: 30px; margin: -10px 0; background: #1f5fbf; border-radius: 8px; }");
+}
 } // namespace
 
 void MainWindow::createPresentationActions(QMenu *viewMenu)
@@ -107,6 +117,12 @@ void MainWindow::applySceneStyle()
     m_view->setSceneStyle(style);
 }
 
+void MainWindow::styleSliders()
+{
+    for (QSlider *slider : m_variables->findChildren<QSlider *>())
+        slider->setStyleSheet(m_presenting ? presentationSliderStyle() : QString());
+}
+
 void MainWindow::setPresentationMode(bool on)
 {
     if (on == m_presenting) {
@@ -118,15 +134,12 @@ void MainWindow::setPresentationMode(bool on)
     m_leavePresentation->setEnabled(on);
     if (on) {
         m_stateBeforePresentation = saveState();
+        m_splitterBeforePresentation = m_splitter->saveState();
         m_maximizedBeforePresentation = isMaximized();
         for (QDockWidget *dock : findChildren<QDockWidget *>())
             dock->hide();
         m_toolBar->hide();
         m_playToolBar->show();
-        // Large sliders: a handle a hand finds on a touch screen or with a wireless mouse.
-        m_variables->setStyleSheet(QStringLiteral(
-            "QSlider::groove:horizontal { height: 10px; background: #c8c8c8; border-radius: 5px; }"
-            "QSlider::handle:horizontal { width: 30px; margin: -10px 0; background: #1f5fbf; border-radius: 8px; }"));
         QPalette palette = QApplication::palette();
         palette.setColor(QPalette::WindowText, Qt::black);
         palette.setColor(QPalette::Text, Qt::black);
@@ -135,13 +148,21 @@ void MainWindow::setPresentationMode(bool on)
         palette.setColor(QPalette::Window, Qt::white);
         setPalette(palette);
         setTextScale(QSettings().value(textSizeKey(true), defaultPresentationSize).toInt() / 100.0);
+        // Large sliders: a handle a hand finds on a touch screen or with a wireless mouse. Set
+        // on the sliders themselves, after the text size: a style sheet on the panel would stop
+        // the application's new font from reaching its labels.
+        styleSliders();
         showFullScreen();
+        // The linkage is what the class looks at: the larger share, beside its plot or map.
+        const int width = screen() ? screen()->geometry().width() : this->width();
+        m_splitter->setSizes({width * 11 / 20, width * 9 / 20});
         showStatus(tr("Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks."));
     } else {
         setPalette(QPalette());
-        m_variables->setStyleSheet(QString());
+        styleSliders();
         setTextScale(QSettings().value(textSizeKey(false), 100).toInt() / 100.0);
         restoreState(m_stateBeforePresentation); // the docks and toolbars as they were
+        m_splitter->restoreState(m_splitterBeforePresentation);
         if (m_maximizedBeforePresentation)
             showMaximized();
         else
@@ -149,7 +170,8 @@ void MainWindow::setPresentationMode(bool on)
         showStatus(QString());
     }
     applySceneStyle();
-    m_view->fitToView();
+    // Once the window has its new size (full screen or back): the linkage fills the view.
+    QTimer::singleShot(100, m_view, &LinkageView::fitToView);
 }
 
 } // namespace pkm

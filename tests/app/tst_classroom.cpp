@@ -202,12 +202,16 @@ private slots:
         QCustomPlot *plot = w.findChild<QCustomPlot *>();
         QVERIFY(plot);
         const double tick = plot->xAxis->tickLabelFont().pointSizeF();
+        QVERIFY(plot->legend->itemCount() > 0 && plot->legend->item(0));
+        const double legendItem = plot->legend->item(0)->font().pointSizeF();
         const double label = w.linkageView()->sceneStyle().fontPixels;
         const double app = QApplication::font().pointSizeF();
         QAction *twice = w.findChild<QAction *>(QStringLiteral("textSize_200"));
         QVERIFY(twice);
         twice->trigger();
         QCOMPARE_LT(std::abs(plot->xAxis->tickLabelFont().pointSizeF() - 2 * tick), 0.01);
+        // twice, not four times: the legend hands its font to its items
+        QCOMPARE_LT(std::abs(plot->legend->item(0)->font().pointSizeF() - 2 * legendItem), 0.01);
         QCOMPARE_LT(std::abs(w.linkageView()->sceneStyle().fontPixels - 2 * label), 0.01);
         QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - 2 * app), 0.01);
         // Remembered, and back to normal with 100 %.

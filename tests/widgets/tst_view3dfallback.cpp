@@ -87,10 +87,18 @@ void TestView3DFallback::viewWithoutOpenGl()
     sendMouse(view, QEvent::MouseButtonPress, {100, 100}, Qt::RightButton, Qt::RightButton);
     sendMouse(view, QEvent::MouseMove, {130, 120}, Qt::NoButton, Qt::RightButton);
     sendMouse(view, QEvent::MouseButtonRelease, {130, 120}, Qt::RightButton, Qt::NoButton);
-    QVERIFY((view->camera().target() - target).norm() > 1e-6);
+    const Eigen::Vector3d panned = view->camera().target();
+    QVERIFY((panned - target).norm() > 1e-6);
+    const Eigen::Vector3d direction = view->camera().viewDirection();
     sendMouse(view, QEvent::MouseButtonDblClick, {100, 100}, Qt::LeftButton, Qt::LeftButton);
     sendMouse(view, QEvent::MouseButtonRelease, {100, 100}, Qt::LeftButton, Qt::NoButton);
-    QVERIFY((view->camera().target() - target).norm() < 1e-9); // fitted again, the new direction kept
+    // fitted again (the model's outline centred, so the pan is undone), the new direction kept
+    const Eigen::Vector3d fitted = view->camera().target();
+    QVERIFY((fitted - panned).norm() > 1e-6);
+    QVERIFY((view->camera().viewDirection() - direction).norm() < 1e-12);
+    sendMouse(view, QEvent::MouseButtonDblClick, {100, 100}, Qt::LeftButton, Qt::LeftButton);
+    sendMouse(view, QEvent::MouseButtonRelease, {100, 100}, Qt::LeftButton, Qt::NoButton);
+    QVERIFY((view->camera().target() - fitted).norm() < 1e-9); // the same fit again
     const double before = view->camera().distance();
     QWheelEvent wheel(QPointF(50, 60), view->mapToGlobal(QPointF(50, 60)), QPoint(), QPoint(0, 240), Qt::NoButton,
         Qt::NoModifier, Qt::NoScrollPhase, false);
