@@ -156,28 +156,51 @@ void ScenePainter::paintScaleBar(
     painter.restore();
 }
 
+ScenePainter::MessageLayout ScenePainter::messageLayout(const QRectF &area, const QString &message,
+    const SceneStyle &style, QPaintDevice *device)
+{
+    const double px = style.pixelSize;
+    MessageLayout layout;
+    layout.font = detail::labelFont(style.fontPixels * px, false);
+    const QFontMetricsF metrics(layout.font, device);
+    const double margin = 16.0 * px, pad = 8.0 * px;
+    // A short message sits in the bottom-left corner beside the scale bar. A long one (a
+    // limit's reason, a singular pose) is the one thing the user must read whole: it wraps
+    // over the view's width, above the scale bar.
+    const double besideScaleBar = area.width() - 2.0 * margin - 2.0 * pad - 200.0 * px;
+    const double full = std::max(40.0 * px, area.width() - 2.0 * margin - 2.0 * pad);
+    const bool oneLine = metrics.horizontalAdvance(message) <= besideScaleBar;
+    const double available = oneLine ? besideScaleBar : full;
+    // the scale bar's height (paintScaleBar(): its tick and its label) and a gap
+    const double bottom = area.bottom() - margin - (oneLine ? 0.0 : 8.0 * px + metrics.height() + 8.0 * px);
+    layout.flags = Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap;
+    QRectF text = metrics.boundingRect(QRectF(0, 0, available, 1e6), layout.flags, message);
+    if (text.width() > available) { // a word longer than the room: break it anywhere
+        layout.flags = Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWrapAnywhere;
+        text = metrics.boundingRect(QRectF(0, 0, available, 1e6), layout.flags, message);
+    }
+    const QSizeF size(std::ceil(text.width()) + 2.0 * pad, std::ceil(text.height()) + 2.0 * pad);
+    // never above the view's top: a message taller than the view starts at its top
+    layout.box = QRectF(area.left() + margin, std::max(area.top(), bottom - size.height()), size.width(), size.height());
+    layout.text = layout.box.adjusted(pad, pad, -pad, -pad);
+    return layout;
+}
+
 void ScenePainter::paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style)
 {
     if (message.isEmpty())
         return;
     const double px = style.pixelSize;
-    const QFont font = detail::labelFont(style.fontPixels * px, false);
-    const QFontMetricsF metrics(font, painter.device());
-    const double margin = 16.0 * px, pad = 8.0 * px;
-    // Leave the bottom-right corner to the scale bar.
-    const double available = std::max(40.0 * px, area.width() - 2.0 * margin - 2.0 * pad - 200.0 * px);
-    const QString shown = metrics.elidedText(message, Qt::ElideRight, available);
-    const QSizeF size(metrics.horizontalAdvance(shown) + 2.0 * pad, metrics.height() + 2.0 * pad);
-    const QRectF box(area.left() + margin, area.bottom() - margin - size.height(), size.width(), size.height());
+    const MessageLayout layout = messageLayout(area, message, style, painter.device());
 
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setPen(QPen(QColor(0xd9, 0xa4, 0x41), 1.2 * px));
     painter.setBrush(QColor(0xff, 0xf6, 0xdc, 240));
-    painter.drawRoundedRect(box, 6.0 * px, 6.0 * px);
-    painter.setFont(font);
+    painter.drawRoundedRect(layout.box, 6.0 * px, 6.0 * px);
+    painter.setFont(layout.font);
     painter.setPen(style.ink);
-    painter.drawText(box, Qt::AlignCenter, shown);
+    painter.drawText(layout.text, layout.flags, message);
     painter.restore();
 }
 

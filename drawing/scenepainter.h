@@ -10,11 +10,13 @@
 #include <Eigen/Core>
 
 #include <QColor>
+#include <QFont>
 #include <QPointF>
 #include <QRectF>
 #include <QString>
 
 class QPainter;
+class QPaintDevice;
 
 namespace pkm {
 
@@ -42,8 +44,19 @@ public:
     /// A scale bar ("50 mm") in the bottom-right corner of `area`.
     static void paintScaleBar(
         QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style);
-    /// A one-line message in a rounded box at the bottom-left of `area`; nothing when empty.
+    /// A message in a rounded box at the bottom-left of `area`, wrapped onto as many lines as it
+    /// needs (never cut); nothing when empty.
     static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style);
+    /// Where paintMessage() puts `message` on `device`: the box, the rectangle of the text
+    /// inside it, and the font and flags it is drawn with.
+    struct MessageLayout {
+        QRectF box;
+        QRectF text;
+        QFont font;
+        int flags = 0;
+    };
+    static MessageLayout messageLayout(const QRectF &area, const QString &message, const SceneStyle &style,
+        QPaintDevice *device);
 
     /// Grid spacing in mm: the smallest 1/2/5×10ⁿ with spacing × scale ≥ minimumDevice.
     static double niceStep(double minimumDevice, double scale);

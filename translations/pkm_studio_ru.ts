@@ -4317,6 +4317,45 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::GuideWindow</name>
+    <message>
+        <source>PKM Studio User Guide</source>
+        <translation>Руководство пользователя PKM Studio</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Назад</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>В начало</translation>
+    </message>
+    <message>
+        <source>The start of the guide</source>
+        <translation>Начало руководства</translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation>&amp;Найти:</translation>
+    </message>
+    <message>
+        <source>a word in the guide (Ctrl+F)</source>
+        <translation>слово в руководстве (Ctrl+F)</translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation>Предыдущее</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>Следующее</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>Не найдено</translation>
+    </message>
+</context>
+<context>
     <name>pkm::LinkageView</name>
     <message>
         <source>Click to switch to: %1</source>
@@ -4675,6 +4714,58 @@ Please verify the correct file name was given.</source>
     <message>
         <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
         <translation>2-P̲RR (два приводных ползуна, MOMA 3a)</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Руководство пользователя</translation>
+    </message>
+    <message>
+        <source>What&apos;s &amp;This?</source>
+        <translation>Что &amp;это?</translation>
+    </message>
+    <message>
+        <source>The plots of this mechanism over the range of its input; the cursor marks the current pose. A right click saves a plot as a picture.</source>
+        <translation>Графики этого механизма по диапазону его входа; курсор отмечает текущее положение. Щелчок правой кнопкой сохраняет график как изображение.</translation>
+    </message>
+    <message>
+        <source>The workspace map: where the platform can go, coloured by the quantity chosen above it, with the singular curves. Click a point to move the platform there; the marker shows the current pose.</source>
+        <translation>Карта рабочего пространства: куда может попасть платформа, в цвете выбранной над ней величины, с кривыми особых положений. Щелчок по точке переводит туда платформу; метка показывает текущее положение.</translation>
+    </message>
+    <message>
+        <source>The linkage at its current pose. Drag a round handle to move a joint or the platform; the wheel zooms, the right button pans and F fits the mechanism. Faint ghosts are the other assembly modes: click one to switch to it. Limits and singular poses are told at the bottom.</source>
+        <translation>Механизм в текущем положении. Перетащите круглую ручку, чтобы сдвинуть шарнир или платформу; колесо масштабирует, правая кнопка сдвигает вид, F вписывает механизм. Бледные силуэты — другие сборки: щелчок по одному переключает на неё. О пределах и особых положениях сообщается внизу.</translation>
+    </message>
+    <message>
+        <source>The joint variables: each slider and its number set one variable of the mechanism, and the pose follows at once. A value the mechanism cannot reach is refused with a message.</source>
+        <translation>Обобщённые координаты: каждый ползунок и его число задают одну координату механизма, и положение сразу следует за ними. Недостижимое значение отклоняется с сообщением.</translation>
+    </message>
+    <message>
+        <source>Play moves the chosen joint variable by itself over the range set here, at this speed, in a loop, forth and back or once. It stops at a limit or before a singular pose and says why.</source>
+        <translation>Воспроизведение само движет выбранную координату по заданному здесь диапазону с этой скоростью: по кругу, туда и обратно или один раз. Оно останавливается у предела или перед особым положением и объясняет почему.</translation>
+    </message>
+    <message>
+        <source>The design: every dimension and mode of the mechanism. Change a value and the linkage, the values, the plots and the maps follow; every change can be undone (Ctrl+Z).</source>
+        <translation>Конструкция: все размеры и режимы механизма. Измените значение — и схема, значения, графики и карты последуют за ним; любое изменение можно отменить (Ctrl+Z).</translation>
+    </message>
+    <message>
+        <source>The values at this pose: joint variables, the Jacobian, its determinant and condition number and what the actuators deliver, each with its unit and meaning. At a singular pose a value that is infinite reads ∞ and one that is undefined reads —.</source>
+        <translation>Значения в этом положении: координаты, якобиан, его определитель и число обусловленности и то, что дают приводы, — каждое с единицей и смыслом. В особом положении бесконечное значение показано как ∞, неопределённое — как —.</translation>
+    </message>
+    <message>
+        <source>The mobility of the mechanism: its degrees of freedom counted by the structural formulas and by the rank of its loop equations at this pose, and where the formulas are wrong.</source>
+        <translation>Подвижность механизма: число степеней свободы по структурным формулам и по рангу уравнений замкнутых контуров в этом положении, и где формулы ошибаются.</translation>
+    </message>
+    <message>
+        <source>The governing equations of this mechanism with the source document&apos;s equation numbers, each followed by the same equation with the current numbers put in; they follow the pose.</source>
+        <translation>Основные уравнения этого механизма с номерами уравнений исходного документа, за каждым — то же уравнение с подставленными текущими числами; они следуют за положением.</translation>
+    </message>
+    <message>
+        <source>The mechanism in 3D at the current pose: drag to turn it, right-drag to pan, the wheel zooms and a double-click fits it. The sliders drive it as they drive the 2D view.</source>
+        <translation>Механизм в 3D в текущем положении: перетаскивание поворачивает его, перетаскивание правой кнопкой сдвигает, колесо масштабирует, двойной щелчок вписывает. Ползунки управляют им так же, как видом 2D.</translation>
+    </message>
+    <message>
+        <source>The assembly and working modes: the mode of the current pose, and a button for each other mode the mechanism can take here, which switches to it.</source>
+        <translation>Сборки и рабочие режимы: режим текущего положения и кнопка для каждого другого режима, который механизм может принять здесь; она переключает на него.</translation>
     </message>
 </context>
 <context>

@@ -4317,6 +4317,45 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::GuideWindow</name>
+    <message>
+        <source>PKM Studio User Guide</source>
+        <translation>Упутство за PKM Studio</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Назад</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>На почетак</translation>
+    </message>
+    <message>
+        <source>The start of the guide</source>
+        <translation>Почетак упутства</translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation>&amp;Пронађи:</translation>
+    </message>
+    <message>
+        <source>a word in the guide (Ctrl+F)</source>
+        <translation>реч у упутству (Ctrl+F)</translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation>Претходно</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>Следеће</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>Није пронађено</translation>
+    </message>
+</context>
+<context>
     <name>pkm::LinkageView</name>
     <message>
         <source>Click to switch to: %1</source>
@@ -4675,6 +4714,58 @@ Please verify the correct file name was given.</source>
     <message>
         <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
         <translation>2-P̲RR (два погонска клизача, MOMA 3a)</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Упутство</translation>
+    </message>
+    <message>
+        <source>What&apos;s &amp;This?</source>
+        <translation>Шта је &amp;ово?</translation>
+    </message>
+    <message>
+        <source>The plots of this mechanism over the range of its input; the cursor marks the current pose. A right click saves a plot as a picture.</source>
+        <translation>Графици овог механизма по опсегу његовог улаза; курсор означава тренутни положај. Клик десним тастером чува график као слику.</translation>
+    </message>
+    <message>
+        <source>The workspace map: where the platform can go, coloured by the quantity chosen above it, with the singular curves. Click a point to move the platform there; the marker shows the current pose.</source>
+        <translation>Мапа радног простора: где платформа може да стигне, обојена по величини изабраној изнад ње, са сингуларним кривама. Клик на тачку помера платформу тамо; ознака показује тренутни положај.</translation>
+    </message>
+    <message>
+        <source>The linkage at its current pose. Drag a round handle to move a joint or the platform; the wheel zooms, the right button pans and F fits the mechanism. Faint ghosts are the other assembly modes: click one to switch to it. Limits and singular poses are told at the bottom.</source>
+        <translation>Механизам у тренутном положају. Превуците округлу ручицу да померите зглоб или платформу; точкић увећава, десни тастер помера поглед, а F уклапа механизам. Бледе сенке су други начини склапања: клик на једну прелази на њу. О границама и сингуларним положајима се обавештава доле.</translation>
+    </message>
+    <message>
+        <source>The joint variables: each slider and its number set one variable of the mechanism, and the pose follows at once. A value the mechanism cannot reach is refused with a message.</source>
+        <translation>Унутрашње координате: сваки клизач и његов број задају једну координату механизма, а положај одмах следи. Вредност коју механизам не може да достигне одбија се поруком.</translation>
+    </message>
+    <message>
+        <source>Play moves the chosen joint variable by itself over the range set here, at this speed, in a loop, forth and back or once. It stops at a limit or before a singular pose and says why.</source>
+        <translation>Покретање само помера изабрану координату по овде задатом опсегу, овом брзином: у круг, напред и назад или једном. Зауставља се на граници или пре сингуларног положаја и каже зашто.</translation>
+    </message>
+    <message>
+        <source>The design: every dimension and mode of the mechanism. Change a value and the linkage, the values, the plots and the maps follow; every change can be undone (Ctrl+Z).</source>
+        <translation>Конструкција: све мере и режими механизма. Промените вредност и шема, вредности, графици и мапе ће је пратити; свака измена може да се опозове (Ctrl+Z).</translation>
+    </message>
+    <message>
+        <source>The values at this pose: joint variables, the Jacobian, its determinant and condition number and what the actuators deliver, each with its unit and meaning. At a singular pose a value that is infinite reads ∞ and one that is undefined reads —.</source>
+        <translation>Вредности у овом положају: координате, Јакобијан, његова детерминанта и број условљености и оно што дају актуатори, свака са јединицом и значењем. У сингуларном положају бесконачна вредност се приказује као ∞, а неодређена као —.</translation>
+    </message>
+    <message>
+        <source>The mobility of the mechanism: its degrees of freedom counted by the structural formulas and by the rank of its loop equations at this pose, and where the formulas are wrong.</source>
+        <translation>Покретљивост механизма: број степени слободе по структурним формулама и по рангу једначина затворених контура у овом положају, и где формуле греше.</translation>
+    </message>
+    <message>
+        <source>The governing equations of this mechanism with the source document&apos;s equation numbers, each followed by the same equation with the current numbers put in; they follow the pose.</source>
+        <translation>Основне једначине овог механизма са бројевима једначина изворног документа, а после сваке иста једначина са уписаним тренутним бројевима; прате положај.</translation>
+    </message>
+    <message>
+        <source>The mechanism in 3D at the current pose: drag to turn it, right-drag to pan, the wheel zooms and a double-click fits it. The sliders drive it as they drive the 2D view.</source>
+        <translation>Механизам у 3D у тренутном положају: превлачење га окреће, превлачење десним тастером помера, точкић увећава, а двоструки клик уклапа. Клизачи га покрећу као и поглед 2D.</translation>
+    </message>
+    <message>
+        <source>The assembly and working modes: the mode of the current pose, and a button for each other mode the mechanism can take here, which switches to it.</source>
+        <translation>Начини склапања и радни режими: режим тренутног положаја и дугме за сваки други режим који механизам овде може да заузме; оно прелази на њега.</translation>
     </message>
 </context>
 <context>

@@ -4317,6 +4317,45 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
 </context>
 <context>
+    <name>pkm::GuideWindow</name>
+    <message>
+        <source>PKM Studio User Guide</source>
+        <translation>Uputstvo za PKM Studio</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Nazad</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Na početak</translation>
+    </message>
+    <message>
+        <source>The start of the guide</source>
+        <translation>Početak uputstva</translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation>&amp;Pronađi:</translation>
+    </message>
+    <message>
+        <source>a word in the guide (Ctrl+F)</source>
+        <translation>reč u uputstvu (Ctrl+F)</translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation>Prethodno</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>Sledeće</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>Nije pronađeno</translation>
+    </message>
+</context>
+<context>
     <name>pkm::LinkageView</name>
     <message>
         <source>Click to switch to: %1</source>
@@ -4675,6 +4714,58 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>2-P̲RR (two driven sliders, MOMA 3a)</source>
         <translation>2-P̲RR (dva pogonska klizača, MOMA 3a)</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Uputstvo</translation>
+    </message>
+    <message>
+        <source>What&apos;s &amp;This?</source>
+        <translation>Šta je &amp;ovo?</translation>
+    </message>
+    <message>
+        <source>The plots of this mechanism over the range of its input; the cursor marks the current pose. A right click saves a plot as a picture.</source>
+        <translation>Grafici ovog mehanizma po opsegu njegovog ulaza; kursor označava trenutni položaj. Klik desnim tasterom čuva grafik kao sliku.</translation>
+    </message>
+    <message>
+        <source>The workspace map: where the platform can go, coloured by the quantity chosen above it, with the singular curves. Click a point to move the platform there; the marker shows the current pose.</source>
+        <translation>Mapa radnog prostora: gde platforma može da stigne, obojena po veličini izabranoj iznad nje, sa singularnim krivama. Klik na tačku pomera platformu tamo; oznaka pokazuje trenutni položaj.</translation>
+    </message>
+    <message>
+        <source>The linkage at its current pose. Drag a round handle to move a joint or the platform; the wheel zooms, the right button pans and F fits the mechanism. Faint ghosts are the other assembly modes: click one to switch to it. Limits and singular poses are told at the bottom.</source>
+        <translation>Mehanizam u trenutnom položaju. Prevucite okruglu ručicu da pomerite zglob ili platformu; točkić uvećava, desni taster pomera pogled, a F uklapa mehanizam. Blede senke su drugi načini sklapanja: klik na jednu prelazi na nju. O granicama i singularnim položajima se obaveštava dole.</translation>
+    </message>
+    <message>
+        <source>The joint variables: each slider and its number set one variable of the mechanism, and the pose follows at once. A value the mechanism cannot reach is refused with a message.</source>
+        <translation>Unutrašnje koordinate: svaki klizač i njegov broj zadaju jednu koordinatu mehanizma, a položaj odmah sledi. Vrednost koju mehanizam ne može da dostigne odbija se porukom.</translation>
+    </message>
+    <message>
+        <source>Play moves the chosen joint variable by itself over the range set here, at this speed, in a loop, forth and back or once. It stops at a limit or before a singular pose and says why.</source>
+        <translation>Pokretanje samo pomera izabranu koordinatu po ovde zadatom opsegu, ovom brzinom: u krug, napred i nazad ili jednom. Zaustavlja se na granici ili pre singularnog položaja i kaže zašto.</translation>
+    </message>
+    <message>
+        <source>The design: every dimension and mode of the mechanism. Change a value and the linkage, the values, the plots and the maps follow; every change can be undone (Ctrl+Z).</source>
+        <translation>Konstrukcija: sve mere i režimi mehanizma. Promenite vrednost i šema, vrednosti, grafici i mape će je pratiti; svaka izmena može da se opozove (Ctrl+Z).</translation>
+    </message>
+    <message>
+        <source>The values at this pose: joint variables, the Jacobian, its determinant and condition number and what the actuators deliver, each with its unit and meaning. At a singular pose a value that is infinite reads ∞ and one that is undefined reads —.</source>
+        <translation>Vrednosti u ovom položaju: koordinate, Jakobijan, njegova determinanta i broj uslovljenosti i ono što daju aktuatori, svaka sa jedinicom i značenjem. U singularnom položaju beskonačna vrednost se prikazuje kao ∞, a neodređena kao —.</translation>
+    </message>
+    <message>
+        <source>The mobility of the mechanism: its degrees of freedom counted by the structural formulas and by the rank of its loop equations at this pose, and where the formulas are wrong.</source>
+        <translation>Pokretljivost mehanizma: broj stepeni slobode po strukturnim formulama i po rangu jednačina zatvorenih kontura u ovom položaju, i gde formule greše.</translation>
+    </message>
+    <message>
+        <source>The governing equations of this mechanism with the source document&apos;s equation numbers, each followed by the same equation with the current numbers put in; they follow the pose.</source>
+        <translation>Osnovne jednačine ovog mehanizma sa brojevima jednačina izvornog dokumenta, a posle svake ista jednačina sa upisanim trenutnim brojevima; prate položaj.</translation>
+    </message>
+    <message>
+        <source>The mechanism in 3D at the current pose: drag to turn it, right-drag to pan, the wheel zooms and a double-click fits it. The sliders drive it as they drive the 2D view.</source>
+        <translation>Mehanizam u 3D u trenutnom položaju: prevlačenje ga okreće, prevlačenje desnim tasterom pomera, točkić uvećava, a dvostruki klik uklapa. Klizači ga pokreću kao i pogled 2D.</translation>
+    </message>
+    <message>
+        <source>The assembly and working modes: the mode of the current pose, and a button for each other mode the mechanism can take here, which switches to it.</source>
+        <translation>Načini sklapanja i radni režimi: režim trenutnog položaja i dugme za svaki drugi režim koji mehanizam ovde može da zauzme; ono prelazi na njega.</translation>
     </message>
 </context>
 <context>

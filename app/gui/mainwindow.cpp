@@ -131,6 +131,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_singularityLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_poseLabel);
     statusBar()->addPermanentWidget(m_singularityLabel);
+    watchStatusBar();
 
     connect(m_document, &Document::designChanged, this, &MainWindow::onDesignChanged);
     connect(m_session, &DesignSession::modifiedChanged, this, &MainWindow::updateTitle);
@@ -177,6 +178,7 @@ MainWindow::MainWindow(QWidget *parent)
             });
 
     onDesignChanged();
+    updateWhatsThis();
     restoreLayout();
     // Every plot and map (all made above, none later): a right click offers Save picture…,
     // named after the plot's title when saved.
@@ -355,6 +357,7 @@ void MainWindow::createActions()
 
     QMenu *help = menuBar()->addMenu(QString());
     translated(help->menuAction(), QT_TR_NOOP("&Help"));
+    createHelpActions(help);
     translated(help->addAction(QString(), this, &MainWindow::sourceDocuments), QT_TR_NOOP("&Source Documents…"))
         ->setObjectName(QStringLiteral("sourceDocumentsAction"));
     translated(help->addAction(QString(), this, &MainWindow::about), QT_TR_NOOP("&About PKM Studio"));
@@ -466,6 +469,7 @@ void MainWindow::retranslate()
     const Design &design = m_document->design();
     m_designPanel->setNote(designfile::presetText(design.title), designfile::presetText(design.description));
     updateTitle();
+    updateWhatsThis();
     onPoseChanged();
     if (!m_statusIsError)
         statusBar()->clearMessage();

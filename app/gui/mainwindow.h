@@ -28,6 +28,7 @@ class QTabWidget;
 namespace pkm {
 
 class DesignPanel;
+class GuideWindow;
 class EquationsPanel;
 class DesignSession;
 class Document;
@@ -120,6 +121,11 @@ public:
     /// The bookmark shown last (index into Document::bookmarks()), or -1.
     int currentBookmark() const { return m_currentBookmark; }
 
+    /// Help ▸ User Guide (F1): the guide's window, made at the first call (mainwindowhelp.cpp).
+    void showGuide();
+    /// The guide's window once shown, else nullptr.
+    GuideWindow *guideWindow() const;
+
     /// Switches the program to the language `code` (language.h) and remembers it.
     void setLanguage(const QString &code);
 
@@ -136,6 +142,13 @@ private:
     /// The Play toolbar and the Bookmarks menu (mainwindowplay.cpp); Play's actions go into `viewMenu`.
     void createPlayControls(QMenu *viewMenu);
     void createPresentationActions(QMenu *viewMenu);
+    /// Help ▸ User Guide and What's This (mainwindowhelp.cpp), at the top of `help`.
+    void createHelpActions(QMenu *help);
+    /// The What's This text of every panel, in the current language.
+    void updateWhatsThis();
+    /// Keeps the status bar's message whole: the pose read-out steps aside when both do not fit.
+    void watchStatusBar();
+    void fitStatusMessage();
     /// The linkage view's style at the current text size (and contrast, when presenting).
     void applySceneStyle();
     /// The sliders large in presentation mode, as usual otherwise (new sliders included).
@@ -239,6 +252,7 @@ private:
     QMenu *m_textSizeMenu = nullptr;
     QShortcut *m_leavePresentation = nullptr;
     bool m_presenting = false;
+    QPointer<GuideWindow> m_guide;
     QByteArray m_stateBeforePresentation;
     QByteArray m_splitterBeforePresentation;
     bool m_maximizedBeforePresentation = false;

@@ -233,6 +233,7 @@ void MainWindow::showStatus(const QString &message, bool error)
     statusBar()->setStyleSheet(error ? QStringLiteral("QStatusBar { color: #b3261e; font-weight: bold; }")
                                      : QString());
     statusBar()->showMessage(message); // an error stays until the next change succeeds
+    fitStatusMessage(); // also when only its weight changed
 }
 
 } // namespace pkm

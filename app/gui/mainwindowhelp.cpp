@@ -1,0 +1,157 @@
+// The main window's help (issue 18): Help ▸ User Guide (F1) and What's This (Shift+F1) with a
+// text on every panel, and a status bar whose message is never cut by the pose read-out.
+
+#include "gui/mainwindow.h"
+
+#include "designpanel.h"
+#include "equationspanel.h"
+#include "gui/guidewindow.h"
+#include "kinds/kindpanel.h"
+#include "kinds/sweepplotspanel.h"
+#include "kinds/workspacepanel.h"
+#include "linkageview.h"
+#include "linkageview3d.h"
+#include "mobilitypanel.h"
+#include "modebar.h"
+#include "playbar.h"
+#include "valuestable.h"
+#include "variablepanel.h"
+#include "workspacemapview.h"
+
+#include <QAction>
+#include <QEvent>
+#include <QLabel>
+#include <QLayout>
+#include <QMenu>
+#include <QStatusBar>
+#include <QWhatsThis>
+
+namespace pkm {
+
+namespace {
+
+/// Calls `react` whenever the watched widget changes size.
+class ResizeWatcher : public QObject
+{
+public:
+    ResizeWatcher(QObject *parent, std::function<void()> react)
+        : QObject(parent)
+        , m_react(std::move(react))
+    {
+    }
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (event->type() == QEvent::Resize)
+            m_react();
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    std::function<void()> m_react;
+};
+
+/// QStatusBar draws its message from 6 px to 12 px before its right edge, or to 2 px before
+/// the first permanent widget shown (qstatusbar.cpp); the rest is the layout's spacing.
+constexpr int statusMessageMargins = 6 + 12 + 2;
+
+} // namespace
+
+void MainWindow::createHelpActions(QMenu *help)
+{
+    QAction *guide = translated(help->addAction(QString(), this, &MainWindow::showGuide), QT_TR_NOOP("&User Guide"));
+    guide->setObjectName(QStringLiteral("userGuideAction"));
+    guide->setShortcut(QKeySequence::HelpContents); // F1
+    // QWhatsThis's own action (Shift+F1): the pointer turns into a question mark, and a click on a
+    // panel shows what it is for.
+    QAction *whatsThis = translated(QWhatsThis::createAction(this), QT_TR_NOOP("What's &This?"));
+    whatsThis->setObjectName(QStringLiteral("whatsThisAction"));
+    whatsThis->setShortcut(QKeySequence::WhatsThis);
+    addAction(whatsThis); // Shift+F1 wherever the focus is
+    help->addAction(whatsThis);
+    help->addSeparator();
+}
+
+void MainWindow::showGuide()
+{
+    if (!m_guide)
+        m_guide = new GuideWindow(this);
+    m_guide->followLanguage(); // the language may have changed since it was last shown
+    m_guide->show();
+    m_guide->raise();
+    m_guide->activateWindow();
+}
+
+GuideWindow *MainWindow::guideWindow() const
+{
+    return m_guide;
+}
+
+void MainWindow::updateWhatsThis()
+{
+    const QString plots = tr("The plots of this mechanism over the range of its input; the cursor marks the current pose. "
+                             "A right click saves a plot as a picture.");
+    const QString map = tr("The workspace map: where the platform can go, coloured by the quantity chosen above it, with "
+                           "the singular curves. Click a point to move the platform there; the marker shows the current pose.");
+    // the plots' panels first, so that the maps inside them get the map's text
+    m_workspacePanel->setWhatsThis(map);
+    m_sweepPanel->setWhatsThis(plots);
+    for (const auto &[kind, panel] : m_kindPanels)
+        panel->setWhatsThis(plots);
+    for (WorkspaceMapView *view : findChildren<WorkspaceMapView *>())
+        view->setWhatsThis(map);
+
+    m_view->setWhatsThis(tr("The linkage at its current pose. Drag a round handle to move a joint or the platform; the "
+                            "wheel zooms, the right button pans and F fits the mechanism. Faint ghosts are the other "
+                            "assembly modes: click one to switch to it. Limits and singular poses are told at the bottom."));
+    m_variables->setWhatsThis(tr("The joint variables: each slider and its number set one variable of the mechanism, and the "
+                                 "pose follows at once. A value the mechanism cannot reach is refused with a message."));
+    m_playBar->setWhatsThis(tr("Play moves the chosen joint variable by itself over the range set here, at this speed, in a "
+                               "loop, forth and back or once. It stops at a limit or before a singular pose and says why."));
+    m_designPanel->setWhatsThis(tr("The design: every dimension and mode of the mechanism. Change a value and the linkage, the "
+                                   "values, the plots and the maps follow; every change can be undone (Ctrl+Z)."));
+    m_values->setWhatsThis(tr("The values at this pose: joint variables, the Jacobian, its determinant and condition number "
+                              "and what the actuators deliver, each with its unit and meaning. At a singular pose a value "
+                              "that is infinite reads ∞ and one that is undefined reads —."));
+    m_mobility->setWhatsThis(tr("The mobility of the mechanism: its degrees of freedom counted by the structural formulas "
+                                "and by the rank of its loop equations at this pose, and where the formulas are wrong."));
+    m_equations->setWhatsThis(tr("The governing equations of this mechanism with the source document's equation numbers, each "
+                                 "followed by the same equation with the current numbers put in; they follow the pose."));
+    m_view3d->setWhatsThis(tr("The mechanism in 3D at the current pose: drag to turn it, right-drag to pan, the wheel "
+                              "zooms and a double-click fits it. The sliders drive it as they drive the 2D view."));
+    m_modeBar->setWhatsThis(tr("The assembly and working modes: the mode of the current pose, and a button for each other "
+                               "mode the mechanism can take here, which switches to it."));
+}
+
+void MainWindow::watchStatusBar()
+{
+    connect(statusBar(), &QStatusBar::messageChanged, this, &MainWindow::fitStatusMessage);
+    statusBar()->installEventFilter(new ResizeWatcher(this, [this] { fitStatusMessage(); }));
+}
+
+void MainWindow::fitStatusMessage()
+{
+    // A message is worth more than the pose read-out beside it (the sliders show the pose too):
+    // when both do not fit, the read-out steps aside while the message is shown. The tooltip
+    // keeps the whole message for a bar narrower than the message itself.
+    if (!m_poseLabel)
+        return; // a message before the read-outs exist
+    QStatusBar *bar = statusBar();
+    const QString message = bar->currentMessage();
+    bar->setToolTip(message);
+    bool readOuts = true;
+    if (!message.isEmpty()) {
+        QFont font = bar->font();
+        font.setBold(m_statusIsError); // errors are bold (showStatus)
+        const int needed = QFontMetrics(font).horizontalAdvance(message) + statusMessageMargins;
+        int beside = 0;
+        for (QLabel *label : {m_poseLabel, m_singularityLabel}) {
+            if (!label->text().isEmpty())
+                beside += label->sizeHint().width() + 2 * bar->layout()->spacing() + 8;
+        }
+        readOuts = needed + beside <= bar->width();
+    }
+    m_poseLabel->setVisible(readOuts);
+    m_singularityLabel->setVisible(readOuts);
+}
+
+} // namespace pkm

@@ -1,0 +1,304 @@
+// Help inside the program (issue 18): F1 opens the user guide with its headings and pictures in
+// the chosen language, links and the find field work, Shift+F1 enters What's This with a
+// translated text on every panel, and long messages are never cut — neither the linkage view's
+// toast nor the status bar's message at 1280×720, in all four languages.
+#include "gui/guidewindow.h"
+#include "gui/mainwindow.h"
+
+#include "designpanel.h"
+#include "document/document.h"
+#include "document/language.h"
+#include "equationspanel.h"
+#include "kinds/workspacepanel.h"
+#include "linkageview.h"
+#include "linkageview3d.h"
+#include "mobilitypanel.h"
+#include "modebar.h"
+#include "playbar.h"
+#include "scenepainter.h"
+#include "support/app.h"
+#include "valuestable.h"
+#include "variablepanel.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QStatusBar>
+#include <QTest>
+#include <QTextBlock>
+#include <QTextBrowser>
+#include <QTextDocument>
+
+using namespace pkm;
+using namespace pkm::test;
+
+namespace {
+
+QStringList headings(const QTextDocument *document)
+{
+    QStringList found;
+    for (QTextBlock block = document->begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() > 0)
+            found << block.text();
+    }
+    return found;
+}
+
+/// The pictures of `document` as its browser loads them: name → image.
+QList<QImage> pictures(QTextDocument *document)
+{
+    QList<QImage> images;
+    for (QTextBlock block = document->begin(); block.isValid(); block = block.next()) {
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextCharFormat format = it.fragment().charFormat();
+            if (format.isImageFormat())
+                images << document->resource(QTextDocument::ImageResource, QUrl(format.toImageFormat().name())).value<QImage>();
+        }
+    }
+    return images;
+}
+
+QStringList links(const QTextDocument *document)
+{
+    QStringList found;
+    for (QTextBlock block = document->begin(); block.isValid(); block = block.next()) {
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            if (it.fragment().charFormat().isAnchor())
+                found << it.fragment().charFormat().anchorHref();
+        }
+    }
+    return found;
+}
+
+/// The room QStatusBar gives its message: from 6 px to 2 px before the first permanent widget
+/// shown, or to 12 px before its right edge (qstatusbar.cpp).
+int statusRoom(QStatusBar *bar, const QList<QLabel *> &permanent)
+{
+    int right = bar->width() - 12;
+    for (QLabel *label : permanent) {
+        if (label->isVisible()) {
+            right = std::min(right, label->x() - 2);
+            break;
+        }
+    }
+    return right - 6;
+}
+
+} // namespace
+
+class TestHelp : public QObject
+{
+    Q_OBJECT
+
+private:
+    MainWindow *m_window = nullptr;
+
+    /// The window's panels that must explain themselves in What's This.
+    QList<QWidget *> panels() const
+    {
+        MainWindow &w = *m_window;
+        return {w.linkageView(), w.variablePanel(), w.playBar(), w.designPanel(), w.valuesTable(), w.mobilityPanel(),
+                w.equationsPanel(), w.workspacePanel(), w.view3d(), w.modeBar()};
+    }
+
+private slots:
+    void initTestCase()
+    {
+        m_window = freshMainWindow(QSize(1280, 720));
+        QVERIFY(m_window);
+    }
+    void cleanupTestCase()
+    {
+        language::apply(QStringLiteral("en"));
+        delete m_window;
+    }
+
+    void guideSources()
+    {
+        QVERIFY(guideSource(QStringLiteral("en")).endsWith(QStringLiteral("guide.en.md")));
+        QVERIFY(guideSource(QStringLiteral("ru")).endsWith(QStringLiteral("guide.ru.md")));
+        QVERIFY(guideSource(QStringLiteral("sr")).endsWith(QStringLiteral("guide.sr.md")));
+        QVERIFY(guideSource(QStringLiteral("sr_Latn")).endsWith(QStringLiteral("guide.sr_Latn.md")));
+        // a language without a guide of its own reads the English one
+        QVERIFY(guideSource(QStringLiteral("de")).endsWith(QStringLiteral("guide.en.md")));
+        // everything the English guide links to is built in
+        QVERIFY(QFile::exists(QStringLiteral(":/guide/docs/cli.md")));
+    }
+
+    void f1OpensTheGuide_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("title");
+        QTest::addColumn<QString>("section");
+        QTest::newRow("en") << QStringLiteral("en") << QStringLiteral("PKM Studio User Guide") << QStringLiteral("In the classroom: Play, bookmarks and presentation mode");
+        QTest::newRow("ru") << QStringLiteral("ru") << QStringLiteral("Руководство пользователя PKM Studio") << QStringLiteral("Активный П-шарнир");
+        QTest::newRow("sr") << QStringLiteral("sr") << QStringLiteral("Упутство за PKM Studio") << QStringLiteral("Активни П-зглоб");
+        QTest::newRow("sr_Latn") << QStringLiteral("sr_Latn") << QStringLiteral("Uputstvo za PKM Studio") << QStringLiteral("Aktivni P-zglob");
+    }
+
+    void f1OpensTheGuide()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, title);
+        QFETCH(QString, section);
+        QVERIFY(language::apply(language));
+        QCoreApplication::processEvents(); // the posted LanguageChange
+        m_window->activateWindow();
+        QTRY_COMPARE(QApplication::activeWindow(), m_window); // F1 is the main window's shortcut
+        QTest::keyClick(m_window, Qt::Key_F1);
+        GuideWindow *guide = m_window->guideWindow();
+        QVERIFY(guide);
+        QTRY_VERIFY(guide->isVisible());
+        QTextDocument *document = guide->browser()->document();
+        const QStringList found = headings(document);
+        QVERIFY2(found.size() >= 4, qPrintable(found.join(QStringLiteral(" | "))));
+        QCOMPARE(found.first(), title);
+        QVERIFY2(found.contains(section), qPrintable(found.join(QStringLiteral(" | "))));
+        const QList<QImage> images = pictures(document);
+        QVERIFY(!images.isEmpty());
+        for (const QImage &image : images) {
+            QVERIFY(!image.isNull());
+            QCOMPARE_GT(image.width(), 300); // a screenshot, not an empty placeholder
+            QCOMPARE_LE(image.width(), 820); // scaled to read beside the text
+        }
+        guide->close();
+    }
+
+    void guideLinksAndFind()
+    {
+        QVERIFY(language::apply(QStringLiteral("ru")));
+        QCoreApplication::processEvents();
+        m_window->showGuide();
+        GuideWindow *guide = m_window->guideWindow();
+        QTextBrowser *browser = guide->browser();
+        // the translation links to the whole English guide, and the link leads there
+        QVERIFY(links(browser->document()).contains(QStringLiteral("guide.en.md")));
+        browser->setSource(browser->source().resolved(QUrl(QStringLiteral("guide.en.md"))));
+        QCOMPARE(headings(browser->document()).value(0), QStringLiteral("PKM Studio User Guide"));
+        QVERIFY(browser->isBackwardAvailable());
+        browser->backward();
+        QCOMPARE(headings(browser->document()).value(0), QStringLiteral("Руководство пользователя PKM Studio"));
+        // Ctrl+F puts the focus in the find field; Enter finds, round the guide
+        guide->activateWindow();
+        QTRY_COMPARE(QApplication::activeWindow(), guide);
+        QTest::keyClick(guide, Qt::Key_F, Qt::ControlModifier);
+        QTRY_VERIFY(guide->findField()->hasFocus());
+        guide->findField()->setText(QStringLiteral("закладк"));
+        QVERIFY(guide->findNext());
+        QCOMPARE(browser->textCursor().selectedText().toLower(), QStringLiteral("закладк"));
+        const int first = browser->textCursor().position();
+        QVERIFY(guide->findNext());
+        QVERIFY(browser->textCursor().position() != first);
+        guide->findField()->setText(QStringLiteral("no such word anywhere"));
+        QVERIFY(!guide->findNext());
+        // a change of language brings the guide of the new language
+        QVERIFY(language::apply(QStringLiteral("en")));
+        QCoreApplication::processEvents();
+        QCOMPARE(headings(browser->document()).value(0), QStringLiteral("PKM Studio User Guide"));
+        guide->close();
+    }
+
+    void whatsThisOnEveryPanel()
+    {
+        QAction *action = m_window->findChild<QAction *>(QStringLiteral("whatsThisAction"));
+        QVERIFY(action);
+        QCOMPARE(action->shortcut(), QKeySequence(Qt::SHIFT | Qt::Key_F1));
+        QVERIFY(language::apply(QStringLiteral("en")));
+        QCoreApplication::processEvents();
+        QStringList english;
+        for (QWidget *panel : panels()) {
+            QVERIFY2(!panel->whatsThis().isEmpty(), panel->metaObject()->className());
+            english << panel->whatsThis();
+        }
+        for (const char *code : {"ru", "sr", "sr_Latn"}) {
+            QVERIFY(language::apply(QString::fromLatin1(code)));
+            QCoreApplication::processEvents();
+            const QList<QWidget *> all = panels();
+            for (int i = 0; i < all.size(); ++i) {
+                const QString text = all[i]->whatsThis();
+                QVERIFY2(!text.isEmpty() && text != english[i],
+                         qPrintable(QStringLiteral("%1 in %2: %3").arg(QString::fromLatin1(all[i]->metaObject()->className()), QString::fromLatin1(code), text)));
+            }
+        }
+        QVERIFY(language::apply(QStringLiteral("en")));
+    }
+
+    void longMessagesAreWhole_data()
+    {
+        QTest::addColumn<QString>("language");
+        for (const char *code : {"en", "ru", "sr", "sr_Latn"})
+            QTest::newRow(code) << QString::fromLatin1(code);
+    }
+
+    /// At 1280×720 the limit and singularity notes, and a long error, are shown whole: in the
+    /// linkage view's toast (wrapped inside the view) and in the status bar.
+    void longMessagesAreWhole()
+    {
+        QFETCH(QString, language);
+        QVERIFY(language::apply(language));
+        QCoreApplication::processEvents(); // the posted LanguageChange
+        MainWindow &w = *m_window;
+        w.resize(1280, 720);
+        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
+        QCoreApplication::processEvents();
+        QStringList messages;
+        const MechanismPtr mechanism = w.document()->mechanism();
+        for (int i = 0; i < int(mechanism->variableInfo().size()); ++i) {
+            for (bool top : {false, true}) {
+                const Interval range = w.document()->mechanism()->variableRange(i);
+                QVERIFY(w.document()->setVariable(i, top ? range.max : range.min));
+                QCoreApplication::processEvents();
+                QVERIFY(!w.linkageView()->message().isEmpty());
+                messages << w.linkageView()->message();
+            }
+        }
+        // an error as long as a failed move's explanation and a reason after it
+        messages << messages.join(QStringLiteral(" "));
+
+        QLabel *readOut = nullptr;
+        for (QLabel *label : w.statusBar()->findChildren<QLabel *>()) {
+            if (!label->text().isEmpty())
+                readOut = label;
+        }
+        QVERIFY(readOut);
+        const QList<QLabel *> permanent = w.statusBar()->findChildren<QLabel *>();
+        for (const QString &message : std::as_const(messages)) {
+            // the toast: every line inside the view, the whole text inside the box
+            LinkageView *view = w.linkageView();
+            const QRectF area(view->rect());
+            const auto layout = ScenePainter::messageLayout(area, message, view->sceneStyle(), view);
+            QVERIFY2(area.contains(layout.box), qPrintable(QStringLiteral("box %1×%2 at %3,%4 in %5×%6: %7").arg(layout.box.width()).arg(layout.box.height()).arg(layout.box.x()).arg(layout.box.y()).arg(area.width()).arg(area.height()).arg(message)));
+            const QFontMetricsF metrics(layout.font, view);
+            const QRectF needed = metrics.boundingRect(layout.text, layout.flags, message);
+            QVERIFY2(layout.text.adjusted(-0.5, -0.5, 0.5, 0.5).contains(needed),
+                     qPrintable(QStringLiteral("“%1” needs %2×%3 px, has %4×%5 px")
+                                    .arg(message).arg(needed.width()).arg(needed.height())
+                                    .arg(layout.text.width()).arg(layout.text.height())));
+            if (metrics.horizontalAdvance(message) > layout.text.width()) // too long for a line: it wraps
+                QCOMPARE_GT(layout.text.height(), 1.5 * metrics.height());
+
+            // the status bar: the text no wider than its room
+            emit w.workspacePanel()->statusMessage(message, true);
+            QCoreApplication::processEvents();
+            QCOMPARE(w.statusBar()->currentMessage(), message);
+            QFont bold = w.statusBar()->font();
+            bold.setBold(true);
+            const int width = QFontMetrics(bold).horizontalAdvance(message);
+            const int room = statusRoom(w.statusBar(), permanent);
+            if (width <= w.statusBar()->width() - 18) { // a message the bar can hold at all
+                QVERIFY2(width <= room, qPrintable(QStringLiteral("“%1” needs %2 px, has %3 px").arg(message).arg(width).arg(room)));
+            }
+            QCOMPARE(w.statusBar()->toolTip(), message); // and whole in the tooltip in any case
+        }
+        // the read-out comes back when the message goes
+        w.statusBar()->clearMessage();
+        QCoreApplication::processEvents();
+        QVERIFY(readOut->isVisible());
+        QVERIFY(w.statusBar()->toolTip().isEmpty());
+    }
+};
+
+QTEST_MAIN(TestHelp)
+#include "tst_help.moc"
