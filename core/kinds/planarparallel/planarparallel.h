@@ -202,7 +202,10 @@ public:
     Eigen::AlignedBox2d workspaceBounds() const override { return m_bounds; }
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
-    std::vector<SingularCurve> singularCurves() const override { return {}; }
+    /// Inverse curves (a leg's crank and link in line, a link ⟂ its guide) and, for 2 DOF,
+    /// direct ones (the distal links in line), traced in closed form (ppcurves.cpp); for 3 DOF
+    /// those of the slice at φ = phi_map (the direct ones contoured, directSlice).
+    std::vector<SingularCurve> singularCurves() const override;
     std::string singularityMeaning(SingularCurve::Type type) const override
     {
         return type == SingularCurve::Type::Inverse ? QT_TRANSLATE_NOOP("core", "a leg's proximal and distal links in line")
@@ -226,6 +229,9 @@ private:
     planar::Reach inverseCheck(const Eigen::Vector3d &X, const Coordinates *reference, Coordinates &q, int &culprit) const;
     std::array<planar::LegCircle, 3> circles(const Coordinates &inputs) const;
     Eigen::AlignedBox2d computeBounds() const;
+    /// The direct singular curves of a 3-DOF platform's slice at φ = phi_map: the zero set of
+    /// det J_x over a grid of the slice (marching squares, each crossing refined by bisection).
+    void directSlice(std::vector<SingularCurve> &curves) const;
     void buildReport();
 
     PlanarParallelDesign m_design;
