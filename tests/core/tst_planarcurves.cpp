@@ -235,6 +235,58 @@ private slots:
             QVERIFY(reached > 100);
         }
     }
+
+    /// The orientation range map: at each reachable cell the platform can be held at the
+    /// middle of every interval found and at φ sampled inside them, and not at φ sampled
+    /// outside them; the map's value is the intervals' total width. Platforms that do not turn
+    /// do not offer it.
+    void orientationRange()
+    {
+        const auto pp = build(threeRrr(0.0));
+        QVERIFY(pp->offers(MapQuantity::OrientationRange));
+        QVERIFY(!build(fiveR())->offers(MapQuantity::OrientationRange));
+        QVERIFY(!makeKind("moma")->planarWorkspace()->offers(MapQuantity::OrientationRange));
+        const MapGrid grid = squareGrid(pp->workspaceBounds(), 24);
+        std::vector<float> values(grid.cells());
+        computeMap(*pp, MapQuantity::OrientationRange, grid, values);
+        int inside = 0, outside = 0, partial = 0;
+        for (int r = 0; r < grid.rows; ++r) {
+            for (int c = 0; c < grid.columns; ++c) {
+                std::array<Interval, 8> found;
+                const Eigen::Vector2d xy(grid.x(c), grid.y(r));
+                const int count = pp->orientationIntervals(xy, found);
+                const float value = values[std::size_t(r) * std::size_t(grid.columns) + std::size_t(c)];
+                QCOMPARE(std::isnan(value), count == 0);
+                double width = 0.0;
+                for (int k = 0; k < count; ++k)
+                    width += found[std::size_t(k)].max - found[std::size_t(k)].min;
+                if (count > 0)
+                    QVERIFY(std::abs(double(value) - width) < 1e-5);
+                if (count > 0 && width < 2 * pi - 1e-9)
+                    ++partial;
+                for (int s = 0; s < 90; ++s) {
+                    const double phi = -pi + (s + 0.5) * 2 * pi / 90;
+                    bool in = false, near = false;
+                    for (int k = 0; k < count; ++k) {
+                        const Interval &f = found[std::size_t(k)];
+                        for (const double turn : {0.0, 2 * pi}) {
+                            in = in || f.contains(phi + turn);
+                            near = near || std::abs(phi + turn - f.min) < 1e-4 || std::abs(phi + turn - f.max) < 1e-4;
+                        }
+                    }
+                    if (near)
+                        continue;
+                    Coordinates x(3);
+                    x << xy.x(), xy.y(), phi;
+                    QCOMPARE(bool(pp->solveInverse(x)), in);
+                    ++(in ? inside : outside);
+                }
+            }
+        }
+        QVERIFY(inside > 1000);
+        QVERIFY(outside > 1000);
+        QVERIFY(partial > 20);
+    }
 };
 
 QTEST_MAIN(TestPlanarCurves)
