@@ -207,9 +207,16 @@ std::vector<ModeAlternative> Mechanism::solveAlternatives(const std::vector<Mode
                                        [&](const ModeAlternative &s) { return s.label == neighbour.label; });
         if (taken || !neighbour.mechanism)
             continue;
-        auto pose2 = neighbour.sameInputs ? neighbour.mechanism->solveDirect(pose.inputs, &pose)
+        // A neighbour keeping the inputs is solved without the pose to follow: a kind whose
+        // direct kinematics continues from that pose (the 3-DOF planar parallel mechanism)
+        // would return to it, and the neighbour's own mode parameters would have no say.
+        auto pose2 = neighbour.sameInputs ? neighbour.mechanism->solveDirect(pose.inputs, nullptr)
                                           : neighbour.mechanism->solveInverse(pose.outputs, &pose);
         if (!pose2)
+            continue;
+        // a mode whose pose is the current one (the solution the design is in already) is no ghost
+        if (neighbour.sameInputs && pose2->outputs.size() == pose.outputs.size()
+            && (pose2->outputs - pose.outputs).norm() <= 1e-9 * std::max(1.0, pose.outputs.norm()))
             continue;
         ModeAlternative alternative = neighbour;
         alternative.pose = *pose2;

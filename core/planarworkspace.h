@@ -20,6 +20,10 @@ namespace pkm {
 enum class MapQuantity {
     Determinant, ///< det J = det J_x / det J_q; 0 at a direct, ±∞ at an inverse singularity
     Condition,   ///< condition number of J (σ_max/σ_min, ≥ 1); +∞ at any singularity
+    /// The orientation range of a platform that turns: the total width of the platform angles
+    /// φ at which it can be held at (x, y) in the design's working modes, rad (0 … 2π); NaN
+    /// where no φ holds it. Only where PlanarWorkspace::offers() says so.
+    OrientationRange,
 };
 
 /// A regular grid of cell centres over a box: cell (column c, row r) has its centre at
@@ -73,6 +77,9 @@ public:
     /// The areas known exactly, the design's own modes first (key "area"); none by default,
     /// where only the grid estimates the area.
     virtual std::vector<ExactArea> exactAreas() const { return {}; }
+    /// Whether fillMapRow() maps `quantity`: det J and κ everywhere, the orientation range only
+    /// for a platform that turns (a 3-DOF planar parallel design).
+    virtual bool offers(MapQuantity quantity) const { return quantity != MapQuantity::OrientationRange; }
 };
 
 /// Below this margin a cell counts as near-singular (≈ 3° from the singular pose).

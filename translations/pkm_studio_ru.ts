@@ -3716,6 +3716,62 @@ Please verify the correct file name was given.</source>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
         <translation>Ветвь %1 (%2): якобиан входа (0: особое положение обратной кинематики)</translation>
     </message>
+    <message>
+        <source>assembly mode 1 (same inputs)</source>
+        <translation>режим сборки 1 (те же входы)</translation>
+    </message>
+    <message>
+        <source>assembly mode 2 (same inputs)</source>
+        <translation>режим сборки 2 (те же входы)</translation>
+    </message>
+    <message>
+        <source>assembly mode 3 (same inputs)</source>
+        <translation>режим сборки 3 (те же входы)</translation>
+    </message>
+    <message>
+        <source>assembly mode 4 (same inputs)</source>
+        <translation>режим сборки 4 (те же входы)</translation>
+    </message>
+    <message>
+        <source>assembly mode 5 (same inputs)</source>
+        <translation>режим сборки 5 (те же входы)</translation>
+    </message>
+    <message>
+        <source>assembly mode 6 (same inputs)</source>
+        <translation>режим сборки 6 (те же входы)</translation>
+    </message>
+    <message>
+        <source>leg 1 stretched (crank and link in line)</source>
+        <translation>ветвь 1 вытянута (кривошип и звено на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 1 folded (crank and link in line)</source>
+        <translation>ветвь 1 сложена (кривошип и звено на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 2 stretched (crank and link in line)</source>
+        <translation>ветвь 2 вытянута (кривошип и звено на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 2 folded (crank and link in line)</source>
+        <translation>ветвь 2 сложена (кривошип и звено на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 3 stretched (crank and link in line)</source>
+        <translation>ветвь 3 вытянута (кривошип и звено на одной прямой)</translation>
+    </message>
+    <message>
+        <source>leg 3 folded (crank and link in line)</source>
+        <translation>ветвь 3 сложена (кривошип и звено на одной прямой)</translation>
+    </message>
+    <message>
+        <source>link 3 ⟂ guide 3</source>
+        <translation>звено 3 ⟂ направляющей 3</translation>
+    </message>
+    <message>
+        <source>distal lines through one point</source>
+        <translation>дистальные прямые через одну точку</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -3716,6 +3716,62 @@ Please verify the correct file name was given.</source>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
         <translation>Нога %1 (%2): Јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
     </message>
+    <message>
+        <source>assembly mode 1 (same inputs)</source>
+        <translation>склопни режим 1 (исти улази)</translation>
+    </message>
+    <message>
+        <source>assembly mode 2 (same inputs)</source>
+        <translation>склопни режим 2 (исти улази)</translation>
+    </message>
+    <message>
+        <source>assembly mode 3 (same inputs)</source>
+        <translation>склопни режим 3 (исти улази)</translation>
+    </message>
+    <message>
+        <source>assembly mode 4 (same inputs)</source>
+        <translation>склопни режим 4 (исти улази)</translation>
+    </message>
+    <message>
+        <source>assembly mode 5 (same inputs)</source>
+        <translation>склопни режим 5 (исти улази)</translation>
+    </message>
+    <message>
+        <source>assembly mode 6 (same inputs)</source>
+        <translation>склопни режим 6 (исти улази)</translation>
+    </message>
+    <message>
+        <source>leg 1 stretched (crank and link in line)</source>
+        <translation>нога 1 опружена (полуга и спојка на истој правој)</translation>
+    </message>
+    <message>
+        <source>leg 1 folded (crank and link in line)</source>
+        <translation>нога 1 пресавијена (полуга и спојка на истој правој)</translation>
+    </message>
+    <message>
+        <source>leg 2 stretched (crank and link in line)</source>
+        <translation>нога 2 опружена (полуга и спојка на истој правој)</translation>
+    </message>
+    <message>
+        <source>leg 2 folded (crank and link in line)</source>
+        <translation>нога 2 пресавијена (полуга и спојка на истој правој)</translation>
+    </message>
+    <message>
+        <source>leg 3 stretched (crank and link in line)</source>
+        <translation>нога 3 опружена (полуга и спојка на истој правој)</translation>
+    </message>
+    <message>
+        <source>leg 3 folded (crank and link in line)</source>
+        <translation>нога 3 пресавијена (полуга и спојка на истој правој)</translation>
+    </message>
+    <message>
+        <source>link 3 ⟂ guide 3</source>
+        <translation>спојка 3 ⟂ вођици 3</translation>
+    </message>
+    <message>
+        <source>distal lines through one point</source>
+        <translation>дисталне праве кроз једну тачку</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

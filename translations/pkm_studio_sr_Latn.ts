@@ -3716,6 +3716,62 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
         <translation>Noga %1 (%2): Jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
     </message>
+    <message>
+        <source>assembly mode 1 (same inputs)</source>
+        <translation>sklopni režim 1 (isti ulazi)</translation>
+    </message>
+    <message>
+        <source>assembly mode 2 (same inputs)</source>
+        <translation>sklopni režim 2 (isti ulazi)</translation>
+    </message>
+    <message>
+        <source>assembly mode 3 (same inputs)</source>
+        <translation>sklopni režim 3 (isti ulazi)</translation>
+    </message>
+    <message>
+        <source>assembly mode 4 (same inputs)</source>
+        <translation>sklopni režim 4 (isti ulazi)</translation>
+    </message>
+    <message>
+        <source>assembly mode 5 (same inputs)</source>
+        <translation>sklopni režim 5 (isti ulazi)</translation>
+    </message>
+    <message>
+        <source>assembly mode 6 (same inputs)</source>
+        <translation>sklopni režim 6 (isti ulazi)</translation>
+    </message>
+    <message>
+        <source>leg 1 stretched (crank and link in line)</source>
+        <translation>noga 1 opružena (poluga i spojka na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 1 folded (crank and link in line)</source>
+        <translation>noga 1 presavijena (poluga i spojka na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 2 stretched (crank and link in line)</source>
+        <translation>noga 2 opružena (poluga i spojka na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 2 folded (crank and link in line)</source>
+        <translation>noga 2 presavijena (poluga i spojka na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 3 stretched (crank and link in line)</source>
+        <translation>noga 3 opružena (poluga i spojka na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>leg 3 folded (crank and link in line)</source>
+        <translation>noga 3 presavijena (poluga i spojka na istoj pravoj)</translation>
+    </message>
+    <message>
+        <source>link 3 ⟂ guide 3</source>
+        <translation>spojka 3 ⟂ vođici 3</translation>
+    </message>
+    <message>
+        <source>distal lines through one point</source>
+        <translation>distalne prave kroz jednu tačku</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -308,9 +308,10 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             }
             invocation.grid = static_cast<int>(*number);
         } else if (option == "--quantity") {
-            if (value != "det" && value != "cond") {
+            if (value != "det" && value != "cond" && value != "range") {
                 return usageFailure("--quantity",
-                    context + ": the quantity must be 'det' (det J) or 'cond' (the condition number of J).");
+                    context + ": the quantity must be 'det' (det J), 'cond' (the condition number of J) or 'range' (the "
+                              "orientation range of a platform that turns).");
             }
             invocation.quantity = value;
         } else if (flag == OptionOutput) {

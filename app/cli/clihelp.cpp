@@ -20,7 +20,7 @@ Commands:
   workspace DESIGN [--grid K] [--set N=V]... [--json] [-o FILE.png|.svg]
                                            reachable workspace: area, bounds, the area
                                            of every assembly/working mode
-  map    DESIGN [--grid K] [--quantity det|cond] [--set N=V]... [--json]
+  map    DESIGN [--grid K] [--quantity det|cond|range] [--set N=V]... [--json]
          [-o FILE.png|.csv]                singularity map over the workspace
   render DESIGN [--set N=V]... [--view 2d|3d] [--size WxH] [--camera front|top|side|iso]
          [--orthographic] [--no-caption] -o FILE.png|.svg|.pdf
@@ -188,7 +188,7 @@ anything is printed. An empty workspace (no reachable cell) exits with status 3.
 )";
 
 constexpr std::string_view mapHelp
-    = R"(Usage: pkm map DESIGN [--grid K] [--quantity det|cond] [--set NAME=VALUE]... [--json]
+    = R"(Usage: pkm map DESIGN [--grid K] [--quantity det|cond|range] [--set NAME=VALUE]... [--json]
                [-o FILE.png|FILE.csv]
 
 Computes a singularity map over the workspace of a mechanism whose output is a point of the
@@ -201,6 +201,8 @@ and the greatest finite value, the number of near-singular cells (singularity ma
                       4000 (default 400)
   --quantity det      det J (the default): 0 at a direct singularity, ±∞ at an inverse one
   --quantity cond     the condition number of J (>= 1, ∞ at any singularity)
+  --quantity range    a platform that turns (3-DOF planar-parallel): at each (x, y) the
+                      total width of the angles φ at which it can be held, in degrees
   --set NAME=VALUE    applied first, as in 'pkm eval'
   --json              {"design", "mechanism", "parameters", "quantity", "grid":
                        {"resolution", "columns", "rows", "x_min", "x_max", "y_min",

@@ -8,6 +8,7 @@
 #include "report/report.h"
 #include "report/texttable.h"
 #include "report/workspaceoutline.h"
+#include "units.h"
 
 #include <QByteArray>
 
@@ -75,12 +76,14 @@ void appendFloat(std::string &out, float value)
 
 std::string_view quantityKey(MapQuantity quantity)
 {
-    return quantity == MapQuantity::Condition ? "cond" : "det";
+    return quantity == MapQuantity::Condition ? "cond" : quantity == MapQuantity::OrientationRange ? "range" : "det";
 }
 
 std::string_view quantityTitle(MapQuantity quantity)
 {
-    return quantity == MapQuantity::Condition ? "condition number of J" : "det J";
+    return quantity == MapQuantity::Condition          ? "condition number of J"
+        : quantity == MapQuantity::OrientationRange ? "orientation range (°)"
+                                                       : "det J";
 }
 
 /// "Active П-joint" → "active П-joint"; "MOMA …" stays.
@@ -391,11 +394,26 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
 int runMap(const Context &context, const PlanarWorkspace &workspace)
 {
     const Mechanism &mechanism = *context.prepared.mechanism;
-    const MapQuantity quantity
-        = context.invocation.quantity.value_or("det") == "cond" ? MapQuantity::Condition : MapQuantity::Determinant;
+    const std::string asked = context.invocation.quantity.value_or("det");
+    const MapQuantity quantity = asked == "cond" ? MapQuantity::Condition
+        : asked == "range"                       ? MapQuantity::OrientationRange
+                                                 : MapQuantity::Determinant;
+    if (!workspace.offers(quantity)) {
+        return failWith(context.err,
+            usageFailure("--quantity",
+                "'--quantity range' maps the orientation range of a platform that turns (a 3-DOF planar-parallel "
+                "design); the platform of " + context.prepared.origin + " does not turn."));
+    }
     ComputedMap map;
     map.summary = computeInto(workspace, quantity, context.resolution, map.values, &map.margins);
     map.grid = map.summary.grid;
+    if (quantity == MapQuantity::OrientationRange) {
+        // the core maps radians; the command line gives angles in degrees, as everywhere
+        for (float &value : map.values)
+            value = static_cast<float>(value / units::degree);
+        map.summary.min /= units::degree;
+        map.summary.max /= units::degree;
+    }
     if (auto empty = emptyWorkspace(context, map.summary))
         return failWith(context.err, *empty);
     const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
@@ -417,7 +435,7 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
             return CliOutputError;
         }
     }
-    const double colourMin = quantity == MapQuantity::Condition ? 1.0 : -limit;
+    const double colourMin = quantity == MapQuantity::Condition ? 1.0 : quantity == MapQuantity::OrientationRange ? 0.0 : -limit;
 
     std::string out;
     if (context.invocation.json) {
@@ -462,7 +480,9 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
         if (png) {
             std::string scale("[");
             scale += shortNumber(colourMin) + ", " + shortNumber(limit) + "]";
-            table.cells({"colours", scale, quantity == MapQuantity::Condition ? "log scale" : "linear, clipped"});
+            table.cells({"colours", scale, quantity == MapQuantity::Condition ? "log scale"
+                                               : quantity == MapQuantity::OrientationRange ? "linear"
+                                                                                           : "linear, clipped"});
         }
         table.cells({"time", fixedText(map.summary.seconds, 3), "s"});
         table.render(out);

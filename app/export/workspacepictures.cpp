@@ -134,6 +134,8 @@ QImage mapImage(const MapGrid &grid, std::span<const float> values, MapQuantity 
             if (quantity == MapQuantity::Condition) {
                 const double t = std::isinf(value) ? 1.0 : std::log(std::max(value, 1.0)) / logLimit;
                 line[c] = interpolate(sequential, t);
+            } else if (quantity == MapQuantity::OrientationRange) {
+                line[c] = interpolate(sequential, std::clamp(value / limit, 0.0, 1.0));
             } else {
                 const double t = 0.5 + 0.5 * std::clamp(value / limit, -1.0, 1.0);
                 line[c] = interpolate(diverging, t);

@@ -225,6 +225,8 @@ double mapColourLimit(std::span<const float> values, MapQuantity quantity)
 {
     if (quantity == MapQuantity::Condition)
         return conditionColourLimit;
+    if (quantity == MapQuantity::OrientationRange)
+        return 360.0; // a full turn, in the degrees the command line maps
     std::vector<float> magnitudes;
     for (float value : values) {
         if (std::isfinite(value))

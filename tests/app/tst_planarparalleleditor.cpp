@@ -12,6 +12,7 @@
 #include "kinds/planarparallel/planarparallelpanel.h"
 #include "kinds/workspacepanel.h"
 #include "linkageview.h"
+#include "modebar.h"
 #include "workspacemapview.h"
 #include "support/app.h"
 
@@ -209,6 +210,51 @@ private slots:
         QVERIFY2(QString::fromStdString(moved.failure().message).contains(QStringLiteral("leg 1")),
                  moved.failure().message.c_str());
         QCOMPARE(m_window->document()->mechanism(), kept);
+    }
+
+    /// The 3-RPR's other assembly modes: every real direct solution at the current inputs is a
+    /// ghost (the preset's home pose has six, so five ghosts), each a pose of the legs at the
+    /// same inputs; switching to one is one undoable step, and a drag from there stays in it.
+    void showsTheOtherAssemblyModesAsGhosts()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("pp-3rpr")));
+        Document *document = m_window->document();
+        const Pose home = document->pose();
+        const auto alternatives = document->modeAlternatives();
+        QCOMPARE(int(alternatives.size()), 5);
+        std::vector<Pose> poses{home};
+        for (const ModeAlternative &alternative : alternatives) {
+            QVERIFY(alternative.sameInputs);
+            QVERIFY(alternative.pose.inputs.isApprox(home.inputs, 1e-12));
+            for (const Pose &seen : poses)
+                QVERIFY((alternative.pose.outputs - seen.outputs).norm() > 1e-6);
+            // the legs hold that pose at the same inputs
+            auto back = document->mechanism()->solveInverse(alternative.pose.outputs, &home);
+            QVERIFY(back.ok());
+            QVERIFY((back->inputs - home.inputs).norm() < 1e-9);
+            poses.push_back(alternative.pose);
+        }
+        ModeBar *bar = m_window->modeBar();
+        QCOMPARE(bar->labels().size(), 5);
+        QCOMPARE(m_window->linkageView()->ghostScenes().size(), 5);
+        const double assembly = document->mechanism()->parameters().at("assembly");
+        const int steps = document->undoStack()->index();
+        const ModeAlternative target = alternatives.back();
+        QTest::mouseClick(bar->button(int(alternatives.size()) - 1), Qt::LeftButton);
+        QCOMPARE(document->undoStack()->index(), steps + 1);
+        QVERIFY((document->pose().outputs - target.pose.outputs).norm() < 1e-9);
+        QCOMPARE(document->mechanism()->parameters().at("assembly"), target.changes.at("assembly"));
+        // the ghosts now show the other five, the pose left among them
+        const auto after = document->modeAlternatives();
+        QCOMPARE(int(after.size()), 5);
+        QVERIFY(std::any_of(after.begin(), after.end(),
+                            [&](const ModeAlternative &a) { return (a.pose.outputs - home.outputs).norm() < 1e-9; }));
+        // a small move of an input follows the new mode by continuation
+        QVERIFY(document->setVariable(0, document->pose().inputs[0] + 0.05).ok());
+        QVERIFY((document->pose().outputs.head<2>() - target.pose.outputs.head<2>()).norm() < 1.0);
+        document->undoStack()->setIndex(steps);
+        QCOMPARE(document->mechanism()->parameters().at("assembly"), assembly);
+        QVERIFY((document->pose().outputs - home.outputs).norm() < 1e-9);
     }
 };
 

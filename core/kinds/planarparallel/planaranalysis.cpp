@@ -175,6 +175,17 @@ std::vector<ModeAlternative> PlanarParallel::modeNeighbours() const
         for (int i = 0; i < n; ++i) // mirrored across C₁C₂, a leg may flip its working mode too
             add(label, {{"assembly", -double(m_design.assembly)}, {joinText({"working", number(i)}), -double(m_design.legs[std::size_t(i)].working)}}, true);
     }
+    if (n == 3) {
+        // every real solution of the direct kinematics at the pose's inputs: the neighbour with
+        // assembly = k, solved without a pose to follow, takes the k-th in order of φ (a 3-RPR
+        // has up to six; Mechanism::solveAlternatives drops the one the pose is in)
+        static const std::array<const char *, 6> assemblyLabels = {
+            QT_TRANSLATE_NOOP("core", "assembly mode 1 (same inputs)"), QT_TRANSLATE_NOOP("core", "assembly mode 2 (same inputs)"),
+            QT_TRANSLATE_NOOP("core", "assembly mode 3 (same inputs)"), QT_TRANSLATE_NOOP("core", "assembly mode 4 (same inputs)"),
+            QT_TRANSLATE_NOOP("core", "assembly mode 5 (same inputs)"), QT_TRANSLATE_NOOP("core", "assembly mode 6 (same inputs)")};
+        for (int k = 1; k <= 6; ++k)
+            add(assemblyLabels[std::size_t(k - 1)], {{"assembly", double(k)}}, true);
+    }
     static const std::array<const char *, 3> labels = {QT_TRANSLATE_NOOP("core", "leg 1: other working mode (same platform pose)"),
                                                        QT_TRANSLATE_NOOP("core", "leg 2: other working mode (same platform pose)"),
                                                        QT_TRANSLATE_NOOP("core", "leg 3: other working mode (same platform pose)")};

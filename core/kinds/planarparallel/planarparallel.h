@@ -202,7 +202,21 @@ public:
     Eigen::AlignedBox2d workspaceBounds() const override { return m_bounds; }
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
-    std::vector<SingularCurve> singularCurves() const override { return {}; }
+    /// Inverse curves (a leg's crank and link in line, a link ⟂ its guide) and, for 2 DOF,
+    /// direct ones (the distal links in line), traced in closed form (ppcurves.cpp); for 3 DOF
+    /// those of the slice at φ = phi_map (the direct ones contoured, directSlice).
+    std::vector<SingularCurve> singularCurves() const override;
+    bool offers(MapQuantity quantity) const override
+    {
+        return quantity != MapQuantity::OrientationRange || m_design.legCount() == 3;
+    }
+    /// The platform angles at which a 3-DOF platform can be held at (x, y) in the design's
+    /// working modes and input ranges: up to intervals.size() disjoint intervals, each with its
+    /// min in [−π, π) and its max up to min + 2π (one that runs through ±π is one interval);
+    /// the count is returned. Found on a scan of φ in steps of 3°, the ends refined by bisection
+    /// (an interval narrower than the step can be missed). `margin`, if given, receives the
+    /// singularity margin at the middle of the widest interval (ppcurves.cpp).
+    int orientationIntervals(const Eigen::Vector2d &xy, std::span<Interval> intervals, double *margin = nullptr) const;
     std::string singularityMeaning(SingularCurve::Type type) const override
     {
         return type == SingularCurve::Type::Inverse ? QT_TRANSLATE_NOOP("core", "a leg's proximal and distal links in line")
@@ -226,6 +240,9 @@ private:
     planar::Reach inverseCheck(const Eigen::Vector3d &X, const Coordinates *reference, Coordinates &q, int &culprit) const;
     std::array<planar::LegCircle, 3> circles(const Coordinates &inputs) const;
     Eigen::AlignedBox2d computeBounds() const;
+    /// The direct singular curves of a 3-DOF platform's slice at φ = phi_map: the zero set of
+    /// det J_x over a grid of the slice (marching squares, each crossing refined by bisection).
+    void directSlice(std::vector<SingularCurve> &curves) const;
     void buildReport();
 
     PlanarParallelDesign m_design;

@@ -98,6 +98,21 @@ void PlanarParallel::fillMapRow(MapQuantity quantity, double y, double x0, doubl
     const int n = m_design.legCount();
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const double phi = n == 3 ? m_design.mapPhi : 0.0;
+    if (quantity == MapQuantity::OrientationRange) {
+        // the total width of the reachable φ at each (x, y); 2-DOF platforms never turn
+        std::array<Interval, 8> found;
+        for (std::size_t c = 0; c < values.size(); ++c) {
+            double margin = 0.0;
+            const int count = n == 3 ? orientationIntervals({x0 + double(c) * dx, y}, found, &margin) : 0;
+            double width = 0.0;
+            for (int k = 0; k < count; ++k)
+                width += found[std::size_t(k)].max - found[std::size_t(k)].min;
+            values[c] = count > 0 ? static_cast<float>(width) : nan;
+            if (!margins.empty())
+                margins[c] = count > 0 ? static_cast<float>(margin) : nan;
+        }
+        return;
+    }
     Pose pose;
     pose.outputs.resize(n);
     for (std::size_t c = 0; c < values.size(); ++c) {
