@@ -127,4 +127,27 @@ void fitText(QCPTextElement *element)
     element->setText(wrapped(text, element->font(), element->parentPlot()->width() - 16));
 }
 
+namespace {
+const char *fullNameProperty = "pkmFullName"; ///< a legend name before it was broken into lines
+} // namespace
+
+void wrapLegendNames(QCustomPlot *plot)
+{
+    const QCPLegend *legend = plot->legend;
+    const int room = plot->width() - legend->margins().left() - legend->margins().right() - legend->iconSize().width()
+        - legend->iconTextPadding() - 12;
+    for (int j = 0; j < plot->plottableCount(); ++j) {
+        QCPAbstractPlottable *plottable = plot->plottable(j);
+        if (!plottable->property(fullNameProperty).isValid())
+            plottable->setProperty(fullNameProperty, plottable->name());
+        plottable->setName(wrapped(plottable->property(fullNameProperty).toString(), legend->font(), room));
+    }
+}
+
+void forgetLegendNames(QCustomPlot *plot)
+{
+    for (int j = 0; j < plot->plottableCount(); ++j)
+        plot->plottable(j)->setProperty(fullNameProperty, QVariant());
+}
+
 } // namespace pkm::plotstyle

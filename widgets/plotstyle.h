@@ -44,5 +44,10 @@ void fitText(QCPTextElement *element);
 /// `text` broken into lines no wider than `width` pixels in `font` (after "; " if that is
 /// enough, else between words); unchanged where it fits or `width` is not positive.
 QString wrapped(const QString &text, const QFont &font, int width);
+/// Breaks every legend name of `plot` into lines no wider than the legend's room in one
+/// column, from the name as it was first given (kept by the plottable); call again on a resize.
+void wrapLegendNames(QCustomPlot *plot);
+/// Forgets the kept names, after the plottables were given new ones (a new language).
+void forgetLegendNames(QCustomPlot *plot);
 
 } // namespace pkm::plotstyle

@@ -284,6 +284,7 @@ bool PJointPlots::eventFilter(QObject *watched, QEvent *event)
                 continue;
             if (event->type() == QEvent::Resize) {
                 fitToWidth(i);
+                plotstyle::fitText(m_panels[i].title);
                 plotstyle::fitText(m_panels[i].subtitle);
             }
             else
@@ -391,7 +392,10 @@ void PJointPlots::fitToWidth(int index)
     qSharedPointerCast<QCPAxisTickerFixed>(plot->xAxis->ticker())
         ->setTickStep(pjointcurves::thetaStep(plot->xAxis->range().size(), axisPixels));
 
-    // As many legend columns as the width allows, balanced over the rows.
+    // A name longer than the plot is wide wraps rather than run off its edge (a narrow
+    // projector screen, a longer language); then as many legend columns as the width allows,
+    // balanced over the rows.
+    plotstyle::wrapLegendNames(plot);
     QCPLegend *legend = plot->legend;
     int count = 0;
     int widest = 0;
@@ -461,7 +465,8 @@ void PJointPlots::retranslate()
         Panel &p = m_panels[i];
         if (p.plot->locale() != tickLocale)
             p.plot->setLocale(tickLocale);
-        p.title->setText(titles[size_t(i)]);
+        plotstyle::forgetLegendNames(p.plot); // the names below are new: fitToWidth() wraps them
+        plotstyle::setFittedText(p.title, titles[size_t(i)]);
         plotstyle::setFittedText(p.subtitle, subtitles[size_t(i)]);
         p.plot->xAxis->setLabel(tr("θ (°)"));
         // The dot of θ̇ is lost in a rotated label at this size: spell the derivative out.
