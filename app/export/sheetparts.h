@@ -23,6 +23,7 @@ struct Parts {
     Section ranges;
     Section keyPoses;
     Section checks;
+    Section capability; ///< what the actuators deliver at the sheet's pose
     Section workspace;
     Section singular;
     Section plots;
