@@ -43,7 +43,7 @@ ReportLayout makeLayout(int n, bool rotary, bool measured)
         l.add(G, "stiffness", "K", QT_TRANSLATE_NOOP("core", "stiffness K = Jᵀ·K_q·J"), stiffness, 1, n, n);
     l.add(G, "stiffness_worst", "K_min", QT_TRANSLATE_NOOP("core", "stiffness in the weakest direction"), stiffness, 1);
     if (measured)
-        l.add(G, "stiffness_measured", "K_meas",
+        l.add(G, "stiffness_measured", "K_m",
               QT_TRANSLATE_NOOP("core", "measured static stiffness of the whole joint (the document)"), units::newtonMetrePerRadian,
               0);
     // where J is unbounded (inverse) or singular (direct): see capability.h
@@ -164,6 +164,20 @@ Actuators actuatorsOf(const Mechanism &mechanism)
         }
     }
     value("stiffness_measured", a.measuredStiffness);
+    const Pose home = mechanism.homePose();
+    const Jacobians j = mechanism.jacobians(home);
+    Matrix jq(a.count, a.count), jx(a.count, a.count);
+    for (int r = 0; r < a.count; ++r) {
+        for (int c = 0; c < a.count; ++c) {
+            jq(r, c) = j.inputs(a.inputs[std::size_t(r)], a.inputs[std::size_t(c)]);
+            jx(r, c) = j.outputs(a.inputs[std::size_t(r)], c);
+        }
+    }
+    const Matrix G = jx.partialPivLu().solve(jq);
+    for (int i = 0; i < a.count; ++i) {
+        const double norm = G.col(i).norm();
+        a.transmission[std::size_t(i)] = std::isfinite(norm) ? norm : 0.0;
+    }
     return a;
 }
 
@@ -204,7 +218,17 @@ void evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, Si
     }
     // J = J_q⁻¹·J_x and G = J_x⁻¹·J_q; each is inf/NaN only where the marks replace what uses it
     const Matrix J = jq.partialPivLu().solve(jx);
-    const Matrix G = jx.partialPivLu().solve(jq);
+    Matrix G = jx.partialPivLu().solve(jq);
+    if (type == SingularityType::Inverse || type == SingularityType::Combined) {
+        // An actuator whose leg is stretched moves the platform no more: at a pose the kind
+        // classifies singular (its margin below 10⁻⁷) its column of G is exactly 0, not the
+        // 10⁻⁸ of a hair inside, which would make the weakest force 10⁸ N (both legs of a
+        // five-bar stretched: the platform is locked, and holds any force)
+        for (int i = 0; i < n; ++i) {
+            if (G.col(i).norm() <= 1e-6 * actuators.transmission[std::size_t(i)])
+                G.col(i).setZero();
+        }
+    }
     const double toOutput = actuators.rotaryOutput ? 1.0 / perMetre : 1.0;
 
     values[SlotForceWorst] = inscribedRadius(G.transpose(), effort, t) * toOutput;

@@ -70,6 +70,10 @@ struct Actuators {
     bool rotaryOutput = false; ///< the output is an angle (the П-joint, the four-bar)
     int outputs = 0;           ///< platform coordinates: 1, 2 or 3 (x, y, φ)
     double measuredStiffness = 0.0; ///< stiffness_measured, N·m/rad; 0: none given
+    /// |G·e_i| at the home pose: how far actuator i moves the platform per unit of its own
+    /// motion at a typical pose, the scale against which a pose classified inverse-singular
+    /// tells an actuator that no longer moves the platform (0: unknown).
+    std::array<double, maxActuators> transmission{};
 };
 
 /// Small matrices on the stack (at most 3×3), so that evaluate() does not allocate.
