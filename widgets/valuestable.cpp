@@ -94,6 +94,10 @@ void ValuesTable::setMechanism(const MechanismPtr &mechanism)
             || was.cols != is.cols || was.label != is.label || was.symbol != is.symbol;
     }
     m_mechanism = mechanism;
+    m_actuators = capability::actuatorsOf(*mechanism);
+    const ReportLayout *capabilityLayout = capability::layoutFor(m_actuators);
+    rebuildNeeded = rebuildNeeded || capabilityLayout != m_capabilityLayout;
+    m_capabilityLayout = capabilityLayout;
     if (rebuildNeeded) {
         m_pose.reset(); // a pose of another kind of mechanism
         rebuild();
@@ -116,18 +120,29 @@ void ValuesTable::rebuild()
         item->setFont(0, groupFont);
         item->setBackground(0, QColor(0xe8, 0xee, 0xf4));
     };
-    for (const ReportEntry &entry : layout.entries) {
-        if (!current || *current != entry.group) {
-            current = entry.group;
-            addGroup(groupTitle(entry.group));
-        }
+    const auto addItem = [&](const ReportEntry &entry) {
         const QString label = coreLabel(entry.label);
         auto *item = new QTreeWidgetItem(this, {toQString(entry.symbol), QString(), label});
         item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
         item->setData(0, Qt::UserRole, toQString(entry.name));
         item->setToolTip(2, label); // the column may be too narrow for it
         item->setToolTip(0, label); // or off the dock's edge: the symbol tells what it is
-        m_items.push_back(item);
+        return item;
+    };
+    for (const ReportEntry &entry : layout.entries) {
+        if (!current || *current != entry.group) {
+            current = entry.group;
+            addGroup(groupTitle(entry.group));
+        }
+        m_items.push_back(addItem(entry));
+    }
+    m_capabilityItems.clear();
+    m_capabilityValues.clear();
+    if (m_capabilityLayout) {
+        addGroup(tr("Capability"));
+        m_capabilityValues.assign(std::size_t(m_capabilityLayout->size), 0.0);
+        for (const ReportEntry &entry : m_capabilityLayout->entries)
+            m_capabilityItems.push_back(addItem(entry));
     }
     addGroup(tr("Singularity"));
     m_singularity = new QTreeWidgetItem(this, {tr("class"), QString(), tr("none, inverse, direct or combined")});
@@ -142,34 +157,19 @@ void ValuesTable::setPose(const Pose &pose)
     const Singularity singularity = m_mechanism->evaluate(pose, m_values);
     const ReportLayout &layout = m_mechanism->reportLayout();
     qsizetype widest = 0;
-    for (std::size_t i = 0; i < layout.entries.size(); ++i) {
-        const ReportEntry &entry = layout.entries[i];
-        QString text;
-        const auto first = m_values.begin() + entry.offset;
-        const bool unbounded = std::all_of(first, first + entry.rows * entry.cols, [](double v) { return std::isinf(v); });
-        if (entry.rows * entry.cols == 1 || unbounded) {
-            // a matrix that does not exist at a singular pose (J at an inverse one) is ∞ as a whole
-            text = formatQuantity(m_values[entry.offset], entry.unit, entry.decimals);
-        } else {
-            // a matrix row by row, "[a, b; c, d] mm": the unit once, so it fits the dock; where
-            // the comma is the decimal point the elements part with ";" and the rows with "|",
-            // "[80,0; 138,6 | −80,0; 138,6]"
-            const bool comma = QLocale().decimalPoint() == QStringLiteral(",");
-            QStringList rows;
-            for (int r = 0; r < entry.rows; ++r) {
-                QStringList row;
-                for (int c = 0; c < entry.cols; ++c)
-                    row << formatQuantity(m_values[entry.offset + r * entry.cols + c], units::none, entry.decimals);
-                rows << row.join(comma ? QStringLiteral("; ") : QStringLiteral(", "));
-            }
-            text = QLatin1Char('[') + rows.join(comma ? QStringLiteral(" | ") : QStringLiteral("; ")) + QLatin1Char(']');
-            if (!entry.unit.symbol.empty())
-                text += QLatin1Char(' ') + unitText(entry.unit);
-        }
+    const auto show = [&](QTreeWidgetItem *item, const ReportEntry &entry, const std::vector<double> &values) {
+        const QString text = entryText(entry, values);
         widest = std::max(widest, text.size());
-        m_items[i]->setText(1, text);
+        item->setText(1, text);
         if (entry.rows * entry.cols > 1)
-            m_items[i]->setToolTip(1, text); // the column may cut a matrix
+            item->setToolTip(1, text); // the column may cut a matrix
+    };
+    for (std::size_t i = 0; i < layout.entries.size(); ++i)
+        show(m_items[i], layout.entries[i], m_values);
+    if (m_capabilityLayout) {
+        capability::evaluate(*m_mechanism, m_actuators, pose, singularity.type, m_capabilityValues);
+        for (std::size_t i = 0; i < m_capabilityLayout->entries.size(); ++i)
+            show(m_capabilityItems[i], m_capabilityLayout->entries[i], m_capabilityValues);
     }
     QString text = singularityText(singularity.type);
     if (singularity.type == SingularityType::None)
@@ -184,13 +184,40 @@ void ValuesTable::setPose(const Pose &pose)
                                                                             : QColor(0xb3, 0x26, 0x1e));
 }
 
+QString ValuesTable::entryText(const ReportEntry &entry, const std::vector<double> &values) const
+{
+    const auto first = values.begin() + entry.offset;
+    const bool unbounded = std::all_of(first, first + entry.rows * entry.cols, [](double v) { return std::isinf(v); });
+    if (entry.rows * entry.cols == 1 || unbounded) {
+        // a matrix that does not exist at a singular pose (J at an inverse one) is ∞ as a whole
+        return formatQuantity(values[std::size_t(entry.offset)], entry.unit, entry.decimals);
+    }
+    // a matrix row by row, "[a, b; c, d] mm": the unit once, so it fits the dock; where the
+    // comma is the decimal point the elements part with ";" and the rows with "|",
+    // "[80,0; 138,6 | −80,0; 138,6]"
+    const bool comma = QLocale().decimalPoint() == QStringLiteral(",");
+    QStringList rows;
+    for (int r = 0; r < entry.rows; ++r) {
+        QStringList row;
+        for (int c = 0; c < entry.cols; ++c)
+            row << formatQuantity(values[std::size_t(entry.offset + r * entry.cols + c)], units::none, entry.decimals);
+        rows << row.join(comma ? QStringLiteral("; ") : QStringLiteral(", "));
+    }
+    QString text = QLatin1Char('[') + rows.join(comma ? QStringLiteral(" | ") : QStringLiteral("; ")) + QLatin1Char(']');
+    if (!entry.unit.symbol.empty())
+        text += QLatin1Char(' ') + unitText(entry.unit);
+    return text;
+}
+
 QString ValuesTable::valueText(const QString &name) const
 {
     if (name == QLatin1String("singularity"))
         return m_singularity ? m_singularity->text(1) : QString();
-    for (const QTreeWidgetItem *item : m_items) {
-        if (item->data(0, Qt::UserRole).toString() == name)
-            return item->text(1);
+    for (const auto *items : {&m_items, &m_capabilityItems}) {
+        for (const QTreeWidgetItem *item : *items) {
+            if (item->data(0, Qt::UserRole).toString() == name)
+                return item->text(1);
+        }
     }
     return {};
 }

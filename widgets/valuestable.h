@@ -1,7 +1,9 @@
 #pragma once
 /// Live values of the current pose: every entry of the mechanism's report (pose, Jacobian,
-/// derived) and the singularity class, grouped, with units and meanings.
+/// derived), what its actuators deliver (core/capability.h) and the singularity class,
+/// grouped, with units and meanings.
 
+#include "capability.h"
 #include "mechanism.h"
 
 #include <QTreeWidget>
@@ -34,9 +36,15 @@ private:
     /// push the short values, aligned right, out of sight.
     void fitColumns();
     void rebuild();
+    /// The text of entry `entry` in `values`: a number, or a matrix row by row.
+    QString entryText(const ReportEntry &entry, const std::vector<double> &values) const;
 
     MechanismPtr m_mechanism;
     std::vector<QTreeWidgetItem *> m_items; ///< one per report entry
+    capability::Actuators m_actuators;     ///< of the design shown
+    const ReportLayout *m_capabilityLayout = nullptr;
+    std::vector<QTreeWidgetItem *> m_capabilityItems; ///< one per capability entry
+    std::vector<double> m_capabilityValues;
     QTreeWidgetItem *m_singularity = nullptr;
     std::vector<double> m_values;
     std::optional<Pose> m_pose; ///< the pose shown, to show it again in another language

@@ -17,6 +17,8 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <optional>
+#include <span>
 #include <vector>
 
 // Everything `pkm` prints is built as UTF-8 std::string from core names and units, numbers
@@ -263,8 +265,8 @@ std::string evalText(const PreparedDesign &prepared, bool allModes, bool equatio
 {
     const Mechanism &mechanism = *prepared.mechanism;
     const ReportLayout &layout = mechanism.reportLayout();
-    std::vector<double> values(static_cast<std::size_t>(layout.size));
-    const Singularity singularity = mechanism.evaluate(prepared.pose, values);
+    std::vector<double> mainValues(static_cast<std::size_t>(layout.size));
+    const Singularity singularity = mechanism.evaluate(prepared.pose, mainValues);
 
     std::string out = designHeading(prepared);
     TextTable table({false, true, false, false});
@@ -279,10 +281,16 @@ std::string evalText(const PreparedDesign &prepared, bool allModes, bool equatio
             std::string(info.unit.symbol), label(info.label, info.symbol, info.name)});
     }
     std::vector<std::string> undefined;
-    const auto addGroup = [&](ReportGroup group, const char *title) {
+    const CapabilityReport capability = evaluateCapability(mechanism, prepared.pose, singularity.type);
+    // a group of the mechanism's layout, or (nullopt) the capability group from its own layout
+    const auto addGroup = [&](std::optional<ReportGroup> group, const char *title) {
+        const ReportLayout *from = group ? &layout : capability.layout;
+        if (!from)
+            return;
+        const std::span<const double> values = group ? std::span<const double>(mainValues) : capability.values;
         table.heading(title);
-        for (const ReportEntry &entry : layout.entries) {
-            if (entry.group != group)
+        for (const ReportEntry &entry : from->entries) {
+            if (group && entry.group != *group)
                 continue;
             if (!allFinite(entry, values))
                 undefined.push_back(entry.name);
@@ -306,13 +314,14 @@ std::string evalText(const PreparedDesign &prepared, bool allModes, bool equatio
                 {entry.symbol, text, std::string(entry.unit.symbol), label(entry.label, entry.symbol, entry.name)});
         }
         for (const ReportText &word : mechanism.reportText(prepared.pose)) {
-            if (word.group == group)
+            if (group && word.group == *group)
                 table.cells({word.name, word.text, "", word.label});
         }
     };
     addGroup(ReportGroup::Pose, "Pose");
     addGroup(ReportGroup::Jacobian, "Jacobian");
     addGroup(ReportGroup::Derived, "Derived");
+    addGroup(std::nullopt, "Capability");
     table.heading("Singularity");
     table.cells({"type", std::string(singularityName(singularity.type)), "", "singularity class"});
     table.cells({"margin", fixedText(singularity.margin, 4), "", "distance from the nearest singularity, 0 at it"});
@@ -418,6 +427,7 @@ std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes
     json.key("mechanism").string(mechanism.kind());
     writeParametersJson(json, mechanism, false);
     writeReportJson(json, layout, values, singularity, mechanism.reportText(pose));
+    writeCapabilityJson(json, evaluateCapability(mechanism, pose, singularity.type));
     writeMobilityJson(json, mechanism, pose);
     if (allModes) {
         json.key("assembly_modes");

@@ -105,7 +105,12 @@ class and the derived quantities, in display units.
                        a regular pose); at a pose classified singular the values are exact
                        (det J = 0 at a direct singularity, never 1e13 beside one); mobility
                        counts the mechanism's freedoms by Chebyshev's and Somov–Malyshev's
-                       formulas and by the rank of its loop equations
+                       formulas and by the rank of its loop equations; "capability" is what
+                       the actuators deliver at the pose: force_worst, force_best,
+                       speed_worst, speed_best, resolution_worst, stiffness (K = Jᵀ·K_q·J),
+                       stiffness_worst (and the П-joint's stiffness_measured), with its
+                       own "undefined" and "infinite" lists (0 or ∞ at a singular pose,
+                       why: singularity.reason)
   --all-modes         also every real assembly mode at the pose's inputs (every solution
                       of the direct kinematics in the design's working modes, the pose's
                       own marked *); with --json "assembly_modes": [{"x", "y", …}, …],
@@ -133,7 +138,8 @@ A and B are in its display unit (see 'pkm show DESIGN').
   --set NAME=VALUE    applied before the sweep, as in 'pkm eval'
   --csv               comma-separated values with one header line (the default)
   --json              {"mechanism", "parameters", "sweep", "rows": [...]}, each row with
-                      "pose", "jacobian", "singularity", "derived" as in 'pkm eval --json'
+                      "pose", "jacobian", "singularity", "derived", "capability" as in
+                      'pkm eval --json'
 
 Each step starts from the previous step's pose, so the mechanism keeps its assembly mode.
 Sweeping a pose variable keeps the design fixed; sweeping a parameter re-solves the pose
@@ -141,7 +147,9 @@ Sweeping a pose variable keeps the design fixed; sweeping a parameter re-solves 
 adds all parameters to each row.
 
 CSV columns, named as the keys of 'pkm eval --json': pose, jacobian, singularity (its
-type), singularity_margin, derived; a matrix M gives columns M[i][j] (0-based,
+type), singularity_margin, derived, capability (a name that is also a parameter's, as
+the П-joint's stiffness in a parameter sweep, gets the prefix "capability."); a matrix M
+gives columns M[i][j] (0-based,
 row-major). A value that is not finite (J_inv at a singular pose) is an empty field in CSV
 and null in JSON.
 
@@ -328,6 +336,9 @@ the --set values give — for the workshop that builds the prototype. Its sectio
                body, torque, speed and resolution over the range, singular poses; the
                four-bar's transmission angle >= 40°; the strokes the workspace uses and
                the singular curves inside it), with INFO lines
+  capability   what the actuators deliver at the pose: force, speed, resolution and
+               stiffness in the weakest and strongest direction (the П-joint also its
+               measured stiffness and what the two say together)
   workspace    mechanisms whose output is a point of the plane: the area as 'pkm
                workspace' computes it (grid 400; the O-X glide's areas also exact: area_O,
                area_X), per mode, its bounds, and the pictures of 'pkm workspace -o' and

@@ -396,9 +396,10 @@ Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source, 
     }
     addDrawing(mechanism, pose, sheet.pose, parts);
     addWarnings(mechanism, parts);
+    addCapability(mechanism, pose, parts);
 
     for (Section *section : {&parts.parameters, &parts.dimensions, &parts.ranges, &parts.keyPoses, &parts.checks,
-             &parts.notes, &parts.workspace, &parts.singular, &parts.plots, &parts.drawing}) {
+             &parts.capability, &parts.notes, &parts.workspace, &parts.singular, &parts.plots, &parts.drawing}) {
         if (!empty(*section))
             sheet.sections.push_back(std::move(*section));
     }

@@ -23,6 +23,7 @@ struct Parts {
     Section ranges;
     Section keyPoses;
     Section checks;
+    Section capability; ///< what the actuators deliver at the sheet's pose
     Section workspace;
     Section singular;
     Section plots;
@@ -76,6 +77,9 @@ Row keyPoseRow(const Mechanism &mechanism, const Pose &pose, std::span<const std
 /// Samples of report quantities over the range of one input variable, solved by direct
 /// kinematics from one end to the other, each step from the last (the mechanism keeps its
 /// modes); steps that cannot be solved are NaN.
+/// The "capability" section (sheetcapability.cpp): what the actuators deliver at `pose`.
+void addCapability(const Mechanism &mechanism, const Pose &pose, Parts &parts);
+
 struct Sweep {
     std::vector<double> input; ///< display unit
     std::vector<Pose> poses; ///< empty Pose (no inputs) where a step failed

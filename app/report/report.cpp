@@ -147,6 +147,45 @@ void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<con
         writeGroupJson(json, layout, group, values, text);
 }
 
+CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type)
+{
+    CapabilityReport report;
+    const capability::Actuators actuators = capability::actuatorsOf(mechanism);
+    report.layout = capability::layoutFor(actuators);
+    if (!report.layout)
+        return report;
+    report.values.assign(static_cast<std::size_t>(report.layout->size), std::nan(""));
+    capability::evaluate(mechanism, actuators, pose, type, report.values);
+    return report;
+}
+
+void writeCapabilityJson(JsonWriter &json, const CapabilityReport &capability)
+{
+    json.key("capability");
+    if (!capability.layout) {
+        json.null();
+        return;
+    }
+    json.beginObject();
+    for (const ReportEntry &entry : capability.layout->entries)
+        writeEntryJson(json, entry, capability.values);
+    json.key("undefined");
+    json.beginArray(true);
+    for (const ReportEntry &entry : capability.layout->entries) {
+        if (!allFinite(entry, capability.values))
+            json.string(entry.name);
+    }
+    json.endArray();
+    json.key("infinite");
+    json.beginArray(true);
+    for (const ReportEntry &entry : capability.layout->entries) {
+        if (anyInfinite(entry, capability.values))
+            json.string(entry.name);
+    }
+    json.endArray();
+    json.endObject();
+}
+
 void writeMobilityJson(JsonWriter &json, const Mechanism &mechanism, const Pose &pose)
 {
     const KinematicChain chain = mechanism.kinematicChain(pose);

@@ -2,6 +2,7 @@
 /// The quantities of a mechanism as `pkm eval` and `pkm sweep` report them: the JSON keys of
 /// the report groups, their order, and the report of one pose as JSON.
 
+#include "capability.h"
 #include "report/jsonwriter.h"
 #include "mechanism.h"
 #include "report/texttable.h"
@@ -9,6 +10,7 @@
 #include <array>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace pkm::report {
 
@@ -35,6 +37,19 @@ void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inli
 /// `text` adds the words of the report (the O-X glide's "mode": "X") to their groups.
 void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<const double> values,
     const Singularity &singularity, const std::vector<ReportText> &text = {});
+
+/// What the actuators deliver at a pose (core/capability.h): the layout of the "capability"
+/// group (nullptr when the mechanism declares no actuators) and its values.
+struct CapabilityReport {
+    const ReportLayout *layout = nullptr;
+    std::vector<double> values;
+};
+/// Evaluates the capability group of `pose`, whose class (Mechanism::evaluate()) is `type`.
+CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type);
+/// "capability": its values in display units (null where not finite), then "undefined" and
+/// "infinite", the names of the values that are not finite and of those unbounded at this pose
+/// (why: singularity.reason); null when the mechanism declares no actuators.
+void writeCapabilityJson(JsonWriter &json, const CapabilityReport &capability);
 
 /// "mobility": the chain of the mechanism at `pose` counted by Chebyshev's and
 /// Somov–Malyshev's formulas and ranked (core/mobility.h): moving_links, pairs {P5…P1}, loops,

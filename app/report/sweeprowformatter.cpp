@@ -4,7 +4,9 @@
 #include "report/jsonwriter.h"
 #include "report/numberformat.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstring>
 #include <set>
 #include <string_view>
@@ -13,6 +15,9 @@ namespace pkm::report {
 
 SweepRowFormatter::SweepRowFormatter(const Mechanism &mechanism, bool withParameters)
     : m_layout(mechanism.reportLayout())
+    , m_actuators(capability::actuatorsOf(mechanism))
+    , m_capabilityLayout(capability::layoutFor(m_actuators))
+    , m_withParameters(withParameters)
 {
     if (withParameters) {
         for (const ParameterInfo &info : mechanism.parameterInfo())
@@ -21,18 +26,24 @@ SweepRowFormatter::SweepRowFormatter(const Mechanism &mechanism, bool withParame
     std::set<std::string, std::less<>> used;
     for (const ParameterInfo *info : m_parameters)
         used.insert(info->name);
-    const auto addEntries = [&](ReportGroup group) {
-        for (const ReportEntry &entry : m_layout.entries) {
-            if (entry.group != group)
+    // a group of the mechanism's layout, or (nullopt) the capability group, after it in the buffer
+    const auto addEntries = [&](std::optional<ReportGroup> group) {
+        const ReportLayout *from = group ? &m_layout : m_capabilityLayout;
+        const int base = group ? 0 : m_layout.size;
+        if (!from)
+            return;
+        for (const ReportEntry &entry : from->entries) {
+            if (group && entry.group != *group)
                 continue;
-            // Names are unique within a layout; a clash with a parameter gets the group prefix.
-            const std::string name
-                = used.count(entry.name) ? std::string(reportGroupKey(group)) + "." + entry.name : entry.name;
+            const std::string prefix = group ? std::string(reportGroupKey(*group)) : std::string("capability");
+            // Names are unique within a layout; a clash with a parameter or another group's
+            // name gets the group prefix (a parameter stiffness and the capability's).
+            const std::string name = used.count(entry.name) ? prefix + "." + entry.name : entry.name;
             used.insert(name);
             const bool scalar = entry.rows * entry.cols == 1;
             for (int r = 0; r < entry.rows; ++r) {
                 for (int c = 0; c < entry.cols; ++c) {
-                    m_columns.push_back({Column::Value, entry.offset + r * entry.cols + c, entry.unit,
+                    m_columns.push_back({Column::Value, base + entry.offset + r * entry.cols + c, entry.unit,
                         scalar ? name : name + "[" + std::to_string(r) + "][" + std::to_string(c) + "]"});
                 }
             }
@@ -44,6 +55,24 @@ SweepRowFormatter::SweepRowFormatter(const Mechanism &mechanism, bool withParame
     m_columns.push_back({Column::SingularityMargin, 0, units::none, "singularity_margin"});
     for (ReportGroup group : groupsAfterSingularity)
         addEntries(group);
+    addEntries(std::nullopt);
+}
+
+void SweepRowFormatter::evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type,
+    std::span<double> values) const
+{
+    if (!m_capabilityLayout)
+        return;
+    const std::span<double> mine = values.subspan(static_cast<std::size_t>(m_layout.size));
+    if (!m_withParameters) {
+        capability::evaluate(mechanism, m_actuators, pose, type, mine);
+        return;
+    }
+    const capability::Actuators actuators = capability::actuatorsOf(mechanism);
+    if (capability::layoutFor(actuators) == m_capabilityLayout)
+        capability::evaluate(mechanism, actuators, pose, type, mine);
+    else
+        std::fill(mine.begin(), mine.end(), std::nan(""));
 }
 
 void SweepRowFormatter::csvHeader(std::string &out) const
@@ -63,6 +92,7 @@ std::size_t SweepRowFormatter::csvRowBound() const
 char *SweepRowFormatter::csvRow(char *out, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
 {
     const Singularity singularity = mechanism.evaluate(pose, values);
+    evaluateCapability(mechanism, pose, singularity.type, values);
     if (!m_parameters.empty()) {
         const ParameterSet parameters = mechanism.parameters();
         for (const ParameterInfo *info : m_parameters) {
@@ -94,6 +124,7 @@ void SweepRowFormatter::jsonRow(
     std::string &out, std::int64_t index, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
 {
     const Singularity singularity = mechanism.evaluate(pose, values);
+    evaluateCapability(mechanism, pose, singularity.type, values);
     if (index > 0)
         out += ",\n";
     JsonWriter json(out, JsonWriter::Style::Compact);
@@ -101,6 +132,12 @@ void SweepRowFormatter::jsonRow(
     if (!m_parameters.empty())
         writeParametersJson(json, mechanism, true);
     writeReportJson(json, m_layout, values, singularity);
+    if (m_capabilityLayout) {
+        CapabilityReport capability{m_capabilityLayout, {}};
+        const auto mine = values.subspan(static_cast<std::size_t>(m_layout.size));
+        capability.values.assign(mine.begin(), mine.end());
+        writeCapabilityJson(json, capability);
+    }
     json.endObject();
 }
 

@@ -3,6 +3,7 @@
 /// `pkm eval`. CSV columns are named as the keys of `pkm eval --json`, a matrix M giving
 /// columns M[i][j]; a value that is not finite is an empty CSV field and null in JSON.
 
+#include "capability.h"
 #include "mechanism.h"
 
 #include <cstddef>
@@ -22,8 +23,8 @@ public:
     /// must use `mechanism`'s report layout.
     SweepRowFormatter(const Mechanism &mechanism, bool withParameters);
 
-    /// Size of the value buffer the rows need.
-    std::size_t valueCount() const { return static_cast<std::size_t>(m_layout.size); }
+    /// Size of the value buffer the rows need: the mechanism's values, then the capability's.
+    std::size_t valueCount() const { return static_cast<std::size_t>(m_layout.size + capabilitySize()); }
 
     /// The CSV header line.
     void csvHeader(std::string &out) const;
@@ -32,7 +33,9 @@ public:
     std::size_t csvRowBound() const;
 
     /// Evaluates `pose` into `values` and writes its CSV row at `out` (csvRowBound() bytes of
-    /// room); returns the end. The hot loop of a sweep: no allocation, no std::string.
+    /// room); returns the end. The hot loop of a sweep: no std::string; the capability columns
+    /// take the pose's Jacobians (Mechanism::jacobians(), a few small allocations) and, in a
+    /// parameter sweep, the row's actuators.
     char *csvRow(char *out, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const;
 
     /// Evaluates `pose` into `values` and appends its JSON row, the row number `index` of the
@@ -41,6 +44,11 @@ public:
         std::span<double> values) const;
 
 private:
+    int capabilitySize() const { return m_capabilityLayout ? m_capabilityLayout->size : 0; }
+    /// The capability values of `pose` after the mechanism's in `values`.
+    void evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type,
+        std::span<double> values) const;
+
     struct Column {
         enum Kind { Value, SingularityType, SingularityMargin } kind;
         int offset; ///< in the value buffer
@@ -49,6 +57,9 @@ private:
     };
 
     const ReportLayout &m_layout;
+    capability::Actuators m_actuators; ///< of the formatter's mechanism (re-read for a parameter sweep)
+    const ReportLayout *m_capabilityLayout = nullptr;
+    bool m_withParameters = false;
     std::vector<const ParameterInfo *> m_parameters;
     std::vector<Column> m_columns;
 };

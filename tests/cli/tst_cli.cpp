@@ -409,9 +409,9 @@ void TestCli::evalJsonTopLevel()
     int exitCode = -1;
     const QJsonObject root = prototypeEval({}, &exitCode);
     QCOMPARE(exitCode, 0);
-    QCOMPARE(root.keys().size(), 7);
+    QCOMPARE(root.keys().size(), 8);
     QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("pjoint"));
-    for (const char *key : {"parameters", "pose", "jacobian", "singularity", "derived", "mobility"})
+    for (const char *key : {"parameters", "pose", "jacobian", "singularity", "derived", "capability", "mobility"})
         QVERIFY2(root.value(QLatin1String(key)).isObject(), key);
     const QJsonObject singularity = root.value(QStringLiteral("singularity")).toObject();
     QCOMPARE(singularity.value(QStringLiteral("type")).toString(), QStringLiteral("none"));

@@ -116,7 +116,7 @@ const ParameterTable<FiveBarDesign> &FiveBar::table()
         const std::vector<std::pair<std::string, double>> sides = {{QT_TRANSLATE_NOOP("core", "left"), 1.0},
                                                                    {QT_TRANSLATE_NOOP("core", "right"), -1.0}};
         const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The five-bar linkage has no parameter named '%1'.")};
-        return T(rules, {
+        return T(rules, joinRows<FiveBarDesign>({
             {{"AB", "AB", QT_TRANSLATE_NOOP("core", "length of crank 1, driven at A"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.crank[0]; })},
             {{"BC", "BC", QT_TRANSLATE_NOOP("core", "length of distal link 1, from B to C"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.link[0]; })},
             {{"CD", "CD", QT_TRANSLATE_NOOP("core", "length of distal link 2, from C to D"), length, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.link[1]; })},
@@ -132,7 +132,7 @@ const ParameterTable<FiveBarDesign> &FiveBar::table()
              T::sign([](auto &d) -> auto & { return d.working[1]; }), &sideRule},
             {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: C left (+1) or right (−1) of B→D"), units::none, G::Mode, sign, false, false, true, 0, 2, sides},
              T::sign<&D::assembly>(), &sideRule},
-        });
+        }, {actuatorRows<FiveBarDesign, 0>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<FiveBarDesign, 1>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[1]; })}));
     }();
     return table;
 }

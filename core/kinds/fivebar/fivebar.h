@@ -37,7 +37,7 @@
 ///   meet and C gains a freedom. Scale-free margins: |k_i|/(a_i·b_i) = |sin| of the elbow
 ///   angle, |det J_x|/(BC·CD) = |sin| of the angle between the distal links.
 
-#include "parametertable.h"
+#include "actuatorparameters.h"
 #include "planarworkspace.h"
 #include "text.h"
 
@@ -58,6 +58,8 @@ struct FiveBarDesign {
                                      Interval{-std::numbers::pi, std::numbers::pi}};
     std::array<int, 2> working = {+1, -1}; ///< working_i (+1 left, −1 right): elbows out
     int assembly = +1;                     ///< +1 left (C above BD), −1 right
+    /// The actuators of the cranks at A and E (assumed: the documents give none; actuatorparameters.h)
+    std::array<ActuatorSpec, 2> actuators = {assumedRotary, assumedRotary};
 };
 
 /// Closed forms, no validation (callers check).

@@ -193,7 +193,7 @@ const ParameterTable<FourBarDesign> &FourBar::table()
         const Interval positive{0.0, 1e5};
         using G = ParameterGroup;
         const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The four-bar linkage has no parameter named '%1'.")};
-        return T(rules, {
+        return T(rules, joinRows<FourBarDesign>({
             {{"AB", "AB", QT_TRANSLATE_NOOP("core", "crank (input link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::crank>()},
             {{"BC", "BC", QT_TRANSLATE_NOOP("core", "coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::coupler>()},
             {{"CD", "CD", QT_TRANSLATE_NOOP("core", "rocker (output link) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::rocker>()},
@@ -204,7 +204,7 @@ const ParameterTable<FourBarDesign> &FourBar::table()
               Interval{0.0, 1.0}, false, false, true, 3, 0.05}, T::real<&D::couplerPoint>()},
             {{"branch", "σ", QT_TRANSLATE_NOOP("core", "assembly branch: +1 open (C left of B→D), −1 crossed"), units::none,
               G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2, {{"open", 1.0}, {"crossed", -1.0}}}, T::sign<&D::branch>(), &branchRule},
-        });
+        }, {actuatorRows<FourBarDesign, 0>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[0]; })}));
     }();
     return table;
 }

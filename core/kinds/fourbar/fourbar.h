@@ -45,7 +45,9 @@
 /// (counter-clockwise, like ω₁), so it equals −dδ/dt: our ω₃ = −(8). Its (14) for ε₃ agrees
 /// with neither sign of the exact second derivative (docs/mathematics.md): see fourbar::document*.
 
-#include "parametertable.h"
+#include "actuatorparameters.h"
+
+#include <array>
 
 #include <vector>
 
@@ -59,6 +61,8 @@ struct FourBarDesign {
     double omega1 = 10.0;      ///< ω₁ = dα/dt, rad/s (constant)
     double couplerPoint = 0.5; ///< λ = BM/BC of the coupler point M on BC
     int branch = +1;           ///< σ: +1 open, −1 crossed
+    /// The actuators of the crank at A (assumed: the documents give none; actuatorparameters.h)
+    std::array<ActuatorSpec, 1> actuators = {assumedRotary};
 };
 
 namespace fourbar {

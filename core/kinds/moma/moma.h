@@ -17,7 +17,7 @@
 /// J = −J_p⁻¹·J_x; the document's (21) writes J = J_p⁻¹·J_x, which has the opposite sign and
 /// the same determinant (a 2×2 matrix).
 
-#include "parametertable.h"
+#include "actuatorparameters.h"
 #include "planarworkspace.h"
 #include "text.h"
 
@@ -35,6 +35,8 @@ struct MomaDesign {
     int assembly = -1;                   ///< σ
     bool oneSide = false; ///< the physical constraint: each link stays on the inner side of its guide
     double guideWidth = 20.0; ///< drawn width of a guide, mm
+    /// The actuators of the sliders (assumed: the documents give none; actuatorparameters.h)
+    std::array<ActuatorSpec, 2> actuators = {assumedLinear, assumedLinear};
 };
 
 /// Closed forms, no validation (callers check).

@@ -26,7 +26,9 @@
 /// q̇ = J·ẋ with J = −J_q⁻¹·J_x = [1, y/u₁; 1, y/u₂], det J = −2y/w (O) or +2y/w (X),
 /// κ(J) = max(y/w, w/y). Units: mm, rad.
 
-#include "parametertable.h"
+#include "actuatorparameters.h"
+
+#include <array>
 #include "planarworkspace.h"
 
 namespace pkm {
@@ -39,6 +41,8 @@ struct OxGlideDesign {
     double zMin = 0.0;          ///< longitudinal travel, mm
     double zMax = 150.0;
     int form = +1;              ///< +1: extended (O), −1: crossed (X)
+    /// The actuators of the slider pairs AB and CD (the serial z axis moves the whole mechanism and is left out) (assumed: the documents give none; actuatorparameters.h)
+    std::array<ActuatorSpec, 2> actuators = {assumedLinear, assumedLinear};
 };
 
 namespace oxglide {

@@ -4,6 +4,7 @@
 
 #include "pjoint.h"
 
+#include "capability.h"
 #include "mobility.h"
 #include "text.h"
 
@@ -182,6 +183,8 @@ const ParameterTable<PJointDesign> &PJoint::table()
             {{"speed_max", "ḋ_max", QT_TRANSLATE_NOOP("core", "max. linear speed"), units::millimetrePerSecond, G::Actuator, positive, true, false, true, 2, 1}, T::real<&D::speedMax>()},
             {{"force_max", "F_max", QT_TRANSLATE_NOOP("core", "max. thrust force"), units::newton, G::Actuator, positive, true, false, true, 1, 5}, T::real<&D::forceMax>()},
             {{"efficiency", "η", QT_TRANSLATE_NOOP("core", "screw efficiency"), units::none, G::Actuator, Interval{0.0, 1.0}, true, false, true, 3, 0.01}, T::real<&D::efficiency>()},
+            {{"stiffness", "k_d", QT_TRANSLATE_NOOP("core", "axial stiffness of the actuator"), units::newtonPerMillimetre, G::Actuator, positive, true, false, true, 0, 100}, T::real<&D::stiffness>()},
+            {{"stiffness_measured", "K_m", QT_TRANSLATE_NOOP("core", "measured static stiffness of the joint"), units::newtonMetrePerRadian, G::Actuator, positive, true, false, true, 0, 1000}, T::real<&D::stiffnessMeasured>()},
             {{"motor_length", "L_M", QT_TRANSLATE_NOOP("core", "motor body length"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorLength>()},
             {{"motor_width", "W_M", QT_TRANSLATE_NOOP("core", "motor body width"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorWidth>()},
             {{"screw_diameter", "d_s", QT_TRANSLATE_NOOP("core", "screw diameter"), units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1}, T::real<&D::screwDiameter>()},

@@ -21,6 +21,12 @@ struct PJointDesign {
     double speedMax = 50.0;              ///< maximum linear speed ḋ_max, mm/s
     double forceMax = 130.0;             ///< recommended thrust F_max, N
     double efficiency = 0.4;             ///< screw efficiency η (not in Table 1: assumed)
+    /// Axial stiffness of the screw, nut and bearings k_d, N/mm (not in Table 1: assumed, about
+    /// 20 N/µm for a small lead-screw actuator): the actuator's share of the output stiffness.
+    double stiffness = 20000.0;
+    /// The document's measured mean static stiffness of the whole joint over ±60°, N·m/rad
+    /// (section 4.2): reported beside the actuator's share (capability.h).
+    double stiffnessMeasured = 3.5e4;
     double motorLength = 45.0;           ///< motor body length along the diagonal, mm
     double motorWidth = 28.0;            ///< motor body width, mm
     double screwDiameter = 4.7752;       ///< mm

@@ -48,6 +48,11 @@ bool PlanarParallel::parameterApplies(std::string_view name) const
         return type != LegType::RRR; // a crank's limits are theta_i_min/max
     if (prefix == "theta")
         return type == LegType::RRR;
+    // a crank's actuator is a rotary one, the others' linear (actuatorparameters.h)
+    if (prefix == "torque_max" || prefix == "rate_max" || prefix == "angle_step" || prefix == "torsion")
+        return type == LegType::RRR;
+    if (prefix == "force_max" || prefix == "speed_max" || prefix == "step" || prefix == "stiffness")
+        return type != LegType::RRR;
     return true;
 }
 

@@ -93,7 +93,7 @@ const ParameterTable<PlanarParallelDesign> &PlanarParallel::table()
         const std::vector<std::pair<std::string, double>> sideChoices = {{"left", 1.0}, {"right", -1.0}};
         const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The planar parallel mechanism has no parameter named '%1'."),
                                 .order = CheckOrder::DomainsFirst};
-        return T(rules, {
+        return T(rules, joinRows<PlanarParallelDesign>({
             {{"platform", "τ_P", QT_TRANSLATE_NOOP("core", "platform: 0 a point (2 DOF), 1 constant orientation (2 DOF), 2 free (3 DOF)"), units::none, G::Mode, Interval{0.0, 2.0}, false, false, true, 0, 1, {{"point", 0.0}, {"translating", 1.0}, {"free", 2.0}}}, platformField(), &integerRule},
             {{"leg1_type", "τ₁", QT_TRANSLATE_NOOP("core", "leg 1: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices}, legTypeField<0>(), &integerRule},
             {{"A1x", "x_A₁", QT_TRANSLATE_NOOP("core", "leg 1: base point A₁, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].base.x(); })},
@@ -142,7 +142,7 @@ const ParameterTable<PlanarParallelDesign> &PlanarParallel::table()
             {{"working3", "w₃", QT_TRANSLATE_NOOP("core", "leg 3: working mode (+1 elbow left of A₃→P₃; P̲RR: sign in q = B ± √…)"), units::none, G::Mode, sign, false, false, true, 0, 2, sideChoices}, T::sign([](auto &d) -> auto & { return d.legs[2].working; }), &signRule},
             {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: 2 DOF +1 platform left of C₁→C₂, −1 right; 3 DOF the n-th solution in order of φ"), units::none, G::Mode, Interval{-1.0, 6.0}, false, false, true, 0, 1}, assemblyField(), &assemblyRule},
             {{"phi_map", "φ_m", QT_TRANSLATE_NOOP("core", "platform angle φ of the workspace map (3 DOF)"), units::angle, G::Drawing, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.mapPhi; })},
-        });
+        }, {actuatorRows<PlanarParallelDesign, 0>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.linearActuators[0]; }), actuatorRows<PlanarParallelDesign, 0>(ActuatorNames::RotaryOwn, [](auto &d) -> auto & { return d.rotaryActuators[0]; }), actuatorRows<PlanarParallelDesign, 1>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.linearActuators[1]; }), actuatorRows<PlanarParallelDesign, 1>(ActuatorNames::RotaryOwn, [](auto &d) -> auto & { return d.rotaryActuators[1]; }), actuatorRows<PlanarParallelDesign, 2>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.linearActuators[2]; }), actuatorRows<PlanarParallelDesign, 2>(ActuatorNames::RotaryOwn, [](auto &d) -> auto & { return d.rotaryActuators[2]; })}));
     }();
     return table;
 }

@@ -40,7 +40,7 @@
 /// J_x row carries the factor J: the П-joint's own singularity (θ = ±90°) is then a direct
 /// singularity of the whole mechanism (the П-joint document, section 4).
 
-#include "parametertable.h"
+#include "actuatorparameters.h"
 #include "planarworkspace.h"
 #include "text.h"
 
@@ -92,6 +92,11 @@ struct PlanarParallelDesign {
     };
     int assembly = +1;
     double mapPhi = 0.0; ///< φ of the constant-orientation workspace map of a 3-DOF platform, rad
+    /// Leg i's actuator: linear (P̲RR slider, RP̲R strut, П̲RR diagonal) or rotary (R̲RR crank),
+    /// as its type says; both are kept so that a change of type keeps them (assumed values:
+    /// the documents give none, actuatorparameters.h).
+    std::array<ActuatorSpec, 3> linearActuators = {assumedLinear, assumedLinear, assumedLinear};
+    std::array<ActuatorSpec, 3> rotaryActuators = {assumedRotary, assumedRotary, assumedRotary};
 
     int legCount() const { return platform == PlatformType::Free ? 3 : 2; }
 };

@@ -1,0 +1,130 @@
+// The "capability" group of `pkm eval --json` and `pkm sweep` (docs/cli.md): what the
+// actuators deliver at the pose, for a preset of every kind; exact 0/∞ (null, listed, with
+// the singularity's reason) at a singular pose; the П-joint's numbers those of its figs.
+// 15–17 (torque, speed) beside the measured stiffness.
+
+#include "support/app.h"
+#include "support/process.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QTest>
+
+#include <cmath>
+
+using namespace pkm::test;
+
+namespace {
+const char *const scalars[] = {"force_worst", "force_best", "speed_worst", "speed_best", "resolution_worst",
+                               "stiffness_worst"};
+}
+
+class TestCliCapability : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void everyKindHasTheGroup_data() { addPresetPerKindRows(); }
+    void everyKindHasTheGroup()
+    {
+        PKM_FETCH_PRESET(preset);
+        int exitCode = -1;
+        const QJsonObject eval = pkmJson({QStringLiteral("eval"), preset, QStringLiteral("--json")}, &exitCode);
+        QCOMPARE(exitCode, 0);
+        const QJsonObject capability = eval.value(QLatin1String("capability")).toObject();
+        for (const char *key : scalars) {
+            QVERIFY2(capability.value(QLatin1String(key)).isDouble(), key);
+            QVERIFY2(capability.value(QLatin1String(key)).toDouble() > 0.0, key);
+        }
+        QVERIFY(capability.value(QLatin1String("force_best")).toDouble()
+                >= capability.value(QLatin1String("force_worst")).toDouble() * (1 - 1e-12));
+        QVERIFY(capability.value(QLatin1String("undefined")).toArray().isEmpty());
+        // the groups that were there before keep their place
+        for (const char *key : {"parameters", "pose", "jacobian", "singularity", "derived", "mobility"})
+            QVERIFY2(eval.value(QLatin1String(key)).isObject(), key);
+    }
+
+    void pjointPrototype()
+    {
+        const QJsonObject eval = pkmJson(args({"eval", "pjoint-prototype", "--set", "theta=20", "--json"}));
+        const QJsonObject capability = eval.value(QLatin1String("capability")).toObject();
+        const QJsonObject derived = eval.value(QLatin1String("derived")).toObject();
+        // one actuator: weakest and strongest are the output torque and speed of figs. 16–17
+        QCOMPARE(capability.value(QLatin1String("force_worst")).toDouble(), derived.value(QLatin1String("torque")).toDouble());
+        QCOMPARE(capability.value(QLatin1String("force_best")).toDouble(), derived.value(QLatin1String("torque")).toDouble());
+        QVERIFY(std::abs(capability.value(QLatin1String("resolution_worst")).toDouble()
+                         - 0.5 * derived.value(QLatin1String("resolution")).toDouble())
+                < 1e-12);
+        QCOMPARE(capability.value(QLatin1String("stiffness_measured")).toDouble(), 3.5e4);
+        // the actuator's share alone is stiffer than the whole joint measured
+        QVERIFY(capability.value(QLatin1String("stiffness")).toDouble() > 3.5e4);
+        const QJsonObject parameters = eval.value(QLatin1String("parameters")).toObject();
+        QCOMPARE(parameters.value(QLatin1String("stiffness")).toDouble(), 20000.0);
+    }
+
+    void moma3a()
+    {
+        const QJsonObject eval = pkmJson(args({"eval", "moma-3a", "--json"}));
+        const QJsonObject capability = eval.value(QLatin1String("capability")).toObject();
+        const QJsonArray K = capability.value(QLatin1String("stiffness")).toArray();
+        QCOMPARE(K.size(), 2);
+        QCOMPARE(K[0].toArray().size(), 2);
+        // a symmetric matrix whose smallest eigenvalue is stiffness_worst
+        const double a = K[0].toArray()[0].toDouble(), b = K[0].toArray()[1].toDouble(), d = K[1].toArray()[1].toDouble();
+        QCOMPARE(b, K[1].toArray()[0].toDouble());
+        const double smallest = 0.5 * (a + d) - std::hypot(0.5 * (a - d), b);
+        QVERIFY(std::abs(smallest - capability.value(QLatin1String("stiffness_worst")).toDouble()) < 1e-6 * a);
+        const QJsonObject parameters = eval.value(QLatin1String("parameters")).toObject();
+        for (const char *name : {"force_max1", "speed_max1", "step1", "stiffness1", "force_max2"})
+            QVERIFY2(parameters.value(QLatin1String(name)).isDouble(), name);
+    }
+
+    void singularPoseIsNullAndListed()
+    {
+        // the five-bar with both legs stretched (an inverse singularity, tst_cli): J unbounded,
+        // so the strongest force and the stiffness are ∞, the slowest speed 0 (the marks)
+        const QJsonObject eval = pkmJson(args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=193.64916731037084",
+                                               "--json"}));
+        QCOMPARE(eval.value(QLatin1String("singularity")).toObject().value(QLatin1String("type")).toString(),
+                 QStringLiteral("inverse"));
+        QVERIFY(!eval.value(QLatin1String("singularity")).toObject().value(QLatin1String("reason")).toString().isEmpty());
+        const QJsonObject capability = eval.value(QLatin1String("capability")).toObject();
+        QVERIFY(capability.value(QLatin1String("force_best")).isNull());
+        QCOMPARE(capability.value(QLatin1String("speed_worst")).toDouble(), 0.0);
+        const QJsonArray infinite = capability.value(QLatin1String("infinite")).toArray();
+        QVERIFY(infinite.contains(QStringLiteral("force_best")));
+        QVERIFY(infinite.contains(QStringLiteral("stiffness")));
+        QVERIFY(capability.value(QLatin1String("undefined")).toArray().contains(QStringLiteral("force_best")));
+        // both legs stretched at once: J_q = 0, the platform is locked in every direction, so even
+        // the weakest direction holds any force and nothing moves it (exact, not 1e13)
+        QVERIFY(infinite.contains(QStringLiteral("force_worst")));
+        QVERIFY(infinite.contains(QStringLiteral("stiffness_worst")));
+        QCOMPARE(capability.value(QLatin1String("speed_best")).toDouble(), 0.0);
+        QCOMPARE(capability.value(QLatin1String("resolution_worst")).toDouble(), 0.0);
+    }
+
+    void sweepHasTheColumns()
+    {
+        const Run csv = runPkm(args({"sweep", "moma-3a", "--var", "p1", "--from", "50", "--to", "150", "--steps", "3"}));
+        QCOMPARE(csv.exitCode, 0);
+        const QString header = QString::fromUtf8(csv.out).section(QLatin1Char('\n'), 0, 0);
+        for (const char *column : {"force_worst", "speed_best", "stiffness[1][1]", "stiffness_worst"})
+            QVERIFY2(header.split(QLatin1Char(',')).contains(QLatin1String(column)), column);
+        // a parameter sweep of the П-joint: its parameter stiffness and the capability's apart
+        const Run parameters = runPkm(args({"sweep", "pjoint-prototype", "--var", "stiffness", "--from", "10000", "--to",
+                                            "40000", "--steps", "2"}));
+        QCOMPARE(parameters.exitCode, 0);
+        const QStringList columns = QString::fromUtf8(parameters.out).section(QLatin1Char('\n'), 0, 0).split(QLatin1Char(','));
+        QVERIFY(columns.contains(QStringLiteral("stiffness")));
+        QVERIFY(columns.contains(QStringLiteral("capability.stiffness")));
+        const QJsonObject json = pkmJson(args({"sweep", "pjoint-prototype", "--var", "theta", "--from", "-60", "--to", "60",
+                                               "--steps", "3", "--json"}));
+        const QJsonArray rows = json.value(QLatin1String("rows")).toArray();
+        QCOMPARE(rows.size(), 3);
+        for (const QJsonValue &row : rows)
+            QVERIFY(row.toObject().value(QLatin1String("capability")).toObject().value(QLatin1String("force_worst")).isDouble());
+    }
+};
+
+QTEST_MAIN(TestCliCapability)
+#include "tst_clicapability.moc"
