@@ -1321,6 +1321,30 @@ Please verify the correct file name was given.</source>
         <source>mm³</source>
         <translation>мм³</translation>
     </message>
+    <message>
+        <source>Actuator capability</source>
+        <translation>Возможности приводов</translation>
+    </message>
+    <message>
+        <source>What the actuators deliver at the platform at this pose, every actuator within its limits: the force and the speed in the weakest and the strongest direction, the error from half a step per actuator and the stiffness from the actuators alone.</source>
+        <translation>Что приводы дают на платформе в этом положении, каждый в своих пределах: сила и скорость в самом слабом и самом сильном направлении, погрешность от полушага каждого привода и жёсткость от одних приводов.</translation>
+    </message>
+    <message>
+        <source>The actuator&apos;s axial stiffness is an assumed value (about 20 N/µm for a small lead screw with its nut and bearings): Table 1 gives none.</source>
+        <translation>Осевая жёсткость привода принята (около 20 Н/мкм для небольшого ходового винта с гайкой и подшипниками): в таблице 1 её нет.</translation>
+    </message>
+    <message>
+        <source>Actuator values left at their defaults are assumed, plausible ones (a NEMA 17 stepper with a 5:1 gearbox, a small lead-screw slide): the source documents give none.</source>
+        <translation>Параметры приводов, оставленные по умолчанию, приняты правдоподобными (шаговый двигатель NEMA 17 с редуктором 5:1, небольшой модуль с ходовым винтом): в исходных документах их нет.</translation>
+    </message>
+    <message>
+        <source>The actuator alone would make the joint %1 N·m/rad stiff here; the measured %2 N·m/rad is lower because the hinges, links and frame yield in series with it (1/K = 1/K_actuator + 1/K_rest): together they are about %3 N·m/rad.</source>
+        <translation>Один привод дал бы здесь шарниру жёсткость %1 Н·м/рад; измеренная %2 Н·м/рад ниже, потому что шарниры, звенья и рама податливы последовательно с ним (1/K = 1/K_привода + 1/K_остального): вместе они дают около %3 Н·м/рад.</translation>
+    </message>
+    <message>
+        <source>The actuator alone gives %1 N·m/rad here, less than the measured %2 N·m/rad of the whole joint: the assumed axial stiffness of the actuator is too low for the measurement, or the pose is near a singularity where the actuator cannot hold the output.</source>
+        <translation>Один привод даёт здесь %1 Н·м/рад, меньше измеренных %2 Н·м/рад всего шарнира: принятая осевая жёсткость привода слишком мала для измерения, или положение близко к особому, где привод не удерживает выходное звено.</translation>
+    </message>
 </context>
 <context>
     <name>core</name>
@@ -3772,6 +3796,150 @@ Please verify the correct file name was given.</source>
         <source>distal lines through one point</source>
         <translation>дистальные прямые через одну точку</translation>
     </message>
+    <message>
+        <source>actuator 1: maximum force</source>
+        <translation>привод 1: наибольшая сила</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum force</source>
+        <translation>привод 2: наибольшая сила</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum force</source>
+        <translation>привод 3: наибольшая сила</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum speed</source>
+        <translation>привод 1: наибольшая скорость</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum speed</source>
+        <translation>привод 2: наибольшая скорость</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum speed</source>
+        <translation>привод 3: наибольшая скорость</translation>
+    </message>
+    <message>
+        <source>actuator 1: step (resolution)</source>
+        <translation>привод 1: шаг (разрешение)</translation>
+    </message>
+    <message>
+        <source>actuator 2: step (resolution)</source>
+        <translation>привод 2: шаг (разрешение)</translation>
+    </message>
+    <message>
+        <source>actuator 3: step (resolution)</source>
+        <translation>привод 3: шаг (разрешение)</translation>
+    </message>
+    <message>
+        <source>actuator 1: axial stiffness</source>
+        <translation>привод 1: осевая жёсткость</translation>
+    </message>
+    <message>
+        <source>actuator 2: axial stiffness</source>
+        <translation>привод 2: осевая жёсткость</translation>
+    </message>
+    <message>
+        <source>actuator 3: axial stiffness</source>
+        <translation>привод 3: осевая жёсткость</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum torque</source>
+        <translation>привод 1: наибольший момент</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum torque</source>
+        <translation>привод 2: наибольший момент</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum torque</source>
+        <translation>привод 3: наибольший момент</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum angular speed</source>
+        <translation>привод 1: наибольшая угловая скорость</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum angular speed</source>
+        <translation>привод 2: наибольшая угловая скорость</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum angular speed</source>
+        <translation>привод 3: наибольшая угловая скорость</translation>
+    </message>
+    <message>
+        <source>actuator 1: angular step (resolution)</source>
+        <translation>привод 1: угловой шаг (разрешение)</translation>
+    </message>
+    <message>
+        <source>actuator 2: angular step (resolution)</source>
+        <translation>привод 2: угловой шаг (разрешение)</translation>
+    </message>
+    <message>
+        <source>actuator 3: angular step (resolution)</source>
+        <translation>привод 3: угловой шаг (разрешение)</translation>
+    </message>
+    <message>
+        <source>actuator 1: torsional stiffness</source>
+        <translation>привод 1: крутильная жёсткость</translation>
+    </message>
+    <message>
+        <source>actuator 2: torsional stiffness</source>
+        <translation>привод 2: крутильная жёсткость</translation>
+    </message>
+    <message>
+        <source>actuator 3: torsional stiffness</source>
+        <translation>привод 3: крутильная жёсткость</translation>
+    </message>
+    <message>
+        <source>largest force in the weakest direction</source>
+        <translation>наибольшая сила в самом слабом направлении</translation>
+    </message>
+    <message>
+        <source>largest force in the strongest direction</source>
+        <translation>наибольшая сила в самом сильном направлении</translation>
+    </message>
+    <message>
+        <source>largest speed in the slowest direction</source>
+        <translation>наибольшая скорость в самом медленном направлении</translation>
+    </message>
+    <message>
+        <source>largest speed in the fastest direction</source>
+        <translation>наибольшая скорость в самом быстром направлении</translation>
+    </message>
+    <message>
+        <source>largest error from half a step per actuator</source>
+        <translation>наибольшая погрешность от полушага каждого привода</translation>
+    </message>
+    <message>
+        <source>stiffness K = Jᵀ·K_q·J (N/mm, N/rad, N·mm/rad)</source>
+        <translation>жёсткость K = Jᵀ·K_q·J (Н/мм, Н/рад, Н·мм/рад)</translation>
+    </message>
+    <message>
+        <source>stiffness K = Jᵀ·K_q·J</source>
+        <translation>жёсткость K = Jᵀ·K_q·J</translation>
+    </message>
+    <message>
+        <source>stiffness in the weakest direction</source>
+        <translation>жёсткость в самом слабом направлении</translation>
+    </message>
+    <message>
+        <source>measured static stiffness of the whole joint (the document)</source>
+        <translation>измеренная статическая жёсткость всего шарнира (по документу)</translation>
+    </message>
+    <message>
+        <source>N/mm</source>
+        <translation>Н/мм</translation>
+    </message>
+    <message>
+        <source>axial stiffness of the actuator</source>
+        <translation>осевая жёсткость привода</translation>
+    </message>
+    <message>
+        <source>measured static stiffness of the joint</source>
+        <translation>измеренная статическая жёсткость шарнира</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -5850,6 +6018,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>%1 (margin %2)</source>
         <translation>%1 (запас %2)</translation>
+    </message>
+    <message>
+        <source>Capability</source>
+        <translation>Возможности приводов</translation>
     </message>
 </context>
 <context>

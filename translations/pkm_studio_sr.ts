@@ -1321,6 +1321,30 @@ Please verify the correct file name was given.</source>
         <source>mm³</source>
         <translation>mm³</translation>
     </message>
+    <message>
+        <source>Actuator capability</source>
+        <translation>Могућности погона</translation>
+    </message>
+    <message>
+        <source>What the actuators deliver at the platform at this pose, every actuator within its limits: the force and the speed in the weakest and the strongest direction, the error from half a step per actuator and the stiffness from the actuators alone.</source>
+        <translation>Шта погони дају на платформи у овом положају, сваки у својим границама: сила и брзина у најслабијем и најјачем правцу, грешка од пола корака сваког погона и крутост од самих погона.</translation>
+    </message>
+    <message>
+        <source>The actuator&apos;s axial stiffness is an assumed value (about 20 N/µm for a small lead screw with its nut and bearings): Table 1 gives none.</source>
+        <translation>Аксијална крутост погона је претпостављена (око 20 Н/µм за мало навојно вретено с навртком и лежајевима): табела 1 је не даје.</translation>
+    </message>
+    <message>
+        <source>Actuator values left at their defaults are assumed, plausible ones (a NEMA 17 stepper with a 5:1 gearbox, a small lead-screw slide): the source documents give none.</source>
+        <translation>Вредности погона остављене на подразумеваним су претпостављене, уверљиве (корачни мотор NEMA 17 с редуктором 5:1, мали клизач с навојним вретеном): изворни документи их не дају.</translation>
+    </message>
+    <message>
+        <source>The actuator alone would make the joint %1 N·m/rad stiff here; the measured %2 N·m/rad is lower because the hinges, links and frame yield in series with it (1/K = 1/K_actuator + 1/K_rest): together they are about %3 N·m/rad.</source>
+        <translation>Сам погон би овде зглобу дао крутост %1 Н·м/рад; измерених %2 Н·м/рад је мање јер зглобови, чланци и рам попуштају редно с њим (1/K = 1/K_погона + 1/K_остало): заједно дају око %3 Н·м/рад.</translation>
+    </message>
+    <message>
+        <source>The actuator alone gives %1 N·m/rad here, less than the measured %2 N·m/rad of the whole joint: the assumed axial stiffness of the actuator is too low for the measurement, or the pose is near a singularity where the actuator cannot hold the output.</source>
+        <translation>Сам погон овде даје %1 Н·м/рад, мање од измерених %2 Н·м/рад целог зглоба: претпостављена аксијална крутост погона је премала за мерење, или је положај близу сингуларног, где погон не држи излаз.</translation>
+    </message>
 </context>
 <context>
     <name>core</name>
@@ -3772,6 +3796,150 @@ Please verify the correct file name was given.</source>
         <source>distal lines through one point</source>
         <translation>дисталне праве кроз једну тачку</translation>
     </message>
+    <message>
+        <source>actuator 1: maximum force</source>
+        <translation>погон 1: највећа сила</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum force</source>
+        <translation>погон 2: највећа сила</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum force</source>
+        <translation>погон 3: највећа сила</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum speed</source>
+        <translation>погон 1: највећа брзина</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum speed</source>
+        <translation>погон 2: највећа брзина</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum speed</source>
+        <translation>погон 3: највећа брзина</translation>
+    </message>
+    <message>
+        <source>actuator 1: step (resolution)</source>
+        <translation>погон 1: корак (резолуција)</translation>
+    </message>
+    <message>
+        <source>actuator 2: step (resolution)</source>
+        <translation>погон 2: корак (резолуција)</translation>
+    </message>
+    <message>
+        <source>actuator 3: step (resolution)</source>
+        <translation>погон 3: корак (резолуција)</translation>
+    </message>
+    <message>
+        <source>actuator 1: axial stiffness</source>
+        <translation>погон 1: аксијална крутост</translation>
+    </message>
+    <message>
+        <source>actuator 2: axial stiffness</source>
+        <translation>погон 2: аксијална крутост</translation>
+    </message>
+    <message>
+        <source>actuator 3: axial stiffness</source>
+        <translation>погон 3: аксијална крутост</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum torque</source>
+        <translation>погон 1: највећи момент</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum torque</source>
+        <translation>погон 2: највећи момент</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum torque</source>
+        <translation>погон 3: највећи момент</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum angular speed</source>
+        <translation>погон 1: највећа угаона брзина</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum angular speed</source>
+        <translation>погон 2: највећа угаона брзина</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum angular speed</source>
+        <translation>погон 3: највећа угаона брзина</translation>
+    </message>
+    <message>
+        <source>actuator 1: angular step (resolution)</source>
+        <translation>погон 1: угаони корак (резолуција)</translation>
+    </message>
+    <message>
+        <source>actuator 2: angular step (resolution)</source>
+        <translation>погон 2: угаони корак (резолуција)</translation>
+    </message>
+    <message>
+        <source>actuator 3: angular step (resolution)</source>
+        <translation>погон 3: угаони корак (резолуција)</translation>
+    </message>
+    <message>
+        <source>actuator 1: torsional stiffness</source>
+        <translation>погон 1: торзиона крутост</translation>
+    </message>
+    <message>
+        <source>actuator 2: torsional stiffness</source>
+        <translation>погон 2: торзиона крутост</translation>
+    </message>
+    <message>
+        <source>actuator 3: torsional stiffness</source>
+        <translation>погон 3: торзиона крутост</translation>
+    </message>
+    <message>
+        <source>largest force in the weakest direction</source>
+        <translation>највећа сила у најслабијем правцу</translation>
+    </message>
+    <message>
+        <source>largest force in the strongest direction</source>
+        <translation>највећа сила у најјачем правцу</translation>
+    </message>
+    <message>
+        <source>largest speed in the slowest direction</source>
+        <translation>највећа брзина у најспоријем правцу</translation>
+    </message>
+    <message>
+        <source>largest speed in the fastest direction</source>
+        <translation>највећа брзина у најбржем правцу</translation>
+    </message>
+    <message>
+        <source>largest error from half a step per actuator</source>
+        <translation>највећа грешка од пола корака сваког погона</translation>
+    </message>
+    <message>
+        <source>stiffness K = Jᵀ·K_q·J (N/mm, N/rad, N·mm/rad)</source>
+        <translation>крутост K = Jᵀ·K_q·J (Н/мм, Н/рад, Н·мм/рад)</translation>
+    </message>
+    <message>
+        <source>stiffness K = Jᵀ·K_q·J</source>
+        <translation>крутост K = Jᵀ·K_q·J</translation>
+    </message>
+    <message>
+        <source>stiffness in the weakest direction</source>
+        <translation>крутост у најслабијем правцу</translation>
+    </message>
+    <message>
+        <source>measured static stiffness of the whole joint (the document)</source>
+        <translation>измерена статичка крутост целог зглоба (из документа)</translation>
+    </message>
+    <message>
+        <source>N/mm</source>
+        <translation>Н/мм</translation>
+    </message>
+    <message>
+        <source>axial stiffness of the actuator</source>
+        <translation>аксијална крутост погона</translation>
+    </message>
+    <message>
+        <source>measured static stiffness of the joint</source>
+        <translation>измерена статичка крутост зглоба</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -5850,6 +6018,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>%1 (margin %2)</source>
         <translation>%1 (удаљеност %2)</translation>
+    </message>
+    <message>
+        <source>Capability</source>
+        <translation>Могућности погона</translation>
     </message>
 </context>
 <context>

@@ -1321,6 +1321,30 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>mm³</source>
         <translation>mm³</translation>
     </message>
+    <message>
+        <source>Actuator capability</source>
+        <translation>Mogućnosti pogona</translation>
+    </message>
+    <message>
+        <source>What the actuators deliver at the platform at this pose, every actuator within its limits: the force and the speed in the weakest and the strongest direction, the error from half a step per actuator and the stiffness from the actuators alone.</source>
+        <translation>Šta pogoni daju na platformi u ovom položaju, svaki u svojim granicama: sila i brzina u najslabijem i najjačem pravcu, greška od pola koraka svakog pogona i krutost od samih pogona.</translation>
+    </message>
+    <message>
+        <source>The actuator&apos;s axial stiffness is an assumed value (about 20 N/µm for a small lead screw with its nut and bearings): Table 1 gives none.</source>
+        <translation>Aksijalna krutost pogona je pretpostavljena (oko 20 N/µm za malo navojno vreteno s navrtkom i ležajevima): tabela 1 je ne daje.</translation>
+    </message>
+    <message>
+        <source>Actuator values left at their defaults are assumed, plausible ones (a NEMA 17 stepper with a 5:1 gearbox, a small lead-screw slide): the source documents give none.</source>
+        <translation>Vrednosti pogona ostavljene na podrazumevanim su pretpostavljene, uverljive (koračni motor NEMA 17 s reduktorom 5:1, mali klizač s navojnim vretenom): izvorni dokumenti ih ne daju.</translation>
+    </message>
+    <message>
+        <source>The actuator alone would make the joint %1 N·m/rad stiff here; the measured %2 N·m/rad is lower because the hinges, links and frame yield in series with it (1/K = 1/K_actuator + 1/K_rest): together they are about %3 N·m/rad.</source>
+        <translation>Sam pogon bi ovde zglobu dao krutost %1 N·m/rad; izmerenih %2 N·m/rad je manje jer zglobovi, članci i ram popuštaju redno s njim (1/K = 1/K_pogona + 1/K_ostalo): zajedno daju oko %3 N·m/rad.</translation>
+    </message>
+    <message>
+        <source>The actuator alone gives %1 N·m/rad here, less than the measured %2 N·m/rad of the whole joint: the assumed axial stiffness of the actuator is too low for the measurement, or the pose is near a singularity where the actuator cannot hold the output.</source>
+        <translation>Sam pogon ovde daje %1 N·m/rad, manje od izmerenih %2 N·m/rad celog zgloba: pretpostavljena aksijalna krutost pogona je premala za merenje, ili je položaj blizu singularnog, gde pogon ne drži izlaz.</translation>
+    </message>
 </context>
 <context>
     <name>core</name>
@@ -3772,6 +3796,150 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>distal lines through one point</source>
         <translation>distalne prave kroz jednu tačku</translation>
     </message>
+    <message>
+        <source>actuator 1: maximum force</source>
+        <translation>pogon 1: najveća sila</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum force</source>
+        <translation>pogon 2: najveća sila</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum force</source>
+        <translation>pogon 3: najveća sila</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum speed</source>
+        <translation>pogon 1: najveća brzina</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum speed</source>
+        <translation>pogon 2: najveća brzina</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum speed</source>
+        <translation>pogon 3: najveća brzina</translation>
+    </message>
+    <message>
+        <source>actuator 1: step (resolution)</source>
+        <translation>pogon 1: korak (rezolucija)</translation>
+    </message>
+    <message>
+        <source>actuator 2: step (resolution)</source>
+        <translation>pogon 2: korak (rezolucija)</translation>
+    </message>
+    <message>
+        <source>actuator 3: step (resolution)</source>
+        <translation>pogon 3: korak (rezolucija)</translation>
+    </message>
+    <message>
+        <source>actuator 1: axial stiffness</source>
+        <translation>pogon 1: aksijalna krutost</translation>
+    </message>
+    <message>
+        <source>actuator 2: axial stiffness</source>
+        <translation>pogon 2: aksijalna krutost</translation>
+    </message>
+    <message>
+        <source>actuator 3: axial stiffness</source>
+        <translation>pogon 3: aksijalna krutost</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum torque</source>
+        <translation>pogon 1: najveći moment</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum torque</source>
+        <translation>pogon 2: najveći moment</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum torque</source>
+        <translation>pogon 3: najveći moment</translation>
+    </message>
+    <message>
+        <source>actuator 1: maximum angular speed</source>
+        <translation>pogon 1: najveća ugaona brzina</translation>
+    </message>
+    <message>
+        <source>actuator 2: maximum angular speed</source>
+        <translation>pogon 2: najveća ugaona brzina</translation>
+    </message>
+    <message>
+        <source>actuator 3: maximum angular speed</source>
+        <translation>pogon 3: najveća ugaona brzina</translation>
+    </message>
+    <message>
+        <source>actuator 1: angular step (resolution)</source>
+        <translation>pogon 1: ugaoni korak (rezolucija)</translation>
+    </message>
+    <message>
+        <source>actuator 2: angular step (resolution)</source>
+        <translation>pogon 2: ugaoni korak (rezolucija)</translation>
+    </message>
+    <message>
+        <source>actuator 3: angular step (resolution)</source>
+        <translation>pogon 3: ugaoni korak (rezolucija)</translation>
+    </message>
+    <message>
+        <source>actuator 1: torsional stiffness</source>
+        <translation>pogon 1: torziona krutost</translation>
+    </message>
+    <message>
+        <source>actuator 2: torsional stiffness</source>
+        <translation>pogon 2: torziona krutost</translation>
+    </message>
+    <message>
+        <source>actuator 3: torsional stiffness</source>
+        <translation>pogon 3: torziona krutost</translation>
+    </message>
+    <message>
+        <source>largest force in the weakest direction</source>
+        <translation>najveća sila u najslabijem pravcu</translation>
+    </message>
+    <message>
+        <source>largest force in the strongest direction</source>
+        <translation>najveća sila u najjačem pravcu</translation>
+    </message>
+    <message>
+        <source>largest speed in the slowest direction</source>
+        <translation>najveća brzina u najsporijem pravcu</translation>
+    </message>
+    <message>
+        <source>largest speed in the fastest direction</source>
+        <translation>najveća brzina u najbržem pravcu</translation>
+    </message>
+    <message>
+        <source>largest error from half a step per actuator</source>
+        <translation>najveća greška od pola koraka svakog pogona</translation>
+    </message>
+    <message>
+        <source>stiffness K = Jᵀ·K_q·J (N/mm, N/rad, N·mm/rad)</source>
+        <translation>krutost K = Jᵀ·K_q·J (N/mm, N/rad, N·mm/rad)</translation>
+    </message>
+    <message>
+        <source>stiffness K = Jᵀ·K_q·J</source>
+        <translation>krutost K = Jᵀ·K_q·J</translation>
+    </message>
+    <message>
+        <source>stiffness in the weakest direction</source>
+        <translation>krutost u najslabijem pravcu</translation>
+    </message>
+    <message>
+        <source>measured static stiffness of the whole joint (the document)</source>
+        <translation>izmerena statička krutost celog zgloba (iz dokumenta)</translation>
+    </message>
+    <message>
+        <source>N/mm</source>
+        <translation>N/mm</translation>
+    </message>
+    <message>
+        <source>axial stiffness of the actuator</source>
+        <translation>aksijalna krutost pogona</translation>
+    </message>
+    <message>
+        <source>measured static stiffness of the joint</source>
+        <translation>izmerena statička krutost zgloba</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -5850,6 +6018,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>%1 (margin %2)</source>
         <translation>%1 (udaljenost %2)</translation>
+    </message>
+    <message>
+        <source>Capability</source>
+        <translation>Mogućnosti pogona</translation>
     </message>
 </context>
 <context>
