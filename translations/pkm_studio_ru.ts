@@ -6278,6 +6278,22 @@ Please verify the correct file name was given.</source>
         <source>y (mm)</source>
         <translation>y (мм)</translation>
     </message>
+    <message>
+        <source>Workspace %1 · orientation range of φ from %2° to %3°</source>
+        <translation>Рабочее пространство %1 · диапазон ориентации φ от %2° до %3°</translation>
+    </message>
+    <message>
+        <source>orientation range of φ (°): the angles that hold the platform</source>
+        <translation>диапазон ориентации φ (°): углы, в которых ноги удерживают платформу</translation>
+    </message>
+    <message>
+        <source>At each point, the total width of the platform angles φ at which the legs can hold it there; the map&apos;s outline is the workspace at φ_map.</source>
+        <translation>В каждой точке — суммарная ширина углов платформы φ, при которых ноги могут удерживать её там; контур карты — рабочее пространство при φ_map.</translation>
+    </message>
+    <message>
+        <source>orientation range of φ</source>
+        <translation>диапазон ориентации φ</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>

@@ -6278,6 +6278,22 @@ Please verify the correct file name was given.</source>
         <source>y (mm)</source>
         <translation>y (mm)</translation>
     </message>
+    <message>
+        <source>Workspace %1 · orientation range of φ from %2° to %3°</source>
+        <translation>Радни простор %1 · опсег оријентације φ од %2° до %3°</translation>
+    </message>
+    <message>
+        <source>orientation range of φ (°): the angles that hold the platform</source>
+        <translation>опсег оријентације φ (°): углови у којима ноге држе платформу</translation>
+    </message>
+    <message>
+        <source>At each point, the total width of the platform angles φ at which the legs can hold it there; the map&apos;s outline is the workspace at φ_map.</source>
+        <translation>У свакој тачки укупна ширина углова платформе φ при којима је ноге могу држати ту; контура мапе је радни простор при φ_map.</translation>
+    </message>
+    <message>
+        <source>orientation range of φ</source>
+        <translation>опсег оријентације φ</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>

@@ -6278,6 +6278,22 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>y (mm)</source>
         <translation>y (mm)</translation>
     </message>
+    <message>
+        <source>Workspace %1 · orientation range of φ from %2° to %3°</source>
+        <translation>Radni prostor %1 · opseg orijentacije φ od %2° do %3°</translation>
+    </message>
+    <message>
+        <source>orientation range of φ (°): the angles that hold the platform</source>
+        <translation>opseg orijentacije φ (°): uglovi u kojima noge drže platformu</translation>
+    </message>
+    <message>
+        <source>At each point, the total width of the platform angles φ at which the legs can hold it there; the map&apos;s outline is the workspace at φ_map.</source>
+        <translation>U svakoj tački ukupna širina uglova platforme φ pri kojima je noge mogu držati tu; kontura mape je radni prostor pri φ_map.</translation>
+    </message>
+    <message>
+        <source>orientation range of φ</source>
+        <translation>opseg orijentacije φ</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>

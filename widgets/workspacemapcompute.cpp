@@ -25,6 +25,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <numbers>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -131,8 +132,11 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         return double(finite[k]);
     };
     const bool condition = quantity == MapQuantity::Condition;
+    const bool range = quantity == MapQuantity::OrientationRange;
     double limit = condition ? 10.0 : 1.0;
-    if (!finite.empty()) {
+    if (range) {
+        limit = 360.0; // degrees: the whole turn, the same scale for every design
+    } else if (!finite.empty()) {
         if (condition) {
             const double high = percentile(highPercentile);
             limit = high > 1.001 ? high : std::max(10.0, result->summary.max);
@@ -143,7 +147,8 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         }
     }
     result->colourLimit = limit;
-    const double lower = condition ? 1.0 : -limit;
+    const double lower = condition ? 1.0 : range ? 0.0 : -limit;
+    const double toColour = range ? 180.0 / std::numbers::pi : 1.0; // the range in radians, coloured in degrees
 
     // The colour data, clipped to the colour range: QCPColorGradient turns values into indices
     // with int(), which an infinite value would overflow.
@@ -153,7 +158,7 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         const float *row = result->values.data() + std::size_t(r) * std::size_t(grid.columns);
         for (int c = 0; c < grid.columns; ++c) {
             const double v = row[c];
-            colours->setCell(c, r, std::isnan(v) ? nan : std::clamp(v, lower, limit));
+            colours->setCell(c, r, std::isnan(v) ? nan : std::clamp(v * toColour, lower, limit));
         }
     }
     result->colours = std::move(colours);

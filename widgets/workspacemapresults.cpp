@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <unordered_map>
 
 namespace pkm {
@@ -118,7 +119,10 @@ void WorkspaceMapView::applyMap(WorkspaceMapResult &result)
     m_mapBounds = result.summary.grid.bounds;
 
     m_colorMap->setData(result.colours.release()); // takes ownership, no copy
-    m_colorMap->setGradient(condition ? conditionGradient() : determinantGradient());
+    const bool range = result.quantity == MapQuantity::OrientationRange;
+    m_colorMap->setGradient(condition ? conditionGradient()
+                            : range   ? QCPColorGradient(QCPColorGradient::gpThermal)
+                                      : determinantGradient());
     m_colorScale->setDataScaleType(condition ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
     if (condition)
         m_colorScale->axis()->setTicker(QSharedPointer<ConditionTicker>::create());
@@ -126,7 +130,9 @@ void WorkspaceMapView::applyMap(WorkspaceMapResult &result)
         m_colorScale->axis()->setTicker(QSharedPointer<MinusTicker>::create());
     m_colorScale->axis()->setNumberFormat(QStringLiteral("gb"));
     m_colorScale->axis()->setNumberPrecision(3);
-    m_colorScale->setDataRange(condition ? QCPRange(1.0, m_colourLimit) : QCPRange(-m_colourLimit, m_colourLimit));
+    m_colorScale->setDataRange(condition ? QCPRange(1.0, m_colourLimit)
+                               : range   ? QCPRange(0.0, m_colourLimit)
+                                         : QCPRange(-m_colourLimit, m_colourLimit));
 
     m_outline->data()->set(result.outline, true);
     m_inverse->data()->set(result.inverse, true);
@@ -201,6 +207,16 @@ void WorkspaceMapView::updateTitle()
     }
     if (m_summary.reachableCells == 0) {
         plotstyle::setFittedText(m_title, tr("Workspace empty in the design's working and assembly modes"));
+    } else if (m_shownQuantity == MapQuantity::OrientationRange) {
+        const double degree = std::numbers::pi / 180.0;
+        plotstyle::setFittedText(m_title, tr("Workspace %1 · orientation range of φ from %2° to %3°")
+                                              .arg(formatQuantity(m_summary.area, units::squareMillimetre, 0),
+                                                   significant(m_summary.min / degree), significant(m_summary.max / degree)));
+        m_colorScale->setLabel(plotstyle::wrapped(tr("orientation range of φ (°): the angles that hold the platform"),
+                                                  m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
+        m_plot->setToolTip(tr("At each point, the total width of the platform angles φ at which the legs can hold it "
+                              "there; the map's outline is the workspace at φ_map."));
+        return;
     } else {
         // broken into lines where the map is narrow (between words, never cut off)
         plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4")
@@ -268,6 +284,8 @@ void WorkspaceMapView::retranslate()
     m_quantityLabel->setText(tr("&Map:"));
     m_quantityBox->setItemText(0, QStringLiteral("det J")); // a symbol
     m_quantityBox->setItemText(1, tr("condition number κ(J)"));
+    if (const int range = m_quantityBox->findData(int(MapQuantity::OrientationRange)); range >= 0)
+        m_quantityBox->setItemText(range, tr("orientation range of φ"));
     m_busyLabel->setText(tr("computing…"));
     m_plot->xAxis->setLabel(tr("x (mm)"));
     m_plot->yAxis->setLabel(tr("y (mm)"));

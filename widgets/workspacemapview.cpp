@@ -283,6 +283,18 @@ void WorkspaceMapView::setMechanism(MechanismPtr mechanism)
     }
     m_stack->setCurrentWidget(m_plot);
     m_quantityBox->setEnabled(true);
+    // The orientation range only where the platform turns (a leg design with three legs).
+    const bool turns = m_mechanism->planarWorkspace()->offers(MapQuantity::OrientationRange);
+    const int rangeItem = m_quantityBox->findData(int(MapQuantity::OrientationRange));
+    if (turns && rangeItem < 0) {
+        m_quantityBox->addItem(tr("orientation range of φ"), int(MapQuantity::OrientationRange));
+    } else if (!turns && rangeItem >= 0) {
+        const QSignalBlocker blocker(m_quantityBox);
+        m_quantityBox->removeItem(rangeItem);
+        if (m_quantity == MapQuantity::OrientationRange)
+            m_quantity = MapQuantity::Determinant;
+        m_quantityBox->setCurrentIndex(m_quantityBox->findData(int(m_quantity)));
+    }
     requestMap();
 }
 

@@ -6,6 +6,7 @@
 #include "quantityformat.h"
 #include "registry.h"
 #include "workspacemapview.h"
+#include "document/designfile.h"
 
 #include <qcustomplot.h>
 
@@ -88,6 +89,7 @@ private slots:
     void staleResultDropped();
     void click();
     void conditionNumber();
+    void orientationRange();
     void comparison();
     void directSingularities3d();
     void noPlanarWorkspace();
@@ -320,6 +322,37 @@ void TestWorkspaceMapView::conditionNumber()
     QVERIFY(ready.wait(waitMilliseconds));
     QCOMPARE(view.colorMap()->dataScaleType(), QCPAxis::stLinear);
     QVERIFY(view.summary().max < 0.0);
+}
+
+/// A platform that turns (the 3-RP̲R) offers the orientation range of φ, in degrees on a 0–360°
+/// scale; a point platform does not, and a range chosen before falls back to det J.
+void TestWorkspaceMapView::orientationRange()
+{
+    auto design = designfile::load(QStringLiteral("pp-3rpr"));
+    QVERIFY2(design, design ? "" : design.failure().message.c_str());
+    WorkspaceMapView view;
+    QVERIFY(showMap(view, design->mechanism));
+    const int item = view.quantityBox()->findData(int(MapQuantity::OrientationRange));
+    QVERIFY(item >= 0);
+    QSignalSpy ready(&view, &WorkspaceMapView::mapReady);
+    emit view.quantityBox()->activated(item);
+    QCOMPARE(view.quantity(), MapQuantity::OrientationRange);
+    QVERIFY(ready.wait(waitMilliseconds));
+    QVERIFY(view.summary().reachableCells > 0);
+    QVERIFY(view.summary().min >= 0.0);
+    QVERIFY2(view.summary().max > 0.0 && view.summary().max <= 2 * std::numbers::pi + 1e-6,
+             qPrintable(QStringLiteral("range from %1 to %2 rad").arg(view.summary().min).arg(view.summary().max)));
+    // at the home pose the platform is held at its own φ: a range of more than nothing
+    QVERIFY(view.valueAt(platform(design->mechanism->homePose())) > 0.0);
+    QCOMPARE(view.colorMap()->dataRange().lower, 0.0);
+    QCOMPARE(view.colorMap()->dataRange().upper, 360.0);
+
+    ready.clear();
+    view.setMechanism(moma());
+    QVERIFY(ready.wait(waitMilliseconds));
+    QCOMPARE(view.quantityBox()->findData(int(MapQuantity::OrientationRange)), -1);
+    QCOMPARE(view.quantity(), MapQuantity::Determinant);
+    QVERIFY(view.summary().max < 0.0); // MOMA 3a's det J
 }
 
 void TestWorkspaceMapView::comparison()
