@@ -1,0 +1,27 @@
+#pragma once
+/// What `pkm workspace` and `pkm map` print about their grid (cliworkspaceparts.cpp).
+
+#include "planarworkspace.h"
+#include "report/jsonwriter.h"
+#include "report/texttable.h"
+
+#include <Eigen/Geometry>
+
+#include <cstddef>
+#include <string>
+
+namespace pkm::cli {
+
+/// The kinds whose designs have a planar workspace: "moma, …".
+std::string planarKinds();
+/// x_min … y_max of `box` (NaN for an empty box).
+void writeBoxJson(report::JsonWriter &json, const Eigen::AlignedBox2d &box);
+/// The "grid" object and "cell_size".
+void writeGridJson(report::JsonWriter &json, const MapGrid &grid, int resolution);
+/// "[-150.00, 150.00]"
+std::string intervalText(double a, double b);
+/// The grid's rows of the text table: its size, cell size, bounds and reachable box.
+void addGridRows(report::TextTable &table, const MapGrid &grid, int resolution, const Eigen::AlignedBox2d &reachableBox,
+                 std::size_t reachableCells);
+
+} // namespace pkm::cli
