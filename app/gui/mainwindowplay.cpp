@@ -73,6 +73,11 @@ void MainWindow::createPlayControls(QMenu *viewMenu)
     // The clicker's keys work wherever the focus is in the window, a slider's included.
     for (QAction *action : {m_previousBookmarkAction, m_nextBookmarkAction})
         action->setShortcutContext(Qt::WindowShortcut);
+    // On the bar, symbols that need no room (the whole name is the button's tooltip), so that
+    // the bar fits a projector at a large text size; the menu keeps the words.
+    m_previousBookmarkAction->setIconText(QStringLiteral("◀ ★"));
+    m_addBookmarkAction->setIconText(QStringLiteral("+ ★"));
+    m_nextBookmarkAction->setIconText(QStringLiteral("★ ▶"));
     m_playToolBar->addSeparator();
     m_playToolBar->addAction(m_previousBookmarkAction);
     m_playToolBar->addAction(m_addBookmarkAction);
