@@ -5,6 +5,7 @@
 #include "kinds/planarparallel/planarparallel.h"
 #include "registry.h"
 #include "support/kinematics.h"
+#include "support/planardesigns.h"
 
 #include <QTest>
 
@@ -25,21 +26,8 @@ std::shared_ptr<const PlanarParallel> build(const ParameterSet &parameters)
     return std::dynamic_pointer_cast<const PlanarParallel>(makeKind("planar-parallel", parameters));
 }
 
-/// resources/presets/pp-5r.pkm.json in core units.
-ParameterSet fiveR()
-{
-    return {{"platform", 0}, {"leg1_type", 0}, {"leg2_type", 0}, {"A1x", 0}, {"A1y", 0}, {"A2x", 100}, {"A2y", 0},
-            {"r1", 80}, {"r2", 80}, {"l1", 120}, {"l2", 120}, {"theta1_min", -pi}, {"theta1_max", pi}, {"theta2_min", -pi},
-            {"theta2_max", pi}, {"working1", 1}, {"working2", -1}, {"assembly", 1}};
-}
-
-/// resources/presets/pp-2prr-moma3a.pkm.json in core units.
-ParameterSet moma3a()
-{
-    return {{"platform", 0}, {"leg1_type", 1}, {"leg2_type", 1}, {"A1x", -100}, {"A1y", 0}, {"A2x", 100}, {"A2y", 0},
-            {"l1", 195}, {"l2", 195}, {"alpha1", 265 * deg}, {"alpha2", 275 * deg}, {"q1_min", 0}, {"q1_max", 200},
-            {"q2_min", 0}, {"q2_max", 200}, {"working1", -1}, {"working2", -1}, {"assembly", -1}};
-}
+using pkm::test::legdesigns::fiveR;
+using pkm::test::legdesigns::moma3a;
 
 /// resources/presets/pp-3rrr.pkm.json, its map at φ = `phi`.
 ParameterSet threeRrr(double phi)
