@@ -144,6 +144,9 @@ void VariablePanel::updateRanges()
         row.spinBox->setRange(std::floor(lo * scale) / scale, std::ceil(hi * scale) / scale);
         // One arrow click: about a hundredth of the range, as a power of ten (1° for ±60°).
         row.spinBox->setSingleStep(std::pow(10.0, std::floor(std::log10(std::max(hi - lo, 1e-9))) - 2));
+        // Room for the longest value of the range with its unit: a narrow panel never cuts
+        // "183.10 mm" to "183.10 mn".
+        row.spinBox->setMinimumWidth(row.spinBox->sizeHint().width());
     }
     m_updating = false;
 }

@@ -19,6 +19,8 @@
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QAbstractSpinBox>
 #include <QMenu>
 #include <QRegularExpression>
 #include <QScreen>
@@ -78,6 +80,16 @@ QStringList clippedTexts(QWidget *root)
                            .arg(QString::fromLatin1(button->metaObject()->className()), button->text().left(60))
                            .arg(hint.width())
                            .arg(button->width());
+    }
+    // Spin boxes: the number with its unit inside the field.
+    for (QAbstractSpinBox *box : root->findChildren<QAbstractSpinBox *>()) {
+        auto *edit = box->findChild<QLineEdit *>();
+        if (!visible(box) || !edit)
+            continue;
+        const int needed = edit->fontMetrics().horizontalAdvance(edit->text());
+        const int room = edit->width() - 4;
+        if (needed > room)
+            clipped << QStringLiteral("spin box '%1' needs %2 px, has %3 px").arg(edit->text()).arg(needed).arg(room);
     }
     // Tabs (the docks tabified with the values) elide a text that does not fit.
     for (QTabBar *bar : root->findChildren<QTabBar *>()) {
