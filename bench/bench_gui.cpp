@@ -17,6 +17,11 @@
 // software renderer) the 3D tab is shown instead of the 2D view: each step includes building
 // the solid model, tessellating, uploading and drawing it, and waiting for the GL frame to
 // finish (issue: 3D view).
+//
+// With "shapes" as the third argument ("bench_gui 8 moma-3a shapes") the same drag runs with
+// View ▸ Velocity and Force Shapes off and on, in alternating rounds, and the figure is what
+// the shapes add to a step's median (issue: actuator capability; target ≤ 1 ms), beside the
+// step's own target.
 #include "document/document.h"
 #include "gui/mainwindow.h"
 #include "kinds/workspacepanel.h"
@@ -46,6 +51,7 @@ int main(int argc, char *argv[])
     const double limitMs = argc > 1 ? std::atof(argv[1]) : 8.0;
     const QString preset = argc > 2 ? QString::fromLocal8Bit(argv[2]) : QString();
     const bool in3d = argc > 3 && QByteArray(argv[3]) == "3d";
+    const bool shapes = argc > 3 && QByteArray(argv[3]) == "shapes";
 
     pkm::MainWindow window;
     window.setGeometry(0, 0, 1920, 1080);
@@ -99,34 +105,62 @@ int main(int argc, char *argv[])
     const int framesBefore = view3d->frameCount();
 
     const int steps = 600;
-    std::vector<double> times;
-    times.reserve(steps);
     QElapsedTimer timer;
     const int paintsBefore = window.linkageView()->paintCount();
-    for (int i = 0; i < steps; ++i) {
-        // θ from −60° to 60° and back, as a hand drags the slider
-        const double u = (i % 200) / 199.0;
-        const double thetaDeg = (i / 200) % 2 == 0 ? -60 + 120 * u : 60 - 120 * u;
-        timer.start();
-        if (platform) {
-            // a loop about the start, as a hand drags the platform
-            const double angle = 2 * 3.141592653589793 * i / 200.0;
-            const Eigen::Vector2d target = home.outputs.head<2>() + radius * Eigen::Vector2d(std::cos(angle) - 1, std::sin(angle));
-            window.document()->dragHandle(platformHandle, target);
-        } else {
-            window.document()->setVariable(window.document()->mechanism()->variableIndex("theta"), thetaDeg * pkm::units::degree);
+    const auto run = [&](std::vector<double> &times) {
+        for (int i = 0; i < steps; ++i) {
+            // θ from −60° to 60° and back, as a hand drags the slider
+            const double u = (i % 200) / 199.0;
+            const double thetaDeg = (i / 200) % 2 == 0 ? -60 + 120 * u : 60 - 120 * u;
+            timer.start();
+            if (platform) {
+                // a loop about the start, as a hand drags the platform
+                const double angle = 2 * 3.141592653589793 * i / 200.0;
+                const Eigen::Vector2d target = home.outputs.head<2>() + radius * Eigen::Vector2d(std::cos(angle) - 1, std::sin(angle));
+                window.document()->dragHandle(platformHandle, target);
+            } else {
+                window.document()->setVariable(window.document()->mechanism()->variableIndex("theta"), thetaDeg * pkm::units::degree);
+            }
+            // Deliver the pending paint requests now, as the event loop would before the next
+            // input event: only what changed repaints, as on a real screen.
+            QApplication::processEvents();
+            if (in3d) {
+                // the frame is done when the GL pipeline has drawn it
+                QOpenGLWidget *gl = view3d->glWidget();
+                gl->makeCurrent();
+                gl->context()->functions()->glFinish();
+                gl->doneCurrent();
+            }
+            times.push_back(timer.nsecsElapsed() / 1e6);
         }
-        // Deliver the pending paint requests now, as the event loop would before the next
-        // input event: only what changed repaints, as on a real screen.
-        QApplication::processEvents();
-        if (in3d) {
-            // the frame is done when the GL pipeline has drawn it
-            QOpenGLWidget *gl = view3d->glWidget();
-            gl->makeCurrent();
-            gl->context()->functions()->glFinish();
-            gl->doneCurrent();
+    };
+    const auto medianOf = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    std::vector<double> times;
+    times.reserve(steps);
+    if (shapes) {
+        // off and on in alternating rounds, so that a change of the machine's load meets both
+        std::vector<double> off, on;
+        for (int round = 0; round < 3; ++round) {
+            window.setCapabilityShapes(false);
+            run(off);
+            window.setCapabilityShapes(true);
+            run(on);
         }
-        times.push_back(timer.nsecsElapsed() / 1e6);
+        if (window.linkageView()->scene().legend.empty()) {
+            std::printf("error: the shapes are not drawn\n");
+            return 1;
+        }
+        const double added = medianOf(on) - medianOf(off);
+        std::printf("velocity and force shapes: step median %.2f ms without, %.2f ms with: +%.3f ms (target <= 1.0 ms)\n",
+                    medianOf(off), medianOf(on), added);
+        if (added > 1.0)
+            return 1;
+        times = on;
+    } else {
+        run(times);
     }
     std::sort(times.begin(), times.end());
     const double median = times[times.size() / 2];
@@ -149,7 +183,7 @@ int main(int argc, char *argv[])
     std::printf("linkage view: painted %d times in %d steps, last paint %.3f ms\n", paints, steps,
                 window.linkageView()->lastPaintMilliseconds());
     // A step that did not repaint would make the figure meaningless.
-    if (paints < steps) {
+    if (paints < int(times.size())) {
         std::printf("error: the view did not repaint on every step\n");
         return 1;
     }

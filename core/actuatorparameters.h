@@ -95,6 +95,51 @@ std::vector<ParameterRow<Design>> actuatorRows(ActuatorNames names, Locate)
     };
 }
 
+/// A load on the platform (or the output link) whose static deflection the capability group
+/// reports (capability.h): a force at the platform point and a moment, or a torque on an
+/// output that is an angle. Zero by default: no load, no deflection.
+struct LoadSpec {
+    double x = 0.0;      ///< N
+    double y = 0.0;      ///< N
+    double moment = 0.0; ///< N·m (a torque on an angular output)
+};
+
+enum class LoadNames {
+    Torque, ///< load_torque: an output that is an angle
+    Force,  ///< load_x, load_y: a platform point
+    ForceAndMoment, ///< load_x, load_y, load_moment: a platform that turns
+};
+
+/// The rows of the load that `Locate` finds ([](auto &d) -> auto & { return d.load; }).
+template <class Design, class Locate>
+std::vector<ParameterRow<Design>> loadRows(LoadNames names, Locate)
+{
+    static_assert(std::is_empty_v<Locate>, "a locator captures nothing");
+    using T = ParameterTable<Design>;
+    using G = ParameterGroup;
+    const Interval any{-1e9, 1e9};
+    const auto x = T::real([](auto &d) -> auto & { return Locate{}(d).x; });
+    const auto y = T::real([](auto &d) -> auto & { return Locate{}(d).y; });
+    const auto moment = T::real([](auto &d) -> auto & { return Locate{}(d).moment; });
+    if (names == LoadNames::Torque)
+        return {{{"load_torque", "T_L", QT_TRANSLATE_NOOP("core", "load: torque on the output link"), units::newtonMetre,
+                  G::Actuator, any, false, false, true, 2, 1.0},
+                 moment}};
+    std::vector<ParameterRow<Design>> rows = {
+        {{"load_x", "F_Lx", QT_TRANSLATE_NOOP("core", "load: force on the platform, x"), units::newton, G::Actuator, any,
+          false, false, true, 1, 5.0},
+         x},
+        {{"load_y", "F_Ly", QT_TRANSLATE_NOOP("core", "load: force on the platform, y"), units::newton, G::Actuator, any,
+          false, false, true, 1, 5.0},
+         y},
+    };
+    if (names == LoadNames::ForceAndMoment)
+        rows.push_back({{"load_moment", "M_L", QT_TRANSLATE_NOOP("core", "load: moment on the platform"), units::newtonMetre,
+                         G::Actuator, any, false, false, true, 2, 0.5},
+                        moment});
+    return rows;
+}
+
 /// `rows` followed by `more`: a kind's own rows, then its actuators'.
 template <class Design>
 std::vector<ParameterRow<Design>> joinRows(std::vector<ParameterRow<Design>> rows,

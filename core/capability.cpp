@@ -42,6 +42,18 @@ ReportLayout makeLayout(int n, bool rotary, bool measured)
     else
         l.add(G, "stiffness", "K", QT_TRANSLATE_NOOP("core", "stiffness K = Jᵀ·K_q·J"), stiffness, 1, n, n);
     l.add(G, "stiffness_worst", "K_min", QT_TRANSLATE_NOOP("core", "stiffness in the weakest direction"), stiffness, 1);
+    if (n == 1) {
+        l.add(G, "deflection", "Δθ_L", QT_TRANSLATE_NOOP("core", "deflection under the load (actuators' compliance)"),
+              rotary ? units::angle : units::millimetre, 4);
+    } else {
+        l.add(G, "deflection", "Δx_L", QT_TRANSLATE_NOOP("core", "deflection of the platform point under the load"),
+              units::millimetre, 4, 2, 1);
+        l.add(G, "deflection_norm", "|Δx_L|", QT_TRANSLATE_NOOP("core", "length of the deflection under the load"),
+              units::millimetre, 4);
+        if (n == 3)
+            l.add(G, "deflection_angle", "Δφ_L", QT_TRANSLATE_NOOP("core", "rotation of the platform under the load"),
+                  units::angle, 4);
+    }
     if (measured)
         l.add(G, "stiffness_measured", "K_m",
               QT_TRANSLATE_NOOP("core", "measured static stiffness of the whole joint (the document)"), units::newtonMetrePerRadian,
@@ -54,12 +66,17 @@ ReportLayout makeLayout(int n, bool rotary, bool measured)
     l.atSingularity("resolution_worst", S::Computed, S::Infinite);
     l.atSingularity("stiffness", S::Infinite, S::Computed);
     l.atSingularity("stiffness_worst", S::Computed, S::Zero);
+    for (const char *deflection : {"deflection", "deflection_norm", "deflection_angle"}) {
+        if (l.find(deflection))
+            l.atSingularity(deflection, S::Computed, S::Infinite);
+    }
     return l;
 }
 
 /// Inscribed radius about the origin of {v : |a_i·v| ≤ b_i}, a_i the first `t` entries of
 /// row i of `rows`: the ball of radius r lies in slab i exactly when r·|a_i| ≤ b_i.
-double inscribedRadius(const Matrix &rows, const Vector &b, int t)
+template <class Rows, class Limits>
+double inscribedRadius(const Rows &rows, const Limits &b, int t)
 {
     double radius = infinity;
     for (int i = 0; i < rows.rows(); ++i) {
@@ -74,13 +91,15 @@ double inscribedRadius(const Matrix &rows, const Vector &b, int t)
 /// rows of M. With `cut`, only the part of the image where row t of M·u is 0 counts (zero
 /// moment or zero rotation of a 3-DOF platform): its vertices are where the box's edges cross
 /// that plane. A polytope's farthest point is one of its vertices, so this is exact.
-double farthestVertex(const Matrix &M, const Vector &l, int t, bool cut)
+template <class Mat, class Limits>
+double farthestVertex(const Mat &M, const Limits &l, int t, bool cut)
 {
+    using V = typename Limits::PlainObject;
     const int m = static_cast<int>(M.cols());
     double best = 0.0;
-    const auto measure = [&](const Vector &u) { best = std::max(best, (M.topRows(t) * u).norm()); };
+    const auto measure = [&](const V &u) { best = std::max(best, (M.topRows(t) * u).norm()); };
     for (int signs = 0; signs < (1 << m); ++signs) {
-        Vector u(m);
+        V u = l; // (its size; every entry set below)
         for (int j = 0; j < m; ++j)
             u[j] = (signs >> j & 1) ? l[j] : -l[j];
         if (!cut) {
@@ -97,7 +116,7 @@ double farthestVertex(const Matrix &M, const Vector &l, int t, bool cut)
             const double rest = c.dot(u) - c[k] * u[k];
             const double uk = -rest / c[k];
             if (std::abs(uk) <= l[k]) {
-                Vector v = u;
+                V v = u;
                 v[k] = uk;
                 measure(v);
             }
@@ -108,7 +127,8 @@ double farthestVertex(const Matrix &M, const Vector &l, int t, bool cut)
 
 /// The largest eigenvalue of the leading t×t (1×1 or 2×2) block of a symmetric matrix, in
 /// closed form.
-double largestEigenvalue(const Matrix &C, int t)
+template <class Mat>
+double largestEigenvalue(const Mat &C, int t)
 {
     if (t == 1)
         return C(0, 0);
@@ -164,6 +184,13 @@ Actuators actuatorsOf(const Mechanism &mechanism)
         }
     }
     value("stiffness_measured", a.measuredStiffness);
+    if (a.rotaryOutput) {
+        value("load_torque", a.load[0]);
+    } else {
+        value("load_x", a.load[0]);
+        value("load_y", a.load[1]);
+        value("load_moment", a.load[2]);
+    }
     const Pose home = mechanism.homePose();
     const Jacobians j = mechanism.jacobians(home);
     Matrix jq(a.count, a.count), jx(a.count, a.count);
@@ -197,16 +224,21 @@ const ReportLayout *layoutFor(const Actuators &actuators)
     return &layouts[std::size_t(index + (measured ? 1 : 0))];
 }
 
-void evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
-              std::span<double> values)
+namespace {
+
+/// evaluate() for N actuators: fixed-size matrices, so that the solves and products are
+/// inlined (a sweep evaluates this once per row).
+template <int N>
+void evaluateFixed(const Actuators &actuators, const Matrix &jqIn, const Matrix &jxIn, SingularityType type,
+                   std::span<double> values, const ReportLayout *layout)
 {
-    const ReportLayout *layout = layoutFor(actuators);
-    if (!layout)
-        return;
-    const int n = actuators.count;
+    using Matrix = Eigen::Matrix<double, N, N>;
+    using Vector = Eigen::Matrix<double, N, 1>;
+    const Matrix jq = jqIn, jx = jxIn;
+    constexpr int n = N;
     const int t = std::min(n, 2); // the translational coordinates (or the one output)
     const bool cut = n == 3;
-    Vector effort(n), speed(n), halfStep(n), compliance(n), stiffness(n);
+    Vector effort, speed, halfStep, compliance, stiffness;
     for (int i = 0; i < n; ++i) {
         const Actuator &a = actuators.items[std::size_t(i)];
         const double toMillimetre = a.rotary ? perMetre : 1.0;
@@ -245,9 +277,43 @@ void evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, Si
     }
     // the weakest direction of a pure force: the largest compliance of the translational block
     values[std::size_t(slot++)] = toOutput / largestEigenvalue(C, t);
+    // Δx = C·F: a torque or moment enters in N·mm, as the compliance's angular rows take it
+    Vector load;
+    for (int i = 0; i < n; ++i)
+        load[i] = actuators.load[std::size_t(i)] * (i == 2 || actuators.rotaryOutput ? perMetre : 1.0);
+    const Vector deflection = C * load;
+    const std::size_t firstDeflection = std::size_t(slot);
+    for (int i = 0; i < t; ++i)
+        values[std::size_t(slot++)] = deflection[i];
+    if constexpr (N > 1)
+        values[std::size_t(slot++)] = deflection.template head<2>().norm();
+    if constexpr (N == 3)
+        values[std::size_t(slot++)] = deflection[2];
+    const std::size_t endDeflection = std::size_t(slot);
     if (actuators.measuredStiffness > 0.0)
         values[std::size_t(slot++)] = actuators.measuredStiffness;
     settleSingularValues(*layout, values, type);
+    // no load, no deflection, whatever the pose (0·∞ would be undefined, not unbounded)
+    if (load.isZero(0.0))
+        std::fill(values.begin() + std::ptrdiff_t(firstDeflection), values.begin() + std::ptrdiff_t(endDeflection), 0.0);
+}
+
+} // namespace
+
+void evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
+              std::span<double> values)
+{
+    const ReportLayout *layout = layoutFor(actuators);
+    if (!layout)
+        return;
+    switch (actuators.count) {
+    case 1:
+        return evaluateFixed<1>(actuators, jq, jx, type, values, layout);
+    case 2:
+        return evaluateFixed<2>(actuators, jq, jx, type, values, layout);
+    default:
+        return evaluateFixed<3>(actuators, jq, jx, type, values, layout);
+    }
 }
 
 void evaluate(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose, SingularityType type,

@@ -34,6 +34,12 @@
 ///           torque_max{i}, rate_max{i}, angle_step{i}, torsion{i};
 ///   a single actuator (the П-joint) may drop the index: force_max, speed_max, step, stiffness.
 /// An optional `stiffness_measured` (N·m/rad) is reported beside the computed stiffness.
+///
+/// The deflection under the design's load (load_x, load_y in N and load_moment in N·m on the
+/// platform, load_torque in N·m on an angular output) is Δx = C·F with the compliance C of the
+/// actuators alone (the links rigid): `deflection` (mm, or ° for an angle), its length
+/// `deflection_norm` and, for a platform that turns, `deflection_angle`. Unbounded at a direct
+/// singularity unless there is no load.
 
 #include "mechanism.h"
 
@@ -74,6 +80,9 @@ struct Actuators {
     /// motion at a typical pose, the scale against which a pose classified inverse-singular
     /// tells an actuator that no longer moves the platform (0: unknown).
     std::array<double, maxActuators> transmission{};
+    /// The load on the platform (load_x, load_y N; load_moment N·m) or on an angular output
+    /// (load_torque N·m), in the order of the outputs; zero where the design gives none.
+    std::array<double, maxActuators> load{};
 };
 
 /// Small matrices on the stack (at most 3×3), so that evaluate() does not allocate.

@@ -93,12 +93,30 @@ struct SceneHandle {
     }
 };
 
+/// What a polyline shows: a path of the mechanism, or one of the actuators' capability
+/// shapes at the platform point (capabilityshapes.h), drawn to the scale the legend gives.
+enum class PathKind {
+    Path,
+    VelocityPolygon, ///< the exact velocity polygon, solid
+    VelocityEllipse, ///< the velocity ellipse inscribed in it, dashed
+    ForcePolygon,
+    ForceEllipse,
+};
+
 /// A polyline in the mechanism plane (a coupler curve, a trajectory), drawn thin; `closed`
 /// joins the last point to the first.
 struct ScenePolyline {
     std::vector<Eigen::Vector3d> points;
     bool closed = false;
     std::string label;
+    PathKind kind = PathKind::Path;
+};
+
+/// A line of the drawing's legend: what the shapes of `kind` are and their scale ("velocity:
+/// 10 mm ≙ 50 mm/s"), translated.
+struct SceneLegendEntry {
+    PathKind kind = PathKind::Path;
+    std::string text;
 };
 
 struct Scene {
@@ -110,6 +128,7 @@ struct Scene {
     std::vector<SceneDimension> dimensions;
     std::vector<SceneHandle> handles;
     std::vector<ScenePolyline> polylines;
+    std::vector<SceneLegendEntry> legend; ///< drawn in a corner by the views and pictures
     /// Box holding the mechanism over its whole range of motion, so "fit" does not jump.
     Eigen::AlignedBox3d extent;
 };

@@ -76,16 +76,24 @@ void collectRaysAndJoints(const SceneCanvas &canvas)
 }
 
 /// Paths (a coupler curve) lie under the mechanism, thin; a path is broken where a point is
-/// undefined rather than bridged.
-void layoutPaths(const SceneCanvas &canvas)
+/// undefined rather than bridged. The capability shapes (`shapes`) go over the members instead,
+/// since they are centred on the platform point: polygons solid, ellipses dashed.
+void layoutPaths(const SceneCanvas &canvas, bool shapes)
 {
-    const Pen path {canvas.style.path, 1.6 * canvas.px(), Qt::RoundCap, Dash::Solid, Qt::RoundJoin};
+    const SceneStyle &style = canvas.style;
     for (const ScenePolyline &polyline : canvas.scene.polylines) {
+        if ((polyline.kind != PathKind::Path) != shapes)
+            continue;
+        const bool velocity = polyline.kind == PathKind::VelocityPolygon || polyline.kind == PathKind::VelocityEllipse;
+        const bool ellipse = polyline.kind == PathKind::VelocityEllipse || polyline.kind == PathKind::ForceEllipse;
+        const Pen pen {!shapes ? style.path : velocity ? style.velocity : style.force,
+            (shapes && !ellipse ? 2.0 : 1.6) * canvas.px(), Qt::RoundCap, ellipse ? Dash::Dashed : Dash::Solid,
+            Qt::RoundJoin};
         QPolygonF run;
         bool broken = false;
         auto flush = [&] {
             if (run.size() >= 2)
-                canvas.out.add(Polygon {run, polyline.closed && !broken, path}, Layer::Paths);
+                canvas.out.add(Polygon {run, polyline.closed && !broken, pen}, Layer::Paths);
             run.clear();
         };
         for (const Eigen::Vector3d &p : polyline.points) {
@@ -252,7 +260,7 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
     list.items.reserve(8 * (scene.joints.size() + scene.bars.size()) + 16);
 
     collectRaysAndJoints(canvas);
-    layoutPaths(canvas);
+    layoutPaths(canvas, false);
     for (std::size_t g = 0; g < guides.size(); ++g)
         drawGuide(canvas, int(g));
     for (const SceneActuator &actuator : scene.actuators)
@@ -266,6 +274,7 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
             drawCarriage(canvas, *guide, points[i]);
     }
     layoutBars(canvas);
+    layoutPaths(canvas, true);
     for (const SceneDimension &dimension : scene.dimensions)
         drawDimension(canvas, dimension);
     for (const SceneAngle &angle : scene.angles)

@@ -204,4 +204,50 @@ void ScenePainter::paintMessage(QPainter &painter, const QRectF &area, const QSt
     painter.restore();
 }
 
+void ScenePainter::paintLegend(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style)
+{
+    if (scene.legend.empty())
+        return;
+    const double px = style.pixelSize;
+    const QFont font = detail::labelFont(style.fontPixels * px, false);
+    const QFontMetricsF metrics(font, painter.device());
+    const double margin = 16.0 * px, pad = 8.0 * px, sample = 34.0 * px, gap = 8.0 * px;
+    // the whole width if need be: a legend line broken in two is harder to read than a drawing
+    // partly covered
+    const double available = std::max(60.0 * px, area.width() - 2.0 * margin - 2.0 * pad - sample - gap);
+    const int flags = Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap;
+    std::vector<QRectF> boxes;
+    double width = 0.0, height = 0.0;
+    for (const SceneLegendEntry &entry : scene.legend) {
+        const QRectF box = metrics.boundingRect(QRectF(0, 0, available, 1e6), flags, QString::fromStdString(entry.text));
+        boxes.push_back(box);
+        width = std::max(width, box.width());
+        height += box.height() + (boxes.size() > 1 ? 4.0 * px : 0.0);
+    }
+    const QRectF frame(area.left() + margin, area.top() + margin, sample + gap + std::ceil(width) + 2.0 * pad,
+                       std::ceil(height) + 2.0 * pad);
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    paintKnockout(painter, frame, style);
+    painter.setFont(font);
+    double y = frame.top() + pad;
+    for (std::size_t i = 0; i < scene.legend.size(); ++i) {
+        const SceneLegendEntry &entry = scene.legend[i];
+        const bool velocity = entry.kind == PathKind::VelocityPolygon || entry.kind == PathKind::VelocityEllipse;
+        const QColor colour = entry.kind == PathKind::Path ? style.path : velocity ? style.velocity : style.force;
+        const double middle = y + 0.5 * metrics.height();
+        const double x = frame.left() + pad;
+        painter.setPen(QPen(colour, 2.0 * px, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(QPointF(x, middle), QPointF(x + 0.45 * sample, middle));
+        QPen dashed(colour, 1.6 * px, Qt::DashLine, Qt::RoundCap);
+        painter.setPen(dashed);
+        painter.drawLine(QPointF(x + 0.6 * sample, middle), QPointF(x + sample, middle));
+        painter.setPen(style.ink);
+        painter.drawText(QRectF(x + sample + gap, y, available, boxes[i].height() + 1.0), flags,
+                         QString::fromStdString(entry.text));
+        y += boxes[i].height() + 4.0 * px;
+    }
+    painter.restore();
+}
+
 } // namespace pkm

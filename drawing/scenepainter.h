@@ -44,6 +44,10 @@ public:
     /// A scale bar ("50 mm") in the bottom-right corner of `area`.
     static void paintScaleBar(
         QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style);
+    /// The scene's legend (Scene::legend: what the capability shapes are and their scales) in a
+    /// box at the top-left of `area`, each line after a sample of its pen: solid for the
+    /// polygon, dashed for the ellipse; long lines wrap. Nothing when the legend is empty.
+    static void paintLegend(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style);
     /// A message in a rounded box at the bottom-left of `area`, wrapped onto as many lines as it
     /// needs (never cut); nothing when empty.
     static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style);

@@ -51,6 +51,8 @@ struct SceneStyle {
     QColor screwShade {0x5d, 0x66, 0x72}; ///< screw outline and thread
     QColor angle {0x9c, 0x1f, 0x6e}; ///< arcs and their labels
     QColor path {0x8a, 0x5a, 0xa8}; ///< coupler curves and other paths, drawn thin
+    QColor velocity {0xd8, 0x1b, 0x60}; ///< velocity polygon and ellipse (raspberry)
+    QColor force {0x39, 0x49, 0xab}; ///< force polygon and ellipse (indigo)
     QColor dimension {0x2b, 0x33, 0x3d};
     QColor handle {0x1e, 0x88, 0xe5};
     QColor guideFill {0xdc, 0xe2, 0xea}; ///< light steel rail

@@ -3940,6 +3940,62 @@ Please verify the correct file name was given.</source>
         <source>measured static stiffness of the joint</source>
         <translation>измеренная статическая жёсткость шарнира</translation>
     </message>
+    <message>
+        <source>load: torque on the output link</source>
+        <translation>нагрузка: момент на выходном звене</translation>
+    </message>
+    <message>
+        <source>load: force on the platform, x</source>
+        <translation>нагрузка: сила на платформе, x</translation>
+    </message>
+    <message>
+        <source>load: force on the platform, y</source>
+        <translation>нагрузка: сила на платформе, y</translation>
+    </message>
+    <message>
+        <source>load: moment on the platform</source>
+        <translation>нагрузка: момент на платформе</translation>
+    </message>
+    <message>
+        <source>deflection under the load (actuators&apos; compliance)</source>
+        <translation>отклонение под нагрузкой (податливость приводов)</translation>
+    </message>
+    <message>
+        <source>deflection of the platform point under the load</source>
+        <translation>смещение точки платформы под нагрузкой</translation>
+    </message>
+    <message>
+        <source>length of the deflection under the load</source>
+        <translation>величина смещения под нагрузкой</translation>
+    </message>
+    <message>
+        <source>rotation of the platform under the load</source>
+        <translation>поворот платформы под нагрузкой</translation>
+    </message>
+    <message>
+        <source>undefined at this singular pose</source>
+        <translation>не определено в этой особой позе</translation>
+    </message>
+    <message>
+        <source>cut at the edge of the drawing</source>
+        <translation>обрезано по краю чертежа</translation>
+    </message>
+    <message>
+        <source>velocity: 1 mm ≙ %1 mm/s</source>
+        <translation>скорость: 1 мм ≙ %1 мм/с</translation>
+    </message>
+    <message>
+        <source>unbounded: the locked actuators do not hold the platform (direct singularity)</source>
+        <translation>не ограничено: запертые приводы не удерживают платформу (прямая особенность)</translation>
+    </message>
+    <message>
+        <source>force: 1 mm ≙ %1 N</source>
+        <translation>сила: 1 мм ≙ %1 Н</translation>
+    </message>
+    <message>
+        <source>unbounded: a stretched leg holds any force along it (inverse singularity)</source>
+        <translation>не ограничено: вытянутая нога держит любую силу вдоль себя (обратная особенность)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4990,6 +5046,34 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The assembly and working modes: the mode of the current pose, and a button for each other mode the mechanism can take here, which switches to it.</source>
         <translation>Сборки и рабочие режимы: режим текущего положения и кнопка для каждого другого режима, который механизм может принять здесь; она переключает на него.</translation>
+    </message>
+    <message>
+        <source>Ellipses</source>
+        <translation>Эллипсы</translation>
+    </message>
+    <message>
+        <source>Velocity and force polygons and ellipses at the platform point (V)</source>
+        <translation>Многоугольники и эллипсы скорости и силы в точке платформы (V)</translation>
+    </message>
+    <message>
+        <source>&amp;Velocity and Force Shapes</source>
+        <translation>Фигуры &amp;скорости и силы</translation>
+    </message>
+    <message>
+        <source>The velocity and force polygons (solid) and ellipses (dashed) the actuators give at the platform point, to the scale of the legend (V)</source>
+        <translation>Многоугольники (сплошные) и эллипсы (штриховые) скорости и силы, которые приводы дают в точке платформы, в масштабе легенды (V)</translation>
+    </message>
+    <message>
+        <source>This design states no actuator limits, so there are no velocity and force shapes to draw.</source>
+        <translation>В этой конструкции не заданы пределы приводов, поэтому фигур скорости и силы нет.</translation>
+    </message>
+    <message>
+        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values at this pose”; there is no platform point to draw shapes at.</source>
+        <translation>Выход этого механизма — один угол: его скорость, момент и жёсткость — в «Значениях»; точки платформы, где рисовать фигуры, нет.</translation>
+    </message>
+    <message>
+        <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
+        <translation>Фигуры скорости и силы нельзя масштабировать для этой конструкции: её исходная поза особая.</translation>
     </message>
 </context>
 <context>

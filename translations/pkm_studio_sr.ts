@@ -3940,6 +3940,62 @@ Please verify the correct file name was given.</source>
         <source>measured static stiffness of the joint</source>
         <translation>измерена статичка крутост зглоба</translation>
     </message>
+    <message>
+        <source>load: torque on the output link</source>
+        <translation>оптерећење: момент на излазном чланку</translation>
+    </message>
+    <message>
+        <source>load: force on the platform, x</source>
+        <translation>оптерећење: сила на платформи, x</translation>
+    </message>
+    <message>
+        <source>load: force on the platform, y</source>
+        <translation>оптерећење: сила на платформи, y</translation>
+    </message>
+    <message>
+        <source>load: moment on the platform</source>
+        <translation>оптерећење: момент на платформи</translation>
+    </message>
+    <message>
+        <source>deflection under the load (actuators&apos; compliance)</source>
+        <translation>угиб под оптерећењем (попустљивост актуатора)</translation>
+    </message>
+    <message>
+        <source>deflection of the platform point under the load</source>
+        <translation>померај тачке платформе под оптерећењем</translation>
+    </message>
+    <message>
+        <source>length of the deflection under the load</source>
+        <translation>величина помераја под оптерећењем</translation>
+    </message>
+    <message>
+        <source>rotation of the platform under the load</source>
+        <translation>заокрет платформе под оптерећењем</translation>
+    </message>
+    <message>
+        <source>undefined at this singular pose</source>
+        <translation>недефинисано у овом сингуларном положају</translation>
+    </message>
+    <message>
+        <source>cut at the edge of the drawing</source>
+        <translation>одсечено на ивици цртежа</translation>
+    </message>
+    <message>
+        <source>velocity: 1 mm ≙ %1 mm/s</source>
+        <translation>брзина: 1 mm ≙ %1 mm/s</translation>
+    </message>
+    <message>
+        <source>unbounded: the locked actuators do not hold the platform (direct singularity)</source>
+        <translation>неограничено: закочени актуатори не држе платформу (директна сингуларност)</translation>
+    </message>
+    <message>
+        <source>force: 1 mm ≙ %1 N</source>
+        <translation>сила: 1 mm ≙ %1 N</translation>
+    </message>
+    <message>
+        <source>unbounded: a stretched leg holds any force along it (inverse singularity)</source>
+        <translation>неограничено: испружена нога држи сваку силу дуж себе (инверзна сингуларност)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4990,6 +5046,34 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The assembly and working modes: the mode of the current pose, and a button for each other mode the mechanism can take here, which switches to it.</source>
         <translation>Начини склапања и радни режими: режим тренутног положаја и дугме за сваки други режим који механизам овде може да заузме; оно прелази на њега.</translation>
+    </message>
+    <message>
+        <source>Ellipses</source>
+        <translation>Елипсе</translation>
+    </message>
+    <message>
+        <source>Velocity and force polygons and ellipses at the platform point (V)</source>
+        <translation>Полигони и елипсе брзине и силе у тачки платформе (V)</translation>
+    </message>
+    <message>
+        <source>&amp;Velocity and Force Shapes</source>
+        <translation>Облици &amp;брзине и силе</translation>
+    </message>
+    <message>
+        <source>The velocity and force polygons (solid) and ellipses (dashed) the actuators give at the platform point, to the scale of the legend (V)</source>
+        <translation>Полигони (пуне линије) и елипсе (испрекидане) брзине и силе које актуатори дају у тачки платформе, у размери легенде (V)</translation>
+    </message>
+    <message>
+        <source>This design states no actuator limits, so there are no velocity and force shapes to draw.</source>
+        <translation>Ова конструкција не задаје границе актуатора, па нема облика брзине и силе за цртање.</translation>
+    </message>
+    <message>
+        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values at this pose”; there is no platform point to draw shapes at.</source>
+        <translation>Излаз овог механизма је један угао: његова брзина, момент и крутост су у „Вредностима”; нема тачке платформе на којој би се цртали облици.</translation>
+    </message>
+    <message>
+        <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
+        <translation>Облици брзине и силе не могу се сразмерити за ову конструкцију: њен почетни положај је сингуларан.</translation>
     </message>
 </context>
 <context>

@@ -3940,6 +3940,62 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>measured static stiffness of the joint</source>
         <translation>izmerena statička krutost zgloba</translation>
     </message>
+    <message>
+        <source>load: torque on the output link</source>
+        <translation>opterećenje: moment na izlaznom članku</translation>
+    </message>
+    <message>
+        <source>load: force on the platform, x</source>
+        <translation>opterećenje: sila na platformi, x</translation>
+    </message>
+    <message>
+        <source>load: force on the platform, y</source>
+        <translation>opterećenje: sila na platformi, y</translation>
+    </message>
+    <message>
+        <source>load: moment on the platform</source>
+        <translation>opterećenje: moment na platformi</translation>
+    </message>
+    <message>
+        <source>deflection under the load (actuators&apos; compliance)</source>
+        <translation>ugib pod opterećenjem (popustljivost aktuatora)</translation>
+    </message>
+    <message>
+        <source>deflection of the platform point under the load</source>
+        <translation>pomeraj tačke platforme pod opterećenjem</translation>
+    </message>
+    <message>
+        <source>length of the deflection under the load</source>
+        <translation>veličina pomeraja pod opterećenjem</translation>
+    </message>
+    <message>
+        <source>rotation of the platform under the load</source>
+        <translation>zaokret platforme pod opterećenjem</translation>
+    </message>
+    <message>
+        <source>undefined at this singular pose</source>
+        <translation>nedefinisano u ovom singularnom položaju</translation>
+    </message>
+    <message>
+        <source>cut at the edge of the drawing</source>
+        <translation>odsečeno na ivici crteža</translation>
+    </message>
+    <message>
+        <source>velocity: 1 mm ≙ %1 mm/s</source>
+        <translation>brzina: 1 mm ≙ %1 mm/s</translation>
+    </message>
+    <message>
+        <source>unbounded: the locked actuators do not hold the platform (direct singularity)</source>
+        <translation>neograničeno: zakočeni aktuatori ne drže platformu (direktna singularnost)</translation>
+    </message>
+    <message>
+        <source>force: 1 mm ≙ %1 N</source>
+        <translation>sila: 1 mm ≙ %1 N</translation>
+    </message>
+    <message>
+        <source>unbounded: a stretched leg holds any force along it (inverse singularity)</source>
+        <translation>neograničeno: ispružena noga drži svaku silu duž sebe (inverzna singularnost)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4990,6 +5046,34 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>The assembly and working modes: the mode of the current pose, and a button for each other mode the mechanism can take here, which switches to it.</source>
         <translation>Načini sklapanja i radni režimi: režim trenutnog položaja i dugme za svaki drugi režim koji mehanizam ovde može da zauzme; ono prelazi na njega.</translation>
+    </message>
+    <message>
+        <source>Ellipses</source>
+        <translation>Elipse</translation>
+    </message>
+    <message>
+        <source>Velocity and force polygons and ellipses at the platform point (V)</source>
+        <translation>Poligoni i elipse brzine i sile u tački platforme (V)</translation>
+    </message>
+    <message>
+        <source>&amp;Velocity and Force Shapes</source>
+        <translation>Oblici &amp;brzine i sile</translation>
+    </message>
+    <message>
+        <source>The velocity and force polygons (solid) and ellipses (dashed) the actuators give at the platform point, to the scale of the legend (V)</source>
+        <translation>Poligoni (pune linije) i elipse (isprekidane) brzine i sile koje aktuatori daju u tački platforme, u razmeri legende (V)</translation>
+    </message>
+    <message>
+        <source>This design states no actuator limits, so there are no velocity and force shapes to draw.</source>
+        <translation>Ova konstrukcija ne zadaje granice aktuatora, pa nema oblika brzine i sile za crtanje.</translation>
+    </message>
+    <message>
+        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values at this pose”; there is no platform point to draw shapes at.</source>
+        <translation>Izlaz ovog mehanizma je jedan ugao: njegova brzina, moment i krutost su u „Vrednostima”; nema tačke platforme na kojoj bi se crtali oblici.</translation>
+    </message>
+    <message>
+        <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
+        <translation>Oblici brzine i sile ne mogu se srazmeriti za ovu konstrukciju: njen početni položaj je singularan.</translation>
     </message>
 </context>
 <context>

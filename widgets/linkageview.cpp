@@ -177,6 +177,7 @@ void LinkageView::renderScene(QPainter &painter, const QRectF &target, const Sce
     ScenePainter::paintBackground(painter, target, mapping, exported);
     ScenePainter::paint(painter, scene, mapping, exported);
     ScenePainter::paintScaleBar(painter, target, mapping, exported);
+    ScenePainter::paintLegend(painter, target, scene, exported);
     painter.restore();
 }
 
@@ -243,6 +244,8 @@ void LinkageView::paintEvent(QPaintEvent *)
     if (m_hasScene)
         ScenePainter::paint(painter, m_scene, m_mapping, m_style, activeHandle());
     ScenePainter::paintScaleBar(painter, area, m_mapping, m_style);
+    if (m_hasScene)
+        ScenePainter::paintLegend(painter, area, m_scene, m_style);
     ScenePainter::paintMessage(painter, area, shownMessage(), m_style);
     painter.end();
     ++m_paintCount;

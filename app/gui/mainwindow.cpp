@@ -354,6 +354,7 @@ void MainWindow::createActions()
 
     createPlayControls(view);
     createPresentationActions(view);
+    createCapabilityActions(view);
 
     QMenu *help = menuBar()->addMenu(QString());
     translated(help->menuAction(), QT_TR_NOOP("&Help"));
@@ -374,6 +375,16 @@ void MainWindow::createActions()
     m_toolBar->addAction(fit);
     m_toolBar->addAction(zoomIn);
     m_toolBar->addAction(zoomOut);
+    m_toolBar->addSeparator();
+    // the toolbar's own short label; the menu names the shapes in full
+    QAction *shapesButton = translated(new QAction(this), QT_TR_NOOP("Ellipses"),
+        QT_TR_NOOP("Velocity and force polygons and ellipses at the platform point (V)"));
+    shapesButton->setObjectName(QStringLiteral("capabilityShapesButton"));
+    shapesButton->setCheckable(true);
+    shapesButton->setChecked(m_capabilityAction->isChecked());
+    connect(shapesButton, &QAction::toggled, m_capabilityAction, &QAction::setChecked);
+    connect(m_capabilityAction, &QAction::toggled, shapesButton, &QAction::setChecked);
+    m_toolBar->addAction(shapesButton);
     translated(m_toolBar->toggleViewAction(), QT_TR_NOOP("Main Toolbar"));
 }
 

@@ -2,6 +2,7 @@
 /// The main window: the linkage view, the joint-variable sliders, the design panel, live values
 /// and plots, all reading one Document and asking it for every change.
 
+#include "capabilityshapes.h"
 #include "export/animation.h"
 #include "mechanism.h"
 #include "scenestyle.h"
@@ -126,6 +127,14 @@ public:
     /// The guide's window once shown, else nullptr.
     GuideWindow *guideWindow() const;
 
+    /// View ▸ Velocity and Force Shapes: the actuators' polygons and ellipses at the platform
+    /// point in the 2D view (mainwindowcapability.cpp); `on` also where they cannot be drawn
+    /// (the action stays checked, the status bar says why).
+    void setCapabilityShapes(bool on);
+    bool showsCapabilityShapes() const;
+    /// Why the current design has no shapes to draw (empty when it has).
+    QString capabilityShapesUnavailable() const;
+
     /// Switches the program to the language `code` (language.h) and remembers it.
     void setLanguage(const QString &code);
 
@@ -142,6 +151,12 @@ private:
     /// The Play toolbar and the Bookmarks menu (mainwindowplay.cpp); Play's actions go into `viewMenu`.
     void createPlayControls(QMenu *viewMenu);
     void createPresentationActions(QMenu *viewMenu);
+    /// The Velocity and Force Shapes toggle, in `viewMenu` and on the toolbar.
+    void createCapabilityActions(QMenu *viewMenu);
+    /// The actuators and the shapes' scales of a new design.
+    void updateCapabilityDesign();
+    /// The 2D view's scene of `pose`: the mechanism's, with the shapes when they are on.
+    Scene viewScene(const Pose &pose) const;
     /// Help ▸ User Guide and What's This (mainwindowhelp.cpp), at the top of `help`.
     void createHelpActions(QMenu *help);
     /// The What's This text of every panel, in the current language.
@@ -249,6 +264,9 @@ private:
     QFont m_baseFont;       ///< the application's font at 100 %
     SceneStyle m_baseStyle; ///< the linkage view's style at 100 %
     QAction *m_presentationAction = nullptr;
+    QAction *m_capabilityAction = nullptr;
+    capability::Actuators m_actuators;
+    capability::ShapeScales m_shapeScales;
     QMenu *m_textSizeMenu = nullptr;
     QShortcut *m_leavePresentation = nullptr;
     bool m_presenting = false;

@@ -81,6 +81,7 @@ void MainWindow::onDesignChanged()
     const Design &design = m_document->design();
     const MechanismPtr &mechanism = design.mechanism;
     updateTitle();
+    updateCapabilityDesign();
     m_designPanel->setMechanism(mechanism);
     m_designPanel->setNote(designfile::presetText(design.title), designfile::presetText(design.description));
     m_variables->setMechanism(mechanism);
@@ -158,13 +159,12 @@ void MainWindow::keepMechanismInView()
 
 void MainWindow::onPoseChanged()
 {
-    const MechanismPtr &mechanism = m_document->mechanism();
     const Pose &pose = m_document->pose();
     m_variables->setPose(pose);
     m_values->setPose(pose);
     m_mobility->setPose(pose);
     m_equations->setPose(pose);
-    m_view->setScene(mechanism->scene(pose));
+    m_view->setScene(viewScene(pose));
     update3d(false);
     if (m_currentPanel)
         m_currentPanel->setPose(pose);

@@ -325,10 +325,12 @@ void MainWindow::exportParameterSheet()
 
 void MainWindow::saveViewPicture()
 {
-    // The 2D picture of the current design and pose, the same drawing as `pkm render`.
+    // The 2D picture of the current design and pose, the same drawing as `pkm render` (with the
+    // velocity and force shapes when the view shows them).
+    const Scene drawn = viewScene(m_document->pose());
     const QString path = viewpicture::savePictureAs(this, *m_document->mechanism(), m_document->pose(),
         m_session->displayName(), viewpicture::suggestedName(m_session->filePath(), m_document->design().id),
-        m_view->size(), m_view->sceneStyle());
+        m_view->size(), m_view->sceneStyle(), &drawn);
     if (!path.isEmpty())
         showStatus(tr("Wrote the 2D view to %1.").arg(QDir::toNativeSeparators(path)));
 }

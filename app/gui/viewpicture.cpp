@@ -29,13 +29,13 @@ QByteArray scenePicture(const Scene &scene, const SceneStyle &style, const QStri
 }
 
 QByteArray posePicture(const Mechanism &mechanism, const Pose &pose, const QString &name, const SceneStyle &style,
-    const QString &format, const PictureOptions &options, const QSize &shown, QString *error)
+    const QString &format, const PictureOptions &options, const QSize &shown, QString *error, const Scene *drawn)
 {
     PictureOptions picture = options;
     const QString caption = pictures::poseCaption(mechanism, pose, name);
     if (picture.title.isEmpty())
         picture.title = caption;
-    return scenePicture(mechanism.scene(pose), style, caption, format, picture, shown, error);
+    return scenePicture(drawn ? *drawn : mechanism.scene(pose), style, caption, format, picture, shown, error);
 }
 
 QString suggestedName(const QString &filePath, const QString &designId)
@@ -49,7 +49,7 @@ QString suggestedName(const QString &filePath, const QString &designId)
 }
 
 QString savePictureAs(QWidget *parent, const Mechanism &mechanism, const Pose &pose, const QString &name,
-    const QString &fileName, const QSize &shown, const SceneStyle &style)
+    const QString &fileName, const QSize &shown, const SceneStyle &style, const Scene *drawn)
 {
     const QString title = QCoreApplication::translate("pkm::ViewPicture", "Save 2D View Picture");
     const std::optional<PictureRequest> request = askForPicture(parent, title, fileName, shown);
@@ -57,7 +57,7 @@ QString savePictureAs(QWidget *parent, const Mechanism &mechanism, const Pose &p
         return {};
     QString error;
     const QByteArray bytes
-        = posePicture(mechanism, pose, name, style, request->format, request->options, shown, &error);
+        = posePicture(mechanism, pose, name, style, request->format, request->options, shown, &error, drawn);
     if (bytes.isEmpty() || !savePictureFile(request->path, bytes, &error)) {
         QMessageBox::warning(parent, title, error);
         return {};

@@ -26,9 +26,11 @@ namespace pkm::viewpicture {
 QByteArray scenePicture(const Scene &scene, const SceneStyle &style, const QString &caption, const QString &format,
     const PictureOptions &options, const QSize &shown, QString *error);
 
-/// The picture of `mechanism` in `pose`, captioned pictures::poseCaption(mechanism, pose, name).
+/// The picture of `mechanism` in `pose`, captioned pictures::poseCaption(mechanism, pose, name):
+/// the mechanism's scene, or `drawn` (the view's, with what it adds) when given.
 QByteArray posePicture(const Mechanism &mechanism, const Pose &pose, const QString &name, const SceneStyle &style,
-    const QString &format, const PictureOptions &options, const QSize &shown, QString *error);
+    const QString &format, const PictureOptions &options, const QSize &shown, QString *error,
+    const Scene *drawn = nullptr);
 
 /// The file name offered for the picture, without a suffix: "pjoint-prototype-2d" for a preset
 /// (its id), "my-design-2d" for my-design.pkm.json.
@@ -37,6 +39,6 @@ QString suggestedName(const QString &filePath, const QString &designId);
 /// Asks for the file, size and DPI (askForPicture()), draws and writes the picture. The path
 /// written, or empty when cancelled or failed (the failure shown in a message box over `parent`).
 QString savePictureAs(QWidget *parent, const Mechanism &mechanism, const Pose &pose, const QString &name,
-    const QString &fileName, const QSize &shown, const SceneStyle &style);
+    const QString &fileName, const QSize &shown, const SceneStyle &style, const Scene *drawn = nullptr);
 
 } // namespace pkm::viewpicture

@@ -107,6 +107,41 @@ private slots:
         QVERIFY2(edge.y() < reached.y() - 20.0, qPrintable(QStringLiteral("edge at (%1, %2)").arg(edge.x()).arg(edge.y())));
     }
 
+    void capabilityShapesFollowADrag()
+    {
+        LinkageView *view = m_window->linkageView();
+        const Document *document = m_window->document();
+        QAction *shapes = m_window->findChild<QAction *>(QStringLiteral("capabilityShapesAction"));
+        QAction *button = m_window->findChild<QAction *>(QStringLiteral("capabilityShapesButton"));
+        QVERIFY(shapes && button);
+        const auto shapeCentre = [&] {
+            Eigen::AlignedBox2d box;
+            for (const ScenePolyline &line : view->scene().polylines) {
+                if (line.kind == PathKind::VelocityPolygon) {
+                    for (const Eigen::Vector3d &p : line.points)
+                        box.extend(Eigen::Vector2d(p.head<2>()));
+                }
+            }
+            return box;
+        };
+        shapes->setChecked(false);
+        QVERIFY(shapeCentre().isEmpty());
+        QVERIFY(view->scene().legend.empty());
+        button->trigger(); // the toolbar's button and the menu's action are one switch
+        QVERIFY(shapes->isChecked());
+        QVERIFY(!shapeCentre().isEmpty());
+        QCOMPARE(view->scene().legend.size(), std::size_t(2));
+        QVERIFY((shapeCentre().center() - document->pose().outputs.head<2>()).norm() < 1e-6);
+        // a drag carries them along, redrawn at every pose
+        const Eigen::Vector2d target = document->pose().outputs.head<2>() + Eigen::Vector2d(-20.0, 15.0);
+        drag(view, view->handlePosition(0), view->mapping().toDevice(target));
+        QVERIFY((document->pose().outputs.head<2>() - target).norm() < 2.0);
+        QVERIFY((shapeCentre().center() - document->pose().outputs.head<2>()).norm() < 1e-6);
+        shapes->setChecked(false);
+        QVERIFY(shapeCentre().isEmpty());
+        QVERIFY(!button->isChecked());
+    }
+
     void switchToThreeBChangesTheMap()
     {
         const double area3a = map()->area();

@@ -5,6 +5,7 @@
 #include "capability.h"
 #include "kinds/pjoint/pjoint.h"
 #include "support/kinematics.h"
+#include "support/planardesigns.h"
 
 #include <QTest>
 
@@ -146,26 +147,7 @@ private:
         QFETCH(int, variant);
         if (variant == 0)
             return prepare(kind.toUtf8().constData(), {});
-        // the 3-PRR preset's geometry: a free platform, three sliders at 120°
-        ParameterSet p = {{"platform", 2}, {"assembly", 1}};
-        const double A[3][2] = {{-173.205081, -100}, {173.205081, -100}, {0, 200}};
-        const double B[3][2] = {{-34.641016, -20}, {34.641016, -20}, {0, 40}};
-        const double alpha[3] = {0, 120, -120};
-        for (int i = 0; i < 3; ++i) {
-            const std::string n = std::to_string(i + 1);
-            p["leg" + n + "_type"] = 1;
-            p["A" + n + "x"] = A[i][0];
-            p["A" + n + "y"] = A[i][1];
-            p["B" + n + "x"] = B[i][0];
-            p["B" + n + "y"] = B[i][1];
-            p["l" + n] = 150;
-            p["alpha" + n] = alpha[i] * units::degree;
-            p["q" + n + "_min"] = 0;
-            p["q" + n + "_max"] = 346.41;
-            p["working" + n] = 1;
-            p["force_max" + n] = 100.0 + 50.0 * i; // unequal actuators
-            p["speed_max" + n] = 40.0 + 10.0 * i;
-        }
+        const ParameterSet p = legdesigns::threePrr();
         const Coordinates turned = triple(12.0, -8.0, 10.0 * units::degree);
         return variant == 2 ? prepare("planar-parallel", p, &turned) : prepare("planar-parallel", p);
     }
@@ -288,6 +270,55 @@ private slots:
                 K(j, k) = c.values[std::size_t(entry->offset + j * n + k)];
         if (n <= 2)
             QVERIFY(std::abs(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues()[0] - worst) <= 1e-9 * K.norm());
+    }
+
+    void deflectionBalancesTheLoad_data() { addCases(); }
+    void deflectionBalancesTheLoad()
+    {
+        // the deflection under the design's load is the elastic equilibrium K·δ = F of the
+        // actuators' springs; with no load (the default) it is 0
+        const Case c = currentCase();
+        const int n = c.actuators.count;
+        QCOMPARE(value(c, "deflection"), 0.0);
+        ParameterSet load;
+        if (c.actuators.rotaryOutput) {
+            load = {{"load_torque", 3.0}};
+        } else {
+            load = {{"load_x", 20.0}, {"load_y", -35.0}};
+            if (n == 3)
+                load["load_moment"] = 1.5;
+        }
+        const MechanismPtr loaded = *c.mechanism->withParameters(load);
+        const Actuators actuators = capability::actuatorsOf(*loaded);
+        std::vector<double> v(c.values.size());
+        Singularity s;
+        evaluated(*loaded, c.pose, &s);
+        capability::evaluate(*loaded, actuators, c.pose, s.type, v);
+        const ReportLayout *layout = capability::layoutFor(actuators);
+        const auto at = [&](const char *name, int i = 0) { return v[std::size_t(layout->find(name)->offset + i)]; };
+        Eigen::MatrixXd K(n, n);
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k)
+                K(j, k) = at("stiffness", j * n + k) * outputScale(c); // N/mm, N·mm/rad
+        Eigen::VectorXd delta(n), force(n);
+        if (c.actuators.rotaryOutput) {
+            delta[0] = at("deflection");
+            force[0] = 3.0e3; // N·mm
+        } else {
+            delta[0] = at("deflection", 0);
+            delta[1] = at("deflection", 1);
+            force[0] = 20.0;
+            force[1] = -35.0;
+            QVERIFY(std::abs(at("deflection_norm") - delta.head(2).norm()) <= 1e-12 * delta.head(2).norm());
+            if (n == 3) {
+                delta[2] = at("deflection_angle");
+                force[2] = 1.5e3;
+            }
+        }
+        QVERIFY(delta.norm() > 0.0);
+        const Eigen::VectorXd balance = K * delta;
+        QVERIFY2((balance - force).norm() <= 1e-6 * force.norm(),
+                 qPrintable(QStringLiteral("K·δ − F = %1 N").arg((balance - force).norm())));
     }
 
     void resolutionIsTheFarthestHalfStepError_data() { addCases(); }

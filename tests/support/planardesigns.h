@@ -7,6 +7,7 @@
 #include "units.h"
 
 #include <numbers>
+#include <string>
 
 namespace pkm::test::legdesigns {
 
@@ -26,6 +27,31 @@ inline ParameterSet moma3a()
     return {{"platform", 0}, {"leg1_type", 1}, {"leg2_type", 1}, {"A1x", -100}, {"A1y", 0}, {"A2x", 100}, {"A2y", 0},
             {"l1", 195}, {"l2", 195}, {"alpha1", 265 * deg}, {"alpha2", 275 * deg}, {"q1_min", 0}, {"q1_max", 200},
             {"q2_min", 0}, {"q2_max", 200}, {"working1", -1}, {"working2", -1}, {"assembly", -1}};
+}
+
+/// A 3-PRR with a free platform: three sliders at 120° and unequal actuators, in core units.
+inline ParameterSet threePrr()
+{
+    ParameterSet p = {{"platform", 2}, {"assembly", 1}};
+    const double A[3][2] = {{-173.205081, -100}, {173.205081, -100}, {0, 200}};
+    const double B[3][2] = {{-34.641016, -20}, {34.641016, -20}, {0, 40}};
+    const double alpha[3] = {0, 120, -120};
+    for (int i = 0; i < 3; ++i) {
+        const std::string n = std::to_string(i + 1);
+        p["leg" + n + "_type"] = 1;
+        p["A" + n + "x"] = A[i][0];
+        p["A" + n + "y"] = A[i][1];
+        p["B" + n + "x"] = B[i][0];
+        p["B" + n + "y"] = B[i][1];
+        p["l" + n] = 150;
+        p["alpha" + n] = alpha[i] * units::degree;
+        p["q" + n + "_min"] = 0;
+        p["q" + n + "_max"] = 346.41;
+        p["working" + n] = 1;
+        p["force_max" + n] = 100.0 + 50.0 * i; // unequal actuators
+        p["speed_max" + n] = 40.0 + 10.0 * i;
+    }
+    return p;
 }
 
 } // namespace pkm::test::legdesigns

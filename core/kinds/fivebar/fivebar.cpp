@@ -132,7 +132,7 @@ const ParameterTable<FiveBarDesign> &FiveBar::table()
              T::sign([](auto &d) -> auto & { return d.working[1]; }), &sideRule},
             {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: C left (+1) or right (−1) of B→D"), units::none, G::Mode, sign, false, false, true, 0, 2, sides},
              T::sign<&D::assembly>(), &sideRule},
-        }, {actuatorRows<FiveBarDesign, 0>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<FiveBarDesign, 1>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[1]; })}));
+        }, {actuatorRows<FiveBarDesign, 0>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<FiveBarDesign, 1>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[1]; }), loadRows<FiveBarDesign>(LoadNames::Force, [](auto &d) -> auto & { return d.load; })}));
     }();
     return table;
 }

@@ -60,6 +60,7 @@ struct FiveBarDesign {
     int assembly = +1;                     ///< +1 left (C above BD), −1 right
     /// The actuators of the cranks at A and E (assumed: the documents give none; actuatorparameters.h)
     std::array<ActuatorSpec, 2> actuators = {assumedRotary, assumedRotary};
+    LoadSpec load; ///< the load whose deflection the capability group reports
 };
 
 /// Closed forms, no validation (callers check).

@@ -204,7 +204,7 @@ const ParameterTable<FourBarDesign> &FourBar::table()
               Interval{0.0, 1.0}, false, false, true, 3, 0.05}, T::real<&D::couplerPoint>()},
             {{"branch", "σ", QT_TRANSLATE_NOOP("core", "assembly branch: +1 open (C left of B→D), −1 crossed"), units::none,
               G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2, {{"open", 1.0}, {"crossed", -1.0}}}, T::sign<&D::branch>(), &branchRule},
-        }, {actuatorRows<FourBarDesign, 0>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[0]; })}));
+        }, {actuatorRows<FourBarDesign, 0>(ActuatorNames::Rotary, [](auto &d) -> auto & { return d.actuators[0]; }), loadRows<FourBarDesign>(LoadNames::Torque, [](auto &d) -> auto & { return d.load; })}));
     }();
     return table;
 }

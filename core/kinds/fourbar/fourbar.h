@@ -63,6 +63,7 @@ struct FourBarDesign {
     int branch = +1;           ///< σ: +1 open, −1 crossed
     /// The actuators of the crank at A (assumed: the documents give none; actuatorparameters.h)
     std::array<ActuatorSpec, 1> actuators = {assumedRotary};
+    LoadSpec load; ///< the load whose deflection the capability group reports
 };
 
 namespace fourbar {

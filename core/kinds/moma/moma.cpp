@@ -163,7 +163,7 @@ const ParameterTable<MomaDesign> &Moma::table()
             {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: +1 platform left of Z₁→Z₂"), units::none, G::Mode, sign, false, false, true, 0, 2}, T::sign<&D::assembly>(), &signRule},
             {{"one_side", QT_TRANSLATE_NOOP("core", "one side"), QT_TRANSLATE_NOOP("core", "links kept on the inner side of the guides (1: on)"), units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1}, T::flag<&D::oneSide>(), &switchRule},
             {{"guide_width", "w_g", QT_TRANSLATE_NOOP("core", "drawn width of a guide"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::guideWidth>()},
-        }, {actuatorRows<MomaDesign, 0>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<MomaDesign, 1>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[1]; })}));
+        }, {actuatorRows<MomaDesign, 0>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<MomaDesign, 1>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[1]; }), loadRows<MomaDesign>(LoadNames::Force, [](auto &d) -> auto & { return d.load; })}));
     }();
     return table;
 }

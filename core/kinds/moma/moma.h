@@ -37,6 +37,7 @@ struct MomaDesign {
     double guideWidth = 20.0; ///< drawn width of a guide, mm
     /// The actuators of the sliders (assumed: the documents give none; actuatorparameters.h)
     std::array<ActuatorSpec, 2> actuators = {assumedLinear, assumedLinear};
+    LoadSpec load; ///< the load whose deflection the capability group reports
 };
 
 /// Closed forms, no validation (callers check).

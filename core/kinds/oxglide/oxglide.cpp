@@ -96,7 +96,7 @@ const ParameterTable<OxGlideDesign> &OxGlide::table()
             {{"z_min", "z_min", QT_TRANSLATE_NOOP("core", "start of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::zMin>()},
             {{"z_max", "z_max", QT_TRANSLATE_NOOP("core", "end of the longitudinal travel"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::zMax>()},
             {{"mode", QT_TRANSLATE_NOOP("core", "form"), QT_TRANSLATE_NOOP("core", "+1 extended (O), −1 crossed (X)"), units::none, G::Mode, Interval{-1.0, 1.0}, false, false, true, 0, 2, {{"O", 1.0}, {"X", -1.0}}}, T::sign<&D::form>(), &formRule},
-        }, {actuatorRows<OxGlideDesign, 0>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<OxGlideDesign, 1>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[1]; })}));
+        }, {actuatorRows<OxGlideDesign, 0>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<OxGlideDesign, 1>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[1]; }), loadRows<OxGlideDesign>(LoadNames::Force, [](auto &d) -> auto & { return d.load; })}));
     }();
     return table;
 }

@@ -43,6 +43,7 @@ struct OxGlideDesign {
     int form = +1;              ///< +1: extended (O), −1: crossed (X)
     /// The actuators of the slider pairs AB and CD (the serial z axis moves the whole mechanism and is left out) (assumed: the documents give none; actuatorparameters.h)
     std::array<ActuatorSpec, 2> actuators = {assumedLinear, assumedLinear};
+    LoadSpec load; ///< the load whose deflection the capability group reports
 };
 
 namespace oxglide {

@@ -4,6 +4,7 @@
 
 #include "pjoint.h"
 
+#include "actuatorparameters.h"
 #include "capability.h"
 #include "mobility.h"
 #include "text.h"
@@ -172,7 +173,7 @@ const ParameterTable<PJointDesign> &PJoint::table()
         const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The П-joint has no parameter named '%1'."),
                                 .checkGiven = false,
                                 .blameSingle = false};
-        return T(rules, {
+        return T(rules, joinRows<D>({
             {{"a", "a", QT_TRANSLATE_NOOP("core", "crank (lever) length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::a>()},
             {{"b", "b", QT_TRANSLATE_NOOP("core", "base and coupler length"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real<&D::b>()},
             {{"k", "k", QT_TRANSLATE_NOOP("core", "ratio k = b/a"), units::none, G::Geometry, positive, true, false, false, 4, 0.01}, ratio, nullptr, "b", &couplerClash},
@@ -188,7 +189,7 @@ const ParameterTable<PJointDesign> &PJoint::table()
             {{"motor_length", "L_M", QT_TRANSLATE_NOOP("core", "motor body length"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorLength>()},
             {{"motor_width", "W_M", QT_TRANSLATE_NOOP("core", "motor body width"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorWidth>()},
             {{"screw_diameter", "d_s", QT_TRANSLATE_NOOP("core", "screw diameter"), units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1}, T::real<&D::screwDiameter>()},
-        });
+        }, {loadRows<D>(LoadNames::Torque, [](auto &d) -> auto & { return d.load; })}));
     }();
     return table;
 }

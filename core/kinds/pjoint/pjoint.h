@@ -6,6 +6,7 @@
 /// perpendicular to the base, A = B + a·(sin θ, cos θ); diagonal OA of length d (the actuator).
 /// Units: mm, rad, N, N·m, s. θ is the output, d the actuated input.
 
+#include "actuatorparameters.h"
 #include "parametertable.h"
 
 namespace pkm {
@@ -27,6 +28,7 @@ struct PJointDesign {
     /// The document's measured mean static stiffness of the whole joint over ±60°, N·m/rad
     /// (section 4.2): reported beside the actuator's share (capability.h).
     double stiffnessMeasured = 3.5e4;
+    LoadSpec load; ///< load_torque on the output link, for the deflection
     double motorLength = 45.0;           ///< motor body length along the diagonal, mm
     double motorWidth = 28.0;            ///< motor body width, mm
     double screwDiameter = 4.7752;       ///< mm

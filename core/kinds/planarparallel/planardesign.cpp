@@ -24,6 +24,8 @@ Result<MechanismPtr> PlanarParallel::withParameters(const ParameterSet &changes)
 
 bool PlanarParallel::parameterApplies(std::string_view name) const
 {
+    if (name == "load_moment")
+        return m_design.legCount() == 3; // a moment only on a platform that turns
     const std::size_t digit = name.find_first_of("123");
     if (digit == std::string_view::npos || name.starts_with("phi"))
         return name != "phi_map" || m_design.legCount() == 3;

@@ -97,6 +97,7 @@ struct PlanarParallelDesign {
     /// the documents give none, actuatorparameters.h).
     std::array<ActuatorSpec, 3> linearActuators = {assumedLinear, assumedLinear, assumedLinear};
     std::array<ActuatorSpec, 3> rotaryActuators = {assumedRotary, assumedRotary, assumedRotary};
+    LoadSpec load; ///< the load whose deflection the capability group reports
 
     int legCount() const { return platform == PlatformType::Free ? 3 : 2; }
 };
