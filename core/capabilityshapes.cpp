@@ -241,7 +241,7 @@ ShapeScales scalesFor(const Mechanism &mechanism, const Actuators &actuators)
     const double v = reach(home0.velocity), f = reach(home0.force);
     if (!(v > 0.0) || !(f > 0.0) || v >= huge * 0.5 || f >= huge * 0.5)
         return scales;
-    const double target = 0.2 * size; // mm of drawing for the home pose's strongest direction
+    const double target = 0.3 * size; // mm of drawing for the home pose's strongest direction
     scales.velocityUnits = niceAbove(v / target);
     scales.forceUnits = niceAbove(f / target);
     scales.velocity = 1.0 / scales.velocityUnits;

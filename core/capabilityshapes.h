@@ -53,8 +53,8 @@ struct ShapeScales {
 Shapes shapesOf(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
                 double velocityClip, double forceClip);
 
-/// Scales for a design: the fastest and strongest directions at the home pose drawn about a
-/// fifth of the size of the mechanism's extent, rounded so that the legend reads 1/2/5·10ⁿ.
+/// Scales for a design: the fastest and strongest directions at the home pose drawn about
+/// 0.3 of the size of the mechanism's extent, rounded so that the legend reads 1/2/5·10ⁿ.
 ShapeScales scalesFor(const Mechanism &mechanism, const Actuators &actuators);
 
 /// Adds the velocity and force shapes at the pose's platform point to `scene` (polylines of the

@@ -204,6 +204,52 @@ void ScenePainter::paintMessage(QPainter &painter, const QRectF &area, const QSt
     painter.restore();
 }
 
+namespace {
+
+/// Where paintLegend() puts its lines: the frame and each line's text box (width `available`).
+struct LegendLayout {
+    QRectF frame;
+    std::vector<double> heights;
+    double available = 0.0;
+    double sample = 0.0, gap = 0.0, pad = 0.0;
+};
+
+LegendLayout legendLayout(const QRectF &area, const Scene &scene, const QFontMetricsF &metrics, const SceneStyle &style)
+{
+    LegendLayout l;
+    const double px = style.pixelSize;
+    const double margin = 16.0 * px;
+    l.pad = 8.0 * px;
+    l.sample = 34.0 * px;
+    l.gap = 8.0 * px;
+    // the whole width if need be: a legend line broken in two is harder to read than a drawing
+    // partly covered
+    l.available = std::max(60.0 * px, area.width() - 2.0 * margin - 2.0 * l.pad - l.sample - l.gap);
+    const int flags = Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap;
+    double width = 0.0, height = 0.0;
+    for (const SceneLegendEntry &entry : scene.legend) {
+        const QRectF box = metrics.boundingRect(QRectF(0, 0, l.available, 1e6), flags, QString::fromStdString(entry.text));
+        l.heights.push_back(box.height());
+        width = std::max(width, box.width());
+        height += box.height() + (l.heights.size() > 1 ? 4.0 * px : 0.0);
+    }
+    l.frame = QRectF(area.left() + margin, area.top() + margin, l.sample + l.gap + std::ceil(width) + 2.0 * l.pad,
+                     std::ceil(height) + 2.0 * l.pad);
+    return l;
+}
+
+} // namespace
+
+double ScenePainter::legendHeight(const QRectF &area, const Scene &scene, const SceneStyle &style, QPaintDevice *device)
+{
+    if (scene.legend.empty())
+        return 0.0;
+    const QFont font = detail::labelFont(style.fontPixels * style.pixelSize, false);
+    const QFontMetricsF metrics(font, device);
+    const LegendLayout l = legendLayout(area, scene, metrics, style);
+    return l.frame.bottom() - area.top();
+}
+
 void ScenePainter::paintLegend(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style)
 {
     if (scene.legend.empty())
@@ -211,41 +257,27 @@ void ScenePainter::paintLegend(QPainter &painter, const QRectF &area, const Scen
     const double px = style.pixelSize;
     const QFont font = detail::labelFont(style.fontPixels * px, false);
     const QFontMetricsF metrics(font, painter.device());
-    const double margin = 16.0 * px, pad = 8.0 * px, sample = 34.0 * px, gap = 8.0 * px;
-    // the whole width if need be: a legend line broken in two is harder to read than a drawing
-    // partly covered
-    const double available = std::max(60.0 * px, area.width() - 2.0 * margin - 2.0 * pad - sample - gap);
+    const LegendLayout l = legendLayout(area, scene, metrics, style);
     const int flags = Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap;
-    std::vector<QRectF> boxes;
-    double width = 0.0, height = 0.0;
-    for (const SceneLegendEntry &entry : scene.legend) {
-        const QRectF box = metrics.boundingRect(QRectF(0, 0, available, 1e6), flags, QString::fromStdString(entry.text));
-        boxes.push_back(box);
-        width = std::max(width, box.width());
-        height += box.height() + (boxes.size() > 1 ? 4.0 * px : 0.0);
-    }
-    const QRectF frame(area.left() + margin, area.top() + margin, sample + gap + std::ceil(width) + 2.0 * pad,
-                       std::ceil(height) + 2.0 * pad);
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
-    paintKnockout(painter, frame, style);
+    paintKnockout(painter, l.frame, style);
     painter.setFont(font);
-    double y = frame.top() + pad;
+    double y = l.frame.top() + l.pad;
     for (std::size_t i = 0; i < scene.legend.size(); ++i) {
         const SceneLegendEntry &entry = scene.legend[i];
         const bool velocity = entry.kind == PathKind::VelocityPolygon || entry.kind == PathKind::VelocityEllipse;
         const QColor colour = entry.kind == PathKind::Path ? style.path : velocity ? style.velocity : style.force;
         const double middle = y + 0.5 * metrics.height();
-        const double x = frame.left() + pad;
+        const double x = l.frame.left() + l.pad;
         painter.setPen(QPen(colour, 2.0 * px, Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(QPointF(x, middle), QPointF(x + 0.45 * sample, middle));
-        QPen dashed(colour, 1.6 * px, Qt::DashLine, Qt::RoundCap);
-        painter.setPen(dashed);
-        painter.drawLine(QPointF(x + 0.6 * sample, middle), QPointF(x + sample, middle));
+        painter.drawLine(QPointF(x, middle), QPointF(x + 0.45 * l.sample, middle));
+        painter.setPen(QPen(colour, 1.6 * px, Qt::DashLine, Qt::RoundCap));
+        painter.drawLine(QPointF(x + 0.6 * l.sample, middle), QPointF(x + l.sample, middle));
         painter.setPen(style.ink);
-        painter.drawText(QRectF(x + sample + gap, y, available, boxes[i].height() + 1.0), flags,
+        painter.drawText(QRectF(x + l.sample + l.gap, y, l.available, l.heights[i] + 1.0), flags,
                          QString::fromStdString(entry.text));
-        y += boxes[i].height() + 4.0 * px;
+        y += l.heights[i] + 4.0 * px;
     }
     painter.restore();
 }

@@ -48,6 +48,9 @@ public:
     /// box at the top-left of `area`, each line after a sample of its pen: solid for the
     /// polygon, dashed for the ellipse; long lines wrap. Nothing when the legend is empty.
     static void paintLegend(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style);
+    /// How much of the top of `area` the legend takes, its margin included (0: no legend): a
+    /// fit leaves it free, so that the legend covers none of the mechanism.
+    static double legendHeight(const QRectF &area, const Scene &scene, const SceneStyle &style, QPaintDevice *device);
     /// A message in a rounded box at the bottom-left of `area`, wrapped onto as many lines as it
     /// needs (never cut); nothing when empty.
     static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style);

@@ -162,9 +162,19 @@ int LinkageView::handleAt(const QPointF &position) const
 
 // -- export ------------------------------------------------------------------------------
 
+QRectF LinkageView::belowLegend(const QRectF &area, const Scene &scene, const SceneStyle &style)
+{
+    // the fit's own margin already keeps the top free in part
+    const double legend = ScenePainter::legendHeight(area, scene, style, nullptr) - fitMargin * style.pixelSize;
+    QRectF below = area;
+    if (legend > 0.0)
+        below.setTop(area.top() + std::min(legend, 0.4 * area.height()));
+    return below;
+}
+
 ViewMapping LinkageView::fittedMapping(const Scene &scene, const QRectF &target, const SceneStyle &style)
 {
-    return ViewMapping::fit(scene.extent, target, fitMargin * style.pixelSize);
+    return ViewMapping::fit(scene.extent, belowLegend(target, scene, style), fitMargin * style.pixelSize);
 }
 
 void LinkageView::renderScene(QPainter &painter, const QRectF &target, const Scene &scene, const SceneStyle &style)
@@ -200,7 +210,7 @@ void LinkageView::fitToView()
             }
         }
     }
-    m_mapping = ViewMapping::fit(extent, QRectF(rect()), fitMargin * m_style.pixelSize);
+    m_mapping = ViewMapping::fit(extent, belowLegend(QRectF(rect()), m_scene, m_style), fitMargin * m_style.pixelSize);
     m_userMoved = false;
     update();
 }

@@ -65,6 +65,10 @@ public:
     int handleAt(const QPointF &position) const;
     /// The hovered or dragged handle, or −1.
     int activeHandle() const { return m_dragHandle >= 0 ? m_dragHandle : m_hoverHandle; }
+    /// Whether the user has zoomed or panned since the last fit.
+    bool userMoved() const { return m_userMoved; }
+    /// `area` without the top the scene's legend takes (ScenePainter::legendHeight()), for a fit.
+    static QRectF belowLegend(const QRectF &area, const Scene &scene, const SceneStyle &style);
 
     /// Draws the current scene, fitted to its extent, into `target` of any painter (PNG, SVG
     /// and PDF export): background, grid, scene and scale bar; no handle rings, no message.

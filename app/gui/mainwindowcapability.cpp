@@ -42,6 +42,8 @@ void MainWindow::setCapabilityShapes(bool on)
         m_capabilityAction->setChecked(on); // comes back here through toggled()
     QSettings().setValue(shapesKey, on);
     m_view->setScene(viewScene(m_document->pose()));
+    if (!m_view->userMoved())
+        m_view->fitToView(); // the legend's room at the top, or the room back
     const QString why = capabilityShapesUnavailable();
     if (on && !why.isEmpty())
         showStatus(why);
