@@ -101,7 +101,7 @@ Result<double> checkTolerance(const Mechanism &mechanism, std::string_view name,
     const double nominal = mechanism.parameters().at(p.name);
     for (const double sign : {-1.0, 1.0}) {
         if (!Mechanism::checkDomain(p, nominal + sign * value)) {
-            return named(name, QT_TRANSLATE_NOOP("core", "The tolerance ±%2 of '%1' takes it outside its allowed values (%3)."),
+            return named(name, QT_TRANSLATE_NOOP("core", "The tolerance ±%2 of '%1' takes it to %3, outside its allowed values."),
                          {text::number(p.unit.toDisplay(value), p.decimals + 2),
                           text::number(p.unit.toDisplay(nominal + sign * value), p.decimals + 2)});
         }
