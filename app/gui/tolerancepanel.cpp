@@ -71,12 +71,14 @@ TolerancePanel::TolerancePanel(Document *document, QWidget *parent)
     m_runButton->setObjectName(QStringLiteral("toleranceRun"));
     m_mapButton->setObjectName(QStringLiteral("toleranceMap"));
     m_plot->setMinimumHeight(110);
+    m_plot->setMinimumWidth(100);
+    m_table->setMinimumWidth(100);
     m_plot->setObjectName(QStringLiteral("tolerancePlot"));
 
+    // narrow rows: the dock shares the left column (at most 270 px wide on a 1024 px screen)
     auto *controls = new QHBoxLayout;
     controls->addWidget(m_samplesLabel);
     controls->addWidget(m_samples);
-    controls->addWidget(m_normal);
     controls->addStretch();
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_runButton);
@@ -89,6 +91,7 @@ TolerancePanel::TolerancePanel(Document *document, QWidget *parent)
     auto *runLayout = new QVBoxLayout(runPage);
     runLayout->setContentsMargins(0, 0, 0, 0);
     runLayout->addLayout(controls);
+    runLayout->addWidget(m_normal);
     runLayout->addLayout(buttons);
     runLayout->addWidget(m_result);
     runLayout->addWidget(m_plot, 1);
@@ -367,6 +370,7 @@ void TolerancePanel::retranslate()
     m_mapButton->setToolTip(tr("The first-order worst case over the workspace"));
     m_clearButton->setText(tr("Clear"));
     m_clearButton->setToolTip(tr("Remove every tolerance (undoable)"));
+    m_analysisValid = false; // its message is in the old language
     updateFirstOrder();
     if (m_monteCarlo)
         showHistogram();
