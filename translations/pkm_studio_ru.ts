@@ -3996,6 +3996,46 @@ Please verify the correct file name was given.</source>
         <source>unbounded: a stretched leg holds any force along it (inverse singularity)</source>
         <translation>не ограничено: вытянутая нога держит любую силу вдоль себя (обратная особенность)</translation>
     </message>
+    <message>
+        <source>The design has no parameter named &apos;%1&apos; to give a tolerance.</source>
+        <translation>В конструкции нет параметра «%1», которому можно задать допуск.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; (%2) is not a geometric parameter: tolerances apply to the lengths, positions and angles of the design.</source>
+        <translation>«%1» (%2) — не геометрический параметр: допуски задаются для длин, положений и углов конструкции.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is derived from other parameters: give the tolerances of the parameters it is made of.</source>
+        <translation>«%1» выводится из других параметров: задайте допуски тех параметров, из которых он получается.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has no say in this design, so a tolerance on it changes nothing.</source>
+        <translation>«%1» не влияет на эту конструкцию, поэтому допуск на него ничего не меняет.</translation>
+    </message>
+    <message>
+        <source>The tolerance of &apos;%1&apos; must be a finite number ≥ 0.</source>
+        <translation>Допуск «%1» должен быть конечным числом ≥ 0.</translation>
+    </message>
+    <message>
+        <source>The tolerance ±%2 of &apos;%1&apos; takes it to %3, outside its allowed values.</source>
+        <translation>Допуск ±%2 параметра «%1» доводит его до %3, за пределы допустимых значений.</translation>
+    </message>
+    <message>
+        <source>At most %1 tolerances can be given.</source>
+        <translation>Можно задать не более %1 допусков.</translation>
+    </message>
+    <message>
+        <source>At a direct singularity the actuators do not hold the platform: the error from the tolerances is unbounded.</source>
+        <translation>В особом положении прямой кинематики приводы не удерживают платформу: погрешность от допусков не ограничена.</translation>
+    </message>
+    <message>
+        <source>At a combined singularity the error from the tolerances is undefined.</source>
+        <translation>В комбинированном особом положении погрешность от допусков не определена.</translation>
+    </message>
+    <message>
+        <source>The perturbed designs do not assemble at these inputs: the error from the tolerances is undefined here.</source>
+        <translation>Изменённые конструкции не собираются при этих входных координатах: погрешность от допусков здесь не определена.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4273,6 +4313,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Move %1</source>
         <translation>Переместить %1</translation>
+    </message>
+    <message>
+        <source>A design keeps at most %1 tolerances.</source>
+        <translation>Конструкция хранит не более %1 допусков.</translation>
+    </message>
+    <message>
+        <source>Change tolerance of %1</source>
+        <translation>Изменить допуск %1</translation>
+    </message>
+    <message>
+        <source>Clear tolerances</source>
+        <translation>Удалить допуски</translation>
     </message>
 </context>
 <context>
@@ -5074,6 +5126,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
         <translation>Фигуры скорости и силы нельзя масштабировать для этой конструкции: её исходная поза особая.</translation>
+    </message>
+    <message>
+        <source>Tolerances</source>
+        <translation>Допуски</translation>
     </message>
 </context>
 <context>
@@ -6046,6 +6102,125 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::TolerancePanel</name>
+    <message>
+        <source>Give a tolerance to at least one parameter.</source>
+        <translation>Задайте допуск хотя бы одному параметру.</translation>
+    </message>
+    <message>
+        <source>First-order worst case at this pose: |Δx| ≤ %1 (%2).</source>
+        <translation>Наихудший случай в первом приближении в этом положении: |Δx| ≤ %1 (%2).</translation>
+    </message>
+    <message>
+        <source>Monte Carlo</source>
+        <translation>Монте-Карло</translation>
+    </message>
+    <message>
+        <source>Solving %1 designs within the tolerances…</source>
+        <translation>Решение %1 конструкций в пределах допусков…</translation>
+    </message>
+    <message>
+        <source>Monte Carlo cancelled.</source>
+        <translation>Монте-Карло отменено.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 samples did not assemble (%3 %).</source>
+        <translation>%1 из %2 выборок не собрались (%3 %).</translation>
+    </message>
+    <message>
+        <source>No sample assembled: the distribution is undefined.</source>
+        <translation>Ни одна выборка не собралась: распределение не определено.</translation>
+    </message>
+    <message>
+        <source>Monte Carlo |Δx|: mean %1, σ %2, max %3. %4</source>
+        <translation>Монте-Карло |Δx|: среднее %1, σ %2, макс. %3. %4</translation>
+    </message>
+    <message>
+        <source>|Δx| (%1)</source>
+        <translation>|Δx| (%1)</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>выборки</translation>
+    </message>
+    <message>
+        <source>This mechanism has no planar workspace to map.</source>
+        <translation>У этого механизма нет плоского рабочего пространства для карты.</translation>
+    </message>
+    <message>
+        <source>Worst-case map</source>
+        <translation>Карта наихудшего случая</translation>
+    </message>
+    <message>
+        <source>Mapping the worst-case error over the workspace…</source>
+        <translation>Построение карты наихудшей погрешности по рабочему пространству…</translation>
+    </message>
+    <message>
+        <source>Map cancelled.</source>
+        <translation>Карта отменена.</translation>
+    </message>
+    <message>
+        <source>Worst case over the workspace: %1 to %2 (%3 cells; dark: small, bright: large).</source>
+        <translation>Наихудший случай по рабочему пространству: от %1 до %2 (%3 ячеек; тёмные — малая, светлые — большая).</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Параметр</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Допуск</translation>
+    </message>
+    <message>
+        <source>Error part</source>
+        <translation>Вклад</translation>
+    </message>
+    <message>
+        <source>Share</source>
+        <translation>Доля</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Параметры</translation>
+    </message>
+    <message>
+        <source>Monte Carlo and map</source>
+        <translation>Монте-Карло и карта</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>Выборок:</translation>
+    </message>
+    <message>
+        <source>Normal (tol = 3σ)</source>
+        <translation>Нормальное (допуск = 3σ)</translation>
+    </message>
+    <message>
+        <source>Draw normal samples with the tolerance as 3σ instead of uniform ones within ±tol</source>
+        <translation>Брать нормальные выборки с допуском 3σ вместо равномерных в пределах ±допуска</translation>
+    </message>
+    <message>
+        <source>Solve many designs drawn within the tolerances at this pose (fixed seed)</source>
+        <translation>Решить много конструкций, взятых в пределах допусков, в этом положении (фиксированное начальное число)</translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation>Карта</translation>
+    </message>
+    <message>
+        <source>The first-order worst case over the workspace</source>
+        <translation>Наихудший случай в первом приближении по рабочему пространству</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Очистить</translation>
+    </message>
+    <message>
+        <source>Remove every tolerance (undoable)</source>
+        <translation>Удалить все допуски (можно отменить)</translation>
+    </message>
+</context>
+<context>
     <name>pkm::ValuesTable</name>
     <message>
         <source>Pose</source>
@@ -6487,6 +6662,22 @@ Please verify the correct file name was given.</source>
     <message>
         <source>%1: bookmark “%2” has an invalid pose value &apos;%3&apos;.</source>
         <translation>%1: в закладке «%2» недопустимое значение положения «%3».</translation>
+    </message>
+    <message>
+        <source>%1: “tolerances” is not an object.</source>
+        <translation>%1: «tolerances» не является объектом.</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 tolerances.</source>
+        <translation>В %1 больше %2 допусков.</translation>
+    </message>
+    <message>
+        <source>it is not a number</source>
+        <translation>это не число</translation>
+    </message>
+    <message>
+        <source>%1: the tolerance of &apos;%2&apos; is refused: %3</source>
+        <translation>%1: допуск «%2» отклонён: %3</translation>
     </message>
 </context>
 <context>

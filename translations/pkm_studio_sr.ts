@@ -3996,6 +3996,46 @@ Please verify the correct file name was given.</source>
         <source>unbounded: a stretched leg holds any force along it (inverse singularity)</source>
         <translation>неограничено: испружена нога држи сваку силу дуж себе (инверзна сингуларност)</translation>
     </message>
+    <message>
+        <source>The design has no parameter named &apos;%1&apos; to give a tolerance.</source>
+        <translation>Конструкција нема параметар „%1” коме би се задала толеранција.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; (%2) is not a geometric parameter: tolerances apply to the lengths, positions and angles of the design.</source>
+        <translation>„%1” (%2) није геометријски параметар: толеранције се задају дужинама, положајима и угловима конструкције.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is derived from other parameters: give the tolerances of the parameters it is made of.</source>
+        <translation>„%1” се изводи из других параметара: задајте толеранције параметара од којих настаје.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has no say in this design, so a tolerance on it changes nothing.</source>
+        <translation>„%1” не утиче на ову конструкцију, па толеранција на њему ништа не мења.</translation>
+    </message>
+    <message>
+        <source>The tolerance of &apos;%1&apos; must be a finite number ≥ 0.</source>
+        <translation>Толеранција за „%1” мора бити коначан број ≥ 0.</translation>
+    </message>
+    <message>
+        <source>The tolerance ±%2 of &apos;%1&apos; takes it to %3, outside its allowed values.</source>
+        <translation>Толеранција ±%2 за „%1” доводи га до %3, ван дозвољених вредности.</translation>
+    </message>
+    <message>
+        <source>At most %1 tolerances can be given.</source>
+        <translation>Може се задати највише %1 толеранција.</translation>
+    </message>
+    <message>
+        <source>At a direct singularity the actuators do not hold the platform: the error from the tolerances is unbounded.</source>
+        <translation>У сингуларитету директне кинематике актуатори не држе платформу: грешка од толеранција је неограничена.</translation>
+    </message>
+    <message>
+        <source>At a combined singularity the error from the tolerances is undefined.</source>
+        <translation>У комбинованом сингуларитету грешка од толеранција није дефинисана.</translation>
+    </message>
+    <message>
+        <source>The perturbed designs do not assemble at these inputs: the error from the tolerances is undefined here.</source>
+        <translation>Измењене конструкције се не склапају при овим улазима: грешка од толеранција овде није дефинисана.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4273,6 +4313,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Move %1</source>
         <translation>Помери %1</translation>
+    </message>
+    <message>
+        <source>A design keeps at most %1 tolerances.</source>
+        <translation>Конструкција чува највише %1 толеранција.</translation>
+    </message>
+    <message>
+        <source>Change tolerance of %1</source>
+        <translation>Измени толеранцију за %1</translation>
+    </message>
+    <message>
+        <source>Clear tolerances</source>
+        <translation>Уклони толеранције</translation>
     </message>
 </context>
 <context>
@@ -5074,6 +5126,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
         <translation>Облици брзине и силе не могу се сразмерити за ову конструкцију: њен почетни положај је сингуларан.</translation>
+    </message>
+    <message>
+        <source>Tolerances</source>
+        <translation>Толеранције</translation>
     </message>
 </context>
 <context>
@@ -6046,6 +6102,125 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::TolerancePanel</name>
+    <message>
+        <source>Give a tolerance to at least one parameter.</source>
+        <translation>Задајте толеранцију бар једном параметру.</translation>
+    </message>
+    <message>
+        <source>First-order worst case at this pose: |Δx| ≤ %1 (%2).</source>
+        <translation>Најгори случај у првој апроксимацији у овом положају: |Δx| ≤ %1 (%2).</translation>
+    </message>
+    <message>
+        <source>Monte Carlo</source>
+        <translation>Монте Карло</translation>
+    </message>
+    <message>
+        <source>Solving %1 designs within the tolerances…</source>
+        <translation>Решавање %1 конструкција у оквиру толеранција…</translation>
+    </message>
+    <message>
+        <source>Monte Carlo cancelled.</source>
+        <translation>Монте Карло је отказан.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 samples did not assemble (%3 %).</source>
+        <translation>%1 од %2 узорака се није склопило (%3 %).</translation>
+    </message>
+    <message>
+        <source>No sample assembled: the distribution is undefined.</source>
+        <translation>Ниједан узорак се није склопио: расподела није дефинисана.</translation>
+    </message>
+    <message>
+        <source>Monte Carlo |Δx|: mean %1, σ %2, max %3. %4</source>
+        <translation>Монте Карло |Δx|: средња вредност %1, σ %2, макс. %3. %4</translation>
+    </message>
+    <message>
+        <source>|Δx| (%1)</source>
+        <translation>|Δx| (%1)</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>узорци</translation>
+    </message>
+    <message>
+        <source>This mechanism has no planar workspace to map.</source>
+        <translation>Овај механизам нема равански радни простор за мапу.</translation>
+    </message>
+    <message>
+        <source>Worst-case map</source>
+        <translation>Мапа најгорег случаја</translation>
+    </message>
+    <message>
+        <source>Mapping the worst-case error over the workspace…</source>
+        <translation>Мапирање најгоре грешке по радном простору…</translation>
+    </message>
+    <message>
+        <source>Map cancelled.</source>
+        <translation>Мапа је отказана.</translation>
+    </message>
+    <message>
+        <source>Worst case over the workspace: %1 to %2 (%3 cells; dark: small, bright: large).</source>
+        <translation>Најгори случај по радном простору: од %1 до %2 (%3 ћелија; тамно: мало, светло: велико).</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Параметар</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Толеранција</translation>
+    </message>
+    <message>
+        <source>Error part</source>
+        <translation>Удео грешке</translation>
+    </message>
+    <message>
+        <source>Share</source>
+        <translation>Удео</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Параметри</translation>
+    </message>
+    <message>
+        <source>Monte Carlo and map</source>
+        <translation>Монте Карло и мапа</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>Узорака:</translation>
+    </message>
+    <message>
+        <source>Normal (tol = 3σ)</source>
+        <translation>Нормална (толеранција = 3σ)</translation>
+    </message>
+    <message>
+        <source>Draw normal samples with the tolerance as 3σ instead of uniform ones within ±tol</source>
+        <translation>Узимај нормалне узорке са толеранцијом као 3σ уместо равномерних у оквиру ±толеранције</translation>
+    </message>
+    <message>
+        <source>Solve many designs drawn within the tolerances at this pose (fixed seed)</source>
+        <translation>Реши много конструкција узетих у оквиру толеранција у овом положају (фиксно семе)</translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation>Мапа</translation>
+    </message>
+    <message>
+        <source>The first-order worst case over the workspace</source>
+        <translation>Најгори случај у првој апроксимацији по радном простору</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Обриши</translation>
+    </message>
+    <message>
+        <source>Remove every tolerance (undoable)</source>
+        <translation>Уклони све толеранције (може се опозвати)</translation>
+    </message>
+</context>
+<context>
     <name>pkm::ValuesTable</name>
     <message>
         <source>Pose</source>
@@ -6487,6 +6662,22 @@ Please verify the correct file name was given.</source>
     <message>
         <source>%1: bookmark “%2” has an invalid pose value &apos;%3&apos;.</source>
         <translation>%1: обележивач „%2” има неважећу вредност положаја „%3”.</translation>
+    </message>
+    <message>
+        <source>%1: “tolerances” is not an object.</source>
+        <translation>%1: „tolerances” није објекат.</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 tolerances.</source>
+        <translation>%1 има више од %2 толеранција.</translation>
+    </message>
+    <message>
+        <source>it is not a number</source>
+        <translation>то није број</translation>
+    </message>
+    <message>
+        <source>%1: the tolerance of &apos;%2&apos; is refused: %3</source>
+        <translation>%1: толеранција за „%2” је одбијена: %3</translation>
     </message>
 </context>
 <context>

@@ -3996,6 +3996,46 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>unbounded: a stretched leg holds any force along it (inverse singularity)</source>
         <translation>neograničeno: ispružena noga drži svaku silu duž sebe (inverzna singularnost)</translation>
     </message>
+    <message>
+        <source>The design has no parameter named &apos;%1&apos; to give a tolerance.</source>
+        <translation>Konstrukcija nema parametar „%1” kome bi se zadala tolerancija.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; (%2) is not a geometric parameter: tolerances apply to the lengths, positions and angles of the design.</source>
+        <translation>„%1” (%2) nije geometrijski parametar: tolerancije se zadaju dužinama, položajima i uglovima konstrukcije.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is derived from other parameters: give the tolerances of the parameters it is made of.</source>
+        <translation>„%1” se izvodi iz drugih parametara: zadajte tolerancije parametara od kojih nastaje.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has no say in this design, so a tolerance on it changes nothing.</source>
+        <translation>„%1” ne utiče na ovu konstrukciju, pa tolerancija na njemu ništa ne menja.</translation>
+    </message>
+    <message>
+        <source>The tolerance of &apos;%1&apos; must be a finite number ≥ 0.</source>
+        <translation>Tolerancija za „%1” mora biti konačan broj ≥ 0.</translation>
+    </message>
+    <message>
+        <source>The tolerance ±%2 of &apos;%1&apos; takes it to %3, outside its allowed values.</source>
+        <translation>Tolerancija ±%2 za „%1” dovodi ga do %3, van dozvoljenih vrednosti.</translation>
+    </message>
+    <message>
+        <source>At most %1 tolerances can be given.</source>
+        <translation>Može se zadati najviše %1 tolerancija.</translation>
+    </message>
+    <message>
+        <source>At a direct singularity the actuators do not hold the platform: the error from the tolerances is unbounded.</source>
+        <translation>U singularitetu direktne kinematike aktuatori ne drže platformu: greška od tolerancija je neograničena.</translation>
+    </message>
+    <message>
+        <source>At a combined singularity the error from the tolerances is undefined.</source>
+        <translation>U kombinovanom singularitetu greška od tolerancija nije definisana.</translation>
+    </message>
+    <message>
+        <source>The perturbed designs do not assemble at these inputs: the error from the tolerances is undefined here.</source>
+        <translation>Izmenjene konstrukcije se ne sklapaju pri ovim ulazima: greška od tolerancija ovde nije definisana.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4273,6 +4313,18 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Move %1</source>
         <translation>Pomeri %1</translation>
+    </message>
+    <message>
+        <source>A design keeps at most %1 tolerances.</source>
+        <translation>Konstrukcija čuva najviše %1 tolerancija.</translation>
+    </message>
+    <message>
+        <source>Change tolerance of %1</source>
+        <translation>Izmeni toleranciju za %1</translation>
+    </message>
+    <message>
+        <source>Clear tolerances</source>
+        <translation>Ukloni tolerancije</translation>
     </message>
 </context>
 <context>
@@ -5074,6 +5126,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
         <translation>Oblici brzine i sile ne mogu se srazmeriti za ovu konstrukciju: njen početni položaj je singularan.</translation>
+    </message>
+    <message>
+        <source>Tolerances</source>
+        <translation>Tolerancije</translation>
     </message>
 </context>
 <context>
@@ -6046,6 +6102,125 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
 </context>
 <context>
+    <name>pkm::TolerancePanel</name>
+    <message>
+        <source>Give a tolerance to at least one parameter.</source>
+        <translation>Zadajte toleranciju bar jednom parametru.</translation>
+    </message>
+    <message>
+        <source>First-order worst case at this pose: |Δx| ≤ %1 (%2).</source>
+        <translation>Najgori slučaj u prvoj aproksimaciji u ovom položaju: |Δx| ≤ %1 (%2).</translation>
+    </message>
+    <message>
+        <source>Monte Carlo</source>
+        <translation>Monte Karlo</translation>
+    </message>
+    <message>
+        <source>Solving %1 designs within the tolerances…</source>
+        <translation>Rešavanje %1 konstrukcija u okviru tolerancija…</translation>
+    </message>
+    <message>
+        <source>Monte Carlo cancelled.</source>
+        <translation>Monte Karlo je otkazan.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 samples did not assemble (%3 %).</source>
+        <translation>%1 od %2 uzoraka se nije sklopilo (%3 %).</translation>
+    </message>
+    <message>
+        <source>No sample assembled: the distribution is undefined.</source>
+        <translation>Nijedan uzorak se nije sklopio: raspodela nije definisana.</translation>
+    </message>
+    <message>
+        <source>Monte Carlo |Δx|: mean %1, σ %2, max %3. %4</source>
+        <translation>Monte Karlo |Δx|: srednja vrednost %1, σ %2, maks. %3. %4</translation>
+    </message>
+    <message>
+        <source>|Δx| (%1)</source>
+        <translation>|Δx| (%1)</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>uzorci</translation>
+    </message>
+    <message>
+        <source>This mechanism has no planar workspace to map.</source>
+        <translation>Ovaj mehanizam nema ravanski radni prostor za mapu.</translation>
+    </message>
+    <message>
+        <source>Worst-case map</source>
+        <translation>Mapa najgoreg slučaja</translation>
+    </message>
+    <message>
+        <source>Mapping the worst-case error over the workspace…</source>
+        <translation>Mapiranje najgore greške po radnom prostoru…</translation>
+    </message>
+    <message>
+        <source>Map cancelled.</source>
+        <translation>Mapa je otkazana.</translation>
+    </message>
+    <message>
+        <source>Worst case over the workspace: %1 to %2 (%3 cells; dark: small, bright: large).</source>
+        <translation>Najgori slučaj po radnom prostoru: od %1 do %2 (%3 ćelija; tamno: malo, svetlo: veliko).</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parametar</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerancija</translation>
+    </message>
+    <message>
+        <source>Error part</source>
+        <translation>Udeo greške</translation>
+    </message>
+    <message>
+        <source>Share</source>
+        <translation>Udeo</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parametri</translation>
+    </message>
+    <message>
+        <source>Monte Carlo and map</source>
+        <translation>Monte Karlo i mapa</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>Uzoraka:</translation>
+    </message>
+    <message>
+        <source>Normal (tol = 3σ)</source>
+        <translation>Normalna (tolerancija = 3σ)</translation>
+    </message>
+    <message>
+        <source>Draw normal samples with the tolerance as 3σ instead of uniform ones within ±tol</source>
+        <translation>Uzimaj normalne uzorke sa tolerancijom kao 3σ umesto ravnomernih u okviru ±tolerancije</translation>
+    </message>
+    <message>
+        <source>Solve many designs drawn within the tolerances at this pose (fixed seed)</source>
+        <translation>Reši mnogo konstrukcija uzetih u okviru tolerancija u ovom položaju (fiksno seme)</translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation>Mapa</translation>
+    </message>
+    <message>
+        <source>The first-order worst case over the workspace</source>
+        <translation>Najgori slučaj u prvoj aproksimaciji po radnom prostoru</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Obriši</translation>
+    </message>
+    <message>
+        <source>Remove every tolerance (undoable)</source>
+        <translation>Ukloni sve tolerancije (može se opozvati)</translation>
+    </message>
+</context>
+<context>
     <name>pkm::ValuesTable</name>
     <message>
         <source>Pose</source>
@@ -6487,6 +6662,22 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>%1: bookmark “%2” has an invalid pose value &apos;%3&apos;.</source>
         <translation>%1: obeleživač „%2” ima nevažeću vrednost položaja „%3”.</translation>
+    </message>
+    <message>
+        <source>%1: “tolerances” is not an object.</source>
+        <translation>%1: „tolerances” nije objekat.</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 tolerances.</source>
+        <translation>%1 ima više od %2 tolerancija.</translation>
+    </message>
+    <message>
+        <source>it is not a number</source>
+        <translation>to nije broj</translation>
+    </message>
+    <message>
+        <source>%1: the tolerance of &apos;%2&apos; is refused: %3</source>
+        <translation>%1: tolerancija za „%2” je odbijena: %3</translation>
     </message>
 </context>
 <context>

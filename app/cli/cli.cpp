@@ -6,6 +6,7 @@
 #include "cli/clihelp.h"
 #include "cli/clishow.h"
 #include "cli/clisweep.h"
+#include "cli/clitolerance.h"
 #include "cli/cliworkspace.h"
 #include "registry.h"
 #include "report/jsonwriter.h"
@@ -329,6 +330,8 @@ int runCli(const QStringList &arguments, std::FILE *out, std::FILE *err)
         return runWorkspaceCommand(*prepared, invocation, out, err);
     if (invocation.command == Command::Sheet)
         return drawing.sheet(*prepared, invocation, out, err);
+    if (invocation.command == Command::Tolerance)
+        return runToleranceCommand(*prepared, invocation, out, err);
     return runSweep(*prepared, invocation, out, err);
 }
 

@@ -27,6 +27,7 @@ enum OptionFlag : unsigned {
     OptionLanguage = 1u << 9, ///< --lang CODE
     OptionModes = 1u << 10, ///< --all-modes
     OptionEquations = 1u << 11, ///< --equations
+    OptionTolerance = 1u << 12, ///< --tol, --samples, --seed, --normal
 };
 
 struct CommandSpec {
@@ -37,7 +38,7 @@ struct CommandSpec {
     bool needsOutput = false; ///< -o FILE is required
 };
 
-constexpr std::array<CommandSpec, 8> commandSpecs = {{
+constexpr std::array<CommandSpec, 9> commandSpecs = {{
     {Command::List, "list", OptionJson},
     {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
     {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet | OptionModes | OptionEquations},
@@ -49,6 +50,7 @@ constexpr std::array<CommandSpec, 8> commandSpecs = {{
     {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture | OptionSweep,
         {"png", "svg", "pdf", "gif", "mp4", "webm"}, true},
     {Command::Sheet, "sheet", OptionDesign | OptionSet | OptionOutput | OptionLanguage, {"pdf", "json", "csv"}, true},
+    {Command::Tolerance, "tolerance", OptionDesign | OptionJson | OptionSet | OptionTolerance | OptionGrid},
 }};
 
 const CommandSpec *findCommand(std::string_view name)
@@ -86,6 +88,8 @@ unsigned optionFlag(std::string_view option)
         return OptionModes;
     if (option == "--equations")
         return OptionEquations;
+    if (option == "--tol" || option == "--samples" || option == "--seed" || option == "--normal")
+        return OptionTolerance;
     return 0;
 }
 
@@ -259,6 +263,12 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
                                        : invocation.equations) = true;
             continue;
         }
+        if (option == "--normal") {
+            if (inlineValue)
+                return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
+            invocation.normal = true;
+            continue;
+        }
         if (option == "--orthographic" || option == "--no-caption" || option == "--one-way") {
             if (inlineValue)
                 return usageFailure(option, "'" + option + "' takes no value" + seeHelp + ".");
@@ -295,6 +305,39 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
                 invocation.sets.push_back({value, name, *parsed, {}});
             else
                 invocation.sets.push_back({value, name, std::nan(""), std::string(number)});
+        } else if (option == "--tol") {
+            const auto equals = value.find('=');
+            if (equals == std::string::npos || equals == 0)
+                return usageFailure(value, "--tol needs NAME=±VALUE, not '" + value + "'" + seeHelp + ".");
+            const std::string name = value.substr(0, equals);
+            std::string_view number = std::string_view(value).substr(equals + 1);
+            // "±0.05", "+-0.05" and "0.05" all mean the same half-width
+            for (const std::string_view sign : {std::string_view("±"), std::string_view("+-"), std::string_view("+/-")}) {
+                if (number.starts_with(sign)) {
+                    number.remove_prefix(sign.size());
+                    break;
+                }
+            }
+            const auto parsed = parseNumber(number);
+            if (!parsed)
+                return notANumber(context, name, number);
+            if (*parsed < 0)
+                return usageFailure(name, context + ": a tolerance is a half-width ±VALUE with VALUE ≥ 0.");
+            invocation.tolerances.push_back({value, name, *parsed});
+        } else if (option == "--samples") {
+            const auto number = parseNumber(value);
+            if (!number || *number < 0 || *number > maxToleranceSamples || *number != std::floor(*number)) {
+                return usageFailure("--samples", context + ": the number of Monte Carlo samples must be a whole number "
+                                                           "from 0 (first order only) to "
+                        + std::to_string(maxToleranceSamples) + ".");
+            }
+            invocation.samples = static_cast<int>(*number);
+        } else if (option == "--seed") {
+            std::uint64_t seed = 0;
+            const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seed);
+            if (value.empty() || error != std::errc() || end != value.data() + value.size())
+                return usageFailure("--seed", context + ": the seed must be a whole number from 0 to 18446744073709551615.");
+            invocation.seed = seed;
         } else if (option == "--var") {
             invocation.var = value;
         } else if (option == "--lang") {

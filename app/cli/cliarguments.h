@@ -12,9 +12,9 @@
 
 namespace pkm::cli {
 
-enum class Command { List, Show, Eval, Sweep, Workspace, Map, Render, Sheet };
+enum class Command { List, Show, Eval, Sweep, Workspace, Map, Render, Sheet, Tolerance };
 
-/// "list", "show", "eval", "sweep", "workspace", "map", "render", "sheet".
+/// "list", "show", "eval", "sweep", "workspace", "map", "render", "sheet", "tolerance".
 std::string_view commandName(Command command);
 
 /// --grid K of workspace and map: K cells along the longer side of the workspace.
@@ -47,6 +47,17 @@ struct Setting {
     std::string word;
 };
 
+/// One --tol NAME=±VALUE (tolerance): the half-width in the parameter's display units.
+struct ToleranceSetting {
+    std::string text; ///< as typed, "l1=±0.05", for messages
+    std::string name;
+    double value = 0.0;
+};
+
+/// --samples N (tolerance): Monte Carlo samples, 0 for the first order alone.
+inline constexpr int defaultToleranceSamples = 2000;
+inline constexpr int maxToleranceSamples = 100000;
+
 struct Invocation {
     std::optional<Command> command; ///< none for `pkm --help` and `pkm --version`
     bool help = false;
@@ -73,6 +84,10 @@ struct Invocation {
     int height = defaultPictureHeight;
     bool sizeGiven = false; ///< --size was given (an animation's default size is smaller)
     std::optional<std::string> language; ///< --lang CODE (sheet), checked by the command (clisheet.h)
+    std::vector<ToleranceSetting> tolerances; ///< --tol NAME=±V (tolerance), in order
+    std::optional<int> samples; ///< --samples N (tolerance)
+    std::optional<std::uint64_t> seed; ///< --seed S (tolerance)
+    bool normal = false; ///< --normal (tolerance): normal samples with tol = 3σ
 };
 
 /// The lower-case extension of `path` without the dot ("png"), empty without one.

@@ -86,4 +86,22 @@ void SetBookmarksCommand::redo()
     m_document->applyBookmarks(m_after);
 }
 
+SetTolerancesCommand::SetTolerancesCommand(Document *document, ParameterSet before, ParameterSet after, TextMaker text)
+    : m_document(document)
+    , m_before(std::move(before))
+    , m_after(std::move(after))
+{
+    setTextMaker(std::move(text));
+}
+
+void SetTolerancesCommand::undo()
+{
+    m_document->applyTolerances(m_before);
+}
+
+void SetTolerancesCommand::redo()
+{
+    m_document->applyTolerances(m_after);
+}
+
 } // namespace pkm

@@ -79,4 +79,19 @@ private:
     QList<Bookmark> m_after;
 };
 
+/// Sets the design's tolerances (core/tolerance.h): only they change, so undoing it leaves the
+/// pose and the maps as they are.
+class SetTolerancesCommand : public TranslatableCommand
+{
+public:
+    SetTolerancesCommand(Document *document, ParameterSet before, ParameterSet after, TextMaker text);
+    void undo() override;
+    void redo() override;
+
+private:
+    Document *m_document;
+    ParameterSet m_before;
+    ParameterSet m_after;
+};
+
 } // namespace pkm

@@ -6,6 +6,7 @@
 #include "quantityformat.h"
 #include "registry.h"
 #include "text.h"
+#include "tolerance.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -162,7 +163,43 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
         }
         design.bookmarks.append(bookmark);
     }
+    auto tolerances = parseTolerances(*design.mechanism, root.value(QStringLiteral("tolerances")), origin);
+    if (!tolerances)
+        return tolerances.failure();
+    design.tolerances = *tolerances;
     return design;
+}
+
+Result<ParameterSet> parseTolerances(const Mechanism &mechanism, const QJsonValue &value, const QString &origin)
+{
+    ParameterSet tolerances;
+    if (value.isUndefined())
+        return tolerances;
+    if (!value.isObject())
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: “tolerances” is not an object.").arg(origin));
+    const QJsonObject object = value.toObject();
+    if (object.size() > tolerance::maxTolerances) {
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 has more than %2 tolerances.")
+                                       .arg(origin, numberText(tolerance::maxTolerances)));
+    }
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const std::string name = it.key().toStdString();
+        const ParameterInfo *info = mechanism.findParameter(name);
+        if (!it.value().isDouble() || !info) {
+            auto checked = tolerance::checkParameter(mechanism, name);
+            const QString why = checked ? QCoreApplication::translate("pkm::designfile", "it is not a number")
+                                        : QString::fromStdString(checked.failure().message);
+            return fileFailure(it.key(), QCoreApplication::translate("pkm::designfile", "%1: the tolerance of '%2' is refused: %3")
+                                             .arg(origin, it.key(), why));
+        }
+        auto checked = tolerance::checkTolerance(mechanism, name, info->unit.fromDisplay(it.value().toDouble()));
+        if (!checked) {
+            return fileFailure(it.key(), QCoreApplication::translate("pkm::designfile", "%1: the tolerance of '%2' is refused: %3")
+                                             .arg(origin, it.key(), QString::fromStdString(checked.failure().message)));
+        }
+        tolerances[name] = *checked;
+    }
+    return tolerances;
 }
 
 Bookmark bookmarkOf(const Mechanism &mechanism, const Pose &pose, const QString &name)
@@ -307,6 +344,14 @@ QByteArray serialize(const Design &design)
             bookmarks.append(QJsonObject {{QStringLiteral("name"), bookmark.name}, {QStringLiteral("pose"), values}});
         }
         root.insert(QStringLiteral("bookmarks"), bookmarks);
+    }
+    if (!design.tolerances.empty()) {
+        QJsonObject tolerances;
+        for (const auto &[name, value] : design.tolerances) {
+            if (const ParameterInfo *info = design.mechanism->findParameter(name))
+                tolerances.insert(toQString(name), shown(info->unit.toDisplay(value)));
+        }
+        root.insert(QStringLiteral("tolerances"), tolerances);
     }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }

@@ -6,6 +6,7 @@
 #include "mechanism.h"
 
 #include <QByteArray>
+#include <QJsonValue>
 #include <QString>
 #include <QStringList>
 
@@ -26,6 +27,9 @@ struct Design {
     MechanismPtr mechanism;
     Pose pose;
     QList<Bookmark> bookmarks;
+    /// ±tolerances of geometric design parameters (core units, core/tolerance.h), by name;
+    /// saved as "tolerances": {NAME: ±value in display units}.
+    ParameterSet tolerances;
 };
 
 struct PresetInfo {
@@ -48,6 +52,11 @@ inline constexpr double savedPoseTolerance = 1e-6;
 /// more is refused: memory stays bounded whatever a file says).
 inline constexpr int maxBookmarks = 100;
 inline constexpr int maxBookmarkName = 200;
+
+/// Reads a design file's "tolerances" object (display units) for `mechanism`: at most
+/// tolerance::maxTolerances, each a geometric parameter with a value ≥ 0 that keeps it in its
+/// domain; the failure names the parameter.
+Result<ParameterSet> parseTolerances(const Mechanism &mechanism, const QJsonValue &value, const QString &origin);
 
 /// The bookmark of `pose` called `name`: every joint variable in display units.
 Bookmark bookmarkOf(const Mechanism &mechanism, const Pose &pose, const QString &name);

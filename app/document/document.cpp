@@ -2,6 +2,8 @@
 
 #include "document/commands.h"
 #include "quantityformat.h"
+#include "text.h"
+#include "tolerance.h"
 
 #include <QCoreApplication>
 #include <QEvent>
@@ -278,6 +280,43 @@ Result<Pose> Document::goToBookmark(int index)
     m_drivenVariable = 0;
     applyPose(*solved);
     return solved;
+}
+
+Result<bool> Document::setTolerance(const QString &name, double value)
+{
+    const std::string key = name.toStdString();
+    if (value != 0.0) {
+        auto checked = tolerance::checkTolerance(*m_design.mechanism, key, value);
+        if (!checked)
+            return checked.failure();
+    }
+    ParameterSet after = m_design.tolerances;
+    if (value == 0.0)
+        after.erase(key);
+    else
+        after[key] = value;
+    if (after == m_design.tolerances)
+        return true;
+    if (static_cast<int>(after.size()) > tolerance::maxTolerances) {
+        return Failure{FailureKind::InvalidParameter, key,
+                       tr("A design keeps at most %1 tolerances.").arg(tolerance::maxTolerances).toStdString()};
+    }
+    m_undoStack.push(new SetTolerancesCommand(this, m_design.tolerances, after,
+                                              [name] { return tr("Change tolerance of %1").arg(name); }));
+    return true;
+}
+
+void Document::clearTolerances()
+{
+    if (m_design.tolerances.empty())
+        return;
+    m_undoStack.push(new SetTolerancesCommand(this, m_design.tolerances, {}, [] { return tr("Clear tolerances"); }));
+}
+
+void Document::applyTolerances(const ParameterSet &tolerances)
+{
+    m_design.tolerances = tolerances;
+    emit tolerancesChanged();
 }
 
 void Document::applyBookmarks(const QList<Bookmark> &bookmarks)

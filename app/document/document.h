@@ -73,6 +73,15 @@ public:
     Result<bool> removeBookmark(int index);
     /// Moves to bookmark `index` (a pose move, like a slider's); the failure names the bookmark.
     Result<Pose> goToBookmark(int index);
+    /// The design's ±tolerances (core units, core/tolerance.h), kept in its file.
+    const ParameterSet &tolerances() const { return m_design.tolerances; }
+    /// Sets the tolerance of parameter `name` (core units; 0 removes it) as one undo step; the
+    /// failure names the parameter and nothing changes.
+    Result<bool> setTolerance(const QString &name, double value);
+    /// Removes every tolerance (undoable).
+    void clearTolerances();
+    // Used by the undo commands only.
+    void applyTolerances(const ParameterSet &tolerances);
     // Used by the undo commands only.
     void applyBookmarks(const QList<Bookmark> &bookmarks);
     // Used by the undo commands only.
@@ -90,6 +99,8 @@ signals:
     void poseChanged();
     /// A bookmark was added or removed (or the design replaced: designChanged says so too).
     void bookmarksChanged();
+    /// The tolerances changed (or the design was replaced: designChanged says so too).
+    void tolerancesChanged();
 
 private:
     void applyPose(const Pose &pose);

@@ -21,6 +21,7 @@
 #include "export/sheet.h"
 #include "valuestable.h"
 #include "variablepanel.h"
+#include "gui/tolerancepanel.h"
 #include "gui/viewpicture.h"
 #include "workspacemapview.h"
 #include "kinds/kindmodule.h"
@@ -240,6 +241,12 @@ void MainWindow::createDocks()
     equationsDock->setWidget(m_equations);
     addDockWidget(Qt::LeftDockWidgetArea, equationsDock);
     tabifyDockWidget(mobilityDock, equationsDock);
+    // Tolerances (issue 19): one more tab, listed in the View menu with the others.
+    auto *toleranceDock = m_toleranceDock = new QDockWidget(tr("Tolerances"), this);
+    toleranceDock->setObjectName(QStringLiteral("toleranceDock"));
+    toleranceDock->setWidget(new TolerancePanel(m_document, toleranceDock));
+    addDockWidget(Qt::LeftDockWidgetArea, toleranceDock);
+    tabifyDockWidget(equationsDock, toleranceDock);
     // The values in front; a tab raised before the window is shown does not stick. A restored
     // layout keeps the tab it had.
     QTimer::singleShot(0, this, [this, valuesDock] {
@@ -471,6 +478,7 @@ void MainWindow::retranslate()
     m_valuesDock->setWindowTitle(tr("Values at this pose"));
     m_mobilityDock->setWindowTitle(tr("Mobility"));
     m_equationsDock->setWindowTitle(tr("Equations"));
+    m_toleranceDock->setWindowTitle(tr("Tolerances"));
     m_viewTabs->setTabText(0, tr("2D"));
     m_viewTabs->setTabText(1, tr("3D"));
     m_viewTabs->setTabToolTip(1, tr("The mechanism in 3D: drag to turn it, right-drag to pan, wheel to zoom"));

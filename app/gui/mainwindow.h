@@ -221,6 +221,7 @@ private:
     QDockWidget *m_valuesDock = nullptr;
     QDockWidget *m_mobilityDock = nullptr;
     QDockWidget *m_equationsDock = nullptr;
+    QDockWidget *m_toleranceDock = nullptr;
     struct TranslatedAction {
         QPointer<QAction> action;
         const char *source = nullptr;

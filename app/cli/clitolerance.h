@@ -1,0 +1,16 @@
+#pragma once
+/// `pkm tolerance DESIGN --tol NAME=±V… [--samples N] [--seed S] [--normal] [--grid K]
+/// [--json]`: the platform's error at the pose from tolerances on the geometric design
+/// parameters (core/tolerance.h; reference: docs/cli.md).
+
+#include "cli/clidesign.h"
+
+#include <cstdio>
+
+namespace pkm::cli {
+
+/// Runs the command on the prepared design; prints the table or the JSON on `out`, a
+/// one-sentence message naming the culprit on `err`; returns the exit status.
+int runToleranceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err);
+
+} // namespace pkm::cli
