@@ -24,7 +24,21 @@ enum class MapQuantity {
     /// φ at which it can be held at (x, y) in the design's working modes, rad (0 … 2π); NaN
     /// where no φ holds it. Only where PlanarWorkspace::offers() says so.
     OrientationRange,
+    /// What the actuators deliver (capability.h), mapped by capabilitymap.h, not by
+    /// fillMapRow(): each cell is solved and evaluated, in core units; NaN where unreachable.
+    ForceWorst,      ///< largest platform force in its weakest direction; 0 at a direct singularity
+    SpeedWorst,      ///< largest platform speed in its slowest direction; 0 at an inverse one
+    ResolutionWorst, ///< largest error from half a step per actuator; ∞ at a direct one
+    StiffnessWorst,  ///< smallest eigenvalue of K = Jᵀ·K_q·J; 0 at a direct one
+    /// Where the design meets every stated requirement on the capability (1) or not (0).
+    Specification,
 };
+
+/// Whether `quantity` is one of what the actuators deliver (capabilitymap.h computes it).
+constexpr bool isCapability(MapQuantity quantity)
+{
+    return quantity >= MapQuantity::ForceWorst;
+}
 
 /// A regular grid of cell centres over a box: cell (column c, row r) has its centre at
 /// (xMin + (c + ½)·dx, yMin + (r + ½)·dy); row 0 is the bottom row.
@@ -78,8 +92,11 @@ public:
     /// where only the grid estimates the area.
     virtual std::vector<ExactArea> exactAreas() const { return {}; }
     /// Whether fillMapRow() maps `quantity`: det J and κ everywhere, the orientation range only
-    /// for a platform that turns (a 3-DOF planar parallel design).
-    virtual bool offers(MapQuantity quantity) const { return quantity != MapQuantity::OrientationRange; }
+    /// for a platform that turns (a 3-DOF planar parallel design); never the capability's.
+    virtual bool offers(MapQuantity quantity) const
+    {
+        return quantity == MapQuantity::Determinant || quantity == MapQuantity::Condition;
+    }
 };
 
 /// Below this margin a cell counts as near-singular (≈ 3° from the singular pose).

@@ -2,6 +2,7 @@
 
 #include "mechanism.h"
 
+#include <algorithm>
 #include <mutex>
 #include <shared_mutex>
 
@@ -102,6 +103,50 @@ std::string number(double value, int decimals)
 std::string millimetres(double value)
 {
     return format(translate("core", "%1 mm"), {number(value, 2)});
+}
+
+std::string printable(std::string_view outside, std::size_t maxCharacters)
+{
+    static constexpr char hex[] = "0123456789ABCDEF";
+    std::string out;
+    out.reserve(std::min(outside.size(), maxCharacters * 4) + 4);
+    const auto escape = [&](unsigned char byte) {
+        out += "\\x";
+        out += hex[byte >> 4];
+        out += hex[byte & 15];
+    };
+    std::size_t characters = 0;
+    for (std::size_t i = 0; i < outside.size(); ++characters) {
+        if (characters == maxCharacters) {
+            out += "…";
+            break;
+        }
+        const auto byte = static_cast<unsigned char>(outside[i]);
+        // the length of a well-formed UTF-8 sequence starting here (0: not one)
+        const std::size_t length = byte < 0x80 ? 1 : (byte & 0xE0) == 0xC0 ? 2 : (byte & 0xF0) == 0xE0 ? 3
+                                 : (byte & 0xF8) == 0xF0 ? 4 : 0;
+        bool wellFormed = length > 0 && i + length <= outside.size();
+        char32_t code = length == 1 ? byte : length == 2 ? byte & 0x1F : length == 3 ? byte & 0x0F : byte & 0x07;
+        for (std::size_t k = 1; wellFormed && k < length; ++k) {
+            const auto next = static_cast<unsigned char>(outside[i + k]);
+            wellFormed = (next & 0xC0) == 0x80;
+            code = (code << 6) | (next & 0x3F);
+        }
+        const bool overlong = (length == 2 && code < 0x80) || (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+        const bool control = code < 0x20 || (code >= 0x7F && code <= 0x9F);
+        if (!wellFormed || overlong || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) {
+            escape(byte);
+            ++i;
+        } else if (control) {
+            for (std::size_t k = 0; k < length; ++k)
+                escape(static_cast<unsigned char>(outside[i + k]));
+            i += length;
+        } else {
+            out.append(outside.substr(i, length));
+            i += length;
+        }
+    }
+    return out;
 }
 
 } // namespace pkm::text

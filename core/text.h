@@ -47,5 +47,9 @@ std::string format(std::string_view pattern, std::initializer_list<std::string_v
 std::string number(double value, int decimals = 3);
 /// A length for a sentence: "12.5 mm".
 std::string millimetres(double value);
+/// Text from outside (a file, the command line) made safe to print inside a message: control
+/// characters and invalid UTF-8 as \xHH escapes (no ESC reaches a terminal, no newline fakes
+/// a line), cut after `maxCharacters` characters with "…".
+std::string printable(std::string_view outside, std::size_t maxCharacters = 80);
 
 } // namespace pkm::text

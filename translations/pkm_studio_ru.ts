@@ -4036,6 +4036,22 @@ Please verify the correct file name was given.</source>
         <source>The perturbed designs do not assemble at these inputs: the error from the tolerances is undefined here.</source>
         <translation>Изменённые конструкции не собираются при этих входных координатах: погрешность от допусков здесь не определена.</translation>
     </message>
+    <message>
+        <source>The requirement &apos;%1&apos; cannot be checked: this design declares no actuators.</source>
+        <translation>Требование «%1» нельзя проверить: в этой конструкции не заданы приводы.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; has no comparison: write it as NAME&gt;=VALUE or NAME&lt;=VALUE, for example force_worst&gt;=50.</source>
+        <translation>В требовании «%1» нет сравнения: запишите его как ИМЯ&gt;=ЗНАЧЕНИЕ или ИМЯ&lt;=ЗНАЧЕНИЕ, например force_worst&gt;=50.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; names no single capability value; it may name %2.</source>
+        <translation>Требование «%1» не называет ни одной отдельной величины возможностей привода; допустимы %2.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; does not end in a finite number.</source>
+        <translation>Требование «%1» не заканчивается конечным числом.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4325,6 +4341,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Clear tolerances</source>
         <translation>Удалить допуски</translation>
+    </message>
+    <message>
+        <source>Change requirements</source>
+        <translation>Изменить требования</translation>
     </message>
 </context>
 <context>
@@ -5130,6 +5150,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Tolerances</source>
         <translation>Допуски</translation>
+    </message>
+    <message>
+        <source>What the actuators must deliver at the platform; the workspace map shows where it holds</source>
+        <translation>Что приводы должны обеспечить на платформе; карта рабочего пространства показывает, где это выполняется</translation>
+    </message>
+    <message>
+        <source>The requirements are kept with the design; this mechanism has no workspace map to show where they hold.</source>
+        <translation>Требования сохранены вместе с конструкцией; у этого механизма нет карты рабочего пространства, чтобы показать, где они выполняются.</translation>
+    </message>
+    <message>
+        <source>Re&amp;quirements…</source>
+        <translation>&amp;Требования…</translation>
     </message>
 </context>
 <context>
@@ -6084,6 +6116,25 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::RequirementsDialog</name>
+    <message>
+        <source>Requirements</source>
+        <translation>Требования</translation>
+    </message>
+    <message>
+        <source>What the actuators must deliver at the platform. The workspace map “where the requirements hold” shows, in green, where every checked one does, from the actuators&apos; limits in the design.</source>
+        <translation>Что приводы должны обеспечить на платформе. Карта рабочего пространства «где требования выполняются» показывает зелёным, где выполняется каждое отмеченное, по пределам приводов в конструкции.</translation>
+    </message>
+    <message>
+        <source>This design states no actuator limits: there is nothing to require.</source>
+        <translation>В этой конструкции не заданы пределы приводов: требовать нечего.</translation>
+    </message>
+    <message>
+        <source>Also required (from the file, kept as it is): %1</source>
+        <translation>Также требуется (из файла, сохранено как есть): %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::SetParameterCommand</name>
     <message>
         <source>Change %1</source>
@@ -6553,6 +6604,58 @@ Please verify the correct file name was given.</source>
         <source>orientation range of φ</source>
         <translation>диапазон ориентации φ</translation>
     </message>
+    <message>
+        <source>force in the weakest direction</source>
+        <translation>сила в самом слабом направлении</translation>
+    </message>
+    <message>
+        <source>speed in the slowest direction</source>
+        <translation>скорость в самом медленном направлении</translation>
+    </message>
+    <message>
+        <source>worst resolution</source>
+        <translation>наихудшая точность позиционирования</translation>
+    </message>
+    <message>
+        <source>stiffness in the weakest direction</source>
+        <translation>жёсткость в самом слабом направлении</translation>
+    </message>
+    <message>
+        <source>where the requirements hold</source>
+        <translation>где требования выполняются</translation>
+    </message>
+    <message>
+        <source>Requirements met in %1 of the workspace %2 (%3 %)</source>
+        <translation>Требования выполняются на %1 из рабочего пространства %2 (%3 %)</translation>
+    </message>
+    <message>
+        <source>green: every requirement holds; grey: one fails</source>
+        <translation>зелёный: выполняются все требования; серый: одно не выполняется</translation>
+    </message>
+    <message>
+        <source>Required: %1</source>
+        <translation>Требуется: %1</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4%5</source>
+        <translation>Рабочее пространство %1 · %2 от %3 до %4%5</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3, colours end at %4</source>
+        <translation>%1 (%2): %3, цвета до %4</translation>
+    </message>
+    <message>
+        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is solved, on a grid of at most %1 cells along the longer side.</source>
+        <translation>Что приводы обеспечивают в каждой точке рабочего пространства по своим пределам в конструкции: ровно 0 или ∞ в особом положении. Каждая ячейка решается отдельно, на сетке не более %1 ячеек по длинной стороне.</translation>
+    </message>
+    <message>
+        <source>No requirements stated (Edit ▸ Requirements…): the whole workspace %1 meets them</source>
+        <translation>Требования не заданы (Правка ▸ Требования…): всё рабочее пространство %1 им удовлетворяет</translation>
+    </message>
+    <message>
+        <source>State what the actuators must deliver with Edit ▸ Requirements….</source>
+        <translation>Задайте, что должны обеспечить приводы, в меню Правка ▸ Требования….</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>
@@ -6678,6 +6781,22 @@ Please verify the correct file name was given.</source>
     <message>
         <source>%1: the tolerance of &apos;%2&apos; is refused: %3</source>
         <translation>%1: допуск «%2» отклонён: %3</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” is not a list of texts.</source>
+        <translation>%1: «requirements» — не список строк.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” has more than %2 entries.</source>
+        <translation>%1: в «requirements» больше %2 записей.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” holds an entry that is not a text of at most %2 characters.</source>
+        <translation>%1: в «requirements» есть запись, которая не является строкой длиной не более %2 символов.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements”: %2</source>
+        <translation>%1: «requirements»: %2</translation>
     </message>
 </context>
 <context>

@@ -4036,6 +4036,22 @@ Please verify the correct file name was given.</source>
         <source>The perturbed designs do not assemble at these inputs: the error from the tolerances is undefined here.</source>
         <translation>Измењене конструкције се не склапају при овим улазима: грешка од толеранција овде није дефинисана.</translation>
     </message>
+    <message>
+        <source>The requirement &apos;%1&apos; cannot be checked: this design declares no actuators.</source>
+        <translation>Захтев „%1“ не може да се провери: ова конструкција не задаје погоне.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; has no comparison: write it as NAME&gt;=VALUE or NAME&lt;=VALUE, for example force_worst&gt;=50.</source>
+        <translation>Захтев „%1“ нема поређење: напишите га као ИМЕ&gt;=ВРЕДНОСТ или ИМЕ&lt;=ВРЕДНОСТ, на пример force_worst&gt;=50.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; names no single capability value; it may name %2.</source>
+        <translation>Захтев „%1“ не именује ниједну појединачну вредност могућности погона; може да именује %2.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; does not end in a finite number.</source>
+        <translation>Захтев „%1“ се не завршава коначним бројем.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4325,6 +4341,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Clear tolerances</source>
         <translation>Уклони толеранције</translation>
+    </message>
+    <message>
+        <source>Change requirements</source>
+        <translation>Измени захтеве</translation>
     </message>
 </context>
 <context>
@@ -5130,6 +5150,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Tolerances</source>
         <translation>Толеранције</translation>
+    </message>
+    <message>
+        <source>What the actuators must deliver at the platform; the workspace map shows where it holds</source>
+        <translation>Шта погони морају да дају на платформи; мапа радног простора показује где је то испуњено</translation>
+    </message>
+    <message>
+        <source>The requirements are kept with the design; this mechanism has no workspace map to show where they hold.</source>
+        <translation>Захтеви су сачувани уз конструкцију; овај механизам нема мапу радног простора која би показала где су испуњени.</translation>
+    </message>
+    <message>
+        <source>Re&amp;quirements…</source>
+        <translation>&amp;Захтеви…</translation>
     </message>
 </context>
 <context>
@@ -6084,6 +6116,25 @@ Please verify the correct file name was given.</source>
     </message>
 </context>
 <context>
+    <name>pkm::RequirementsDialog</name>
+    <message>
+        <source>Requirements</source>
+        <translation>Захтеви</translation>
+    </message>
+    <message>
+        <source>What the actuators must deliver at the platform. The workspace map “where the requirements hold” shows, in green, where every checked one does, from the actuators&apos; limits in the design.</source>
+        <translation>Шта погони морају да дају на платформи. Мапа радног простора „где су захтеви испуњени“ зеленом бојом показује где је испуњен сваки означени, према границама погона у конструкцији.</translation>
+    </message>
+    <message>
+        <source>This design states no actuator limits: there is nothing to require.</source>
+        <translation>Ова конструкција не задаје границе погона: нема шта да се захтева.</translation>
+    </message>
+    <message>
+        <source>Also required (from the file, kept as it is): %1</source>
+        <translation>Такође се захтева (из датотеке, задржано какво јесте): %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::SetParameterCommand</name>
     <message>
         <source>Change %1</source>
@@ -6553,6 +6604,58 @@ Please verify the correct file name was given.</source>
         <source>orientation range of φ</source>
         <translation>опсег оријентације φ</translation>
     </message>
+    <message>
+        <source>force in the weakest direction</source>
+        <translation>сила у најслабијем правцу</translation>
+    </message>
+    <message>
+        <source>speed in the slowest direction</source>
+        <translation>брзина у најспоријем правцу</translation>
+    </message>
+    <message>
+        <source>worst resolution</source>
+        <translation>најгора резолуција</translation>
+    </message>
+    <message>
+        <source>stiffness in the weakest direction</source>
+        <translation>крутост у најслабијем правцу</translation>
+    </message>
+    <message>
+        <source>where the requirements hold</source>
+        <translation>где су захтеви испуњени</translation>
+    </message>
+    <message>
+        <source>Requirements met in %1 of the workspace %2 (%3 %)</source>
+        <translation>Захтеви испуњени на %1 од радног простора %2 (%3 %)</translation>
+    </message>
+    <message>
+        <source>green: every requirement holds; grey: one fails</source>
+        <translation>зелено: сви захтеви испуњени; сиво: један није</translation>
+    </message>
+    <message>
+        <source>Required: %1</source>
+        <translation>Захтева се: %1</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4%5</source>
+        <translation>Радни простор %1 · %2 од %3 до %4%5</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3, colours end at %4</source>
+        <translation>%1 (%2): %3, боје до %4</translation>
+    </message>
+    <message>
+        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is solved, on a grid of at most %1 cells along the longer side.</source>
+        <translation>Шта погони дају у свакој тачки радног простора, према својим границама у конструкцији: тачно 0 или ∞ у сингуларном положају. Свака ћелија се решава, на мрежи од највише %1 ћелија по дужој страни.</translation>
+    </message>
+    <message>
+        <source>No requirements stated (Edit ▸ Requirements…): the whole workspace %1 meets them</source>
+        <translation>Нису задати захтеви (Уређивање ▸ Захтеви…): цео радни простор %1 их испуњава</translation>
+    </message>
+    <message>
+        <source>State what the actuators must deliver with Edit ▸ Requirements….</source>
+        <translation>Задајте шта погони морају да дају у менију Уређивање ▸ Захтеви….</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>
@@ -6678,6 +6781,22 @@ Please verify the correct file name was given.</source>
     <message>
         <source>%1: the tolerance of &apos;%2&apos; is refused: %3</source>
         <translation>%1: толеранција за „%2” је одбијена: %3</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” is not a list of texts.</source>
+        <translation>%1: „requirements“ није листа текстова.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” has more than %2 entries.</source>
+        <translation>%1: „requirements“ има више од %2 ставки.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” holds an entry that is not a text of at most %2 characters.</source>
+        <translation>%1: „requirements“ садржи ставку која није текст од највише %2 знакова.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements”: %2</source>
+        <translation>%1: „requirements“: %2</translation>
     </message>
 </context>
 <context>

@@ -4036,6 +4036,22 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The perturbed designs do not assemble at these inputs: the error from the tolerances is undefined here.</source>
         <translation>Izmenjene konstrukcije se ne sklapaju pri ovim ulazima: greška od tolerancija ovde nije definisana.</translation>
     </message>
+    <message>
+        <source>The requirement &apos;%1&apos; cannot be checked: this design declares no actuators.</source>
+        <translation>Zahtev „%1“ ne može da se proveri: ova konstrukcija ne zadaje pogone.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; has no comparison: write it as NAME&gt;=VALUE or NAME&lt;=VALUE, for example force_worst&gt;=50.</source>
+        <translation>Zahtev „%1“ nema poređenje: napišite ga kao IME&gt;=VREDNOST ili IME&lt;=VREDNOST, na primer force_worst&gt;=50.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; names no single capability value; it may name %2.</source>
+        <translation>Zahtev „%1“ ne imenuje nijednu pojedinačnu vrednost mogućnosti pogona; može da imenuje %2.</translation>
+    </message>
+    <message>
+        <source>The requirement &apos;%1&apos; does not end in a finite number.</source>
+        <translation>Zahtev „%1“ se ne završava konačnim brojem.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -4325,6 +4341,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Clear tolerances</source>
         <translation>Ukloni tolerancije</translation>
+    </message>
+    <message>
+        <source>Change requirements</source>
+        <translation>Izmeni zahteve</translation>
     </message>
 </context>
 <context>
@@ -5130,6 +5150,18 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Tolerances</source>
         <translation>Tolerancije</translation>
+    </message>
+    <message>
+        <source>What the actuators must deliver at the platform; the workspace map shows where it holds</source>
+        <translation>Šta pogoni moraju da daju na platformi; mapa radnog prostora pokazuje gde je to ispunjeno</translation>
+    </message>
+    <message>
+        <source>The requirements are kept with the design; this mechanism has no workspace map to show where they hold.</source>
+        <translation>Zahtevi su sačuvani uz konstrukciju; ovaj mehanizam nema mapu radnog prostora koja bi pokazala gde su ispunjeni.</translation>
+    </message>
+    <message>
+        <source>Re&amp;quirements…</source>
+        <translation>&amp;Zahtevi…</translation>
     </message>
 </context>
 <context>
@@ -6084,6 +6116,25 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
 </context>
 <context>
+    <name>pkm::RequirementsDialog</name>
+    <message>
+        <source>Requirements</source>
+        <translation>Zahtevi</translation>
+    </message>
+    <message>
+        <source>What the actuators must deliver at the platform. The workspace map “where the requirements hold” shows, in green, where every checked one does, from the actuators&apos; limits in the design.</source>
+        <translation>Šta pogoni moraju da daju na platformi. Mapa radnog prostora „gde su zahtevi ispunjeni“ zelenom bojom pokazuje gde je ispunjen svaki označeni, prema granicama pogona u konstrukciji.</translation>
+    </message>
+    <message>
+        <source>This design states no actuator limits: there is nothing to require.</source>
+        <translation>Ova konstrukcija ne zadaje granice pogona: nema šta da se zahteva.</translation>
+    </message>
+    <message>
+        <source>Also required (from the file, kept as it is): %1</source>
+        <translation>Takođe se zahteva (iz datoteke, zadržano kakvo jeste): %1</translation>
+    </message>
+</context>
+<context>
     <name>pkm::SetParameterCommand</name>
     <message>
         <source>Change %1</source>
@@ -6553,6 +6604,58 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>orientation range of φ</source>
         <translation>opseg orijentacije φ</translation>
     </message>
+    <message>
+        <source>force in the weakest direction</source>
+        <translation>sila u najslabijem pravcu</translation>
+    </message>
+    <message>
+        <source>speed in the slowest direction</source>
+        <translation>brzina u najsporijem pravcu</translation>
+    </message>
+    <message>
+        <source>worst resolution</source>
+        <translation>najgora rezolucija</translation>
+    </message>
+    <message>
+        <source>stiffness in the weakest direction</source>
+        <translation>krutost u najslabijem pravcu</translation>
+    </message>
+    <message>
+        <source>where the requirements hold</source>
+        <translation>gde su zahtevi ispunjeni</translation>
+    </message>
+    <message>
+        <source>Requirements met in %1 of the workspace %2 (%3 %)</source>
+        <translation>Zahtevi ispunjeni na %1 od radnog prostora %2 (%3 %)</translation>
+    </message>
+    <message>
+        <source>green: every requirement holds; grey: one fails</source>
+        <translation>zeleno: svi zahtevi ispunjeni; sivo: jedan nije</translation>
+    </message>
+    <message>
+        <source>Required: %1</source>
+        <translation>Zahteva se: %1</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4%5</source>
+        <translation>Radni prostor %1 · %2 od %3 do %4%5</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3, colours end at %4</source>
+        <translation>%1 (%2): %3, boje do %4</translation>
+    </message>
+    <message>
+        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is solved, on a grid of at most %1 cells along the longer side.</source>
+        <translation>Šta pogoni daju u svakoj tački radnog prostora, prema svojim granicama u konstrukciji: tačno 0 ili ∞ u singularnom položaju. Svaka ćelija se rešava, na mreži od najviše %1 ćelija po dužoj strani.</translation>
+    </message>
+    <message>
+        <source>No requirements stated (Edit ▸ Requirements…): the whole workspace %1 meets them</source>
+        <translation>Nisu zadati zahtevi (Uređivanje ▸ Zahtevi…): ceo radni prostor %1 ih ispunjava</translation>
+    </message>
+    <message>
+        <source>State what the actuators must deliver with Edit ▸ Requirements….</source>
+        <translation>Zadajte šta pogoni moraju da daju u meniju Uređivanje ▸ Zahtevi….</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>
@@ -6678,6 +6781,22 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>%1: the tolerance of &apos;%2&apos; is refused: %3</source>
         <translation>%1: tolerancija za „%2” je odbijena: %3</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” is not a list of texts.</source>
+        <translation>%1: „requirements“ nije lista tekstova.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” has more than %2 entries.</source>
+        <translation>%1: „requirements“ ima više od %2 stavki.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements” holds an entry that is not a text of at most %2 characters.</source>
+        <translation>%1: „requirements“ sadrži stavku koja nije tekst od najviše %2 znakova.</translation>
+    </message>
+    <message>
+        <source>%1: “requirements”: %2</source>
+        <translation>%1: „requirements“: %2</translation>
     </message>
 </context>
 <context>

@@ -99,7 +99,8 @@ void appendPolyline(QVector<QCPCurveData> &curve, const std::vector<Eigen::Vecto
 /// The worker: the map (and for the shown map its colours and singular curves) of one design.
 /// Touches nothing but its arguments, so it may outlive the request that started it.
 std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQuantity quantity, int resolution,
-    bool full, const std::shared_ptr<std::atomic<bool>> &cancel)
+    bool full, const std::shared_ptr<std::atomic<bool>> &cancel, const Pose &pose,
+    const std::vector<capability::Requirement> &requirements)
 {
     auto result = std::make_shared<WorkspaceMapResult>();
     result->quantity = quantity;
@@ -108,10 +109,14 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         result->summary.cancelled = true;
         return result;
     }
-    const MapGrid grid = squareGrid(workspace->workspaceBounds(), resolution);
+    const bool delivered = isCapability(quantity);
+    const MapGrid grid = squareGrid(workspace->workspaceBounds(),
+                                    delivered ? std::min(resolution, workspacemap::capabilityResolution) : resolution);
     result->values.resize(grid.cells());
     std::vector<float> margins(full ? grid.cells() : 0);
-    result->summary = computeMap(*workspace, quantity, grid, result->values, margins, cancel.get());
+    result->summary = delivered
+        ? workspacemap::computeCapability(*mechanism, pose, quantity, requirements, grid, *result, margins, cancel.get())
+        : computeMap(*workspace, quantity, grid, result->values, margins, cancel.get());
     if (result->summary.cancelled || cancel->load()) {
         result->summary.cancelled = true;
         return result;
@@ -136,6 +141,13 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
     double limit = condition ? 10.0 : 1.0;
     if (range) {
         limit = 360.0; // degrees: the whole turn, the same scale for every design
+    } else if (quantity == MapQuantity::Specification) {
+        limit = 1.0; // met or not
+    } else if (delivered && !finite.empty()) {
+        // from 0 (nothing delivered: a singularity) to the 95th percentile, so that the spikes
+        // beside a singularity (the resolution → ∞) do not flatten the rest
+        const double high = percentile(determinantHighPercentile);
+        limit = high > 0.0 ? high : std::max(1.0, result->summary.max);
     } else if (!finite.empty()) {
         if (condition) {
             const double high = percentile(highPercentile);
@@ -147,7 +159,7 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         }
     }
     result->colourLimit = limit;
-    const double lower = condition ? 1.0 : range ? 0.0 : -limit;
+    const double lower = condition ? 1.0 : range || delivered ? 0.0 : -limit;
     const double toColour = range ? 180.0 / std::numbers::pi : 1.0; // the range in radians, coloured in degrees
 
     // The colour data, clipped to the colour range: QCPColorGradient turns values into indices
@@ -234,8 +246,9 @@ void WorkspaceMapView::start(JobKind kind, const MechanismPtr &mechanism)
         watcher->deleteLater(); // not delete: we are inside its signal
         finished(finishedKind, generation, std::move(result));
     });
-    watcher->setFuture(QtConcurrent::run([mechanism, quantity, resolution = m_resolution, full, cancel = job->cancel] {
-        return compute(mechanism, quantity, resolution, full, cancel);
+    watcher->setFuture(QtConcurrent::run([mechanism, quantity, resolution = m_resolution, full, cancel = job->cancel,
+                                          pose = m_fullPose, requirements = m_requirements] {
+        return compute(mechanism, quantity, resolution, full, cancel, pose, requirements);
     }));
     m_jobs.push_back(std::move(job));
 }

@@ -35,13 +35,7 @@
 
 namespace pkm {
 
-namespace {
-using workspacemap::determinantGradient;
-using workspacemap::nan;
-
-/// "−46.3", "1.34", "1.41·10⁵": three significant digits, a real minus sign, powers of ten
-/// written out for very large and very small magnitudes.
-QString significant(double value)
+QString workspacemap::significant(double value)
 {
     const QLocale locale;
     auto minus = [](QString text) { return text.replace(QLatin1Char('-'), QChar(0x2212)); };
@@ -61,6 +55,11 @@ QString significant(double value)
     return minus(locale.toString(mantissa, 'g', 3)) + QStringLiteral("·10") + (exponent < 0 ? QStringLiteral("⁻") : QString())
         + power;
 }
+
+namespace {
+using workspacemap::determinantGradient;
+using workspacemap::nan;
+using workspacemap::significant;
 
 /// Ticks for κ on a logarithmic colour scale: powers of ten over many decades, 1-2-5 over a
 /// few, 1-1.5-2-3-4-5-6-8 over less than one (QCPAxisTickerLog falls back to linear steps there).
@@ -120,19 +119,33 @@ void WorkspaceMapView::applyMap(WorkspaceMapResult &result)
 
     m_colorMap->setData(result.colours.release()); // takes ownership, no copy
     const bool range = result.quantity == MapQuantity::OrientationRange;
-    m_colorMap->setGradient(condition ? conditionGradient()
-                            : range   ? QCPColorGradient(QCPColorGradient::gpThermal)
-                                      : determinantGradient());
+    const bool delivered = isCapability(result.quantity);
+    const bool specification = result.quantity == MapQuantity::Specification;
+    m_shownSymbol = result.symbol;
+    m_shownLabel = result.label;
+    m_shownUnit = result.unit;
+    m_specificationArea = specification ? result.specification.metArea : 0.0;
+    m_colorMap->setGradient(condition       ? conditionGradient()
+                            : range         ? QCPColorGradient(QCPColorGradient::gpThermal)
+                            : specification ? workspacemap::specificationGradient()
+                            : delivered     ? workspacemap::capabilityGradient()
+                                            : determinantGradient());
     m_colorScale->setDataScaleType(condition ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
-    if (condition)
+    if (condition) {
         m_colorScale->axis()->setTicker(QSharedPointer<ConditionTicker>::create());
-    else
+    } else if (specification) {
+        auto ticker = QSharedPointer<QCPAxisTickerFixed>::create(); // met or not: 0 and 1 only
+        ticker->setTickStep(1.0);
+        ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
+        m_colorScale->axis()->setTicker(ticker);
+    } else {
         m_colorScale->axis()->setTicker(QSharedPointer<MinusTicker>::create());
+    }
     m_colorScale->axis()->setNumberFormat(QStringLiteral("gb"));
     m_colorScale->axis()->setNumberPrecision(3);
-    m_colorScale->setDataRange(condition ? QCPRange(1.0, m_colourLimit)
-                               : range   ? QCPRange(0.0, m_colourLimit)
-                                         : QCPRange(-m_colourLimit, m_colourLimit));
+    m_colorScale->setDataRange(condition           ? QCPRange(1.0, m_colourLimit)
+                               : range || delivered ? QCPRange(0.0, m_colourLimit)
+                                                    : QCPRange(-m_colourLimit, m_colourLimit));
 
     m_outline->data()->set(result.outline, true);
     m_inverse->data()->set(result.inverse, true);
@@ -200,6 +213,10 @@ void WorkspaceMapView::updateTitle()
 {
     const bool condition = m_shownQuantity == MapQuantity::Condition;
     const QString symbol = condition ? QStringLiteral("κ(J)") : QStringLiteral("det J"); // symbols
+    if (isCapability(m_shownQuantity) && !m_mapBounds.isEmpty() && m_summary.reachableCells > 0) {
+        updateCapabilityTitle();
+        return;
+    }
     if (m_mapBounds.isEmpty()) {
         plotstyle::setFittedText(m_title, tr("Workspace map"));
         m_colorScale->setLabel(QString());
@@ -286,6 +303,7 @@ void WorkspaceMapView::retranslate()
     m_quantityBox->setItemText(1, tr("condition number κ(J)"));
     if (const int range = m_quantityBox->findData(int(MapQuantity::OrientationRange)); range >= 0)
         m_quantityBox->setItemText(range, tr("orientation range of φ"));
+    retranslateCapabilityItems();
     m_busyLabel->setText(tr("computing…"));
     m_plot->xAxis->setLabel(tr("x (mm)"));
     m_plot->yAxis->setLabel(tr("y (mm)"));

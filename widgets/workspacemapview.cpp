@@ -295,13 +295,25 @@ void WorkspaceMapView::setMechanism(MechanismPtr mechanism)
             m_quantity = MapQuantity::Determinant;
         m_quantityBox->setCurrentIndex(m_quantityBox->findData(int(m_quantity)));
     }
+    syncCapabilityItems();
     requestMap();
+}
+
+void WorkspaceMapView::setRequirements(std::vector<capability::Requirement> requirements)
+{
+    if (requirements == m_requirements)
+        return;
+    m_requirements = std::move(requirements);
+    if (m_quantity == MapQuantity::Specification && m_mechanism && m_mechanism->planarWorkspace())
+        requestMap();
 }
 
 void WorkspaceMapView::setPose(const Pose &pose)
 {
     const bool valid = pose.outputs.size() >= 2 && std::isfinite(pose.outputs[0]) && std::isfinite(pose.outputs[1]);
     m_hasPose = valid;
+    if (valid)
+        m_fullPose = pose; // no recomputation: a capability map follows the design, not the drag
     if (valid)
         m_pose = Eigen::Vector2d(pose.outputs[0], pose.outputs[1]);
     for (QCPItemTracer *item : {m_poseCircle, m_poseCross}) {

@@ -13,6 +13,7 @@
 /// Units: mm on both axes (drawn at the same scale), mm² for areas; map values are
 /// dimensionless.
 
+#include "capabilitymap.h"
 #include "linkageview.h" // Q_DECLARE_METATYPE(Eigen::Vector2d)
 #include "mechanism.h"
 #include "planarworkspace.h"
@@ -62,11 +63,18 @@ public:
     /// and redraws only the marker's layer.
     void setPose(const Pose &pose);
 
-    /// det J (diverging colours, symmetric limits) or κ(J) (logarithmic); also the combo box.
+    /// det J (diverging colours, symmetric limits) or κ(J) (logarithmic), the orientation
+    /// range, what the actuators deliver or the specification region; also the combo box.
     void setQuantity(MapQuantity quantity);
     MapQuantity quantity() const { return m_quantity; }
 
-    /// Cells along the longer side of the workspace bounds (default 500); recomputes.
+    /// What the specification map checks (core units); recomputes it when it is shown.
+    void setRequirements(std::vector<capability::Requirement> requirements);
+    /// The shown specification map's area where every requirement holds, mm² (0 otherwise).
+    double specificationArea() const { return m_specificationArea; }
+
+    /// Cells along the longer side of the workspace bounds (default 500; a capability map
+    /// solves each cell and uses at most capability::defaultGrid); recomputes.
     void setResolution(int cells);
     int resolution() const { return m_resolution; }
 
@@ -136,6 +144,11 @@ private:
     QString messageText() const;
     void updateBusy();
     void updateTitle();
+    /// The title and scale of a capability or specification map (workspacemapcapability.cpp).
+    void updateCapabilityTitle();
+    /// Adds or removes the capability items of the combo box as the design declares actuators.
+    void syncCapabilityItems();
+    void retranslateCapabilityItems();
     void updateLegend();
     void fitView();
     void resetView();
@@ -150,6 +163,10 @@ private:
     QString m_comparisonLabel;
     MapQuantity m_quantity = MapQuantity::Determinant;
     int m_resolution = 500;
+    Pose m_fullPose; ///< the last pose given: a capability map's cells start from its modes
+    std::vector<capability::Requirement> m_requirements;
+    double m_specificationArea = 0.0;
+    std::string m_shownSymbol, m_shownLabel, m_shownUnit; ///< a capability map's entry
 
     int m_generation = 0;
     int m_comparisonGeneration = 0;

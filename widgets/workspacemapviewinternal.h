@@ -3,6 +3,7 @@
 // the results shown in workspacemapresults.cpp), and the determinant's colour gradient.
 #pragma once
 
+#include "capabilitymap.h"
 #include "workspacemapview.h"
 
 #include <qcustomplot.h>
@@ -12,6 +13,7 @@
 #include <atomic>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,9 @@ struct WorkspaceMapResult {
     QVector<QCPCurveData> inverse, direct;     ///< singular curves, separated by NaN points
     int inverseCount = 0, directCount = 0;
     std::string inverseMeaning, directMeaning; ///< for the legend
+    /// A capability map's entry (English sources from core) and its specification's area.
+    std::string symbol, label, unit;
+    capability::SpecificationSummary specification;
 };
 
 struct WorkspaceMapView::Job {
@@ -44,6 +49,24 @@ inline constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 /// det J: blue (negative) – white (0, direct singularity) – orange (positive).
 QCPColorGradient determinantGradient();
+/// What the actuators deliver: dark (little, near a singularity) to yellow (much).
+QCPColorGradient capabilityGradient();
+/// The specification: grey where a requirement fails, green where all hold.
+QCPColorGradient specificationGradient();
+
+/// "−46.3", "1.34", "1.41·10⁵": three significant digits, a real minus sign, powers of ten
+/// written out for very large and very small magnitudes.
+QString significant(double value);
+
+/// The most cells of a capability map along the longer side: each cell is solved
+/// (capabilitymap.h), a hundred times the cost of a closed-form cell.
+inline constexpr int capabilityResolution = capability::defaultGrid;
+
+/// A capability map or the specification (workspacemapcapability.cpp) into `result` on the
+/// worker: values in display units, the entry's texts, the specification's area.
+MapSummary computeCapability(const Mechanism &mechanism, const Pose &pose, MapQuantity quantity,
+                             const std::vector<capability::Requirement> &requirements, const MapGrid &grid,
+                             WorkspaceMapResult &result, std::span<float> margins, const std::atomic<bool> *cancel);
 
 } // namespace workspacemap
 

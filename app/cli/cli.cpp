@@ -12,6 +12,7 @@
 #include "report/jsonwriter.h"
 #include "report/report.h"
 #include "report/texttable.h"
+#include "text.h"
 
 #include <QString>
 
@@ -49,7 +50,9 @@ using namespace report;
 
 namespace {
 
-// -- names ---------------------------------------------------------------------------------
+/// An error message is one sentence, perhaps quoting a name or a value: longer than this, the
+/// rest is cut ("…").
+constexpr std::size_t maxMessageCharacters = 1000;
 
 
 // -- eval ------------------------------------------------------------------------------------
@@ -225,7 +228,9 @@ std::string designHeading(const PreparedDesign &prepared)
 
 void printError(std::FILE *err, const std::string &message)
 {
-    const std::string line = "pkm: " + message + "\n";
+    // a message may quote a file or an argument: no control character reaches the terminal
+    // (ESC sequences, a newline faking a line) and a quoted megabyte does not make a sentence
+    const std::string line = "pkm: " + text::printable(message, maxMessageCharacters) + "\n";
     std::fwrite(line.data(), 1, line.size(), err);
     std::fflush(err);
 }

@@ -28,6 +28,7 @@ enum OptionFlag : unsigned {
     OptionModes = 1u << 10, ///< --all-modes
     OptionEquations = 1u << 11, ///< --equations
     OptionTolerance = 1u << 12, ///< --tol, --samples, --seed, --normal
+    OptionRequire = 1u << 13, ///< --require NAME>=VALUE (workspace, map)
 };
 
 struct CommandSpec {
@@ -43,9 +44,10 @@ constexpr std::array<CommandSpec, 9> commandSpecs = {{
     {Command::Show, "show", OptionDesign | OptionJson | OptionSet},
     {Command::Eval, "eval", OptionDesign | OptionJson | OptionSet | OptionModes | OptionEquations},
     {Command::Sweep, "sweep", OptionDesign | OptionJson | OptionCsv | OptionSet | OptionSweep},
-    {Command::Workspace, "workspace", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionOutput,
+    {Command::Workspace, "workspace", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionOutput | OptionRequire,
         {"png", "svg"}},
-    {Command::Map, "map", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput,
+    {Command::Map, "map",
+        OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput | OptionRequire,
         {"png", "csv"}},
     {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture | OptionSweep,
         {"png", "svg", "pdf", "gif", "mp4", "webm"}, true},
@@ -90,6 +92,8 @@ unsigned optionFlag(std::string_view option)
         return OptionEquations;
     if (option == "--tol" || option == "--samples" || option == "--seed" || option == "--normal")
         return OptionTolerance;
+    if (option == "--require")
+        return OptionRequire;
     return 0;
 }
 
@@ -351,12 +355,19 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             }
             invocation.grid = static_cast<int>(*number);
         } else if (option == "--quantity") {
-            if (value != "det" && value != "cond" && value != "range") {
+            constexpr std::array<std::string_view, 8> quantities
+                = {"det", "cond", "range", "force_worst", "speed_worst", "resolution_worst", "stiffness_worst", "spec"};
+            if (std::find(quantities.begin(), quantities.end(), value) == quantities.end()) {
                 return usageFailure("--quantity",
-                    context + ": the quantity must be 'det' (det J), 'cond' (the condition number of J) or 'range' (the "
-                              "orientation range of a platform that turns).");
+                    context + ": the quantity must be 'det' (det J), 'cond' (the condition number of J), 'range' (the "
+                              "orientation range of a platform that turns), one of what the actuators deliver "
+                              "('force_worst', 'speed_worst', 'resolution_worst', 'stiffness_worst') or 'spec' (where "
+                              "every --require holds).");
             }
             invocation.quantity = value;
+        } else if (option == "--require") {
+            // checked against the design's actuators by the command (capabilitymap.h)
+            invocation.requirements.push_back(value);
         } else if (flag == OptionOutput) {
             const std::string extension = fileExtension(value);
             const auto &types = command.outputTypes;

@@ -73,7 +73,8 @@ struct Invocation {
     std::optional<double> to;
     std::optional<std::int64_t> steps;
     std::optional<int> grid; ///< --grid K (workspace, map): cells along the longer side
-    std::optional<std::string> quantity; ///< --quantity det|cond (map)
+    std::optional<std::string> quantity; ///< --quantity det|cond|range|force_worst|…|spec (map)
+    std::vector<std::string> requirements; ///< --require NAME>=VALUE (workspace, map), as given
     std::optional<std::string> output; ///< -o FILE (workspace, map, render, sheet), its extension checked
     std::optional<std::string> view; ///< --view 2d|3d (render)
     std::optional<std::string> camera; ///< --camera front|top|side|iso (render, 3d only)

@@ -17,11 +17,14 @@ Commands:
                                            singularity class, derived quantities
   sweep  DESIGN --var N --from A --to B --steps K [--set N=V]... [--csv|--json]
                                            one row per step, the quantities of eval
-  workspace DESIGN [--grid K] [--set N=V]... [--json] [-o FILE.png|.svg]
-                                           reachable workspace: area, bounds, the area
-                                           of every assembly/working mode
-  map    DESIGN [--grid K] [--quantity det|cond|range] [--set N=V]... [--json]
-         [-o FILE.png|.csv]                singularity map over the workspace
+  workspace DESIGN [--grid K] [--require N>=V]... [--set N=V]... [--json]
+         [-o FILE.png|.svg]                reachable workspace: area, bounds, the area
+                                           of every assembly/working mode, where the
+                                           actuators deliver what is required
+  map    DESIGN [--grid K] [--quantity det|cond|range|force_worst|…|spec]
+         [--require N>=V]... [--set N=V]... [--json] [-o FILE.png|.csv]
+                                           singularity or capability map over the
+                                           workspace
   render DESIGN [--set N=V]... [--view 2d|3d] [--size WxH] [--camera front|top|side|iso]
          [--orthographic] [--no-caption] -o FILE.png|.svg|.pdf
                                            a picture of the mechanism in a pose: the
@@ -164,7 +167,8 @@ the ranges.
 )";
 
 constexpr std::string_view workspaceHelp
-    = R"(Usage: pkm workspace DESIGN [--grid K] [--set NAME=VALUE]... [--json] [-o FILE.png|FILE.svg]
+    = R"(Usage: pkm workspace DESIGN [--grid K] [--require NAME>=VALUE]... [--set NAME=VALUE]... [--json]
+                     [-o FILE.png|FILE.svg]
 
 Computes the reachable workspace of a mechanism whose output is a point of the plane (MOMA's
 platform, the O-X glide's platform centre): every cell of a grid of square cells over the
@@ -178,6 +182,14 @@ planar mechanism rides the z axis, also the volume: the area extruded over the z
   --grid K            K cells along the longer side of the workspace bounds, from 10 to
                       4000 (default 400); a finer grid follows the boundary more closely
   --set NAME=VALUE    applied first, as in 'pkm eval' (gamma1=-3, l1=200, assembly=1)
+  --require N>=V      what the actuators must deliver (repeatable; also N<=V): a single
+                      value of eval's "capability" group in its display unit, such as
+                      force_worst>=50 (N), speed_worst>=100 (mm/s), resolution_worst<=0.01
+                      (mm), stiffness_worst>=500 (N/mm). Adds the specification: the area
+                      where every requirement holds, its share of the workspace and how many
+                      cells fail each one ("specification" in JSON); -o FILE.png then shows
+                      that region green in the grey workspace. Without --require, the
+                      design file's "requirements" are used, if it states any.
   --json              {"design", "mechanism", "parameters", "area", "bounds": {"x_min",
                        "x_max", "y_min", "y_max"}, "grid": {"resolution", "columns", "rows",
                        "x_min", "x_max", "y_min", "y_max"}, "cell_size", "reachable_cells",
@@ -200,8 +212,8 @@ anything is printed. An empty workspace (no reachable cell) exits with status 3.
 )";
 
 constexpr std::string_view mapHelp
-    = R"(Usage: pkm map DESIGN [--grid K] [--quantity det|cond|range] [--set NAME=VALUE]... [--json]
-               [-o FILE.png|FILE.csv]
+    = R"(Usage: pkm map DESIGN [--grid K] [--quantity QUANTITY] [--require NAME>=VALUE]...
+               [--set NAME=VALUE]... [--json] [-o FILE.png|FILE.csv]
 
 Computes a singularity map over the workspace of a mechanism whose output is a point of the
 plane, on a grid of square cells over the workspace bounds (the design's current modes),
@@ -215,16 +227,27 @@ and the greatest finite value, the number of near-singular cells (singularity ma
   --quantity cond     the condition number of J (>= 1, ∞ at any singularity)
   --quantity range    a platform that turns (3-DOF planar-parallel): at each (x, y) the
                       total width of the angles φ at which it can be held, in degrees
+  --quantity force_worst|speed_worst|resolution_worst|stiffness_worst
+                      what the actuators deliver at each cell, as 'pkm eval' gives it in
+                      its "capability" group (N, mm/s, mm, N/mm): each cell is solved (about
+                      1 µs a cell); 0 or ∞ exactly at a singularity
+  --quantity spec     1 where every requirement holds, 0 where one fails (the default
+                      with --require); the requirements of --require, else the design
+                      file's
+  --require N>=V      a requirement, as in 'pkm workspace'; repeatable
   --set NAME=VALUE    applied first, as in 'pkm eval'
-  --json              {"design", "mechanism", "parameters", "quantity", "grid":
+  --json              {"design", "mechanism", "parameters", "quantity", "unit" (of a
+                       capability map), "grid":
                        {"resolution", "columns", "rows", "x_min", "x_max", "y_min",
                        "y_max"}, "cell_size", "bounds", "reachable_cells", "area", "min",
                        "max", "near_singular_cells", "near_singular_margin",
+                       "specification" (with spec: as 'pkm workspace --require'),
                        "colour_scale" (with -o FILE.png), "seconds"}
   -o FILE.png         the map as a picture, one pixel per cell, y up, unreachable cells
                       transparent; det J blue (< 0) – white (0) – red (> 0), clipped at the
                       95th percentile of |det J|; the condition number on a log scale from 1
-                      (dark) to 100 (yellow)
+                      (dark) to 100 (yellow); what the actuators deliver from 0 (dark) to
+                      its 95th percentile (yellow); the specification green where met
   -o FILE.csv         the full map: a header line x,y,value,margin and one row per reachable
                       cell (mm, from the bottom row up); a value that is not finite (det J
                       at an inverse singularity) is an empty field

@@ -1,6 +1,7 @@
 #include "cli/cliworkspace.h"
 
 #include "cli/cli.h"
+#include "cli/clicapabilitymap.h"
 #include "cli/cliworkspaceparts.h"
 #include "document/savefile.h"
 #include "registry.h"
@@ -50,41 +51,46 @@ std::optional<std::string> writePicture(Writer writer, const std::string &path, 
 
 // -- numbers and names ---------------------------------------------------------------------
 
-/// Up to 6 significant digits, locale-free: for min and max in the text output.
-std::string shortNumber(double value)
-{
-    if (std::isinf(value))
-        return value > 0 ? "∞" : "-∞";
-    if (std::isnan(value))
-        return "undefined";
-    if (value == 0.0)
-        value = 0.0; // no "-0"
-    char buffer[64];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6).ptr;
-    return std::string(buffer, end);
-}
+struct QuantityName {
+    MapQuantity quantity;
+    std::string_view key;   ///< --quantity and the JSON's "quantity"
+    std::string_view title; ///< the text output's and the picture's
+};
+constexpr QuantityName quantityNames[] = {
+    {MapQuantity::Determinant, "det", "det J"},
+    {MapQuantity::Condition, "cond", "condition number of J"},
+    {MapQuantity::OrientationRange, "range", "orientation range (°)"},
+    {MapQuantity::ForceWorst, "force_worst", "force in the weakest direction"},
+    {MapQuantity::SpeedWorst, "speed_worst", "speed in the slowest direction"},
+    {MapQuantity::ResolutionWorst, "resolution_worst", "worst resolution"},
+    {MapQuantity::StiffnessWorst, "stiffness_worst", "stiffness in the weakest direction"},
+    {MapQuantity::Specification, "spec", "specification region"},
+};
 
-/// A float map value as the shortest text that reads back as the same float ("0.1", not
-/// "0.100000001490116"), locale-free.
-void appendFloat(std::string &out, float value)
+MapQuantity quantityOf(std::string_view key)
 {
-    if (value == 0.0f)
-        value = 0.0f;
-    char buffer[32];
-    out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+    for (const QuantityName &name : quantityNames)
+        if (name.key == key)
+            return name.quantity;
+    return MapQuantity::Determinant;
 }
-
 
 std::string_view quantityKey(MapQuantity quantity)
 {
-    return quantity == MapQuantity::Condition ? "cond" : quantity == MapQuantity::OrientationRange ? "range" : "det";
+    for (const QuantityName &name : quantityNames)
+        if (name.quantity == quantity)
+            return name.key;
+    return "det";
 }
 
-std::string_view quantityTitle(MapQuantity quantity)
+std::string quantityTitle(const Mechanism &mechanism, MapQuantity quantity)
 {
-    return quantity == MapQuantity::Condition          ? "condition number of J"
-        : quantity == MapQuantity::OrientationRange ? "orientation range (°)"
-                                                       : "det J";
+    std::string title = "det J";
+    for (const QuantityName &name : quantityNames)
+        if (name.quantity == quantity)
+            title = name.title;
+    const std::string unit = capabilityUnit(mechanism, quantity);
+    return unit.empty() ? title : title + " (" + unit + ")";
 }
 
 /// "Active П-joint" → "active П-joint"; "MOMA …" stays.
@@ -96,61 +102,9 @@ std::string inSentence(std::string title)
 }
 
 
-// -- grids and maps ------------------------------------------------------------------------
-
-bool reachable(float value)
-{
-    return !std::isnan(value);
-}
-
-struct ComputedMap {
-    MapGrid grid;
-    MapSummary summary;
-    std::vector<float> values;
-    std::vector<float> margins;
-};
-
 } // namespace
 
 namespace {
-
-// -- files ---------------------------------------------------------------------------------
-
-std::optional<std::string> saveMapCsv(const std::string &path, const ComputedMap &map)
-{
-    return files::saveFile(path, [&](const files::ChunkWriter &write) {
-        constexpr std::size_t flushBytes = std::size_t {1} << 20;
-        std::string text = "x,y,value,margin\n";
-        text.reserve(flushBytes + 256);
-        const MapGrid &grid = map.grid;
-        const std::size_t columns = static_cast<std::size_t>(grid.columns);
-        for (int r = 0; r < grid.rows; ++r) {
-            const double y = cleanCoordinate(grid.y(r));
-            for (int c = 0; c < grid.columns; ++c) {
-                const std::size_t i = static_cast<std::size_t>(r) * columns + static_cast<std::size_t>(c);
-                const float value = map.values[i];
-                if (!reachable(value))
-                    continue;
-                appendNumber(text, cleanCoordinate(grid.x(c)));
-                text += ',';
-                appendNumber(text, y);
-                text += ',';
-                if (std::isfinite(value)) // ±∞ at a singularity: an empty field, as in sweep
-                    appendFloat(text, value);
-                text += ',';
-                if (i < map.margins.size() && std::isfinite(map.margins[i]))
-                    appendFloat(text, map.margins[i]);
-                text += '\n';
-            }
-            if (text.size() >= flushBytes) {
-                if (!write(text))
-                    return false;
-                text.clear();
-            }
-        }
-        return write(text);
-    });
-}
 
 // -- the commands --------------------------------------------------------------------------
 
@@ -188,6 +142,41 @@ std::optional<Failure> emptyWorkspace(const Context &context, const MapSummary &
             + " mm: it is empty or thinner than a cell (try a larger --grid)."};
 }
 
+/// The requirements of --require, else those the design file states.
+Result<std::vector<capability::Requirement>> requirementsOf(const Context &context)
+{
+    if (context.invocation.requirements.empty())
+        return context.prepared.design.requirements;
+    return parseRequirements(*context.prepared.mechanism, context.invocation.requirements);
+}
+
+/// Why `pkm map` cannot map `quantity` for this design, if it cannot.
+std::optional<Failure> capabilityMapFailure(const Context &context, const PlanarWorkspace &workspace,
+                                            MapQuantity quantity)
+{
+    const Invocation &invocation = context.invocation;
+    if (quantity == MapQuantity::OrientationRange && !workspace.offers(quantity)) {
+        return usageFailure("--quantity",
+            "'--quantity range' maps the orientation range of a platform that turns (a 3-DOF planar-parallel "
+            "design); the platform of " + context.prepared.origin + " does not turn.");
+    }
+    if (isCapability(quantity) && !capability::layoutFor(capability::actuatorsOf(*context.prepared.mechanism))) {
+        return usageFailure("--quantity", "'--quantity " + std::string(quantityKey(quantity)) + "' maps what the "
+            "actuators deliver, but " + context.prepared.origin + " does not declare every actuator's limits.");
+    }
+    if (quantity == MapQuantity::Specification && invocation.requirements.empty()
+        && context.prepared.design.requirements.empty()) {
+        return usageFailure("--quantity", "'--quantity spec' maps where the requirements hold, and "
+            + context.prepared.origin + " states none: give at least one --require NAME>=VALUE (for example "
+            "--require force_worst>=50).");
+    }
+    if (quantity != MapQuantity::Specification && !invocation.requirements.empty()) {
+        return usageFailure("--require", "--require maps where the requirements hold (--quantity spec); it does "
+                                         "not go with '--quantity " + std::string(quantityKey(quantity)) + "'.");
+    }
+    return std::nullopt;
+}
+
 int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
 {
     const Mechanism &mechanism = *context.prepared.mechanism;
@@ -203,6 +192,18 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
     const std::vector<ModeArea> areas = modeAreas(mechanism, modes, map.summary, context.resolution, buffer);
     const ModeRegions united = modes.empty() ? ModeRegions {} : modeRegions(mechanism, modes, context.resolution);
     const auto named = namedModeAreas(modes, areas);
+    // --require: where in the workspace the actuators deliver what is asked
+    const auto requirements = requirementsOf(context);
+    if (!requirements)
+        return failWith(context.err, requirements.failure());
+    ComputedMap region;
+    capability::SpecificationSummary specification;
+    if (!requirements->empty()) {
+        region.summary = computeCapabilityInto(mechanism, context.prepared.pose, MapQuantity::Specification,
+                                               *requirements, context.resolution, region.values, region.margins,
+                                               &specification);
+        region.grid = region.summary.grid;
+    }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
     const std::string suffix = modeSuffix(mechanism);
@@ -212,6 +213,11 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             const std::string title
                 = "Workspace of " + context.prepared.origin + suffix + ": " + fixedText(map.summary.area, 1) + " mm²";
             failure = files::saveBytes(*path, QByteArray::fromStdString(workspaceSvg(map.grid, map.values, title)));
+        } else if (!requirements->empty()) {
+            failure = writePicture(pictureWriters().map, *path, region.grid, std::span<const float>(region.values),
+                MapQuantity::Specification, 1.0,
+                "Where " + context.prepared.origin + suffix + " meets the requirements: "
+                    + fixedText(specification.metArea, 1) + " of " + fixedText(region.summary.area, 1) + " mm²");
         } else if (!named.empty() && united.reached.size() > 1) {
             failure = writePicture(pictureWriters().regions, *path, united,
                 "Workspaces of the modes of " + context.prepared.origin + suffix
@@ -282,6 +288,8 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             json.endObject();
         }
         json.endArray();
+        if (!requirements->empty())
+            writeSpecificationJson(json, mechanism, *requirements, specification, region.summary);
         json.key("seconds").number(seconds);
         json.endObject();
         out += '\n';
@@ -329,6 +337,12 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             modeTable.render(out);
             out.append("Union of the modes: ").append(fixedText(united.unionArea, 1)).append(" mm²\n");
         }
+        if (!requirements->empty()) {
+            TextTable spec({false, true, false});
+            spec.heading("\nSpecification (what the actuators deliver, on the same grid)");
+            addSpecificationRows(spec, mechanism, *requirements, specification, region.summary);
+            spec.render(out);
+        }
         if (const auto &path = context.invocation.output)
             out += "\nWrote " + *path + '\n';
     }
@@ -338,18 +352,22 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
 int runMap(const Context &context, const PlanarWorkspace &workspace)
 {
     const Mechanism &mechanism = *context.prepared.mechanism;
-    const std::string asked = context.invocation.quantity.value_or("det");
-    const MapQuantity quantity = asked == "cond" ? MapQuantity::Condition
-        : asked == "range"                       ? MapQuantity::OrientationRange
-                                                 : MapQuantity::Determinant;
-    if (!workspace.offers(quantity)) {
-        return failWith(context.err,
-            usageFailure("--quantity",
-                "'--quantity range' maps the orientation range of a platform that turns (a 3-DOF planar-parallel "
-                "design); the platform of " + context.prepared.origin + " does not turn."));
-    }
+    // --require alone maps where the requirements hold
+    const bool required = !context.invocation.requirements.empty();
+    const MapQuantity quantity = quantityOf(context.invocation.quantity.value_or(required ? "spec" : "det"));
+    if (auto failure = capabilityMapFailure(context, workspace, quantity))
+        return failWith(context.err, *failure);
+    const auto requirements = requirementsOf(context);
+    if (!requirements)
+        return failWith(context.err, requirements.failure());
     ComputedMap map;
-    map.summary = computeInto(workspace, quantity, context.resolution, map.values, &map.margins);
+    capability::SpecificationSummary specification;
+    if (isCapability(quantity)) {
+        map.summary = computeCapabilityInto(mechanism, context.prepared.pose, quantity, *requirements,
+                                            context.resolution, map.values, map.margins, &specification);
+    } else {
+        map.summary = computeInto(workspace, quantity, context.resolution, map.values, &map.margins);
+    }
     map.grid = map.summary.grid;
     if (quantity == MapQuantity::OrientationRange) {
         // the core maps radians; the command line gives angles in degrees, as everywhere
@@ -370,7 +388,7 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
         if (png) {
             limit = mapColourLimit(map.values, quantity);
             failure = writePicture(pictureWriters().map, *path, map.grid, std::span<const float>(map.values), quantity,
-                limit, std::string(quantityTitle(quantity)) + " of " + context.prepared.origin + modeSuffix(mechanism));
+                limit, quantityTitle(mechanism, quantity) + " of " + context.prepared.origin + modeSuffix(mechanism));
         } else {
             failure = saveMapCsv(*path, map);
         }
@@ -379,7 +397,9 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
             return CliOutputError;
         }
     }
-    const double colourMin = quantity == MapQuantity::Condition ? 1.0 : quantity == MapQuantity::OrientationRange ? 0.0 : -limit;
+    const double colourMin = quantity == MapQuantity::Condition ? 1.0
+        : quantity == MapQuantity::Determinant                  ? -limit
+                                                                : 0.0;
 
     std::string out;
     if (context.invocation.json) {
@@ -389,6 +409,8 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
         json.key("mechanism").string(mechanism.kind());
         writeParametersJson(json, mechanism, true);
         json.key("quantity").string(quantityKey(quantity));
+        if (const std::string unit = capabilityUnit(mechanism, quantity); !unit.empty())
+            json.key("unit").string(unit);
         writeGridJson(json, map.grid, context.resolution);
         json.key("bounds");
         json.beginObject(true);
@@ -400,6 +422,8 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
         json.key("max").number(map.summary.max);
         json.key("near_singular_cells").integer(static_cast<std::int64_t>(map.summary.nearSingularCells));
         json.key("near_singular_margin").number(nearSingularMargin);
+        if (quantity == MapQuantity::Specification)
+            writeSpecificationJson(json, mechanism, *requirements, specification, map.summary);
         if (png) {
             json.key("colour_scale");
             json.beginObject(true);
@@ -414,18 +438,21 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
     } else {
         out = designHeading(context.prepared);
         TextTable table({false, true, false});
-        table.heading("\nMap of " + std::string(quantityTitle(quantity)) + modeSuffix(mechanism));
+        table.heading("\nMap of " + quantityTitle(mechanism, quantity) + modeSuffix(mechanism));
         addGridRows(table, map.grid, context.resolution, box, map.summary.reachableCells);
         table.cells({"area", fixedText(map.summary.area, 1), "mm²"});
         table.cells({"min", shortNumber(map.summary.min), "over the finite cells"});
         table.cells({"max", shortNumber(map.summary.max), ""});
         table.cells({"near-singular cells", std::to_string(map.summary.nearSingularCells),
             "margin < " + numberText(nearSingularMargin)});
+        if (quantity == MapQuantity::Specification)
+            addSpecificationRows(table, mechanism, *requirements, specification, map.summary);
         if (png) {
             std::string scale("[");
             scale += shortNumber(colourMin) + ", " + shortNumber(limit) + "]";
             table.cells({"colours", scale, quantity == MapQuantity::Condition ? "log scale"
                                                : quantity == MapQuantity::OrientationRange ? "linear"
+                                               : quantity == MapQuantity::Specification    ? "met or not"
                                                                                            : "linear, clipped"});
         }
         table.cells({"time", fixedText(map.summary.seconds, 3), "s"});

@@ -4,13 +4,79 @@
 #include "cli/cliworkspaceparts.h"
 
 #include "registry.h"
+#include "document/savefile.h"
 #include "report/numberformat.h"
 
+#include <charconv>
+#include <cmath>
 #include <limits>
 
 namespace pkm::cli {
 
 using namespace report;
+
+namespace {
+/// A float map value as the shortest text that reads back as the same float ("0.1", not
+/// "0.100000001490116"), locale-free.
+void appendFloat(std::string &out, float value)
+{
+    if (value == 0.0f)
+        value = 0.0f;
+    char buffer[32];
+    out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+} // namespace
+
+std::string shortNumber(double value)
+{
+    if (std::isinf(value))
+        return value > 0 ? "∞" : "-∞";
+    if (std::isnan(value))
+        return "undefined";
+    if (value == 0.0)
+        value = 0.0; // no "-0"
+    char buffer[64];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6).ptr;
+    return std::string(buffer, end);
+}
+
+
+std::optional<std::string> saveMapCsv(const std::string &path, const ComputedMap &map)
+{
+    return files::saveFile(path, [&](const files::ChunkWriter &write) {
+        constexpr std::size_t flushBytes = std::size_t {1} << 20;
+        std::string text = "x,y,value,margin\n";
+        text.reserve(flushBytes + 256);
+        const MapGrid &grid = map.grid;
+        const std::size_t columns = static_cast<std::size_t>(grid.columns);
+        for (int r = 0; r < grid.rows; ++r) {
+            const double y = cleanCoordinate(grid.y(r));
+            for (int c = 0; c < grid.columns; ++c) {
+                const std::size_t i = static_cast<std::size_t>(r) * columns + static_cast<std::size_t>(c);
+                const float value = map.values[i];
+                if (std::isnan(value)) // unreachable
+                    continue;
+                appendNumber(text, cleanCoordinate(grid.x(c)));
+                text += ',';
+                appendNumber(text, y);
+                text += ',';
+                if (std::isfinite(value)) // ±∞ at a singularity: an empty field, as in sweep
+                    appendFloat(text, value);
+                text += ',';
+                if (i < map.margins.size() && std::isfinite(map.margins[i]))
+                    appendFloat(text, map.margins[i]);
+                text += '\n';
+            }
+            if (text.size() >= flushBytes) {
+                if (!write(text))
+                    return false;
+                text.clear();
+            }
+        }
+        return write(text);
+    });
+}
+
 
 /// The kinds whose designs have a planar workspace: "moma".
 std::string planarKinds()

@@ -8,7 +8,9 @@
 #include <Eigen/Geometry>
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace pkm::cli {
 
@@ -23,5 +25,20 @@ std::string intervalText(double a, double b);
 /// The grid's rows of the text table: its size, cell size, bounds and reachable box.
 void addGridRows(report::TextTable &table, const MapGrid &grid, int resolution, const Eigen::AlignedBox2d &reachableBox,
                  std::size_t reachableCells);
+
+/// A map as the commands compute it: its grid, summary, values and margins.
+struct ComputedMap {
+    MapGrid grid;
+    MapSummary summary;
+    std::vector<float> values;
+    std::vector<float> margins;
+};
+
+/// Up to 6 significant digits, locale-free ("∞", "undefined"): min and max in the text output.
+std::string shortNumber(double value);
+
+/// `pkm map -o FILE.csv`: the header x,y,value,margin and one row per reachable cell, from the
+/// bottom row up, written atomically; the failure sentence, or nothing.
+std::optional<std::string> saveMapCsv(const std::string &path, const ComputedMap &map);
 
 } // namespace pkm::cli

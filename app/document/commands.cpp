@@ -104,4 +104,23 @@ void SetTolerancesCommand::redo()
     m_document->applyTolerances(m_after);
 }
 
+SetRequirementsCommand::SetRequirementsCommand(Document *document, Requirements before, Requirements after,
+                                               TextMaker text)
+    : m_document(document)
+    , m_before(std::move(before))
+    , m_after(std::move(after))
+{
+    setTextMaker(std::move(text));
+}
+
+void SetRequirementsCommand::undo()
+{
+    m_document->applyRequirements(m_before);
+}
+
+void SetRequirementsCommand::redo()
+{
+    m_document->applyRequirements(m_after);
+}
+
 } // namespace pkm

@@ -94,4 +94,20 @@ private:
     ParameterSet m_after;
 };
 
+/// Sets what the actuators must deliver (core/capabilitymap.h): only the specification map and
+/// its area follow.
+class SetRequirementsCommand : public TranslatableCommand
+{
+public:
+    using Requirements = std::vector<capability::Requirement>;
+    SetRequirementsCommand(Document *document, Requirements before, Requirements after, TextMaker text);
+    void undo() override;
+    void redo() override;
+
+private:
+    Document *m_document;
+    Requirements m_before;
+    Requirements m_after;
+};
+
 } // namespace pkm

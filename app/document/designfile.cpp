@@ -167,6 +167,10 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     if (!tolerances)
         return tolerances.failure();
     design.tolerances = *tolerances;
+    auto requirements = parseRequirements(*design.mechanism, root.value(QStringLiteral("requirements")), origin);
+    if (!requirements)
+        return requirements.failure();
+    design.requirements = std::move(*requirements);
     return design;
 }
 
@@ -352,6 +356,12 @@ QByteArray serialize(const Design &design)
                 tolerances.insert(toQString(name), shown(info->unit.toDisplay(value)));
         }
         root.insert(QStringLiteral("tolerances"), tolerances);
+    }
+    if (!design.requirements.empty()) {
+        QJsonArray requirements;
+        for (const capability::Requirement &requirement : design.requirements)
+            requirements.append(requirementText(*design.mechanism, requirement));
+        root.insert(QStringLiteral("requirements"), requirements);
     }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }

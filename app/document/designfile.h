@@ -3,6 +3,7 @@
 /// gives parameter values and a pose in display units (mm, degrees, N …), so that a person can
 /// read and edit the file.
 
+#include "capabilitymap.h"
 #include "mechanism.h"
 
 #include <QByteArray>
@@ -30,6 +31,9 @@ struct Design {
     /// ±tolerances of geometric design parameters (core units, core/tolerance.h), by name;
     /// saved as "tolerances": {NAME: ±value in display units}.
     ParameterSet tolerances;
+    /// What the actuators must deliver (core/capabilitymap.h), core units; saved as
+    /// "requirements": ["force_worst >= 50", …] in display units, as `pkm … --require` takes them.
+    std::vector<capability::Requirement> requirements;
 };
 
 struct PresetInfo {
@@ -57,6 +61,16 @@ inline constexpr int maxBookmarkName = 200;
 /// tolerance::maxTolerances, each a geometric parameter with a value ≥ 0 that keeps it in its
 /// domain; the failure names the parameter.
 Result<ParameterSet> parseTolerances(const Mechanism &mechanism, const QJsonValue &value, const QString &origin);
+
+/// A design keeps at most this many requirements (capabilitymap.h).
+inline constexpr int maxRequirements = 16;
+
+/// Reads a design file's "requirements" array of "NAME >= VALUE" strings for `mechanism`; the
+/// failure names the requirement (designrequirements.cpp).
+Result<std::vector<capability::Requirement>> parseRequirements(const Mechanism &mechanism, const QJsonValue &value,
+                                                               const QString &origin);
+/// The requirement as the file keeps it: "force_worst >= 50", the value in display units.
+QString requirementText(const Mechanism &mechanism, const capability::Requirement &requirement);
 
 /// The bookmark of `pose` called `name`: every joint variable in display units.
 Bookmark bookmarkOf(const Mechanism &mechanism, const Pose &pose, const QString &name);

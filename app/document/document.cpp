@@ -15,7 +15,7 @@ namespace pkm {
 
 namespace {
 /// Below this singularity margin the status bar warns that the pose is nearly singular.
-constexpr double nearSingularMargin = 0.02;
+constexpr double statusNearSingularMargin = 0.02;
 } // namespace
 
 Document::Document(QObject *parent)
@@ -226,7 +226,7 @@ QString Document::limitNote() const
     case SingularityType::Combined:
         return tr("Singular pose (combined): the mechanism cannot be driven here.");
     }
-    if (singularity.margin < nearSingularMargin)
+    if (singularity.margin < statusNearSingularMargin)
         return tr("Close to a singular pose: small input steps make large output jumps.");
     return {};
 }
@@ -317,6 +317,20 @@ void Document::applyTolerances(const ParameterSet &tolerances)
 {
     m_design.tolerances = tolerances;
     emit tolerancesChanged();
+}
+
+void Document::setRequirements(std::vector<capability::Requirement> requirements)
+{
+    if (requirements == m_design.requirements)
+        return;
+    m_undoStack.push(new SetRequirementsCommand(this, m_design.requirements, std::move(requirements),
+                                                [] { return tr("Change requirements"); }));
+}
+
+void Document::applyRequirements(const std::vector<capability::Requirement> &requirements)
+{
+    m_design.requirements = requirements;
+    emit requirementsChanged();
 }
 
 void Document::applyBookmarks(const QList<Bookmark> &bookmarks)

@@ -82,6 +82,12 @@ public:
     void clearTolerances();
     // Used by the undo commands only.
     void applyTolerances(const ParameterSet &tolerances);
+    /// What the actuators must deliver (core/capabilitymap.h, core units), kept in the file.
+    const std::vector<capability::Requirement> &requirements() const { return m_design.requirements; }
+    /// Replaces the requirements as one undo step (nothing when they are the same).
+    void setRequirements(std::vector<capability::Requirement> requirements);
+    /// For SetRequirementsCommand.
+    void applyRequirements(const std::vector<capability::Requirement> &requirements);
     // Used by the undo commands only.
     void applyBookmarks(const QList<Bookmark> &bookmarks);
     // Used by the undo commands only.
@@ -101,6 +107,8 @@ signals:
     void bookmarksChanged();
     /// The tolerances changed (or the design was replaced: designChanged says so too).
     void tolerancesChanged();
+    /// The requirements changed (or the design was replaced: designChanged says so too).
+    void requirementsChanged();
 
 private:
     void applyPose(const Pose &pose);

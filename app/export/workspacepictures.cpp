@@ -48,6 +48,8 @@ constexpr std::array<Colour, 5> sequential
 constexpr QRgb workspaceFill = qRgb(166, 206, 227);
 constexpr QRgb workspaceLine = qRgb(31, 78, 121);
 constexpr QRgb currentModeFill = qRgb(43, 92, 143); ///< the design's own mode among the others
+constexpr QRgb specificationMet = qRgb(46, 158, 79);     ///< a green, where every requirement holds
+constexpr QRgb specificationFailed = qRgb(214, 214, 214); ///< the rest of the workspace, grey
 } // namespace
 
 QImage regionsImage(const MapGrid &grid, const std::vector<std::pair<const std::vector<char> *, QRgb>> &layers)
@@ -134,8 +136,12 @@ QImage mapImage(const MapGrid &grid, std::span<const float> values, MapQuantity 
             if (quantity == MapQuantity::Condition) {
                 const double t = std::isinf(value) ? 1.0 : std::log(std::max(value, 1.0)) / logLimit;
                 line[c] = interpolate(sequential, t);
-            } else if (quantity == MapQuantity::OrientationRange) {
-                line[c] = interpolate(sequential, std::clamp(value / limit, 0.0, 1.0));
+            } else if (quantity == MapQuantity::Specification) {
+                line[c] = value > 0.5 ? specificationMet : specificationFailed;
+            } else if (quantity == MapQuantity::OrientationRange || isCapability(quantity)) {
+                // what the actuators deliver runs from 0 (none: at a singularity) upwards; an
+                // infinite value (the resolution at a direct singularity) takes the top colour
+                line[c] = interpolate(sequential, std::isinf(value) ? 1.0 : std::clamp(value / limit, 0.0, 1.0));
             } else {
                 const double t = 0.5 + 0.5 * std::clamp(value / limit, -1.0, 1.0);
                 line[c] = interpolate(diverging, t);

@@ -326,6 +326,7 @@ void MainWindow::createActions()
     m_undoButton = translated(new QAction(this), QT_TR_NOOP("Undo"));
     m_redoButton = translated(new QAction(this), QT_TR_NOOP("Redo"));
     createUndoActions();
+    createRequirementsAction(m_editMenu);
 
     m_presetsMenu = menuBar()->addMenu(QString());
     translated(m_presetsMenu->menuAction(), QT_TR_NOOP("&Presets"));
@@ -416,8 +417,8 @@ void MainWindow::createUndoActions()
         connect(full, &QAction::changed, button, follow);
         follow();
     }
-    m_editMenu->addAction(m_undoAction);
-    m_editMenu->addAction(m_redoAction);
+    // first in the menu, also when a new language makes them again after the others
+    m_editMenu->insertActions(m_editMenu->actions().value(0, nullptr), {m_undoAction, m_redoAction});
 }
 
 void MainWindow::fillPresetsMenu()

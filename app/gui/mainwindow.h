@@ -155,6 +155,11 @@ private:
     void createCapabilityActions(QMenu *viewMenu);
     /// The actuators and the shapes' scales of a new design.
     void updateCapabilityDesign();
+    /// Edit ▸ Requirements…: what the actuators must deliver, mapped as the specification region.
+    void createRequirementsAction(QMenu *editMenu);
+    void editRequirements();
+    /// The document's requirements to every workspace map.
+    void showRequirements();
     /// The 2D view's scene of `pose`: the mechanism's, with the shapes when they are on.
     Scene viewScene(const Pose &pose) const;
     /// Help ▸ User Guide and What's This (mainwindowhelp.cpp), at the top of `help`.
@@ -266,6 +271,7 @@ private:
     SceneStyle m_baseStyle; ///< the linkage view's style at 100 %
     QAction *m_presentationAction = nullptr;
     QAction *m_capabilityAction = nullptr;
+    QAction *m_requirementsAction = nullptr;
     capability::Actuators m_actuators;
     capability::ShapeScales m_shapeScales;
     QMenu *m_textSizeMenu = nullptr;

@@ -5,10 +5,13 @@
 #include "gui/mainwindowinternal.h"
 
 #include "document/document.h"
+#include "gui/requirementsdialog.h"
 #include "linkageview.h"
 #include "quantityformat.h"
+#include "workspacemapview.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QMenu>
 #include <QSettings>
 #include <QStatusBar>
@@ -71,6 +74,42 @@ void MainWindow::updateCapabilityDesign()
     const MechanismPtr &mechanism = m_document->mechanism();
     m_actuators = capability::actuatorsOf(*mechanism);
     m_shapeScales = capability::scalesFor(*mechanism, m_actuators);
+}
+
+void MainWindow::createRequirementsAction(QMenu *editMenu)
+{
+    editMenu->addSeparator();
+    m_requirementsAction = translated(new QAction(this), QT_TR_NOOP("Re&quirements…"),
+        QT_TR_NOOP("What the actuators must deliver at the platform; the workspace map shows where it holds"));
+    m_requirementsAction->setObjectName(QStringLiteral("requirementsAction"));
+    connect(m_requirementsAction, &QAction::triggered, this, &MainWindow::editRequirements);
+    editMenu->addAction(m_requirementsAction);
+    connect(m_document, &Document::requirementsChanged, this, &MainWindow::showRequirements);
+    connect(m_document, &Document::designChanged, this, &MainWindow::showRequirements);
+}
+
+void MainWindow::editRequirements()
+{
+    RequirementsDialog dialog(*m_document->mechanism(), m_document->pose(), m_document->requirements(), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    m_document->setRequirements(dialog.requirements());
+    const QList<WorkspaceMapView *> maps = findChildren<WorkspaceMapView *>();
+    if (maps.isEmpty()) {
+        showStatus(tr("The requirements are kept with the design; this mechanism has no workspace map to show "
+                      "where they hold."));
+        return;
+    }
+    // show what was just stated: the region where it holds
+    for (WorkspaceMapView *map : maps)
+        if (map->quantityBox()->findData(int(MapQuantity::Specification)) >= 0)
+            map->setQuantity(MapQuantity::Specification);
+}
+
+void MainWindow::showRequirements()
+{
+    for (WorkspaceMapView *map : findChildren<WorkspaceMapView *>())
+        map->setRequirements(m_document->requirements());
 }
 
 Scene MainWindow::viewScene(const Pose &pose) const

@@ -227,6 +227,9 @@ double mapColourLimit(std::span<const float> values, MapQuantity quantity)
         return conditionColourLimit;
     if (quantity == MapQuantity::OrientationRange)
         return 360.0; // a full turn, in the degrees the command line maps
+    if (quantity == MapQuantity::Specification)
+        return 1.0; // met or not
+    // det J and what the actuators deliver: clipped at a percentile of the finite magnitudes
     std::vector<float> magnitudes;
     for (float value : values) {
         if (std::isfinite(value))

@@ -90,6 +90,7 @@ private slots:
     void click();
     void conditionNumber();
     void orientationRange();
+    void capabilityMaps();
     void comparison();
     void directSingularities3d();
     void noPlanarWorkspace();
@@ -353,6 +354,51 @@ void TestWorkspaceMapView::orientationRange()
     QCOMPARE(view.quantityBox()->findData(int(MapQuantity::OrientationRange)), -1);
     QCOMPARE(view.quantity(), MapQuantity::Determinant);
     QVERIFY(view.summary().max < 0.0); // MOMA 3a's det J
+}
+
+void TestWorkspaceMapView::capabilityMaps()
+{
+    auto design = designfile::load(QStringLiteral("moma-3a"));
+    QVERIFY(design);
+    WorkspaceMapView view;
+    view.setPose(design->pose);
+    QVERIFY(showMap(view, design->mechanism));
+    const double workspace = view.area();
+    for (MapQuantity quantity : {MapQuantity::ForceWorst, MapQuantity::SpeedWorst, MapQuantity::ResolutionWorst,
+                                 MapQuantity::StiffnessWorst}) {
+        const int item = view.quantityBox()->findData(int(quantity));
+        QVERIFY(item >= 0);
+        QSignalSpy ready(&view, &WorkspaceMapView::mapReady);
+        emit view.quantityBox()->activated(item);
+        QVERIFY(ready.wait(waitMilliseconds));
+        QCOMPARE(view.quantity(), quantity);
+        // the coarser grid of solved cells covers the same workspace
+        QVERIFY(view.summary().grid.columns <= 500 && view.summary().grid.rows <= 500);
+        QVERIFY(std::abs(view.area() - workspace) < 0.03 * workspace);
+        QVERIFY(view.summary().min > 0.0);
+        QCOMPARE(view.colorMap()->dataRange().lower, 0.0);
+        // the cell under the pose is the pose's value (display units: N, mm/s, mm, N/mm)
+        const Pose &pose = design->pose;
+        QVERIFY(std::isfinite(view.valueAt(platform(pose))));
+        QVERIFY(view.plot()->toolTip().contains(QStringLiteral("actuators")));
+    }
+    // the specification: a force half-way between the least and the most holds in part of the
+    // workspace; adding an impossible speed leaves none
+    QSignalSpy ready(&view, &WorkspaceMapView::mapReady);
+    view.setQuantity(MapQuantity::ForceWorst);
+    QVERIFY(ready.wait(waitMilliseconds));
+    const double force = 0.5 * (view.summary().min + view.summary().max);
+    view.setRequirements({{"force_worst", true, force}});
+    ready.clear();
+    view.setQuantity(MapQuantity::Specification);
+    QVERIFY(ready.wait(waitMilliseconds));
+    const double met = view.specificationArea();
+    QVERIFY(met > 0.0 && met < view.area());
+    ready.clear();
+    view.setRequirements({{"force_worst", true, force}, {"speed_worst", true, 1e9}});
+    QVERIFY(ready.wait(waitMilliseconds));
+    QCOMPARE(view.specificationArea(), 0.0);
+    QVERIFY(view.plot()->toolTip().contains(QStringLiteral("speed_worst")));
 }
 
 void TestWorkspaceMapView::comparison()

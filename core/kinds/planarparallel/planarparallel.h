@@ -214,7 +214,8 @@ public:
     std::vector<SingularCurve> singularCurves() const override;
     bool offers(MapQuantity quantity) const override
     {
-        return quantity != MapQuantity::OrientationRange || m_design.legCount() == 3;
+        return quantity == MapQuantity::Determinant || quantity == MapQuantity::Condition
+            || (quantity == MapQuantity::OrientationRange && m_design.legCount() == 3);
     }
     /// The platform angles at which a 3-DOF platform can be held at (x, y) in the design's
     /// working modes and input ranges: up to intervals.size() disjoint intervals, each with its

@@ -1,0 +1,267 @@
+#include "capabilitymap.h"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+namespace pkm::capability {
+
+namespace {
+
+constexpr float notReached = std::numeric_limits<float>::quiet_NaN();
+
+struct Named {
+    MapQuantity quantity;
+    std::string_view name;
+};
+constexpr Named mapped[] = {
+    {MapQuantity::ForceWorst, "force_worst"},
+    {MapQuantity::SpeedWorst, "speed_worst"},
+    {MapQuantity::ResolutionWorst, "resolution_worst"},
+    {MapQuantity::StiffnessWorst, "stiffness_worst"},
+};
+
+Failure badRequirement(std::string_view text, const char *pattern, std::string_view more = {})
+{
+    return Failure{FailureKind::InvalidParameter, text::printable(text, 40),
+                   text::format(text::translate("core", pattern), {text::printable(text, 80), more})};
+}
+
+std::string_view trimmed(std::string_view s)
+{
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+        s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+        s.remove_suffix(1);
+    return s;
+}
+
+/// The scalar entries a requirement may name, for a message: "force_worst, force_best, …".
+std::string scalarNames(const ReportLayout &layout)
+{
+    std::string names;
+    for (const ReportEntry &entry : layout.entries) {
+        if (entry.rows * entry.cols != 1)
+            continue;
+        names += names.empty() ? "" : ", ";
+        names += entry.name;
+    }
+    return names;
+}
+
+} // namespace
+
+std::string_view entryName(MapQuantity quantity)
+{
+    for (const Named &n : mapped)
+        if (n.quantity == quantity)
+            return n.name;
+    return {};
+}
+
+std::optional<MapQuantity> mapQuantity(std::string_view name)
+{
+    for (const Named &n : mapped)
+        if (n.name == name)
+            return n.quantity;
+    return std::nullopt;
+}
+
+Result<Requirement> parseRequirement(std::string_view text, const Actuators &actuators)
+{
+    const ReportLayout *layout = layoutFor(actuators);
+    if (!layout)
+        return badRequirement(text, QT_TRANSLATE_NOOP("core", "The requirement '%1' cannot be checked: this design declares no actuators."));
+    // the first comparison sign splits the name from the value
+    const std::size_t sign = text.find_first_of("<>");
+    if (sign == std::string_view::npos) {
+        return badRequirement(text,
+            QT_TRANSLATE_NOOP("core", "The requirement '%1' has no comparison: write it as NAME>=VALUE or "
+                                      "NAME<=VALUE, for example force_worst>=50."));
+    }
+    Requirement r;
+    r.atLeast = text[sign] == '>';
+    const std::size_t valueStart = sign + 1 + (sign + 1 < text.size() && text[sign + 1] == '=' ? 1 : 0);
+    const std::string_view name = trimmed(text.substr(0, sign));
+    const ReportEntry *entry = layout->find(name);
+    if (!entry || entry->rows * entry->cols != 1) {
+        return badRequirement(text, QT_TRANSLATE_NOOP("core", "The requirement '%1' names no single capability value; it may name %2."),
+                              scalarNames(*layout));
+    }
+    const std::string_view number = trimmed(text.substr(valueStart));
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (number.empty() || error != std::errc() || end != number.data() + number.size() || !std::isfinite(value))
+        return badRequirement(text, QT_TRANSLATE_NOOP("core", "The requirement '%1' does not end in a finite number."));
+    r.name = std::string(name);
+    r.value = entry->unit.fromDisplay(value);
+    return r;
+}
+
+std::string requirementText(const Requirement &requirement, const Actuators &actuators)
+{
+    const ReportLayout *layout = layoutFor(actuators);
+    const ReportEntry *entry = layout ? layout->find(requirement.name) : nullptr;
+    const Unit unit = entry ? entry->unit : units::none;
+    std::string out = requirement.name + (requirement.atLeast ? " ≥ " : " ≤ ")
+        + text::number(unit.toDisplay(requirement.value), 6);
+    if (!unit.symbol.empty()) {
+        if (unit.symbol != "°")
+            out += ' ';
+        out += text::label(unit.symbol);
+    }
+    return out;
+}
+
+bool meets(const Requirement &requirement, const ReportLayout &layout, std::span<const double> values)
+{
+    const ReportEntry *entry = layout.find(requirement.name);
+    if (!entry || std::size_t(entry->offset) >= values.size())
+        return false;
+    const double v = values[std::size_t(entry->offset)];
+    if (std::isnan(v))
+        return false;
+    return requirement.atLeast ? v >= requirement.value : v <= requirement.value;
+}
+
+Pose mapStart(const Mechanism &mechanism, const Pose &pose)
+{
+    if (mechanism.outputCount() != 3 || pose.outputs.size() < 3 || !mechanism.parameterApplies("phi_map"))
+        return pose;
+    const ParameterSet parameters = mechanism.parameters();
+    const auto phi = parameters.find("phi_map");
+    if (phi == parameters.end())
+        return pose;
+    Coordinates outputs = pose.outputs;
+    outputs[2] = phi->second;
+    auto solved = mechanism.solveInverse(outputs, &pose);
+    if (solved)
+        return *solved;
+    Pose start = pose; // not held at (x, y, phi_map): the cells still take φ from it
+    start.outputs[2] = phi->second;
+    return start;
+}
+
+MapSummary computeMap(const Mechanism &mechanism, const Actuators &actuators, MapQuantity quantity,
+                      std::span<const Requirement> requirements, const Pose &near, const MapGrid &grid,
+                      std::span<float> values, std::span<float> margins, SpecificationSummary *specification,
+                      const std::atomic<bool> *cancel, const Progress &progress, int threads)
+{
+    const auto start = std::chrono::steady_clock::now();
+    MapSummary summary;
+    summary.grid = grid;
+    const ReportLayout *layout = layoutFor(actuators);
+    const bool isSpecification = quantity == MapQuantity::Specification;
+    const ReportEntry *entry = layout && !isSpecification ? layout->find(entryName(quantity)) : nullptr;
+    if (specification)
+        *specification = SpecificationSummary{0, 0.0, std::vector<std::size_t>(requirements.size(), 0)};
+    if (!layout || (!entry && !isSpecification) || grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells()
+        || mechanism.outputCount() < 2)
+        return summary;
+    const bool withMargins = margins.size() >= grid.cells();
+    if (threads <= 0)
+        threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads = std::clamp(threads, 1, grid.rows);
+
+    std::atomic<int> nextRow{0}, rowsDone{0};
+    std::atomic<bool> stopped{false};
+    std::mutex merge;
+    double min = std::numeric_limits<double>::infinity(), max = -min;
+    std::size_t reachable = 0, nearSingular = 0, met = 0;
+    std::vector<std::size_t> failing(requirements.size(), 0);
+    const std::size_t columns = std::size_t(grid.columns);
+    auto work = [&] {
+        double localMin = std::numeric_limits<double>::infinity(), localMax = -localMin;
+        std::size_t localReachable = 0, localNear = 0, localMet = 0;
+        std::vector<std::size_t> localFailing(requirements.size(), 0);
+        std::vector<double> report(std::size_t(mechanism.reportLayout().size));
+        std::vector<double> delivered(std::size_t(layout->size));
+        for (;;) {
+            if (cancel && cancel->load(std::memory_order_relaxed)) {
+                stopped = true;
+                break;
+            }
+            const int r = nextRow.fetch_add(1);
+            if (r >= grid.rows)
+                break;
+            // every cell starts from the given pose (its modes, z and φ): the inverse kinematics
+            // is closed form per working mode, so a neighbour is no better a start
+            Coordinates outputs = near.outputs;
+            for (std::size_t c = 0; c < columns; ++c) {
+                const std::size_t i = std::size_t(r) * columns + c;
+                float &cell = values[i];
+                outputs[0] = grid.x(int(c));
+                outputs[1] = grid.y(r);
+                const auto pose = mechanism.solveInverse(outputs, &near);
+                if (!pose) {
+                    cell = notReached;
+                    if (withMargins)
+                        margins[i] = notReached;
+                    continue;
+                }
+                const Singularity singular = mechanism.evaluate(*pose, report);
+                std::fill(delivered.begin(), delivered.end(), std::numeric_limits<double>::quiet_NaN());
+                evaluate(mechanism, actuators, *pose, singular.type, delivered);
+                ++localReachable;
+                if (withMargins)
+                    margins[i] = float(singular.margin);
+                localNear += singular.margin < nearSingularMargin;
+                if (isSpecification) {
+                    bool all = true;
+                    for (std::size_t k = 0; k < requirements.size(); ++k) {
+                        const bool holds = meets(requirements[k], *layout, delivered);
+                        localFailing[k] += !holds;
+                        all = all && holds;
+                    }
+                    localMet += all;
+                    cell = all ? 1.0f : 0.0f;
+                } else {
+                    // undefined at a combined singularity (0 one way, ∞ the other): NaN would
+                    // read as unreachable, so such a cell shows as infinite
+                    const double v = delivered[std::size_t(entry->offset)];
+                    cell = std::isnan(v) ? std::numeric_limits<float>::infinity() : float(v);
+                }
+                if (std::isfinite(cell)) {
+                    localMin = std::min(localMin, double(cell));
+                    localMax = std::max(localMax, double(cell));
+                }
+            }
+            const int done = ++rowsDone;
+            if (progress)
+                progress(done, grid.rows);
+        }
+        const std::lock_guard lock(merge);
+        min = std::min(min, localMin);
+        max = std::max(max, localMax);
+        reachable += localReachable;
+        nearSingular += localNear;
+        met += localMet;
+        for (std::size_t k = 0; k < failing.size(); ++k)
+            failing[k] += localFailing[k];
+    };
+    {
+        std::vector<std::jthread> pool;
+        for (int t = 1; t < threads; ++t)
+            pool.emplace_back(work);
+        work();
+    }
+    summary.reachableCells = reachable;
+    summary.nearSingularCells = nearSingular;
+    summary.min = std::isfinite(min) ? min : 0.0;
+    summary.max = std::isfinite(max) ? max : 0.0;
+    summary.area = double(reachable) * grid.cellArea();
+    summary.cancelled = stopped;
+    summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (specification) {
+        specification->metCells = met;
+        specification->metArea = double(met) * grid.cellArea();
+        specification->failing = std::move(failing);
+    }
+    return summary;
+}
+
+} // namespace pkm::capability
