@@ -1345,6 +1345,50 @@ Please verify the correct file name was given.</source>
         <source>The actuator alone gives %1 N·m/rad here, less than the measured %2 N·m/rad of the whole joint: the assumed axial stiffness of the actuator is too low for the measurement, or the pose is near a singularity where the actuator cannot hold the output.</source>
         <translation>Один привод даёт здесь %1 Н·м/рад, меньше измеренных %2 Н·м/рад всего шарнира: принятая осевая жёсткость привода слишком мала для измерения, или положение близко к особому, где привод не удерживает выходное звено.</translation>
     </message>
+    <message>
+        <source>The actuators hold the design&apos;s load at this pose</source>
+        <translation>Приводы удерживают нагрузку конструкции в этом положении</translation>
+    </message>
+    <message>
+        <source>max |τ_i| / τ_max,i ≤ 1</source>
+        <translation>max |τ_i| / τ_max,i ≤ 1</translation>
+    </message>
+    <message>
+        <source>no load</source>
+        <translation>нет нагрузки</translation>
+    </message>
+    <message>
+        <source>The design states no load (load_x, load_y, load_moment or load_torque in the actuator group).</source>
+        <translation>В конструкции не задана нагрузка (load_x, load_y, load_moment или load_torque в группе приводов).</translation>
+    </message>
+    <message>
+        <source>actuator %1 at %2 % of its limit</source>
+        <translation>привод %1 на %2 % своего предела</translation>
+    </message>
+    <message>
+        <source>at a direct singularity no effort of the actuators holds a load</source>
+        <translation>в особом положении прямой кинематики никакое усилие приводов не удерживает нагрузку</translation>
+    </message>
+    <message>
+        <source>Required at this pose: %1</source>
+        <translation>Требуется в этом положении: %1</translation>
+    </message>
+    <message>
+        <source>undefined</source>
+        <translation>не определено</translation>
+    </message>
+    <message>
+        <source>Every requirement holds over the whole workspace</source>
+        <translation>Все требования выполняются во всём рабочем пространстве</translation>
+    </message>
+    <message>
+        <source>area met = workspace area</source>
+        <translation>площадь выполнения = площадь рабочего пространства</translation>
+    </message>
+    <message>
+        <source>met in %1 mm² of %2 mm² (grid of %3 × %4 cells)</source>
+        <translation>выполняются на %1 мм² из %2 мм² (сетка %3 × %4 ячеек)</translation>
+    </message>
 </context>
 <context>
     <name>core</name>

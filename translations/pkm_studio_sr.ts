@@ -1345,6 +1345,50 @@ Please verify the correct file name was given.</source>
         <source>The actuator alone gives %1 N·m/rad here, less than the measured %2 N·m/rad of the whole joint: the assumed axial stiffness of the actuator is too low for the measurement, or the pose is near a singularity where the actuator cannot hold the output.</source>
         <translation>Сам погон овде даје %1 Н·м/рад, мање од измерених %2 Н·м/рад целог зглоба: претпостављена аксијална крутост погона је премала за мерење, или је положај близу сингуларног, где погон не држи излаз.</translation>
     </message>
+    <message>
+        <source>The actuators hold the design&apos;s load at this pose</source>
+        <translation>Погони држе оптерећење конструкције у овом положају</translation>
+    </message>
+    <message>
+        <source>max |τ_i| / τ_max,i ≤ 1</source>
+        <translation>max |τ_i| / τ_max,i ≤ 1</translation>
+    </message>
+    <message>
+        <source>no load</source>
+        <translation>нема оптерећења</translation>
+    </message>
+    <message>
+        <source>The design states no load (load_x, load_y, load_moment or load_torque in the actuator group).</source>
+        <translation>Конструкција не задаје оптерећење (load_x, load_y, load_moment или load_torque у групи погона).</translation>
+    </message>
+    <message>
+        <source>actuator %1 at %2 % of its limit</source>
+        <translation>погон %1 на %2 % своје границе</translation>
+    </message>
+    <message>
+        <source>at a direct singularity no effort of the actuators holds a load</source>
+        <translation>у сингуларитету директне кинематике ниједан напор погона не држи оптерећење</translation>
+    </message>
+    <message>
+        <source>Required at this pose: %1</source>
+        <translation>Захтева се у овом положају: %1</translation>
+    </message>
+    <message>
+        <source>undefined</source>
+        <translation>недефинисано</translation>
+    </message>
+    <message>
+        <source>Every requirement holds over the whole workspace</source>
+        <translation>Сви захтеви испуњени у целом радном простору</translation>
+    </message>
+    <message>
+        <source>area met = workspace area</source>
+        <translation>површина испуњења = површина радног простора</translation>
+    </message>
+    <message>
+        <source>met in %1 mm² of %2 mm² (grid of %3 × %4 cells)</source>
+        <translation>испуњени на %1 mm² од %2 mm² (мрежа од %3 × %4 ћелија)</translation>
+    </message>
 </context>
 <context>
     <name>core</name>

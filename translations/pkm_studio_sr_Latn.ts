@@ -1345,6 +1345,50 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The actuator alone gives %1 N·m/rad here, less than the measured %2 N·m/rad of the whole joint: the assumed axial stiffness of the actuator is too low for the measurement, or the pose is near a singularity where the actuator cannot hold the output.</source>
         <translation>Sam pogon ovde daje %1 N·m/rad, manje od izmerenih %2 N·m/rad celog zgloba: pretpostavljena aksijalna krutost pogona je premala za merenje, ili je položaj blizu singularnog, gde pogon ne drži izlaz.</translation>
     </message>
+    <message>
+        <source>The actuators hold the design&apos;s load at this pose</source>
+        <translation>Pogoni drže opterećenje konstrukcije u ovom položaju</translation>
+    </message>
+    <message>
+        <source>max |τ_i| / τ_max,i ≤ 1</source>
+        <translation>max |τ_i| / τ_max,i ≤ 1</translation>
+    </message>
+    <message>
+        <source>no load</source>
+        <translation>nema opterećenja</translation>
+    </message>
+    <message>
+        <source>The design states no load (load_x, load_y, load_moment or load_torque in the actuator group).</source>
+        <translation>Konstrukcija ne zadaje opterećenje (load_x, load_y, load_moment ili load_torque u grupi pogona).</translation>
+    </message>
+    <message>
+        <source>actuator %1 at %2 % of its limit</source>
+        <translation>pogon %1 na %2 % svoje granice</translation>
+    </message>
+    <message>
+        <source>at a direct singularity no effort of the actuators holds a load</source>
+        <translation>u singularitetu direktne kinematike nijedan napor pogona ne drži opterećenje</translation>
+    </message>
+    <message>
+        <source>Required at this pose: %1</source>
+        <translation>Zahteva se u ovom položaju: %1</translation>
+    </message>
+    <message>
+        <source>undefined</source>
+        <translation>nedefinisano</translation>
+    </message>
+    <message>
+        <source>Every requirement holds over the whole workspace</source>
+        <translation>Svi zahtevi ispunjeni u celom radnom prostoru</translation>
+    </message>
+    <message>
+        <source>area met = workspace area</source>
+        <translation>površina ispunjenja = površina radnog prostora</translation>
+    </message>
+    <message>
+        <source>met in %1 mm² of %2 mm² (grid of %3 × %4 cells)</source>
+        <translation>ispunjeni na %1 mm² od %2 mm² (mreža od %3 × %4 ćelija)</translation>
+    </message>
 </context>
 <context>
     <name>core</name>

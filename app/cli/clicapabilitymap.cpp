@@ -1,5 +1,6 @@
 #include "cli/clicapabilitymap.h"
 
+#include "cli/cliarguments.h"
 #include "report/numberformat.h"
 #include "text.h"
 
@@ -26,6 +27,50 @@ Unit unitOf(const Mechanism &mechanism, std::string_view name)
 }
 
 } // namespace
+
+namespace {
+struct QuantityName {
+    MapQuantity quantity;
+    std::string_view key;   ///< --quantity and the JSON's "quantity"
+    std::string_view title; ///< the text output's and the picture's
+};
+constexpr QuantityName quantityNames[] = {
+    {MapQuantity::Determinant, "det", "det J"},
+    {MapQuantity::Condition, "cond", "condition number of J"},
+    {MapQuantity::OrientationRange, "range", "orientation range (°)"},
+    {MapQuantity::ForceWorst, "force_worst", "force in the weakest direction"},
+    {MapQuantity::SpeedWorst, "speed_worst", "speed in the slowest direction"},
+    {MapQuantity::ResolutionWorst, "resolution_worst", "worst resolution"},
+    {MapQuantity::StiffnessWorst, "stiffness_worst", "stiffness in the weakest direction"},
+    {MapQuantity::Specification, "spec", "specification region"},
+};
+} // namespace
+
+MapQuantity quantityOf(std::string_view key)
+{
+    for (const QuantityName &name : quantityNames)
+        if (name.key == key)
+            return name.quantity;
+    return MapQuantity::Determinant;
+}
+
+std::string_view quantityKey(MapQuantity quantity)
+{
+    for (const QuantityName &name : quantityNames)
+        if (name.quantity == quantity)
+            return name.key;
+    return "det";
+}
+
+std::string quantityTitle(const Mechanism &mechanism, MapQuantity quantity)
+{
+    std::string title = "det J";
+    for (const QuantityName &name : quantityNames)
+        if (name.quantity == quantity)
+            title = name.title;
+    const std::string unit = capabilityUnit(mechanism, quantity);
+    return unit.empty() ? title : title + " (" + unit + ")";
+}
 
 Result<std::vector<capability::Requirement>> parseRequirements(const Mechanism &mechanism,
                                                                const std::vector<std::string> &texts)
@@ -116,6 +161,40 @@ void addSpecificationRows(TextTable &table, const Mechanism &mechanism,
     const double fraction = summary.area > 0 ? specification.metArea / summary.area : 0.0;
     table.cells({"area met", fixedText(specification.metArea, 1),
                  "mm² (" + fixedText(100.0 * fraction, 1) + " % of the workspace)"});
+}
+
+/// The requirements of --require, else those the design file states.
+Result<std::vector<capability::Requirement>> requirementsOf(const PreparedDesign &prepared, const Invocation &invocation)
+{
+    if (invocation.requirements.empty())
+        return prepared.design.requirements;
+    return parseRequirements(*prepared.mechanism, invocation.requirements);
+}
+
+/// Why `pkm map` cannot map `quantity` for this design, if it cannot.
+std::optional<Failure> capabilityMapFailure(const PreparedDesign &prepared, const Invocation &invocation,
+                                            const PlanarWorkspace &workspace, MapQuantity quantity)
+{
+    if (quantity == MapQuantity::OrientationRange && !workspace.offers(quantity)) {
+        return usageFailure("--quantity",
+            "'--quantity range' maps the orientation range of a platform that turns (a 3-DOF planar-parallel "
+            "design); the platform of " + prepared.origin + " does not turn.");
+    }
+    if (isCapability(quantity) && !capability::layoutFor(capability::actuatorsOf(*prepared.mechanism))) {
+        return usageFailure("--quantity", "'--quantity " + std::string(quantityKey(quantity)) + "' maps what the "
+            "actuators deliver, but " + prepared.origin + " does not declare every actuator's limits.");
+    }
+    if (quantity == MapQuantity::Specification && invocation.requirements.empty()
+        && prepared.design.requirements.empty()) {
+        return usageFailure("--quantity", "'--quantity spec' maps where the requirements hold, and "
+            + prepared.origin + " states none: give at least one --require NAME>=VALUE (for example "
+            "--require force_worst>=50).");
+    }
+    if (quantity != MapQuantity::Specification && !invocation.requirements.empty()) {
+        return usageFailure("--require", "--require maps where the requirements hold (--quantity spec); it does "
+                                         "not go with '--quantity " + std::string(quantityKey(quantity)) + "'.");
+    }
+    return std::nullopt;
 }
 
 } // namespace pkm::cli

@@ -4,15 +4,34 @@
 /// actuators deliver and the specification region (core/capabilitymap.h), in display units.
 
 #include "capabilitymap.h"
+#include "cli/cliarguments.h"
 #include "cli/clidesign.h"
 #include "report/jsonwriter.h"
 #include "report/texttable.h"
 
+#include <optional>
 #include <span>
+#include <string_view>
 #include <string>
 #include <vector>
 
 namespace pkm::cli {
+
+/// The map quantity of a --quantity key ("det", "force_worst", "spec"); det J for another.
+MapQuantity quantityOf(std::string_view key);
+/// The --quantity key of a map quantity.
+std::string_view quantityKey(MapQuantity quantity);
+/// "det J", "force in the weakest direction (N)": the text output's and the picture's.
+std::string quantityTitle(const Mechanism &mechanism, MapQuantity quantity);
+
+/// The requirements of --require, else those the design file states.
+Result<std::vector<capability::Requirement>> requirementsOf(const PreparedDesign &prepared, const Invocation &invocation);
+
+/// Why `pkm map` cannot map `quantity` for this design, if it cannot: the orientation range of
+/// a platform that does not turn, a capability map without actuators, the specification
+/// without requirements, --require beside another quantity.
+std::optional<Failure> capabilityMapFailure(const PreparedDesign &prepared, const Invocation &invocation,
+                                            const PlanarWorkspace &workspace, MapQuantity quantity);
 
 /// The --require texts parsed against the design's actuators; the failure names the first
 /// culprit ("--require force_worst>=abc: …").

@@ -187,8 +187,8 @@ planar mechanism rides the z axis, also the volume: the area extruded over the z
                       force_worst>=50 (N), speed_worst>=100 (mm/s), resolution_worst<=0.01
                       (mm), stiffness_worst>=500 (N/mm). Adds the specification: the area
                       where every requirement holds, its share of the workspace and how many
-                      cells fail each one ("specification" in JSON); -o FILE.png then shows
-                      that region green in the grey workspace. Without --require, the
+                      cells fail each one ("specification" in JSON); with --require, -o
+                      FILE.png shows that region dark in the light workspace. Without it, the
                       design file's "requirements" are used, if it states any.
   --json              {"design", "mechanism", "parameters", "area", "bounds": {"x_min",
                        "x_max", "y_min", "y_max"}, "grid": {"resolution", "columns", "rows",

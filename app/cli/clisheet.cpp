@@ -76,6 +76,7 @@ sheet::Source sheetSource(const PreparedDesign &prepared)
     source.design = prepared.design.id.isEmpty() ? QFileInfo(origin).fileName().toStdString() : prepared.origin;
     source.title = prepared.design.title;
     source.description = prepared.design.description;
+    source.requirements = prepared.design.requirements;
     return source;
 }
 

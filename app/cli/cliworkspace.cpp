@@ -51,48 +51,6 @@ std::optional<std::string> writePicture(Writer writer, const std::string &path, 
 
 // -- numbers and names ---------------------------------------------------------------------
 
-struct QuantityName {
-    MapQuantity quantity;
-    std::string_view key;   ///< --quantity and the JSON's "quantity"
-    std::string_view title; ///< the text output's and the picture's
-};
-constexpr QuantityName quantityNames[] = {
-    {MapQuantity::Determinant, "det", "det J"},
-    {MapQuantity::Condition, "cond", "condition number of J"},
-    {MapQuantity::OrientationRange, "range", "orientation range (°)"},
-    {MapQuantity::ForceWorst, "force_worst", "force in the weakest direction"},
-    {MapQuantity::SpeedWorst, "speed_worst", "speed in the slowest direction"},
-    {MapQuantity::ResolutionWorst, "resolution_worst", "worst resolution"},
-    {MapQuantity::StiffnessWorst, "stiffness_worst", "stiffness in the weakest direction"},
-    {MapQuantity::Specification, "spec", "specification region"},
-};
-
-MapQuantity quantityOf(std::string_view key)
-{
-    for (const QuantityName &name : quantityNames)
-        if (name.key == key)
-            return name.quantity;
-    return MapQuantity::Determinant;
-}
-
-std::string_view quantityKey(MapQuantity quantity)
-{
-    for (const QuantityName &name : quantityNames)
-        if (name.quantity == quantity)
-            return name.key;
-    return "det";
-}
-
-std::string quantityTitle(const Mechanism &mechanism, MapQuantity quantity)
-{
-    std::string title = "det J";
-    for (const QuantityName &name : quantityNames)
-        if (name.quantity == quantity)
-            title = name.title;
-    const std::string unit = capabilityUnit(mechanism, quantity);
-    return unit.empty() ? title : title + " (" + unit + ")";
-}
-
 /// "Active П-joint" → "active П-joint"; "MOMA …" stays.
 std::string inSentence(std::string title)
 {
@@ -142,41 +100,6 @@ std::optional<Failure> emptyWorkspace(const Context &context, const MapSummary &
             + " mm: it is empty or thinner than a cell (try a larger --grid)."};
 }
 
-/// The requirements of --require, else those the design file states.
-Result<std::vector<capability::Requirement>> requirementsOf(const Context &context)
-{
-    if (context.invocation.requirements.empty())
-        return context.prepared.design.requirements;
-    return parseRequirements(*context.prepared.mechanism, context.invocation.requirements);
-}
-
-/// Why `pkm map` cannot map `quantity` for this design, if it cannot.
-std::optional<Failure> capabilityMapFailure(const Context &context, const PlanarWorkspace &workspace,
-                                            MapQuantity quantity)
-{
-    const Invocation &invocation = context.invocation;
-    if (quantity == MapQuantity::OrientationRange && !workspace.offers(quantity)) {
-        return usageFailure("--quantity",
-            "'--quantity range' maps the orientation range of a platform that turns (a 3-DOF planar-parallel "
-            "design); the platform of " + context.prepared.origin + " does not turn.");
-    }
-    if (isCapability(quantity) && !capability::layoutFor(capability::actuatorsOf(*context.prepared.mechanism))) {
-        return usageFailure("--quantity", "'--quantity " + std::string(quantityKey(quantity)) + "' maps what the "
-            "actuators deliver, but " + context.prepared.origin + " does not declare every actuator's limits.");
-    }
-    if (quantity == MapQuantity::Specification && invocation.requirements.empty()
-        && context.prepared.design.requirements.empty()) {
-        return usageFailure("--quantity", "'--quantity spec' maps where the requirements hold, and "
-            + context.prepared.origin + " states none: give at least one --require NAME>=VALUE (for example "
-            "--require force_worst>=50).");
-    }
-    if (quantity != MapQuantity::Specification && !invocation.requirements.empty()) {
-        return usageFailure("--require", "--require maps where the requirements hold (--quantity spec); it does "
-                                         "not go with '--quantity " + std::string(quantityKey(quantity)) + "'.");
-    }
-    return std::nullopt;
-}
-
 int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
 {
     const Mechanism &mechanism = *context.prepared.mechanism;
@@ -193,7 +116,7 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
     const ModeRegions united = modes.empty() ? ModeRegions {} : modeRegions(mechanism, modes, context.resolution);
     const auto named = namedModeAreas(modes, areas);
     // --require: where in the workspace the actuators deliver what is asked
-    const auto requirements = requirementsOf(context);
+    const auto requirements = requirementsOf(context.prepared, context.invocation);
     if (!requirements)
         return failWith(context.err, requirements.failure());
     ComputedMap region;
@@ -213,10 +136,17 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             const std::string title
                 = "Workspace of " + context.prepared.origin + suffix + ": " + fixedText(map.summary.area, 1) + " mm²";
             failure = files::saveBytes(*path, QByteArray::fromStdString(workspaceSvg(map.grid, map.values, title)));
-        } else if (!requirements->empty()) {
-            failure = writePicture(pictureWriters().map, *path, region.grid, std::span<const float>(region.values),
-                MapQuantity::Specification, 1.0,
-                "Where " + context.prepared.origin + suffix + " meets the requirements: "
+        } else if (!context.invocation.requirements.empty()) {
+            // asked on the command line: the workspace light, where every requirement holds dark
+            // (a design file's own requirements leave the picture of the modes as it is)
+            report::ModeRegions met {region.grid, {std::vector<char>(region.values.size()), std::vector<char>(region.values.size())},
+                {false, true}, region.summary.reachableCells, region.summary.area};
+            for (std::size_t i = 0; i < region.values.size(); ++i) {
+                met.reached[0][i] = !std::isnan(region.values[i]);
+                met.reached[1][i] = region.values[i] == 1.0f;
+            }
+            failure = writePicture(pictureWriters().regions, *path, met,
+                "Where " + context.prepared.origin + suffix + " meets the requirements (darker): "
                     + fixedText(specification.metArea, 1) + " of " + fixedText(region.summary.area, 1) + " mm²");
         } else if (!named.empty() && united.reached.size() > 1) {
             failure = writePicture(pictureWriters().regions, *path, united,
@@ -355,9 +285,9 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
     // --require alone maps where the requirements hold
     const bool required = !context.invocation.requirements.empty();
     const MapQuantity quantity = quantityOf(context.invocation.quantity.value_or(required ? "spec" : "det"));
-    if (auto failure = capabilityMapFailure(context, workspace, quantity))
+    if (auto failure = capabilityMapFailure(context.prepared, context.invocation, workspace, quantity))
         return failWith(context.err, *failure);
-    const auto requirements = requirementsOf(context);
+    const auto requirements = requirementsOf(context.prepared, context.invocation);
     if (!requirements)
         return failWith(context.err, requirements.failure());
     ComputedMap map;

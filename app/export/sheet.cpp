@@ -397,6 +397,7 @@ Sheet build(const Mechanism &mechanism, const Pose &pose, const Source &source, 
     addDrawing(mechanism, pose, sheet.pose, parts);
     addWarnings(mechanism, parts);
     addCapability(mechanism, pose, parts);
+    addActuatorChecks(mechanism, pose, source.requirements, parts);
 
     for (Section *section : {&parts.parameters, &parts.dimensions, &parts.ranges, &parts.keyPoses, &parts.checks,
              &parts.capability, &parts.notes, &parts.workspace, &parts.singular, &parts.plots, &parts.drawing}) {

@@ -22,6 +22,7 @@
 ///
 /// build() and the JSON and CSV writers need no QGuiApplication; the PDF needs one (fonts).
 
+#include "capabilitymap.h"
 #include "mechanism.h"
 
 #include <Eigen/Geometry>
@@ -186,6 +187,9 @@ struct Source {
     std::string design; ///< preset id or file name
     QString title;
     QString description;
+    /// What the actuators must deliver (the design's requirements): checked at the pose and,
+    /// with a planar workspace, mapped over it.
+    std::vector<capability::Requirement> requirements;
 };
 
 /// Cells along the longer side of the workspace grid: `pkm workspace`'s default, so the

@@ -79,6 +79,11 @@ Row keyPoseRow(const Mechanism &mechanism, const Pose &pose, std::span<const std
 /// modes); steps that cannot be solved are NaN.
 /// The "capability" section (sheetcapability.cpp): what the actuators deliver at `pose`.
 void addCapability(const Mechanism &mechanism, const Pose &pose, Parts &parts);
+/// The actuator checks of the capability section (sheetactuatorchecks.cpp): the design's load
+/// within every actuator's limit at the pose, and each stated requirement at the pose and over
+/// the workspace.
+void addActuatorChecks(const Mechanism &mechanism, const Pose &pose,
+                       const std::vector<capability::Requirement> &requirements, Parts &parts);
 
 struct Sweep {
     std::vector<double> input; ///< display unit

@@ -303,6 +303,7 @@ void MainWindow::exportParameterSheet()
                                            : design.title.toStdString();
     source.title = design.title;
     source.description = design.description;
+    source.requirements = design.requirements;
     // A planar workspace and its maps take a second or two: off the GUI thread.
     runInBackground(
         this, tr("Export Parameter Sheet"), tr("Computing the parameter sheet…"),

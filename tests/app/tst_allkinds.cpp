@@ -258,7 +258,7 @@ private slots:
     {
         PKM_ROW_DESIGN(design);
         const QString name = nameOf(design);
-        const sheet::Source source {name.toStdString(), design.title, design.description};
+        const sheet::Source source {name.toStdString(), design.title, design.description, design.requirements};
         const sheet::Sheet built = kinds::buildSheet(*design.mechanism, design.pose, source);
         QVERIFY(!built.sections.empty());
         // A kind whose module adds sections of its own gets them on top of the generic ones.

@@ -421,7 +421,7 @@ private slots:
         QVERIFY(language::apply(QStringLiteral("ru")));
         MainWindow window;
         const sheet::Source source{"pjoint-prototype", window.document()->design().title,
-                                   window.document()->design().description};
+                                   window.document()->design().description, window.document()->design().requirements};
         const sheet::Sheet built = kinds::buildSheet(*window.document()->mechanism(), window.document()->pose(), source);
         QTemporaryDir dir;
         const QString pdf = dir.filePath(QStringLiteral("ru.pdf"));

@@ -33,6 +33,12 @@ using namespace pkm::test;
 namespace {
 constexpr int waitMilliseconds = 20000;
 
+Design design(const QString &preset)
+{
+    auto loaded = designfile::load(preset);
+    return loaded ? *loaded : Design{};
+}
+
 double forceAt(const Mechanism &mechanism, const Pose &pose)
 {
     const capability::Actuators actuators = capability::actuatorsOf(mechanism);
@@ -123,7 +129,12 @@ private slots:
         action->trigger();
         QVERIFY(answered);
         QCOMPARE(document->undoStack()->count(), steps + 1);
-        QCOMPARE(document->requirements().size(), std::size_t(1));
+        // the preset's force requirement replaced, its resolution one kept
+        const std::vector<capability::Requirement> preset = design(QStringLiteral("moma-3a")).requirements;
+        QCOMPARE(preset.size(), std::size_t(2));
+        QCOMPARE(document->requirements().size(), std::size_t(2));
+        QVERIFY(std::abs(document->requirements()[0].value - 0.99 * here) < 0.051); // to the box's 0.1 N
+        QVERIFY(document->requirements()[1] == preset[1]);
         QCOMPARE(map->quantity(), MapQuantity::Specification);
         QVERIFY(ready.wait(waitMilliseconds));
         QVERIFY(QTest::qWaitFor([map] { return !map->busy(); }, waitMilliseconds));
@@ -142,10 +153,10 @@ private slots:
         }
         QVERIFY(language::apply(QStringLiteral("en")));
 
-        // undone: no requirement, the whole workspace "meets" none stated
+        // undone: the preset's own, which hold in the whole workspace
         ready.clear();
         document->undoStack()->undo();
-        QVERIFY(document->requirements().empty());
+        QVERIFY(document->requirements() == preset);
         QVERIFY(ready.wait(waitMilliseconds));
         QVERIFY(std::abs(map->specificationArea() - map->area()) < 1e-9);
         // saved with the design and read back

@@ -8,6 +8,7 @@
 
 #include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
@@ -155,6 +156,63 @@ private slots:
         QVERIFY2(run.err.contains("requirements") && run.err.contains("force_worst >> five"), run.err.constData());
     }
 
+    /// The sheet's actuator checks: the load within the actuators' limits by virtual work (no
+    /// load inside the force polygon's inscribed circle fails, none beyond its farthest vertex
+    /// holds), the requirements at the pose and over the workspace as `pkm workspace` finds.
+    void sheetChecksTheActuators()
+    {
+        const QJsonObject eval = pkmJson(args({"eval", "moma-3a", "--json"}));
+        const QJsonObject capability = eval.value(QLatin1String("capability")).toObject();
+        const double weakest = number(capability, "force_worst"), strongest = number(capability, "force_best");
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("sheet.json"));
+        auto checks = [&](double fx, double fy) {
+            const Run run = runPkm({QStringLiteral("sheet"), QStringLiteral("moma-3a"), QStringLiteral("--set"),
+                                    QStringLiteral("load_x=%1").arg(fx, 0, 'g', 12), QStringLiteral("--set"),
+                                    QStringLiteral("load_y=%1").arg(fy, 0, 'g', 12), QStringLiteral("-o"), path});
+            [&] { QCOMPARE(run.exitCode, 0); }();
+            return QJsonDocument::fromJson(fileBytes(path))
+                .object()
+                .value(QLatin1String("sections"))
+                .toObject()
+                .value(QLatin1String("capability"))
+                .toObject()
+                .value(QLatin1String("checks"))
+                .toObject();
+        };
+        for (const double angle : {0.0, 0.7, 2.0, 4.0}) {
+            const double c = std::cos(angle), s = std::sin(angle);
+            const QJsonObject inside = checks(0.99 * weakest * c, 0.99 * weakest * s);
+            const QJsonObject held = inside.value(QLatin1String("load_held")).toObject();
+            QCOMPARE(held.value(QLatin1String("result")).toString(), QStringLiteral("PASS"));
+            const double share = number(held, "value");
+            QVERIFY(share <= 1.0);
+            const QJsonObject outside = checks(1.01 * strongest * c, 1.01 * strongest * s);
+            const QJsonObject failed = outside.value(QLatin1String("load_held")).toObject();
+            QCOMPARE(failed.value(QLatin1String("result")).toString(), QStringLiteral("FAIL"));
+            // linear in the load
+            QVERIFY(std::abs(number(failed, "value") / share - 1.01 * strongest / (0.99 * weakest)) < 1e-9 * number(failed, "value") / share);
+            // the preset's requirements: 50 N and 0.01 mm, met at the pose and everywhere
+            QCOMPARE(inside.value(QLatin1String("requirement_1")).toObject().value(QLatin1String("result")).toString(),
+                     QStringLiteral("PASS"));
+            QCOMPARE(number(inside.value(QLatin1String("requirements_workspace")).toObject(), "value"), 100.0);
+        }
+        // without a load the check says so
+        const Run run = runPkm({QStringLiteral("sheet"), QStringLiteral("pp-3rrr"), QStringLiteral("-o"), path});
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject sheet = QJsonDocument::fromJson(fileBytes(path)).object();
+        const QJsonObject ppChecks = sheet.value(QLatin1String("sections")).toObject().value(QLatin1String("capability"))
+                                         .toObject().value(QLatin1String("checks")).toObject();
+        QCOMPARE(ppChecks.value(QLatin1String("load_held")).toObject().value(QLatin1String("result")).toString(),
+                 QStringLiteral("INFO"));
+        // the share over the workspace is the one `pkm workspace --require` finds at its grid
+        const QJsonObject region = ppChecks.value(QLatin1String("requirements_workspace")).toObject();
+        const QJsonObject workspace = pkmJson(args({"workspace", "pp-3rrr", "--json"}));
+        const double fraction = number(workspace.value(QLatin1String("specification")).toObject(), "fraction");
+        QVERIFY(std::abs(number(region, "value") - 100.0 * fraction) < 1e-9);
+        QCOMPARE(region.value(QLatin1String("result")).toString(), fraction < 1.0 ? QStringLiteral("FAIL") : QStringLiteral("PASS"));
+    }
+
     void wrongUsesAreOneSentence_data()
     {
         QTest::addColumn<QStringList>("arguments");
@@ -162,7 +220,7 @@ private slots:
         QTest::newRow("no comparison") << args({"workspace", "moma-3a", "--require", "force_worst"}) << QByteArray("--require");
         QTest::newRow("a matrix") << args({"workspace", "moma-3a", "--require", "stiffness>=3"}) << QByteArray("stiffness");
         QTest::newRow("not a number") << args({"map", "moma-3a", "--require", "force_worst>=lots"}) << QByteArray("finite");
-        QTest::newRow("spec without") << args({"map", "moma-3a", "--quantity", "spec"}) << QByteArray("--require");
+        QTest::newRow("spec without") << args({"map", "moma-3b", "--quantity", "spec"}) << QByteArray("--require");
         QTest::newRow("with det") << args({"map", "moma-3a", "--quantity", "det", "--require", "force_worst>=1"})
                                   << QByteArray("--quantity spec");
         QTest::newRow("unknown quantity") << args({"map", "moma-3a", "--quantity", "force"}) << QByteArray("force_worst");
