@@ -174,12 +174,17 @@ MapSummary computeMap(const Mechanism &mechanism, const Actuators &actuators, Ma
     std::size_t reachable = 0, nearSingular = 0, met = 0;
     std::vector<std::size_t> failing(requirements.size(), 0);
     const std::size_t columns = std::size_t(grid.columns);
+    // The kind's closed-form map says which cells are reachable (a few ns a cell): only those
+    // are solved, so an unreachable cell costs no failed solve and the outline is the one
+    // every other map of the design has.
+    const PlanarWorkspace *closed = mechanism.planarWorkspace();
     auto work = [&] {
         double localMin = std::numeric_limits<double>::infinity(), localMax = -localMin;
         std::size_t localReachable = 0, localNear = 0, localMet = 0;
         std::vector<std::size_t> localFailing(requirements.size(), 0);
         std::vector<double> report(std::size_t(mechanism.reportLayout().size));
         std::vector<double> delivered(std::size_t(layout->size));
+        std::vector<float> open(closed ? columns : 0); // the closed-form map of the row: NaN where unreachable
         for (;;) {
             if (cancel && cancel->load(std::memory_order_relaxed)) {
                 stopped = true;
@@ -191,12 +196,15 @@ MapSummary computeMap(const Mechanism &mechanism, const Actuators &actuators, Ma
             // every cell starts from the given pose (its modes, z and φ): the inverse kinematics
             // is closed form per working mode, so a neighbour is no better a start
             Coordinates outputs = near.outputs;
+            if (closed)
+                closed->fillMapRow(MapQuantity::Determinant, grid.y(r), grid.x(0), grid.dx(), open, {});
             for (std::size_t c = 0; c < columns; ++c) {
                 const std::size_t i = std::size_t(r) * columns + c;
                 float &cell = values[i];
                 outputs[0] = grid.x(int(c));
                 outputs[1] = grid.y(r);
-                const auto pose = mechanism.solveInverse(outputs, &near);
+                const auto pose = closed && std::isnan(open[c]) ? Result<Pose>(Failure{})
+                                                                     : mechanism.solveInverse(outputs, &near);
                 if (!pose) {
                     cell = notReached;
                     if (withMargins)

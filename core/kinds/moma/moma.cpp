@@ -397,8 +397,10 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
     const MomaDesign &d = m_design;
     std::array<double, 2> p{};
     std::array<Eigen::Vector2d, 2> z;
-    const std::string where
-        = text::format(text::translate("core", "(%1, %2) mm"), {text::number(platform.x()), text::number(platform.y())});
+    // made only for a message: a solve that succeeds (every drag step, every map cell) formats nothing
+    const auto where = [&] {
+        return text::format(text::translate("core", "(%1, %2) mm"), {text::number(platform.x()), text::number(platform.y())});
+    };
     for (int leg = 0; leg < 2; ++leg) {
         const double D = moma::discriminant(d, leg, platform); // (9)
         const double l = d.length[leg];
@@ -406,7 +408,7 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
             return Failure{FailureKind::Unreachable, "x",
                            text::format(text::translate("core", "The platform cannot reach %1: it lies more than "
                                                                 "l%2 = %3 mm from guide %4."),
-                                        {where, legName(leg), text::number(l), legName(leg)})};
+                                        {where(), legName(leg), text::number(l), legName(leg)})};
         }
         p[leg] = moma::projection(d, leg, platform) + d.branch[leg] * std::sqrt(std::max(0.0, D)); // (7)
         // √D of a D that is zero up to rounding is ~1e-8·l: allow for it at the stroke ends
@@ -415,7 +417,7 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
             return Failure{FailureKind::OutOfRange, joinText({"p", legName(leg)}),
                            text::format(text::translate("core", "The platform cannot reach %1: slider %2 would have to "
                                                                 "be at p%3 = %4 mm, outside its stroke [%5, %6] mm."),
-                                        {where, legName(leg), legName(leg), text::number(p[leg]),
+                                        {where(), legName(leg), legName(leg), text::number(p[leg]),
                                          text::number(d.strokeMin), text::number(d.strokeMax)})};
         }
         p[leg] = std::clamp(p[leg], d.strokeMin, d.strokeMax);
@@ -427,11 +429,11 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
                        text::format(text::translate("core", "The platform cannot reach %1 in this assembly mode: it "
                                                             "would cross the line Z₁Z₂, where the links are collinear "
                                                             "(a direct singularity); switch the assembly mode to go on."),
-                                    {where})};
+                                    {where()})};
     }
     if (auto violation = oneSideViolation(platform, z); !violation.empty())
         return Failure{FailureKind::Unreachable, "x",
-                       text::format(text::translate("core", "The platform cannot reach %1: %2."), {where, violation})};
+                       text::format(text::translate("core", "The platform cannot reach %1: %2."), {where(), violation})};
     Pose pose;
     pose.inputs.resize(2);
     pose.inputs << p[0], p[1];
