@@ -3,6 +3,7 @@
 #include "mechanism.h"
 
 #include <algorithm>
+#include <cmath>
 #include <mutex>
 #include <shared_mutex>
 
@@ -103,6 +104,15 @@ std::string number(double value, int decimals)
 std::string millimetres(double value)
 {
     return format(translate("core", "%1 mm"), {number(value, 2)});
+}
+
+std::string numberOutside(double value, double lo, double hi, int decimals)
+{
+    const double bound = std::abs(value - lo) < std::abs(value - hi) ? lo : hi;
+    std::string shown = number(value, decimals);
+    for (int d = decimals + 1; d <= 12 && shown == number(bound, d - 1); ++d)
+        shown = number(value, d);
+    return shown;
 }
 
 std::string printable(std::string_view outside, std::size_t maxCharacters)

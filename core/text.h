@@ -45,6 +45,10 @@ std::string format(std::string_view pattern, std::initializer_list<std::string_v
 /// A number for a sentence: up to `decimals` decimals, trailing zeros dropped, the locale's
 /// decimal point and minus sign.
 std::string number(double value, int decimals = 3);
+/// A value said to be outside [lo, hi], with as many decimals (from `decimals` up to 12) as it
+/// takes not to read as the bound it passes: 60.000001 beside a bound of 60 is "60.000001",
+/// not "60" (display units, as text::number).
+std::string numberOutside(double value, double lo, double hi, int decimals = 3);
 /// A length for a sentence: "12.5 mm".
 std::string millimetres(double value);
 /// Text from outside (a file, the command line) made safe to print inside a message: control

@@ -6842,6 +6842,18 @@ Please verify the correct file name was given.</source>
         <source>%1: “requirements”: %2</source>
         <translation>%1: «requirements»: %2</translation>
     </message>
+    <message>
+        <source>%1 is larger than %2 MiB, the most a design file may be.</source>
+        <translation>%1 больше %2 МиБ — наибольшего размера файла конструкции.</translation>
+    </message>
+    <message>
+        <source>%1: the title is longer than %2 characters, the most a design keeps.</source>
+        <translation>%1: название длиннее %2 символов — больше, чем хранит конструкция.</translation>
+    </message>
+    <message>
+        <source>%1: the description is longer than %2 characters, the most a design keeps.</source>
+        <translation>%1: описание длиннее %2 символов — больше, чем хранит конструкция.</translation>
+    </message>
 </context>
 <context>
     <name>presets</name>

@@ -6842,6 +6842,18 @@ Please verify the correct file name was given.</source>
         <source>%1: “requirements”: %2</source>
         <translation>%1: „requirements“: %2</translation>
     </message>
+    <message>
+        <source>%1 is larger than %2 MiB, the most a design file may be.</source>
+        <translation>%1 је већа од %2 MiB, колико највише датотека конструкције сме да има.</translation>
+    </message>
+    <message>
+        <source>%1: the title is longer than %2 characters, the most a design keeps.</source>
+        <translation>%1: наслов је дужи од %2 знакова, колико највише конструкција чува.</translation>
+    </message>
+    <message>
+        <source>%1: the description is longer than %2 characters, the most a design keeps.</source>
+        <translation>%1: опис је дужи од %2 знакова, колико највише конструкција чува.</translation>
+    </message>
 </context>
 <context>
     <name>presets</name>

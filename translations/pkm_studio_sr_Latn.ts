@@ -6842,6 +6842,18 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>%1: “requirements”: %2</source>
         <translation>%1: „requirements“: %2</translation>
     </message>
+    <message>
+        <source>%1 is larger than %2 MiB, the most a design file may be.</source>
+        <translation>%1 je veća od %2 MiB, koliko najviše datoteka konstrukcije sme da ima.</translation>
+    </message>
+    <message>
+        <source>%1: the title is longer than %2 characters, the most a design keeps.</source>
+        <translation>%1: naslov je duži od %2 znakova, koliko najviše konstrukcija čuva.</translation>
+    </message>
+    <message>
+        <source>%1: the description is longer than %2 characters, the most a design keeps.</source>
+        <translation>%1: opis je duži od %2 znakova, koliko najviše konstrukcija čuva.</translation>
+    </message>
 </context>
 <context>
     <name>presets</name>

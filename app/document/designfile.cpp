@@ -117,6 +117,16 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     design.id = root.value(QStringLiteral("id")).toString();
     design.title = root.value(QStringLiteral("title")).toString();
     design.description = root.value(QStringLiteral("description")).toString();
+    if (design.title.size() > maxTextLength) {
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: the title is longer than %2 "
+                                                                                 "characters, the most a design keeps.")
+                                       .arg(origin, numberText(maxTextLength)));
+    }
+    if (design.description.size() > maxTextLength) {
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: the description is longer than %2 "
+                                                                                 "characters, the most a design keeps.")
+                                       .arg(origin, numberText(maxTextLength)));
+    }
     design.mechanism = *mechanism;
     design.pose = design.mechanism->homePose();
 
@@ -300,10 +310,26 @@ Result<Design> load(const QString &presetOrPath)
                                    .arg(presetOrPath));
         }
     }
+    const auto bytes = readFile(path, presetOrPath);
+    if (!bytes)
+        return bytes.failure();
+    return parse(*bytes, presetOrPath);
+}
+
+Result<QByteArray> readFile(const QString &path, const QString &origin)
+{
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return fileFailure(presetOrPath, QCoreApplication::translate("pkm::designfile", "Cannot open %1: %2.").arg(presetOrPath, file.errorString()));
-    return parse(file.readAll(), presetOrPath);
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "Cannot open %1: %2.").arg(origin, file.errorString()));
+    // one byte past the limit tells a file that is too large, whatever size() says (0 for
+    // /dev/zero and pipes)
+    QByteArray bytes = file.read(maxFileBytes + 1);
+    if (bytes.size() > maxFileBytes) {
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile",
+                                                               "%1 is larger than %2 MiB, the most a design file may be.")
+                                       .arg(origin, numberText(double(maxFileBytes) / double(1 << 20))));
+    }
+    return bytes;
 }
 
 QByteArray serialize(const Design &design)

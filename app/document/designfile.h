@@ -62,6 +62,16 @@ inline constexpr int maxBookmarkName = 200;
 /// domain; the failure names the parameter.
 Result<ParameterSet> parseTolerances(const Mechanism &mechanism, const QJsonValue &value, const QString &origin);
 
+/// A design file is read only up to this size (1 MiB; the presets are 1–5 kB): a larger one,
+/// or a device that never ends, is refused before it is parsed.
+inline constexpr qint64 maxFileBytes = qint64(1) << 20;
+/// The longest title or description a design keeps, in characters (a page of text).
+inline constexpr int maxTextLength = 10000;
+
+/// The bytes of the file at `path`, read in a bounded way (at most maxFileBytes); the failure
+/// names `origin` and the limit.
+Result<QByteArray> readFile(const QString &path, const QString &origin);
+
 /// A design keeps at most this many requirements (capabilitymap.h).
 inline constexpr int maxRequirements = 16;
 

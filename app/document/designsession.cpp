@@ -196,10 +196,10 @@ QList<DesignSession::Recovery> DesignSession::pendingRecoveries()
         lock.setStaleLockTime(0);
         if (!lock.tryLock(0))
             continue; // a running session's
-        QFile file(info.absoluteFilePath());
-        if (!file.open(QIODevice::ReadOnly))
-            continue;
-        const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+        const auto bytes = designfile::readFile(info.absoluteFilePath(), info.fileName());
+        if (!bytes)
+            continue; // unreadable or too large: not a copy this program wrote
+        const QJsonObject root = QJsonDocument::fromJson(*bytes).object();
         const QJsonObject autosave = root.value(QLatin1String(autosaveKey)).toObject();
         Recovery recovery;
         recovery.autosavePath = info.absoluteFilePath();

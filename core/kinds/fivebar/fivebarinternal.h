@@ -40,6 +40,12 @@ inline std::string deg(double radians)
     return joinText({text::number(radians / units::degree, 3), "°"});
 }
 
+/// An angle said to be outside `range`, with the digits that show why.
+inline std::string degOutside(double radians, const Interval &range)
+{
+    return joinText({text::numberOutside(radians / units::degree, range.min / units::degree, range.max / units::degree), "°"});
+}
+
 inline std::string rangeText(const Interval &range)
 {
     return text::format(text::translate("core", "[%1, %2]"), {deg(range.min), deg(range.max)});

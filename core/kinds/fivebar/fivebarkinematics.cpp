@@ -205,9 +205,9 @@ Result<Pose> FiveBar::solveDirect(const Coordinates &inputs, const Pose *near) c
                            fivebar::fullTurn(range)
                                ? text::format(text::translate("core", "%1 = %2 is outside the range of crank %3, %4: the "
                                                                       "crank turns fully, give its angle within it."),
-                                              {t.theta, deg(inputs[leg]), t.crank, rangeText(range)})
+                                              {t.theta, fivebar::degOutside(inputs[leg], range), t.crank, rangeText(range)})
                                : text::format(text::translate("core", "%1 = %2 is outside the range of crank %3, %4."),
-                                              {t.theta, deg(inputs[leg]), t.crank, rangeText(range)})};
+                                              {t.theta, fivebar::degOutside(inputs[leg], range), t.crank, rangeText(range)})};
         }
     }
     const std::array<Interval, 2> &r = m_design.range;

@@ -277,7 +277,7 @@ Result<Pose> OxGlide::solveDirect(const Coordinates &inputs, const Pose *near) c
         if (!range.contains(inputs[i])) {
             const std::string pattern = i < 2 ? text::translate("core", "%1 = %2 is off the guides (%3…%4 mm).")
                                               : text::translate("core", "%1 = %2 is outside the travel (%3…%4 mm).");
-            const std::string message = text::format(pattern, {names[i], mm(inputs[i]), text::number(range.min, 2),
+            const std::string message = text::format(pattern, {names[i], text::format(text::translate("core", "%1 mm"), {text::numberOutside(inputs[i], range.min, range.max, 2)}), text::number(range.min, 2),
                                                                text::number(range.max, 2)});
             return Failure{FailureKind::OutOfRange, names[i], message};
         }

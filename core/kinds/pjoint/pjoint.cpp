@@ -321,7 +321,8 @@ Result<Pose> PJoint::solveInverse(const Coordinates &outputs, const Pose *) cons
     if (!range.contains(theta, relativeTolerance)) {
         return Failure{FailureKind::OutOfRange, "theta",
                        text::format(text::translate("core", "θ = %1° is outside the design range [%2, %3]°."),
-                                    {text::number(units::angle.toDisplay(theta)),
+                                    {text::numberOutside(units::angle.toDisplay(theta), units::angle.toDisplay(range.min),
+                                                         units::angle.toDisplay(range.max)),
                                      text::number(units::angle.toDisplay(range.min)),
                                      text::number(units::angle.toDisplay(range.max))})};
     }

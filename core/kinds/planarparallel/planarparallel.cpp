@@ -380,7 +380,9 @@ Result<Pose> PlanarParallel::solveDirect(const Coordinates &inputs, const Pose *
         if (!range.contains(inputs[i], 1e-9 * std::max(1.0, std::abs(range.max - range.min))))
             return Failure{FailureKind::OutOfRange, name,
                            text::format(text::translate("core", "%1 = %2 is outside its range [%3, %4]."),
-                                        {name, text::number(m_variables[std::size_t(i)].unit.toDisplay(inputs[i])),
+                                        {name, text::numberOutside(m_variables[std::size_t(i)].unit.toDisplay(inputs[i]),
+                                                                   m_variables[std::size_t(i)].unit.toDisplay(range.min),
+                                                                   m_variables[std::size_t(i)].unit.toDisplay(range.max)),
                                          text::number(m_variables[std::size_t(i)].unit.toDisplay(range.min)),
                                          text::number(m_variables[std::size_t(i)].unit.toDisplay(range.max))})};
         if (!planar::circle(m_design.legs[std::size_t(i)], inputs[i]).valid)

@@ -1,0 +1,120 @@
+// What `pkm` does with hostile or careless input (issue 21): a design file is read in a bounded
+// way (a device that never ends, a file of megabytes, a page-long description are refused
+// with one sentence naming the limit); a message never sends a control character from a file
+// or an argument to the terminal, and never repeats a megabyte; a value said to be outside a
+// range is printed with the digits that show why.
+
+#include "support/process.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace pkm::test;
+
+namespace {
+QString writeFile(const QTemporaryDir &dir, const char *name, const QByteArray &bytes)
+{
+    const QString path = dir.filePath(QLatin1String(name));
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly))
+        file.write(bytes);
+    return path;
+}
+
+/// moma-3a as a file, with `replace` applied to its text.
+QByteArray preset(const QByteArray &from = {}, const QByteArray &to = {})
+{
+    QFile file(QStringLiteral(PKM_PRESET_DIR "/moma-3a.pkm.json"));
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    QByteArray bytes = file.readAll();
+    if (!from.isEmpty())
+        bytes.replace(from, to);
+    return bytes;
+}
+
+/// One line on stderr, exit status 2, nothing on stdout, no control character but the newline.
+void refusedInOneSafeLine(const Run &run)
+{
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY(run.out.isEmpty());
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY(run.err.endsWith('\n'));
+    for (const char c : run.err.chopped(1))
+        QVERIFY2(static_cast<unsigned char>(c) >= 0x20 && c != 0x7f, run.err.constData());
+}
+} // namespace
+
+class TestCliLimits : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void endlessDeviceIsRefused()
+    {
+        const Run run = runPkm(args({"eval", "/dev/zero"}));
+        refusedInOneSafeLine(run);
+        QVERIFY2(run.err.contains("larger than 1 MiB"), run.err.constData());
+    }
+
+    void largeFileIsRefused()
+    {
+        QTemporaryDir dir;
+        // valid JSON of 2 MB: a description padded far beyond any design's
+        const QByteArray big = preset("\"title\":", "\"padding\": \"" + QByteArray(2 << 20, 'x') + "\", \"title\":");
+        QVERIFY(big.size() > (2 << 20));
+        const Run run = runPkm({QStringLiteral("eval"), writeFile(dir, "big.pkm.json", big)});
+        refusedInOneSafeLine(run);
+        QVERIFY(run.err.contains("larger than 1 MiB"));
+    }
+
+    void longDescriptionIsRefused()
+    {
+        QTemporaryDir dir;
+        const QByteArray bytes = preset("\"description\": \"", "\"description\": \"" + QByteArray(20000, 'y'));
+        const Run run = runPkm({QStringLiteral("sheet"), writeFile(dir, "long.pkm.json", bytes), QStringLiteral("-o"),
+                                dir.filePath(QStringLiteral("s.json"))});
+        refusedInOneSafeLine(run);
+        QVERIFY2(run.err.contains("description") && run.err.contains("10000"), run.err.constData());
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("s.json"))));
+    }
+
+    void fileContentCannotReachTheTerminal()
+    {
+        QTemporaryDir dir;
+        // a parameter name with a clear-screen, a colour, a newline and a bell in it
+        const QByteArray bytes = preset("\"parameters\": {", "\"parameters\": {\"\\u001b[2J\\u001b[31mfake\\nline\\u0007\": 1, ");
+        const Run run = runPkm({QStringLiteral("eval"), writeFile(dir, "hostile.pkm.json", bytes)});
+        refusedInOneSafeLine(run);
+        QVERIFY2(run.err.contains("\\x1B[2J"), run.err.constData());
+    }
+
+    void hugeArgumentIsCut()
+    {
+        const QString name(100000, QLatin1Char('n')); // near the longest argument Linux passes
+        const Run run = runPkm({QStringLiteral("eval"), QStringLiteral("moma-3a"), QStringLiteral("--set"), name + QStringLiteral("=1")});
+        refusedInOneSafeLine(run);
+        QVERIFY2(run.err.size() < 4000, qPrintable(QString::number(run.err.size())));
+        QVERIFY(run.err.contains("…"));
+    }
+
+    void outsideShowsWhy_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QByteArray>("shown");
+        QTest::newRow("pjoint theta") << args({"eval", "pjoint-prototype", "--set", "theta=60.000001"}) << QByteArray("60.000001");
+        QTest::newRow("pp input") << args({"eval", "pp-3rpr", "--set", "q1=30.0000004"}) << QByteArray("30.0000004");
+    }
+    void outsideShowsWhy()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QByteArray, shown);
+        const Run run = runPkm(arguments);
+        QVERIFY(run.exitCode != 0);
+        QVERIFY2(run.err.contains(shown), run.err.constData());
+    }
+};
+
+QTEST_MAIN(TestCliLimits)
+#include "tst_clilimits.moc"
