@@ -166,6 +166,11 @@ void addDrawing(const Mechanism &mechanism, const Pose &pose, const QString &pos
         const double ratio = double(scale.first) / scale.second;
         if (ratio < double(figure.scale.first) / figure.scale.second)
             break; // the estimate's scale is the least
+        // labels only add to the geometry: a scale at which the geometry alone overflows the
+        // frame is not worth painting (painting costs grow with the drawing's size in mm)
+        const Eigen::Vector2d geometry = figure.imageBounds.sizes() * ratio;
+        if (geometry.x() > drawingWidth - 2.0 * margin || geometry.y() > drawingHeight - 2.0 * margin)
+            continue;
         const auto drawn = drawnBounds(figure.scene, ratio);
         if (!drawn)
             break;

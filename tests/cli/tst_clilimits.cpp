@@ -99,6 +99,20 @@ private slots:
         QVERIFY(run.err.contains("…"));
     }
 
+    /// The sheet of a mechanism kilometres large is drawn at its scale without painting it at
+    /// every larger one (it took 32 s and 340 MB when the bounds were found by painting).
+    void hugeDesignSheet()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("s.json"));
+        const Run run = runPkm({QStringLiteral("sheet"), QStringLiteral("pjoint-prototype"), QStringLiteral("--set"),
+                                QStringLiteral("a=1e7"), QStringLiteral("-o"), path});
+        QCOMPARE(run.exitCode, 0);
+        const QByteArray sheet = fileBytes(path);
+        QVERIFY(sheet.contains("\"drawing\""));
+        QVERIFY(sheet.contains("1:"));
+    }
+
     void outsideShowsWhy_data()
     {
         QTest::addColumn<QStringList>("arguments");
