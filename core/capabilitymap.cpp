@@ -1,12 +1,11 @@
 #include "capabilitymap.h"
 
+#include "solvedmap.h"
+
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <limits>
-#include <mutex>
-#include <thread>
 
 namespace pkm::capability {
 
@@ -151,124 +150,85 @@ MapSummary computeMap(const Mechanism &mechanism, const Actuators &actuators, Ma
                       std::span<float> values, std::span<float> margins, SpecificationSummary *specification,
                       const std::atomic<bool> *cancel, const Progress &progress, int threads)
 {
-    const auto start = std::chrono::steady_clock::now();
     MapSummary summary;
     summary.grid = grid;
     const ReportLayout *layout = layoutFor(actuators);
     const bool isSpecification = quantity == MapQuantity::Specification;
     const ReportEntry *entry = layout && !isSpecification ? layout->find(entryName(quantity)) : nullptr;
+    SpecificationSummary met{0, 0.0, std::vector<std::size_t>(requirements.size(), 0)};
     if (specification)
-        *specification = SpecificationSummary{0, 0.0, std::vector<std::size_t>(requirements.size(), 0)};
+        *specification = met;
     if (!layout || (!entry && !isSpecification) || grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells()
         || mechanism.outputCount() < 2)
         return summary;
     const bool withMargins = margins.size() >= grid.cells();
-    if (threads <= 0)
-        threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    threads = std::clamp(threads, 1, grid.rows);
-
-    std::atomic<int> nextRow{0}, rowsDone{0};
-    std::atomic<bool> stopped{false};
-    std::mutex merge;
-    double min = std::numeric_limits<double>::infinity(), max = -min;
-    std::size_t reachable = 0, nearSingular = 0, met = 0;
-    std::vector<std::size_t> failing(requirements.size(), 0);
     const std::size_t columns = std::size_t(grid.columns);
     // The kind's closed-form map says which cells are reachable (a few ns a cell): only those
     // are solved, so an unreachable cell costs no failed solve and the outline is the one
     // every other map of the design has.
     const PlanarWorkspace *closed = mechanism.planarWorkspace();
-    auto work = [&] {
-        double localMin = std::numeric_limits<double>::infinity(), localMax = -localMin;
-        std::size_t localReachable = 0, localNear = 0, localMet = 0;
-        std::vector<std::size_t> localFailing(requirements.size(), 0);
-        std::vector<double> report(std::size_t(mechanism.reportLayout().size));
-        std::vector<double> delivered(std::size_t(layout->size));
-        std::vector<float> open(closed ? columns : 0); // the closed-form map of the row: NaN where unreachable
-        for (;;) {
-            if (cancel && cancel->load(std::memory_order_relaxed)) {
-                stopped = true;
-                break;
-            }
-            const int r = nextRow.fetch_add(1);
-            if (r >= grid.rows)
-                break;
-            // every cell starts from the given pose (its modes, z and φ): the inverse kinematics
-            // is closed form per working mode, so a neighbour is no better a start
-            Coordinates outputs = near.outputs;
-            if (closed)
-                closed->fillMapRow(MapQuantity::Determinant, grid.y(r), grid.x(0), grid.dx(), open, {});
-            for (std::size_t c = 0; c < columns; ++c) {
-                const std::size_t i = std::size_t(r) * columns + c;
-                float &cell = values[i];
-                outputs[0] = grid.x(int(c));
-                outputs[1] = grid.y(r);
-                const auto pose = closed && std::isnan(open[c]) ? Result<Pose>(Failure{})
-                                                                     : mechanism.solveInverse(outputs, &near);
-                if (!pose) {
-                    cell = notReached;
-                    if (withMargins)
-                        margins[i] = notReached;
-                    continue;
-                }
-                const Singularity singular = mechanism.evaluate(*pose, report);
-                std::fill(delivered.begin(), delivered.end(), std::numeric_limits<double>::quiet_NaN());
-                evaluate(mechanism, actuators, *pose, singular.type, delivered);
-                ++localReachable;
-                if (withMargins)
-                    margins[i] = float(singular.margin);
-                localNear += singular.margin < nearSingularMargin;
-                if (isSpecification) {
-                    bool all = true;
-                    for (std::size_t k = 0; k < requirements.size(); ++k) {
-                        const bool holds = meets(requirements[k], *layout, delivered);
-                        localFailing[k] += !holds;
-                        all = all && holds;
-                    }
-                    localMet += all;
-                    cell = all ? 1.0f : 0.0f;
-                } else {
-                    // undefined at a combined singularity (0 one way, ∞ the other): NaN would
-                    // read as unreachable, so such a cell shows as infinite
-                    const double v = delivered[std::size_t(entry->offset)];
-                    cell = std::isnan(v) ? std::numeric_limits<float>::infinity() : float(v);
-                }
-                if (std::isfinite(cell)) {
-                    localMin = std::min(localMin, double(cell));
-                    localMax = std::max(localMax, double(cell));
-                }
-            }
-            const int done = ++rowsDone;
-            if (progress)
-                progress(done, grid.rows);
-        }
-        const std::lock_guard lock(merge);
-        min = std::min(min, localMin);
-        max = std::max(max, localMax);
-        reachable += localReachable;
-        nearSingular += localNear;
-        met += localMet;
-        for (std::size_t k = 0; k < failing.size(); ++k)
-            failing[k] += localFailing[k];
+    struct State {
+        std::vector<double> report, delivered;
+        std::vector<float> open; ///< the closed-form map of the row: NaN where unreachable
+        SpecificationSummary met;
     };
-    {
-        std::vector<std::jthread> pool;
-        for (int t = 1; t < threads; ++t)
-            pool.emplace_back(work);
-        work();
-    }
-    summary.reachableCells = reachable;
-    summary.nearSingularCells = nearSingular;
-    summary.min = std::isfinite(min) ? min : 0.0;
-    summary.max = std::isfinite(max) ? max : 0.0;
-    summary.area = double(reachable) * grid.cellArea();
-    summary.cancelled = stopped;
-    summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (specification) {
-        specification->metCells = met;
-        specification->metArea = double(met) * grid.cellArea();
-        specification->failing = std::move(failing);
-    }
+    const auto makeState = [&] {
+        return State{std::vector<double>(std::size_t(mechanism.reportLayout().size)),
+                     std::vector<double>(std::size_t(layout->size)), std::vector<float>(closed ? columns : 0),
+                     SpecificationSummary{0, 0.0, std::vector<std::size_t>(requirements.size(), 0)}};
+    };
+    const auto fillRow = [&](int r, solvedmap::Tally &tally, State &state) {
+        // every cell starts from the given pose (its modes, z and φ): the inverse kinematics is
+        // closed form per working mode, so a neighbour is no better a start
+        Coordinates outputs = near.outputs;
+        if (closed)
+            closed->fillMapRow(MapQuantity::Determinant, grid.y(r), grid.x(0), grid.dx(), state.open, {});
+        for (std::size_t c = 0; c < columns; ++c) {
+            const std::size_t i = std::size_t(r) * columns + c;
+            float &cell = values[i];
+            outputs[0] = grid.x(int(c));
+            outputs[1] = grid.y(r);
+            const auto pose = closed && std::isnan(state.open[c]) ? Result<Pose>(Failure{})
+                                                                  : mechanism.solveInverse(outputs, &near);
+            if (!pose) {
+                cell = notReached;
+                if (withMargins)
+                    margins[i] = notReached;
+                continue;
+            }
+            const Singularity singular = mechanism.evaluate(*pose, state.report);
+            std::fill(state.delivered.begin(), state.delivered.end(), std::numeric_limits<double>::quiet_NaN());
+            evaluate(mechanism, actuators, *pose, singular.type, state.delivered);
+            if (withMargins)
+                margins[i] = float(singular.margin);
+            tally.nearSingular += singular.margin < nearSingularMargin;
+            if (isSpecification) {
+                bool all = true;
+                for (std::size_t k = 0; k < requirements.size(); ++k) {
+                    const bool holds = meets(requirements[k], *layout, state.delivered);
+                    state.met.failing[k] += !holds;
+                    all = all && holds;
+                }
+                state.met.metCells += all;
+                cell = all ? 1.0f : 0.0f;
+            } else {
+                // undefined at a combined singularity (0 one way, ∞ the other): NaN would read
+                // as unreachable, so such a cell shows as infinite
+                const double v = state.delivered[std::size_t(entry->offset)];
+                cell = std::isnan(v) ? std::numeric_limits<float>::infinity() : float(v);
+            }
+            tally.add(cell);
+        }
+    };
+    const auto finish = [&](State &state) { // under solvedmap::run's lock
+        met.metCells += state.met.metCells;
+        for (std::size_t k = 0; k < met.failing.size(); ++k)
+            met.failing[k] += state.met.failing[k];
+    };
+    summary = solvedmap::run(grid, threads, cancel, progress, makeState, fillRow, finish);
+    met.metArea = double(met.metCells) * grid.cellArea();
+    if (specification)
+        *specification = std::move(met);
     return summary;
 }
 
