@@ -189,6 +189,17 @@ QList<DesignSession::Recovery> DesignSession::pendingRecoveries()
 {
     QList<Recovery> list;
     const QDir directory(autosaveDirectory());
+    // A session killed before its first autosave leaves only its lock: taken over once its
+    // process is gone (stale), it is removed as the QLockFile goes.
+    for (const QFileInfo &info : directory.entryInfoList({QStringLiteral("*.lock")}, QDir::Files)) {
+        QString design = info.absoluteFilePath();
+        design.chop(int(qstrlen(".lock")));
+        if (QFile::exists(design + QStringLiteral(".pkm.json")))
+            continue; // its autosave is looked at below
+        QLockFile lock(info.absoluteFilePath());
+        lock.setStaleLockTime(0);
+        lock.tryLock(0);
+    }
     const QFileInfoList files =
         directory.entryInfoList({QStringLiteral("*.pkm.json")}, QDir::Files, QDir::Time | QDir::Reversed);
     for (const QFileInfo &info : files) {

@@ -194,6 +194,26 @@ private slots:
         QCOMPARE(designfile::load(path)->mechanism->parameters().at("a"), 175.5);
     }
 
+    /// A session killed before its first autosave leaves only its lock; the next look for
+    /// recoveries removes it (it stayed for ever).
+    void lockOfAKilledSessionIsRemoved()
+    {
+        const QDir directory(DesignSession::autosaveDirectory());
+        const auto locks = [&] { return directory.entryList({QStringLiteral("*.lock")}, QDir::Files); };
+        const QStringList before = locks();
+        QProcess child;
+        child.setProcessChannelMode(QProcess::ForwardedChannels);
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        child.setProcessEnvironment(environment);
+        child.start(QCoreApplication::applicationFilePath(), {QStringLiteral("crashingBeforeAutosave")});
+        QVERIFY(child.waitForFinished(60000));
+        QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+        QCOMPARE(locks().size(), before.size() + 1);
+        QVERIFY(DesignSession::pendingRecoveries().isEmpty());
+        QCOMPARE(locks(), before);
+    }
+
     void declinedRecoveryIsDeleted()
     {
         QDir().mkpath(DesignSession::autosaveDirectory());
@@ -241,10 +261,23 @@ static int crashingSession(int argc, char **argv)
     std::abort();
 }
 
+/// The child of lockOfAKilledSessionIsRemoved: a session that ends before any autosave.
+static int crashingBeforeAutosave(int argc, char **argv)
+{
+    QApplication app(argc, argv);
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("PKM Studio tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_designsession"));
+    MainWindow window;
+    std::abort();
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 2 && qstrcmp(argv[1], "crashingSession") == 0)
         return crashingSession(argc, argv);
+    if (argc == 2 && qstrcmp(argv[1], "crashingBeforeAutosave") == 0)
+        return crashingBeforeAutosave(argc, argv);
     QApplication app(argc, argv);
     TestDesignSession test;
     return QTest::qExec(&test, argc, argv);
