@@ -113,6 +113,15 @@ private slots:
         QVERIFY(sheet.contains("1:"));
     }
 
+    /// A ratio that makes a length infinite is blamed as itself (it was "b = not a number").
+    void hugeRatioIsBlamedAsItself()
+    {
+        const Run run = runPkm(args({"eval", "pjoint-prototype", "--set", "k=1e308"}));
+        refusedInOneSafeLine(run);
+        QVERIFY2(run.err.contains("k = b/a = ∞ is out of proportion") && !run.err.contains("not a number"),
+                 run.err.constData());
+    }
+
     void outsideShowsWhy_data()
     {
         QTest::addColumn<QStringList>("arguments");

@@ -196,17 +196,19 @@ const ParameterTable<PJointDesign> &PJoint::table()
 
 Result<MechanismPtr> PJoint::create(const PJointDesign &design)
 {
-    if (auto checked = table().checkDesign(design); !checked)
-        return checked.failure();
     // A design far outside any real proportion (a = 1e-300 mm) would give k, d or J that are
-    // not finite numbers: refuse it rather than show them.
+    // not finite numbers: refuse it rather than show them. Before the fields are checked, so
+    // that a k of 1e308 is blamed as itself, not as the b = ∞ it makes.
     const double k = design.k();
-    if (!(k >= 1e-6 && k <= 1e6)) {
+    const bool sized = std::isfinite(design.a) && design.a > 0.0 && design.b > 0.0; // else a and b are blamed below
+    if (sized && !(k >= 1e-6 && k <= 1e6)) {
         return Failure{FailureKind::InvalidParameter, "k",
                        text::format(text::translate("core", "k = b/a = %1 is out of proportion: it must lie between 1e-6 "
                                                             "and 1e6."),
-                                    {text::number(k, 6)})};
+                                    {std::isnan(k) ? std::string("?") : std::isinf(k) ? std::string("∞") : text::number(k, 6)})};
     }
+    if (auto checked = table().checkDesign(design); !checked)
+        return checked.failure();
     if (!(design.thetaMin < design.thetaMax)) {
         return Failure{FailureKind::InvalidParameter, "theta_min",
                        text::format(text::translate("core", "theta_min = %1° must be less than theta_max = %2°."),
