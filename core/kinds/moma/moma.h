@@ -22,6 +22,8 @@
 #include "text.h"
 
 #include <array>
+#include <cmath>
+#include <limits>
 
 namespace pkm {
 
@@ -42,7 +44,26 @@ struct MomaDesign {
 
 /// Closed forms, no validation (callers check).
 namespace moma {
-inline Eigen::Vector2d direction(double alpha) { return {std::cos(alpha), std::sin(alpha)}; }
+/// a_i = (cos α_i, sin α_i). A solve asks for the same two guides many times (every cell of a
+/// capability map, every drag step: a third of a map's time went to sin and cos), so the last
+/// two directions are kept per thread: the same bits as computing them, once per design.
+inline Eigen::Vector2d direction(double alpha)
+{
+    struct Memo {
+        double alpha = std::numeric_limits<double>::quiet_NaN();
+        Eigen::Vector2d value = Eigen::Vector2d::Zero();
+    };
+    thread_local std::array<Memo, 2> memo;
+    thread_local std::size_t next = 0;
+    for (const Memo &m : memo)
+        if (m.alpha == alpha)
+            return m.value;
+    Memo &m = memo[next];
+    next ^= 1;
+    m.alpha = alpha;
+    m.value = {std::cos(alpha), std::sin(alpha)};
+    return m.value;
+}
 /// B_i = a_i·(P − R_i) (8)
 double projection(const MomaDesign &design, int leg, const Eigen::Vector2d &platform);
 /// B_i² − C_i with C_i = |P − R_i|² − l_i² (9); negative: P farther than l_i from the guide line.
