@@ -150,4 +150,28 @@ void forgetLegendNames(QCustomPlot *plot)
         plot->plottable(j)->setProperty(fullNameProperty, QVariant());
 }
 
+int layOutLegend(QCustomPlot *plot)
+{
+    QCPLegend *legend = plot->legend;
+    int count = 0, widest = 0, tallest = 0;
+    for (int j = 0; j < legend->itemCount(); ++j) { // cells of the grid, some of them empty
+        if (const QCPAbstractLegendItem *item = legend->item(j)) {
+            ++count;
+            widest = std::max(widest, item->minimumOuterSizeHint().width());
+            tallest = std::max(tallest, item->minimumOuterSizeHint().height());
+        }
+    }
+    if (count == 0)
+        return 0;
+    const int available = plot->width() - legend->margins().left() - legend->margins().right();
+    const int fit = std::clamp((available + legend->columnSpacing()) / (widest + legend->columnSpacing()), 1, count);
+    const int rows = (count + fit - 1) / fit;
+    const int columns = (count + rows - 1) / rows;
+    if (columns != legend->wrap() || legend->fillOrder() != QCPLayoutGrid::foColumnsFirst) {
+        legend->setWrap(columns);
+        legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    }
+    return rows * (tallest + legend->rowSpacing());
+}
+
 } // namespace pkm::plotstyle

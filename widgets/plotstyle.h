@@ -47,6 +47,9 @@ QString wrapped(const QString &text, const QFont &font, int width);
 /// Breaks every legend name of `plot` into lines no wider than the legend's room in one
 /// column, from the name as it was first given (kept by the plottable); call again on a resize.
 void wrapLegendNames(QCustomPlot *plot);
+/// Lays the legend out in as many columns as the plot's width holds, balanced over the rows
+/// (filled column by column); returns its height in pixels (0 without entries).
+int layOutLegend(QCustomPlot *plot);
 /// Forgets the kept names, after the plottables were given new ones (a new language).
 void forgetLegendNames(QCustomPlot *plot);
 

@@ -396,24 +396,23 @@ void PJointPlots::fitToWidth(int index)
     // projector screen, a longer language); then as many legend columns as the width allows,
     // balanced over the rows.
     plotstyle::wrapLegendNames(plot);
-    QCPLegend *legend = plot->legend;
-    int count = 0;
-    int widest = 0;
-    for (int j = 0; j < legend->itemCount(); ++j) { // cells of the grid, some of them empty
-        if (const QCPAbstractLegendItem *item = legend->item(j)) {
-            ++count;
-            widest = std::max(widest, item->minimumOuterSizeHint().width());
-        }
-    }
-    if (count == 0)
-        return;
-    const int available = plot->width() - legend->margins().left() - legend->margins().right();
-    const int fit = std::clamp((available + legend->columnSpacing()) / (widest + legend->columnSpacing()), 1, count);
-    const int rows = (count + fit - 1) / fit;
-    const int columns = (count + rows - 1) / rows;
-    if (columns != legend->wrap() || legend->fillOrder() != QCPLayoutGrid::foColumnsFirst) {
-        legend->setWrap(columns);
-        legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    // Fig. 9 and fig. 10 share a column on a short screen (a projector at 1280×720): there the
+    // k-family, in fig. 8's colours whose legend stands beside them, leaves their legends so
+    // that the curves keep a readable plot (at least 150 px besides titles and axes).
+    Panel &p = m_panels[index];
+    const auto setFamilyShown = [&](bool shown) {
+        for (QCPGraph *graph : p.family)
+            if (graph && !graph->name().isEmpty())
+                shown ? graph->addToLegend() : graph->removeFromLegend();
+        if (shown && p.weakTransmissionSwatch && p.weakTransmissionSwatch->removeFromLegend())
+            p.weakTransmissionSwatch->addToLegend(); // the band's entry stays last
+    };
+    const bool shortened = index != DiagonalPlot && p.family[0];
+    if (shortened && !plot->legend->hasItemWithPlottable(p.family[0]))
+        setFamilyShown(true);
+    if (plotstyle::layOutLegend(plot) + 120 + 150 > plot->height() && shortened) {
+        setFamilyShown(false);
+        plotstyle::layOutLegend(plot);
     }
 }
 
