@@ -4119,6 +4119,10 @@ Please verify the correct file name was given.</source>
         <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
         <translation>Имя видеофайла должно оканчиваться на .mp4 или .webm: %1.</translation>
     </message>
+    <message>
+        <source>An animation draws at most %1 million pixels (frames × width × height); %2 frames of %3 × %4 would be %5 million: take fewer steps or a smaller size.</source>
+        <translation>Анимация рисует не более %1 миллионов пикселей (кадры × ширина × высота); %2 кадров размером %3 × %4 дали бы %5 миллионов: возьмите меньше шагов или меньший размер.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::AnimationDialog</name>

@@ -4119,6 +4119,10 @@ Please verify the correct file name was given.</source>
         <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
         <translation>Име видео-датотеке се завршава на .mp4 или .webm: %1.</translation>
     </message>
+    <message>
+        <source>An animation draws at most %1 million pixels (frames × width × height); %2 frames of %3 × %4 would be %5 million: take fewer steps or a smaller size.</source>
+        <translation>Анимација црта највише %1 милиона пиксела (кадрови × ширина × висина); %2 кадрова величине %3 × %4 било би %5 милиона: узмите мање корака или мању величину.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::AnimationDialog</name>

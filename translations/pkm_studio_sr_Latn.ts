@@ -4119,6 +4119,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>A video file&apos;s name ends in .mp4 or .webm: %1.</source>
         <translation>Ime video-datoteke se završava na .mp4 ili .webm: %1.</translation>
     </message>
+    <message>
+        <source>An animation draws at most %1 million pixels (frames × width × height); %2 frames of %3 × %4 would be %5 million: take fewer steps or a smaller size.</source>
+        <translation>Animacija crta najviše %1 miliona piksela (kadrovi × širina × visina); %2 kadrova veličine %3 × %4 bilo bi %5 miliona: uzmite manje koraka ili manju veličinu.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::AnimationDialog</name>

@@ -43,6 +43,20 @@ Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose 
                                    .arg(numberText(minAnimationFrames, 0), numberText(maxAnimationFrames, 0),
                                         numberText(settings.frames, 0)))};
     }
+    const double pixels = double(animationFrameCount(settings.frames, settings.bounce)) * settings.size.width()
+        * settings.size.height();
+    if (pixels > maxAnimationPixels) {
+        return Failure{FailureKind::InvalidParameter, "frames",
+                       message(QCoreApplication::translate("pkm::Animation",
+                                                           "An animation draws at most %1 million pixels (frames × "
+                                                           "width × height); %2 frames of %3 × %4 would be %5 million: "
+                                                           "take fewer steps or a smaller size.")
+                                   .arg(numberText(maxAnimationPixels / 1e6, 0))
+                                   .arg(animationFrameCount(settings.frames, settings.bounce))
+                                   .arg(settings.size.width())
+                                   .arg(settings.size.height())
+                                   .arg(numberText(pixels / 1e6, 0)))};
+    }
     std::vector<Pose> poses;
     poses.reserve(settings.frames);
     Pose near = start;

@@ -31,6 +31,9 @@ struct AnimationSettings {
 
 inline constexpr int minAnimationFrames = 2;
 inline constexpr int maxAnimationFrames = 1000;
+/// Frames drawn × width × height: the time of an export grows with it (about 16 s at the
+/// limit on the 2-core build machine), so a larger one is refused before a frame is drawn.
+inline constexpr double maxAnimationPixels = 1e9;
 
 /// The poses of the sweep, each solved from the one before (so the mechanism stays in its
 /// mode), starting from `start`. The failure names the first value without a pose.

@@ -122,6 +122,21 @@ private slots:
                  run.err.constData());
     }
 
+    /// The product of frames and size is bounded, not only each (1000 steps of 8000 × 8000
+    /// ran for ever); refused before anything is drawn or written.
+    void animationPixelsAreBounded()
+    {
+        QTemporaryDir dir;
+        const QString gif = dir.filePath(QStringLiteral("big.gif"));
+        const Run run = runPkm({QStringLiteral("render"), QStringLiteral("fourbar-example"), QStringLiteral("--var"),
+                                QStringLiteral("alpha"), QStringLiteral("--from"), QStringLiteral("0"), QStringLiteral("--to"),
+                                QStringLiteral("360"), QStringLiteral("--steps"), QStringLiteral("1000"), QStringLiteral("--size"),
+                                QStringLiteral("8000x8000"), QStringLiteral("-o"), gif});
+        refusedInOneSafeLine(run);
+        QVERIFY2(run.err.contains("1000 million pixels"), run.err.constData());
+        QVERIFY(!QFile::exists(gif));
+    }
+
     void outsideShowsWhy_data()
     {
         QTest::addColumn<QStringList>("arguments");
