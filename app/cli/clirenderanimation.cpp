@@ -18,6 +18,19 @@
 namespace pkm::cli {
 
 namespace {
+/// The option a failure of the animation is about: --steps for its frames, --steps and
+/// --size for its pixels, else the swept variable.
+std::string culpritOf(const Failure &failure, const std::string &variable)
+{
+    if (failure.culprit == "frames")
+        return "--steps";
+    if (failure.culprit == "pixels")
+        return "--steps and --size";
+    return "--var " + variable;
+}
+} // namespace
+
+namespace {
 
 /// "40 frames of 1280 × 720 pixels"
 std::string framesText(int frames, const Invocation &invocation)
@@ -80,7 +93,7 @@ int runRenderAnimation(const PreparedDesign &prepared, const Invocation &invocat
     if (video) {
         auto poses = animationPoses(mechanism, prepared.pose, settings);
         if (!poses) {
-            printError(err, "--var " + name + ": " + poses.failure().message);
+            printError(err, culpritOf(poses.failure(), name) + ": " + poses.failure().message);
             return cliExitCode(poses.failure());
         }
         const VideoExport written = writeAnimationVideo(mechanism, *poses, settings, path);
@@ -103,7 +116,7 @@ int runRenderAnimation(const PreparedDesign &prepared, const Invocation &invocat
 
     auto gif = renderAnimation(mechanism, prepared.pose, settings);
     if (!gif) {
-        printError(err, "--var " + name + ": " + gif.failure().message);
+        printError(err, culpritOf(gif.failure(), name) + ": " + gif.failure().message);
         return cliExitCode(gif.failure());
     }
     if (const auto failure = files::saveBytes(*invocation.output, *gif)) {

@@ -46,7 +46,7 @@ Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose 
     const double pixels = double(animationFrameCount(settings.frames, settings.bounce)) * settings.size.width()
         * settings.size.height();
     if (pixels > maxAnimationPixels) {
-        return Failure{FailureKind::InvalidParameter, "frames",
+        return Failure{FailureKind::InvalidParameter, "pixels",
                        message(QCoreApplication::translate("pkm::Animation",
                                                            "An animation draws at most %1 million pixels (frames × "
                                                            "width × height); %2 frames of %3 × %4 would be %5 million: "
