@@ -127,6 +127,20 @@ bool meets(const Requirement &requirement, const ReportLayout &layout, std::span
     return requirement.atLeast ? v >= requirement.value : v <= requirement.value;
 }
 
+const ReportEntry *toDisplayUnits(const Actuators &actuators, MapQuantity quantity, std::span<float> values,
+                                  MapSummary &summary)
+{
+    const ReportLayout *layout = layoutFor(actuators);
+    const ReportEntry *entry = layout ? layout->find(entryName(quantity)) : nullptr;
+    if (!entry)
+        return nullptr;
+    for (float &value : values)
+        value = float(entry->unit.toDisplay(value));
+    summary.min = entry->unit.toDisplay(summary.min);
+    summary.max = entry->unit.toDisplay(summary.max);
+    return entry;
+}
+
 Pose mapStart(const Mechanism &mechanism, const Pose &pose)
 {
     if (mechanism.outputCount() != 3 || pose.outputs.size() < 3 || !mechanism.parameterApplies("phi_map"))

@@ -52,6 +52,12 @@ std::string requirementText(const Requirement &requirement, const Actuators &act
 /// value meets nothing.
 bool meets(const Requirement &requirement, const ReportLayout &layout, std::span<const double> values);
 
+/// Turns a capability map computed by computeMap() (core units) into the display units of its
+/// entry (°/s and ° for an angular output), values and summary alike, as the values panel and
+/// `pkm eval` show them; returns the entry, or nullptr for the specification (left as it is).
+const ReportEntry *toDisplayUnits(const Actuators &actuators, MapQuantity quantity, std::span<float> values,
+                                  MapSummary &summary);
+
 /// The pose every cell of a map starts from: `pose` (its modes), for a platform that turns at
 /// φ = phi_map, the slice the workspace bounds and the singular curves are drawn for — solved
 /// there if it can be, else `pose` as it is.

@@ -63,22 +63,15 @@ MapSummary computeCapability(const Mechanism &mechanism, const Pose &pose, MapQu
                              WorkspaceMapResult &result, std::span<float> margins, const std::atomic<bool> *cancel)
 {
     const capability::Actuators actuators = capability::actuatorsOf(mechanism);
-    const ReportLayout *layout = capability::layoutFor(actuators);
     const Pose start = capability::mapStart(
         mechanism, pose.outputs.size() == mechanism.homePose().outputs.size() ? pose : mechanism.homePose());
     MapSummary summary = capability::computeMap(mechanism, actuators, quantity, requirements, start, grid,
                                                 result.values, margins, &result.specification, cancel);
-    const ReportEntry *entry = layout ? layout->find(capability::entryName(quantity)) : nullptr;
-    if (!entry)
-        return summary;
-    result.symbol = entry->symbol;
-    result.label = entry->label;
-    result.unit = entry->unit.symbol;
-    // shown in display units (°/s, ° for an angular output), as the values panel shows them
-    for (float &value : result.values)
-        value = float(entry->unit.toDisplay(value));
-    summary.min = entry->unit.toDisplay(summary.min);
-    summary.max = entry->unit.toDisplay(summary.max);
+    if (const ReportEntry *entry = capability::toDisplayUnits(actuators, quantity, result.values, summary)) {
+        result.symbol = entry->symbol;
+        result.label = entry->label;
+        result.unit = entry->unit.symbol;
+    }
     return summary;
 }
 

@@ -1,5 +1,7 @@
 #include "cli/cliarguments.h"
 
+#include "cli/clicapabilitymap.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -355,9 +357,7 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             }
             invocation.grid = static_cast<int>(*number);
         } else if (option == "--quantity") {
-            constexpr std::array<std::string_view, 8> quantities
-                = {"det", "cond", "range", "force_worst", "speed_worst", "resolution_worst", "stiffness_worst", "spec"};
-            if (std::find(quantities.begin(), quantities.end(), value) == quantities.end()) {
+            if (!quantityOf(value)) {
                 return usageFailure("--quantity",
                     context + ": the quantity must be 'det' (det J), 'cond' (the condition number of J), 'range' (the "
                               "orientation range of a platform that turns), one of what the actuators deliver "

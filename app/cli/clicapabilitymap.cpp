@@ -46,12 +46,12 @@ constexpr QuantityName quantityNames[] = {
 };
 } // namespace
 
-MapQuantity quantityOf(std::string_view key)
+std::optional<MapQuantity> quantityOf(std::string_view key)
 {
     for (const QuantityName &name : quantityNames)
         if (name.key == key)
             return name.quantity;
-    return MapQuantity::Determinant;
+    return std::nullopt;
 }
 
 std::string_view quantityKey(MapQuantity quantity)
@@ -103,13 +103,7 @@ MapSummary computeCapabilityInto(const Mechanism &mechanism, const Pose &pose, M
     MapSummary summary = capability::computeMap(mechanism, actuators, quantity, requirements,
                                                 capability::mapStart(mechanism, pose), grid, values, margins,
                                                 specification);
-    if (quantity != MapQuantity::Specification) {
-        const Unit unit = unitOf(mechanism, capability::entryName(quantity));
-        for (float &value : values)
-            value = static_cast<float>(unit.toDisplay(value));
-        summary.min = unit.toDisplay(summary.min);
-        summary.max = unit.toDisplay(summary.max);
-    }
+    capability::toDisplayUnits(actuators, quantity, values, summary);
     return summary;
 }
 

@@ -17,8 +17,9 @@
 
 namespace pkm::cli {
 
-/// The map quantity of a --quantity key ("det", "force_worst", "spec"); det J for another.
-MapQuantity quantityOf(std::string_view key);
+/// The map quantity of a --quantity key ("det", "force_worst", "spec"), if it is one: the one
+/// list of the keys, for the argument parser and the command.
+std::optional<MapQuantity> quantityOf(std::string_view key);
 /// The --quantity key of a map quantity.
 std::string_view quantityKey(MapQuantity quantity);
 /// "det J", "force in the weakest direction (N)": the text output's and the picture's.

@@ -284,7 +284,9 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
     const Mechanism &mechanism = *context.prepared.mechanism;
     // --require alone maps where the requirements hold
     const bool required = !context.invocation.requirements.empty();
-    const MapQuantity quantity = quantityOf(context.invocation.quantity.value_or(required ? "spec" : "det"));
+    // checked by the argument parser: a key of quantityOf()
+    const MapQuantity quantity
+        = quantityOf(context.invocation.quantity.value_or(required ? "spec" : "det")).value_or(MapQuantity::Determinant);
     if (auto failure = capabilityMapFailure(context.prepared, context.invocation, workspace, quantity))
         return failWith(context.err, *failure);
     const auto requirements = requirementsOf(context.prepared, context.invocation);
