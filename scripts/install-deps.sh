@@ -14,6 +14,7 @@ packages=(
     python3-numpy
     python3-ezdxf
     poppler-utils
+    clang libclang-rt-14-dev
 )
 
 missing=()

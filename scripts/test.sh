@@ -11,3 +11,9 @@ scripts/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPKM_WARNINGS_AS_ERRORS=ON -DPKM_BUILD_TESTS=ON
 cmake --build build
 ctest --test-dir build --output-on-failure --label-exclude bench -j 2
+
+# The fuzz targets (tests/fuzz): a tree of their own, built with clang's libFuzzer and the
+# address and undefined-behaviour sanitizers; each runs PKM_FUZZ_SECONDS (60 s) on its corpus.
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPKM_FUZZ=ON
+cmake --build build-fuzz --target pkm_fuzzers
+ctest --test-dir build-fuzz --output-on-failure -j 2

@@ -26,6 +26,24 @@ QString coreLabel(std::string_view label)
     return QCoreApplication::translate("core", source.c_str());
 }
 
+namespace {
+/// "1.680·10¹²" in the locale's decimal point and minus sign.
+QString powerOfTen(double value, const QLocale &locale)
+{
+    int exponent = int(std::floor(std::log10(std::abs(value))));
+    double mantissa = value / std::pow(10.0, exponent);
+    if (std::abs(std::round(mantissa * 1000.0) / 1000.0) >= 10.0) { // 9.9996 rounds up to 10.000
+        mantissa /= 10.0;
+        ++exponent;
+    }
+    static const char16_t superscripts[] = u"⁰¹²³⁴⁵⁶⁷⁸⁹";
+    QString power;
+    for (const QChar digit : QString::number(exponent))
+        power += QChar(superscripts[digit.digitValue()]);
+    return locale.toString(mantissa, 'f', 3) + QStringLiteral("·10") + power;
+}
+} // namespace
+
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale)
 {
     double display = unit.toDisplay(coreValue);
@@ -41,7 +59,10 @@ QString formatQuantity(double coreValue, const Unit &unit, int decimals, const Q
     // No group separators: "1044.03", as the spin boxes and fields show it.
     QLocale plain = locale;
     plain.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
-    QString text = plain.toString(display, 'f', decimals);
+    // A huge value (close to a singular pose, where a quantity grows without bound: a four-bar
+    // a hair's breadth from its dead centre is 10¹² N·m/rad stiff) in powers of ten, four
+    // digits: "1.680·10¹²", never a row of thirteen digits.
+    QString text = std::abs(display) >= 1e8 ? powerOfTen(display, plain) : plain.toString(display, 'f', decimals);
     const QString symbol = unitText(unit);
     if (symbol.isEmpty())
         return text;

@@ -21,9 +21,19 @@ namespace pkm {
 namespace designfile {
 
 namespace {
+/// The message reaches a dialog, the status bar or a terminal as it is: whatever the file (or
+/// its path) put into it is escaped there (text::printable), and a quoted name is cut short by
+/// quoted() before, so that the sentence around it survives.
 Failure fileFailure(const QString &culprit, const QString &message)
 {
-    return Failure{FailureKind::InvalidParameter, culprit.toStdString(), message.toStdString()};
+    return Failure{FailureKind::InvalidParameter, text::printable(culprit.toStdString(), 200),
+                   text::printable(message.toStdString(), 2000)};
+}
+
+/// A name or word from the file, for a message: control characters escaped, at most 80 characters.
+QString quoted(const QString &fromFile)
+{
+    return QString::fromStdString(text::printable(fromFile.toStdString(), 80));
 }
 
 /// A number in a message: the locale's decimal point and minus sign in the GUI, '.' in the CLI
@@ -50,7 +60,25 @@ QString presetPath(const QString &id)
 }
 } // namespace
 
+namespace {
+Result<Design> parseDesign(const QByteArray &json, const QString &origin);
+} // namespace
+
 Result<Design> parse(const QByteArray &json, const QString &origin)
+{
+    // Every failure, whichever part of the file or the kinds' checks made it, reaches the user
+    // escaped (the file's path and names may hold anything).
+    Result<Design> design = parseDesign(json, origin);
+    if (design)
+        return design;
+    Failure failure = design.failure();
+    failure.culprit = text::printable(failure.culprit, 200);
+    failure.message = text::printable(failure.message, 2000);
+    return failure;
+}
+
+namespace {
+Result<Design> parseDesign(const QByteArray &json, const QString &origin)
 {
     QJsonParseError error;
     const QJsonDocument document = QJsonDocument::fromJson(json, &error);
@@ -73,7 +101,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
 
     const QString kindId = root.value(QStringLiteral("mechanism")).toString();
     if (!findMechanismKind(kindId.toStdString()))
-        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 names an unknown mechanism kind '%2'.").arg(origin, kindId));
+        return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1 names an unknown mechanism kind '%2'.").arg(origin, quoted(kindId)));
     auto defaults = createMechanism(kindId.toStdString(), {});
     if (!defaults)
         return defaults.failure();
@@ -83,7 +111,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     for (auto it = parameters.begin(); it != parameters.end(); ++it) {
         const ParameterInfo *info = findParameter(**defaults, it.key());
         if (!info)
-            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: unknown parameter '%2'.").arg(origin, it.key()));
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: unknown parameter '%2'.").arg(origin, quoted(it.key())));
         if (it.value().isString()) {
             // a mode given by its name ("mode": "X")
             const std::string word = it.value().toString().toStdString();
@@ -94,16 +122,16 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
                 for (const auto &c : info->choices)
                     names << QString::fromStdString(c.first);
                 return fileFailure(origin, names.isEmpty()
-                                               ? QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, it.key())
+                                               ? QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, quoted(it.key()))
                                                : QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' must be a number or one of %3, not '%4'.")
-                                                     .arg(origin, it.key(), names.join(QStringLiteral(", ")),
-                                                          it.value().toString()));
+                                                     .arg(origin, quoted(it.key()), names.join(QStringLiteral(", ")),
+                                                          quoted(it.value().toString())));
             }
             values[info->name] = choice->second;
             continue;
         }
         if (!it.value().isDouble())
-            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, it.key()));
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: parameter '%2' is not a number.").arg(origin, quoted(it.key())));
         values[info->name] = info->unit.fromDisplay(it.value().toDouble());
     }
     auto mechanism = createMechanism(kindId.toStdString(), values);
@@ -134,7 +162,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     const QJsonObject poseObject = root.value(QStringLiteral("pose")).toObject();
     for (auto it = poseObject.begin(); it != poseObject.end(); ++it) {
         if (!it.value().isDouble())
-            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: pose value '%2' is not a number.").arg(origin, it.key()));
+            return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: pose value '%2' is not a number.").arg(origin, quoted(it.key())));
         pose.append({it.key(), it.value().toDouble()});
     }
     if (!pose.isEmpty()) {
@@ -167,7 +195,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
         for (auto it = values.begin(); it != values.end(); ++it) {
             if (!it.value().isDouble() || design.mechanism->variableIndex(it.key().toStdString()) < 0) {
                 return fileFailure(origin, QCoreApplication::translate("pkm::designfile", "%1: bookmark “%2” has an invalid pose value '%3'.")
-                                               .arg(origin, bookmark.name, it.key()));
+                                               .arg(origin, quoted(bookmark.name), quoted(it.key())));
             }
             bookmark.pose.append({it.key(), it.value().toDouble()});
         }
@@ -183,6 +211,7 @@ Result<Design> parse(const QByteArray &json, const QString &origin)
     design.requirements = std::move(*requirements);
     return design;
 }
+} // namespace
 
 Result<ParameterSet> parseTolerances(const Mechanism &mechanism, const QJsonValue &value, const QString &origin)
 {
@@ -204,12 +233,12 @@ Result<ParameterSet> parseTolerances(const Mechanism &mechanism, const QJsonValu
             const QString why = checked ? QCoreApplication::translate("pkm::designfile", "it is not a number")
                                         : QString::fromStdString(checked.failure().message);
             return fileFailure(it.key(), QCoreApplication::translate("pkm::designfile", "%1: the tolerance of '%2' is refused: %3")
-                                             .arg(origin, it.key(), why));
+                                             .arg(origin, quoted(it.key()), why));
         }
         auto checked = tolerance::checkTolerance(mechanism, name, info->unit.fromDisplay(it.value().toDouble()));
         if (!checked) {
             return fileFailure(it.key(), QCoreApplication::translate("pkm::designfile", "%1: the tolerance of '%2' is refused: %3")
-                                             .arg(origin, it.key(), QString::fromStdString(checked.failure().message)));
+                                             .arg(origin, quoted(it.key()), QString::fromStdString(checked.failure().message)));
         }
         tolerances[name] = *checked;
     }
@@ -232,6 +261,9 @@ Bookmark bookmarkOf(const Mechanism &mechanism, const Pose &pose, const QString 
 namespace {
 /// Below this (relative) a saved output differs from its inputs' by round-off only.
 constexpr double exactPoseTolerance = 1e-12;
+/// The inputs of a pose solved from the file's outputs are the file's when they differ by no
+/// more than the 15 significant digits written (and what a solver adds to that).
+constexpr double writtenDigitsTolerance = 1e-11;
 } // namespace
 
 Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const QList<QPair<QString, double>> &values)
@@ -272,6 +304,7 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
     if (!solved)
         return solved;
     Pose pose = *solved;
+    bool keptOutputs = true;
     for (const auto &[name, display] : values) {
         const int index = mechanism.variableIndex(name.toStdString());
         if (index < inputs)
@@ -290,6 +323,23 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
         // Agreeing to round-off: keep the file's value, so that save → open is exact.
         if (std::abs(fromInputs - display) <= exactPoseTolerance * std::max(1.0, std::abs(display)))
             pose.outputs[index - inputs] = info.unit.fromDisplay(display);
+        else
+            keptOutputs = false;
+    }
+    if (keptOutputs)
+        return pose;
+    // The inputs were written to 15 digits, and the outputs they give drift from the file's by
+    // more than round-off where the pose amplifies it (θ = 0 of a П-joint comes back as 1e-12):
+    // the pose at the file's own outputs, if its inputs are the file's to the digits written,
+    // is as true to the file, and saving it again writes the same file.
+    if (auto exact = mechanism.solveInverse(saved.outputs, &pose)) {
+        bool same = exact->inputs.size() == pose.inputs.size();
+        for (int i = 0; same && i < inputs; ++i) {
+            const double file = saved.inputs[i];
+            same = std::abs(exact->inputs[i] - file) <= writtenDigitsTolerance * std::max(1.0, std::abs(file));
+        }
+        if (same)
+            return *exact;
     }
     return pose;
 }

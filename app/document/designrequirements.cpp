@@ -15,7 +15,8 @@ constexpr qsizetype maxRequirementLength = 200;
 
 Failure requirementFailure(const QString &message)
 {
-    return Failure{FailureKind::InvalidParameter, "requirements", message.toStdString()};
+    // the message may quote the file's text (and its path): escaped, as designfile.cpp's are
+    return Failure{FailureKind::InvalidParameter, "requirements", text::printable(message.toStdString(), 2000)};
 }
 } // namespace
 
