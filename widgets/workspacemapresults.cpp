@@ -209,6 +209,17 @@ QString WorkspaceMapView::message() const
 
 // -- texts -------------------------------------------------------------------------------------
 
+double WorkspaceMapView::shownArea() const
+{
+    // Where the area of the design's own modes is known in closed form (the O-X glide's), the
+    // title gives it, as the sheet and `pkm workspace` do; elsewhere the map's count.
+    if (const PlanarWorkspace *planar = m_mechanism ? m_mechanism->planarWorkspace() : nullptr)
+        for (const ExactArea &known : planar->exactAreas())
+            if (known.key == "area")
+                return known.area;
+    return m_summary.area;
+}
+
 void WorkspaceMapView::updateTitle()
 {
     const bool condition = m_shownQuantity == MapQuantity::Condition;
@@ -227,7 +238,7 @@ void WorkspaceMapView::updateTitle()
     } else if (m_shownQuantity == MapQuantity::OrientationRange) {
         const double degree = std::numbers::pi / 180.0;
         plotstyle::setFittedText(m_title, tr("Workspace %1 · orientation range of φ from %2° to %3°")
-                                              .arg(formatQuantity(m_summary.area, units::squareMillimetre, 0),
+                                              .arg(formatQuantity(shownArea(), units::squareMillimetre, 0),
                                                    significant(m_summary.min / degree), significant(m_summary.max / degree)));
         m_colorScale->setLabel(plotstyle::wrapped(tr("orientation range of φ (°): the angles that hold the platform"),
                                                   m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
@@ -237,7 +248,7 @@ void WorkspaceMapView::updateTitle()
     } else {
         // broken into lines where the map is narrow (between words, never cut off)
         plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4")
-                             .arg(formatQuantity(m_summary.area, units::squareMillimetre, 0), symbol,
+                             .arg(formatQuantity(shownArea(), units::squareMillimetre, 0), symbol,
                                  significant(m_summary.min), significant(m_summary.max)));
     }
     // Along the scale, broken into lines where the map is short (a projector at 1280×720).

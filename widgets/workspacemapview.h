@@ -144,6 +144,8 @@ private:
     QString messageText() const;
     void updateBusy();
     void updateTitle();
+    /// The workspace area the title gives: exact where the kind knows it, else the map's count (mm²).
+    double shownArea() const;
     /// The title and scale of a capability or specification map (workspacemapcapability.cpp).
     void updateCapabilityTitle();
     /// Adds or removes the capability items of the combo box as the design declares actuators.

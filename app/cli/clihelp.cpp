@@ -195,10 +195,12 @@ planar mechanism rides the z axis, also the volume: the area extruded over the z
                        "x_min", "x_max", "y_min", "y_max"}, "cell_size", "reachable_cells",
                        "area_union", "modes": [{MODE: -1|1..., "area", "reachable_cells",
                        "current", "note"}...], "exact_areas", "seconds"}; "area" is the
-                      design's own (current modes), counted on the grid; "exact_areas" holds
-                      the areas known in closed form ({"area", "area_O", "area_X"} for the
-                      O-X glide), null where none is; the O-X glide adds "area_O",
-                      "area_X", "travel", "volume" and "volume_union" (mm³)
+                      design's own (current modes), counted on the grid — or, where it is
+                      known in closed form (the O-X glide's "area", "area_O", "area_X"),
+                      the exact area, with the grid's count as "area_grid", "area_O_grid",
+                      "area_X_grid"; "exact_areas" lists the closed-form areas, null where
+                      none is; the O-X glide adds "area_O", "area_X", "travel", "volume"
+                      and "volume_union" (mm³)
   -o FILE.png         a picture of the workspace of the current modes: the reachable cells
                       light blue on white with a dark outline, y up, at least 400 pixels;
                       for a mechanism with named modes (the O-X glide's O and X) every

@@ -169,7 +169,23 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
         json.key("design").string(context.prepared.origin);
         json.key("mechanism").string(mechanism.kind());
         writeParametersJson(json, mechanism, true);
-        json.key("area").number(map.summary.area);
+        // Where an area is known in closed form (the O-X glide's), that is the area, and the
+        // grid's count is given beside it as "…_grid", an estimate of it.
+        const PlanarWorkspace *planar = mechanism.planarWorkspace();
+        const std::vector<ExactArea> exact = planar ? planar->exactAreas() : std::vector<ExactArea> {};
+        const auto exactArea = [&](const std::string &key) -> std::optional<double> {
+            for (const ExactArea &known : exact)
+                if (known.key == key)
+                    return known.area;
+            return std::nullopt;
+        };
+        const auto writeArea = [&](const std::string &key, double gridArea) {
+            const auto known = exactArea(key);
+            json.key(key).number(known ? *known : gridArea);
+            if (known)
+                json.key(key + "_grid").number(gridArea);
+        };
+        writeArea("area", map.summary.area);
         json.key("bounds");
         json.beginObject(true);
         writeBoxJson(json, box);
@@ -177,12 +193,9 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
         writeGridJson(json, map.grid, context.resolution);
         json.key("reachable_cells").integer(static_cast<std::int64_t>(map.summary.reachableCells));
         for (const auto &[name, area] : named)
-            json.key("area_" + name).number(area);
+            writeArea("area_" + name, area);
         if (!modes.empty())
             json.key("area_union").number(united.unionArea);
-        // the areas known in closed form (the O-X glide's): the grid's are estimates of them
-        const PlanarWorkspace *planar = mechanism.planarWorkspace();
-        const std::vector<ExactArea> exact = planar ? planar->exactAreas() : std::vector<ExactArea> {};
         json.key("exact_areas");
         if (exact.empty()) {
             json.null();
@@ -196,7 +209,7 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
         // one extruded over that axis' travel
         if (const auto travel = carriedTravel(mechanism)) {
             json.key("travel").number(*travel);
-            json.key("volume").number(map.summary.area * *travel);
+            json.key("volume").number(exactArea("area").value_or(map.summary.area) * *travel);
             if (!modes.empty())
                 json.key("volume_union").number(united.unionArea * *travel);
         }

@@ -1039,11 +1039,16 @@ void TestCli::oxglideWorkspaceAreas()
         const QJsonObject root = runJson(args({"workspace", "oxglide-prototype", "--grid", grid}), &exitCode);
         QCOMPARE(exitCode, 0);
         QCOMPARE(root.value(QStringLiteral("mechanism")).toString(), QStringLiteral("oxglide"));
-        for (const char *key : {"area", "area_O", "area_X", "area_union"})
+        for (const char *key : {"area", "area_O", "area_X", "area_union", "area_grid", "area_O_grid", "area_X_grid"})
             QVERIFY2(root.value(QLatin1String(key)).isDouble(), key);
-        const double area = jsonNumber(root, "area"), areaO = jsonNumber(root, "area_O");
-        const double areaX = jsonNumber(root, "area_X"), areaUnion = jsonNumber(root, "area_union");
-        QCOMPARE(areaO, area); // the preset works in the O form
+        // the areas known in closed form are given as the areas, the grid's counts beside them
+        QVERIFY(std::abs(jsonNumber(root, "area_O") - exactO) < 1e-9 * exactO);
+        QVERIFY(std::abs(jsonNumber(root, "area_X") - exactX) < 1e-9 * exactX);
+        QCOMPARE(jsonNumber(root, "area"), jsonNumber(root, "area_O")); // the preset works in the O form
+        QVERIFY(std::abs(jsonNumber(root, "volume") - exactO * jsonNumber(root, "travel")) < 1e-9 * jsonNumber(root, "volume"));
+        const double area = jsonNumber(root, "area_grid"), areaO = jsonNumber(root, "area_O_grid");
+        const double areaX = jsonNumber(root, "area_X_grid"), areaUnion = jsonNumber(root, "area_union");
+        QCOMPARE(areaO, area);
         // The O workspace lies inside the X one (the O slice [s/2 + w, L − s/2 − w] inside the
         // X slice [|w − s/2|, L − |w − s/2|]), so the union is the X workspace.
         QCOMPARE(areaUnion, areaX);
@@ -1074,6 +1079,7 @@ void TestCli::oxglideWorkspaceAreas()
     QCOMPARE(exitCode, 0);
     QVERIFY(moma.contains(QStringLiteral("exact_areas")));
     QVERIFY(moma.value(QStringLiteral("exact_areas")).isNull());
+    QVERIFY(!moma.contains(QStringLiteral("area_grid"))); // its area is the grid's, and says so once
     // and the text output gives the exact area first, the grid's marked as such
     const Run text = runPkm(args({"workspace", "oxglide-prototype"}));
     QCOMPARE(text.exitCode, 0);
@@ -1085,7 +1091,9 @@ void TestCli::oxglideWorkspaceAreas()
                                         &exitCode);
     QCOMPARE(exitCode, 0);
     QCOMPARE(jsonNumber(crossed, "area"), jsonNumber(crossed, "area_X"));
-    QCOMPARE(jsonNumber(crossed, "area_union"), jsonNumber(crossed, "area_X"));
+    QCOMPARE(jsonNumber(crossed, "area_union"), jsonNumber(crossed, "area_X_grid"));
+    QCOMPARE(jsonNumber(crossed, "area_grid"), jsonNumber(crossed, "area_X_grid"));
+    QVERIFY(std::abs(jsonNumber(crossed, "area") - oxglideArea(80, 20, 130, true)) < 1e-9 * jsonNumber(crossed, "area"));
 }
 
 void TestCli::oxglideMapJson()
