@@ -6,6 +6,7 @@
 //   bench_capmap [MAX_RATIO] [--design PRESET] [--grid N] [--runs N]
 
 #include "capabilitymap.h"
+#include "benchmachine.h"
 #include "document/designfile.h"
 
 #include <algorithm>
@@ -21,32 +22,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// "AMD EPYC (avx2 fma avx512f)": the machine the figures belong to.
-std::string cpuText()
-{
-    std::ifstream info("/proc/cpuinfo");
-    std::string line, model, flags;
-    while (std::getline(info, line)) {
-        if (model.empty() && line.rfind("model name", 0) == 0)
-            model = line.substr(line.find(':') + 2);
-        if (flags.empty() && line.rfind("flags", 0) == 0)
-            flags = line.substr(line.find(':') + 1);
-    }
-    flags += ' ';
-    std::string text = model.empty() ? std::string("unknown CPU") : model;
-    text += " (";
-    bool first = true;
-    for (const char *extension : {"sse4_2", "avx", "avx2", "fma", "avx512f"}) {
-        if (flags.find(' ' + std::string(extension) + ' ') == std::string::npos)
-            continue;
-        if (!first)
-            text += ' ';
-        text += extension;
-        first = false;
-    }
-    text += ')';
-    return text;
-}
+using pkm::bench::cpuText;
 
 template <typename F>
 double bestSeconds(int runs, F &&run)

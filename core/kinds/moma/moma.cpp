@@ -257,7 +257,7 @@ Moma::Moma(const MomaDesign &design)
         for (int j = 0; j < samples; ++j) {
             const double p1 = design.strokeMin + stroke * i / (samples - 1);
             const double p2 = design.strokeMin + stroke * j / (samples - 1);
-            auto pose = direct(p1, p2);
+            auto pose = direct(p1, p2, false);
             if (!pose)
                 continue;
             const double centrality = std::min({p1 - design.strokeMin, design.strokeMax - p1, p2 - design.strokeMin,
@@ -306,7 +306,7 @@ Eigen::AlignedBox2d Moma::computeBounds() const
         const double p = m_design.strokeMin + stroke * k / edgeSamples;
         for (const double end : {m_design.strokeMin, m_design.strokeMax}) {
             for (const auto &[p1, p2] : {std::pair{p, end}, std::pair{end, p}}) {
-                if (auto pose = direct(p1, p2))
+                if (auto pose = direct(p1, p2, false))
                     reached.extend(pose->outputs.head<2>());
             }
         }
@@ -340,6 +340,15 @@ std::string Moma::oneSideViolation(const Eigen::Vector2d &platform, const std::a
 
 Result<Pose> Moma::direct(double p1, double p2) const
 {
+    return direct(p1, p2, true);
+}
+
+Result<Pose> Moma::direct(double p1, double p2, bool explain) const
+{
+    // A failure's sentence is made only when someone reads it: the home search and the bounds
+    // try thousands of inputs, most of them outside the workspace, and formatting why was a
+    // third of what a new design cost.
+    const auto why = [explain](auto &&sentence) { return explain ? sentence() : std::string(); };
     const MomaDesign &d = m_design;
     const std::array<Eigen::Vector2d, 2> z = {moma::sliderJoint(d, 0, p1), moma::sliderJoint(d, 1, p2)};
     const Eigen::Vector2d between = z[1] - z[0];
@@ -348,13 +357,15 @@ Result<Pose> Moma::direct(double p1, double p2) const
     const double scale = std::max(l1, l2);
     // Circle–circle intersection measured along Z₁→Z₂ (no division by x_Z2 − x_Z1, where the document's (10–12) fail: docs/mathematics.md, section 2).
     if (distance < 1e-9 * scale) {
-        return Failure{FailureKind::Singular, "p1",
-                       text::format(text::translate("core", "The slider joints Z₁ and Z₂ coincide at p₁ = %1 mm, "
-                                                            "p₂ = %2 mm: the platform position is undetermined."),
-                                    {text::number(p1), text::number(p2)})};
+        return Failure{FailureKind::Singular, "p1", why([&] {
+                           return text::format(text::translate("core", "The slider joints Z₁ and Z₂ coincide at p₁ = %1 mm, "
+                                                                       "p₂ = %2 mm: the platform position is undetermined."),
+                                               {text::number(p1), text::number(p2)});
+                       })};
     }
     if (distance > l1 + l2 + 1e-12 * scale || distance < std::abs(l1 - l2) - 1e-12 * scale) {
-        const std::string message = distance > l1 + l2
+        const std::string message = !explain ? std::string()
+            : distance > l1 + l2
             ? text::format(text::translate("core", "The links cannot meet at p₁ = %1 mm, p₂ = %2 mm: |Z₁Z₂| = %3 mm "
                                                    "is more than l₁ + l₂ = %4 mm."),
                            {text::number(p1), text::number(p2), text::number(distance), text::number(l1 + l2)})
@@ -372,17 +383,19 @@ Result<Pose> Moma::direct(double p1, double p2) const
     for (int leg = 0; leg < 2; ++leg) {
         const double w = (platform - z[leg]).dot(moma::direction(d.alpha[leg]));
         if (w * d.branch[leg] > 1e-9 * d.length[leg]) {
-            return Failure{FailureKind::Unreachable, joinText({"p", legName(leg)}),
-                           text::format(text::translate("core", "At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past "
-                                                                "perpendicular to its guide, in its other working mode (an "
-                                                                "inverse singularity lies between); switch the mode to go on."),
-                                        {text::number(p1), text::number(p2), legName(leg)})};
+            return Failure{FailureKind::Unreachable, joinText({"p", legName(leg)}), why([&] {
+                               return text::format(text::translate("core", "At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past "
+                                                                           "perpendicular to its guide, in its other working mode (an "
+                                                                           "inverse singularity lies between); switch the mode to go on."),
+                                                   {text::number(p1), text::number(p2), legName(leg)});
+                           })};
         }
     }
     if (auto violation = oneSideViolation(platform, z); !violation.empty()) {
-        return Failure{FailureKind::Unreachable, "p1",
-                       text::format(text::translate("core", "At p₁ = %1 mm, p₂ = %2 mm %3."),
-                                    {text::number(p1), text::number(p2), violation})};
+        return Failure{FailureKind::Unreachable, "p1", why([&] {
+                           return text::format(text::translate("core", "At p₁ = %1 mm, p₂ = %2 mm %3."),
+                                               {text::number(p1), text::number(p2), violation});
+                       })};
     }
     Pose pose;
     pose.inputs.resize(2);

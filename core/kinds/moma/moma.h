@@ -147,6 +147,8 @@ private:
     explicit Moma(const MomaDesign &design);
     /// The pose at (p₁, p₂) if it exists in the design's modes, else why not.
     Result<Pose> direct(double p1, double p2) const;
+    /// The same; without `explain` a failure carries no sentence (a search that only counts).
+    Result<Pose> direct(double p1, double p2, bool explain) const;
     /// The pose at P if it exists in the design's modes, else why not.
     Result<Pose> inverse(const Eigen::Vector2d &platform) const;
     /// Checks the one-side constraint; empty when it holds or is off.

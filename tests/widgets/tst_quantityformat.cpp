@@ -1,0 +1,44 @@
+// How a value reads on screen (widgets/quantityformat.h): the values panel, the Design panel's
+// notes and the map titles all go through formatQuantity().
+#include "quantityformat.h"
+#include "units.h"
+
+#include <QLocale>
+#include <QTest>
+
+#include <limits>
+
+using namespace pkm;
+
+class TestQuantityFormat : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void ordinaryValues()
+    {
+        const QLocale c = QLocale::c();
+        QCOMPARE(formatQuantity(1044.0307, units::millimetre, 2, c), QStringLiteral("1044.03 mm"));
+        QCOMPARE(formatQuantity(-1e-14, units::millimetre, 2, c), QStringLiteral("0.00 mm")); // never "-0.00"
+        QCOMPARE(formatQuantity(99999999.0, units::none, 1, c), QStringLiteral("99999999.0"));
+    }
+
+    /// Close to a singular pose a quantity grows without bound: from 10⁸ up it reads in powers
+    /// of ten, never as a row of digits (a four-bar a hair from its dead centre is
+    /// 1.68·10¹² N·m/rad stiff); at the pose itself it is ∞, or — where undefined.
+    void hugeValuesInPowersOfTen()
+    {
+        const QLocale c = QLocale::c();
+        QCOMPARE(formatQuantity(1680358456697.0, units::none, 1, c), QStringLiteral("1.680·10¹²"));
+        QCOMPARE(formatQuantity(-286313799.9, units::none, 1, c), QStringLiteral("-2.863·10⁸"));
+        QCOMPARE(formatQuantity(9.99999e9, units::none, 1, c), QStringLiteral("1.000·10¹⁰")); // rounds up a power
+        QCOMPARE(formatQuantity(1e8, units::millimetre, 2, c), QStringLiteral("1.000·10⁸ mm"));
+        QCOMPARE(formatQuantity(std::numeric_limits<double>::infinity(), units::none, 1, c), QStringLiteral("∞"));
+        QCOMPARE(formatQuantity(std::numeric_limits<double>::quiet_NaN(), units::none, 1, c), QStringLiteral("—"));
+        // the locale's decimal sign, as everywhere else
+        QCOMPARE(formatQuantity(1.5e9, units::none, 1, QLocale(QLocale::Russian)), QStringLiteral("1,500·10⁹"));
+    }
+};
+
+QTEST_MAIN(TestQuantityFormat)
+#include "tst_quantityformat.moc"
