@@ -1,5 +1,7 @@
 #include "gui/animationdialog.h"
 
+#include <malloc.h>
+
 #include "export/videowriter.h"
 #include "gui/backgroundtask.h"
 #include "quantityformat.h"
@@ -264,6 +266,10 @@ void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, 
                          : writeGif(*mechanism, pose, settings, path, cancel);
         },
         [path, done](const TaskFailure &failure, bool cancelled) {
+            // The frames were drawn and encoded in a worker thread's malloc arena; glibc keeps
+            // what they freed there for that thread, so the window's memory would stay at the
+            // export's peak. Hand it back to the system now that the export is over.
+            malloc_trim(0);
             if (cancelled)
                 done(AnimationDialog::tr("Animation export cancelled."), false);
             else if (failure)

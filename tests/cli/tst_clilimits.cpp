@@ -143,6 +143,9 @@ private slots:
         QTest::addColumn<QByteArray>("shown");
         QTest::newRow("pjoint theta") << args({"eval", "pjoint-prototype", "--set", "theta=60.000001"}) << QByteArray("60.000001");
         QTest::newRow("pp input") << args({"eval", "pp-3rpr", "--set", "q1=30.0000004"}) << QByteArray("30.0000004");
+        QTest::newRow("four-bar crank") << args({"eval", "fourbar-example", "--set", "alpha=360.0000001"}) << QByteArray("360.0000001°");
+        QTest::newRow("MOMA slider") << args({"eval", "moma-3a", "--set", "p1=200.000001", "--set", "p2=100"})
+                                     << QByteArray("200.000001 mm");
     }
     void outsideShowsWhy()
     {

@@ -40,6 +40,13 @@ inline std::string deg(double radians)
     return joinText({text::number(radians / units::degree, 3), "°"});
 }
 
+/// An angle said to be outside [lo, hi] (rad), with the digits that show why: 360.0001°
+/// beside a bound of 360°, not "360°".
+inline std::string degOutside(double radians, double lo, double hi)
+{
+    return joinText({text::numberOutside(radians / units::degree, lo / units::degree, hi / units::degree), "°"});
+}
+
 inline double scaleOf(const FourBarDesign &d)
 {
     return std::max({d.crank, d.coupler, d.rocker, d.ground});

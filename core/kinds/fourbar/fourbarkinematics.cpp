@@ -15,6 +15,7 @@ namespace pkm {
 namespace {
 using fourbar::cross;
 using fourbar::deg;
+using fourbar::degOutside;
 using fourbar::deltaOf;
 using fourbar::mm;
 using fourbar::nan;
@@ -37,13 +38,14 @@ Result<Pose> FourBar::solveDirect(const Coordinates &inputs, const Pose *) const
             return Failure{FailureKind::OutOfRange, "alpha",
                            text::format(text::translate("core", "alpha = %1 is outside [0°, 360°]: the crank turns fully, "
                                                                 "give its angle within one turn."),
-                                        {deg(alpha)})};
+                                        {degOutside(alpha, 0.0, 2.0 * pi)})};
         }
         const bool above = alpha > m_alphaRange.max;
         return Failure{FailureKind::OutOfRange, "alpha",
                        text::format(text::translate("core", "alpha = %1 is outside the range of the crank of this %2 "
                                                             "linkage, [%3, %4]: %5."),
-                                    {deg(alpha), text::label(fourbar::grashofName(grashof(d))), deg(m_alphaRange.min),
+                                    {degOutside(alpha, m_alphaRange.min, m_alphaRange.max),
+                                     text::label(fourbar::grashofName(grashof(d))), deg(m_alphaRange.min),
                                      deg(m_alphaRange.max), limitReason(above ? m_alphaRange.max : m_alphaRange.min)})};
     }
     const double a = m_alphaRange.clamp(alpha);
@@ -84,7 +86,8 @@ Result<Pose> FourBar::solveInverse(const Coordinates &outputs, const Pose *near)
                                                                   "the open branch, [%2, %3]: at its ends the crank and "
                                                                   "the coupler are in line, or the crank is at its own "
                                                                   "limit."),
-                                    {deg(delta), deg(m_deltaRange.min), deg(m_deltaRange.max)})};
+                                    {degOutside(delta, m_deltaRange.min, m_deltaRange.max), deg(m_deltaRange.min),
+                                     deg(m_deltaRange.max)})};
     }
     const double x = m_deltaRange.clamp(delta);
     const Eigen::Vector2d C = rockerJoint(d, x), D(d.ground, 0.0);

@@ -430,7 +430,8 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
             return Failure{FailureKind::OutOfRange, joinText({"p", legName(leg)}),
                            text::format(text::translate("core", "The platform cannot reach %1: slider %2 would have to "
                                                                 "be at p%3 = %4 mm, outside its stroke [%5, %6] mm."),
-                                        {where(), legName(leg), legName(leg), text::number(p[leg]),
+                                        {where(), legName(leg), legName(leg),
+                                         text::numberOutside(p[leg], d.strokeMin, d.strokeMax),
                                          text::number(d.strokeMin), text::number(d.strokeMax)})};
         }
         p[leg] = std::clamp(p[leg], d.strokeMin, d.strokeMax);
@@ -465,7 +466,8 @@ Result<Pose> Moma::solveDirect(const Coordinates &inputs, const Pose *) const
         if (p < m_design.strokeMin || p > m_design.strokeMax) {
             return Failure{FailureKind::OutOfRange, joinText({"p", legName(leg)}),
                            text::format(text::translate("core", "%1 = %2 mm is outside the stroke [%3, %4] mm."),
-                                        {joinText({"p", legName(leg)}), text::number(p), text::number(m_design.strokeMin),
+                                        {joinText({"p", legName(leg)}), text::numberOutside(p, m_design.strokeMin, m_design.strokeMax),
+                                         text::number(m_design.strokeMin),
                                          text::number(m_design.strokeMax)})};
         }
     }
