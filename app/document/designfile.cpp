@@ -464,7 +464,7 @@ QList<PresetInfo> presets()
             continue;
         const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
         list.append({root.value(QStringLiteral("id")).toString(), root.value(QStringLiteral("mechanism")).toString(),
-                     root.value(QStringLiteral("title")).toString()});
+                     root.value(QStringLiteral("title")).toString(), root.value(QStringLiteral("description")).toString()});
     }
     return list;
 }

@@ -40,6 +40,7 @@ struct PresetInfo {
     QString id;
     QString kind;
     QString title;
+    QString description; ///< in English, as the file gives it (presetText() translates it)
 };
 
 namespace designfile {

@@ -3,17 +3,45 @@
 #include "document/document.h"
 #include "document/language.h"
 #include "gui/mainwindow.h"
+#include "linkageview.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QScreen>
 #include <QTabWidget>
 #include <QTimer>
 
 #include <cstdio>
 
+namespace {
+QElapsedTimer started;
+
+/// Quits the application after the first paint of the object it watches (the linkage view:
+/// the window is up and drawn), saying how long it took.
+class FirstPaint : public QObject
+{
+public:
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (event->type() == QEvent::Paint && !m_seen) {
+            m_seen = true;
+            QTimer::singleShot(0, qApp, [] {
+                std::printf("first paint after %.1f ms from main()\n", started.nsecsElapsed() * 1e-6);
+                QApplication::quit();
+            });
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    bool m_seen = false;
+};
+} // namespace
+
 int main(int argc, char *argv[])
 {
+    started.start();
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("PKM Studio"));
     QApplication::setApplicationName(QStringLiteral("pkm-studio"));
@@ -44,6 +72,12 @@ int main(int argc, char *argv[])
                        "default: the one chosen in the Language menu, else the system's."),
         QStringLiteral("code"));
     parser.addOption(languageOption);
+    // For the start-up benchmark (bench/startup.cmake): quit once the window has been painted,
+    // printing how long that took from main().
+    QCommandLineOption quitAfterPaint(QStringLiteral("quit-after-first-paint"),
+                                      QStringLiteral("Quit as soon as the window is painted (benchmarks)."));
+    quitAfterPaint.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(quitAfterPaint);
     parser.process(app);
 
     // The language first, so that every widget is made in it. --lang is for this run only.
@@ -75,7 +109,10 @@ int main(int argc, char *argv[])
     }
     if (parser.isSet(presentation))
         window.setPresentationMode(true);
-    // After the window is up, so that the question has a parent to sit on.
-    QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
+    FirstPaint firstPaint;
+    if (parser.isSet(quitAfterPaint))
+        window.linkageView()->installEventFilter(&firstPaint);
+    else // after the window is up, so that the question has a parent to sit on
+        QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
     return app.exec();
 }

@@ -433,8 +433,9 @@ void MainWindow::fillPresetsMenu()
                                                    [this, id = preset.id] { openFromMenu(id); });
         action->setData(preset.id);
         action->setObjectName(QStringLiteral("preset_") + preset.id);
-        if (auto design = designfile::load(preset.id))
-            action->setToolTip(designfile::presetText(design->description));
+        // the description as the file gives it: loading every preset (solving its pose, a
+        // 3-DOF design's home search) cost a start and every change of language 100–200 ms
+        action->setToolTip(designfile::presetText(preset.description));
     }
 }
 

@@ -22,7 +22,7 @@ QList<PresetInfo> presetPerKind()
     QList<PresetInfo> chosen;
     for (const MechanismKind &kind : mechanismKinds()) {
         const QString id = QString::fromUtf8(kind.id.data(), qsizetype(kind.id.size()));
-        PresetInfo found {QString(), id, QString()};
+        PresetInfo found {QString(), id, QString(), QString()};
         for (const PresetInfo &preset : presets) {
             if (preset.kind == id) {
                 found = preset;
