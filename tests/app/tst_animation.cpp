@@ -32,6 +32,18 @@ double residentMegabytes()
     return fields.size() > 1 ? fields[1].toDouble() * 4096.0 / (1024.0 * 1024.0) : 0.0;
 }
 
+/// The four-bar's crank α through one turn in `frames` frames of `size`.
+AnimationSettings crankTurn(int frames, QSize size)
+{
+    AnimationSettings settings;
+    settings.variable = 0; // α
+    settings.from = 0.0;
+    settings.to = 6.283185307179586;
+    settings.frames = frames;
+    settings.size = size;
+    return settings;
+}
+
 struct Decoded {
     int frames = 0;
     QSize size;
@@ -228,12 +240,7 @@ private slots:
         const QString path = dir.filePath(QStringLiteral("sweep.gif"));
         MainWindow window;
         QVERIFY(window.openDesign(QStringLiteral("fourbar-example")));
-        AnimationSettings settings;
-        settings.variable = 0; // α
-        settings.from = 0.0;
-        settings.to = 6.283185307179586;
-        settings.frames = 24;
-        settings.size = QSize(320, 240);
+        AnimationSettings settings = crankTurn(24, QSize(320, 240));
         window.exportAnimationTo(path, settings);
         QVERIFY(!QFile::exists(path)); // drawn off the GUI thread: not there yet
         QTRY_VERIFY2_WITH_TIMEOUT(window.lastStatus().startsWith(QStringLiteral("Wrote")), qPrintable(window.lastStatus()),
@@ -253,11 +260,7 @@ private slots:
         QTemporaryDir dir;
         MainWindow window;
         QVERIFY(window.openDesign(QStringLiteral("fourbar-example")));
-        AnimationSettings settings;
-        settings.variable = 0; // α
-        settings.from = 0.0;
-        settings.to = 6.283185307179586;
-        settings.size = QSize(1000, 750);
+        AnimationSettings settings = crankTurn(20, QSize(1000, 750));
         const auto exportOnce = [&](int index, int frames) {
             settings.frames = frames;
             const QString path = dir.filePath(QStringLiteral("sweep%1.gif").arg(index));
