@@ -15,6 +15,7 @@ packages=(
     python3-ezdxf
     poppler-utils
     clang libclang-rt-14-dev
+    pybind11-dev python3-dev python3-pytest python3-matplotlib
 )
 
 missing=()

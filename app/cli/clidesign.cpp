@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <map>
+#include <utility>
 #include <optional>
 
 namespace pkm::cli {
@@ -67,7 +68,7 @@ Result<Pose> solvePoseSets(const Mechanism &mechanism, const Pose &current, cons
     return inContext(solved.failure(), context);
 }
 
-Result<PreparedDesign> prepareDesign(const std::string &origin, const std::vector<Setting> &sets)
+Result<PreparedDesign> loadDesign(const std::string &origin)
 {
     PreparedDesign prepared;
     prepared.origin = origin;
@@ -77,6 +78,22 @@ Result<PreparedDesign> prepareDesign(const std::string &origin, const std::vecto
     prepared.design = *loaded;
     prepared.mechanism = prepared.design.mechanism;
     prepared.pose = prepared.design.pose;
+    return prepared;
+}
+
+Result<PreparedDesign> prepareDesign(const std::string &origin, const std::vector<Setting> &sets)
+{
+    auto loaded = loadDesign(origin);
+    if (!loaded)
+        return loaded.failure();
+    return applySettings(std::move(*loaded), sets);
+}
+
+Result<PreparedDesign> applySettings(PreparedDesign prepared, const std::vector<Setting> &sets)
+{
+    const std::string &origin = prepared.origin;
+    prepared.poseSets.clear();
+    prepared.note.clear();
 
     // All parameter changes go to the design at once, so their order does not matter (k with a)
     // and contradictions (b with k) are refused; a parameter given twice takes the last value.

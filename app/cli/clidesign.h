@@ -28,6 +28,12 @@ struct PreparedDesign {
 /// fails). The failure names the --set argument of the culprit.
 Result<PreparedDesign> prepareDesign(const std::string &origin, const std::vector<Setting> &sets);
 
+/// `origin` (a preset id or a .pkm.json file) as it is stored.
+Result<PreparedDesign> loadDesign(const std::string &origin);
+/// `prepared` with `sets` applied as prepareDesign() applies them; the pose variables given
+/// before (poseSets) are replaced by those of `sets`.
+Result<PreparedDesign> applySettings(PreparedDesign prepared, const std::vector<Setting> &sets);
+
 /// Solves the pose variables given by --set on `mechanism`, starting from `current`; the
 /// failure names the --set argument of the culprit.
 Result<Pose> solvePoseSets(const Mechanism &mechanism, const Pose &current, const std::vector<Setting> &poseSets);

@@ -39,22 +39,35 @@ bool writeAll(std::FILE *out, std::string_view text)
 
 } // namespace
 
+std::optional<Failure> Sweep::setVariable(const std::string &var)
+{
+    const Mechanism &mechanism = *m_design->mechanism;
+    m_var = var;
+    m_variable = mechanism.variableIndex(m_var);
+    if (m_variable >= 0)
+        m_unit = mechanism.variableInfo()[static_cast<std::size_t>(m_variable)].unit;
+    else if ((m_parameter = mechanism.findParameter(m_var)))
+        m_unit = m_parameter->unit;
+    else
+        return unknownSetName(mechanism, "--var " + m_var, m_var, m_design->origin);
+    return std::nullopt;
+}
+
+std::string Sweep::stepContext(std::int64_t i) const
+{
+    return "sweep step " + std::to_string(i + 1) + " of " + std::to_string(m_steps) + " (" + m_var + " = "
+        + withUnit(valueAt(i), m_unit) + ")";
+}
+
 Result<Sweep> Sweep::solve(const PreparedDesign &design, const Invocation &invocation)
 {
-    const Mechanism &mechanism = *design.mechanism;
     Sweep sweep(design);
-    sweep.m_var = *invocation.var;
+    if (auto failure = sweep.setVariable(*invocation.var))
+        return *failure;
     sweep.m_from = *invocation.from;
     sweep.m_to = *invocation.to;
     sweep.m_steps = *invocation.steps;
     sweep.m_json = invocation.json;
-    sweep.m_variable = mechanism.variableIndex(sweep.m_var);
-    if (sweep.m_variable >= 0)
-        sweep.m_unit = mechanism.variableInfo()[static_cast<std::size_t>(sweep.m_variable)].unit;
-    else if ((sweep.m_parameter = mechanism.findParameter(sweep.m_var)))
-        sweep.m_unit = sweep.m_parameter->unit;
-    else
-        return unknownSetName(mechanism, "--var " + sweep.m_var, sweep.m_var, design.origin);
 
     // Solve every step before printing anything, so a failure leaves stdout empty. Only
     // whether each step solves is kept: write() solves them again, in the same order from the
@@ -62,18 +75,44 @@ Result<Sweep> Sweep::solve(const PreparedDesign &design, const Invocation &invoc
     Pose near = design.pose;
     Step step;
     for (std::int64_t i = 0; i < sweep.m_steps; ++i) {
-        if (const auto failure = sweep.solveStep(i, near, step)) {
-            const std::string context = "sweep step " + std::to_string(i + 1) + " of " + std::to_string(sweep.m_steps)
-                + " (" + sweep.m_var + " = " + withUnit(sweep.valueAt(i), sweep.m_unit) + ")";
-            return inContext(*failure, context);
-        }
+        if (const auto failure = sweep.solveStep(i, near, step))
+            return inContext(*failure, sweep.stepContext(i));
         near = step.pose;
     }
     return sweep;
 }
 
+Result<SweepTable> Sweep::table(const PreparedDesign &design, const std::string &var, std::vector<double> values)
+{
+    Sweep sweep(design);
+    if (auto failure = sweep.setVariable(var))
+        return *failure;
+    sweep.m_values = std::move(values);
+    sweep.m_steps = static_cast<std::int64_t>(sweep.m_values.size());
+
+    const SweepRowFormatter formatter(*design.mechanism, sweep.m_parameter != nullptr);
+    SweepTable table;
+    table.columns = formatter.columnNames();
+    table.singularityColumn = formatter.singularityColumn();
+    table.steps = sweep.m_values.size();
+    table.values.resize(table.columns.size() * table.steps);
+    // One pass: the table is the output, so nothing is saved by solving the steps twice.
+    std::vector<double> buffer(formatter.valueCount());
+    Pose near = design.pose;
+    Step step;
+    for (std::int64_t i = 0; i < sweep.m_steps; ++i) {
+        if (const auto failure = sweep.solveStep(i, near, step))
+            return inContext(*failure, sweep.stepContext(i));
+        formatter.numberRow(table.values.data() + i, table.steps, *step.mechanism, step.pose, buffer);
+        near = step.pose;
+    }
+    return table;
+}
+
 double Sweep::valueAt(std::int64_t i) const
 {
+    if (!m_values.empty())
+        return m_values[static_cast<std::size_t>(i)];
     if (i == 0 || m_steps == 1)
         return m_from;
     if (i == m_steps - 1)

@@ -10,8 +10,19 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pkm::cli {
+
+/// A sweep's numbers as a table (the Python module's sweeps): the CSV's columns, each a run of
+/// `steps` numbers in display units, NaN where the CSV field is empty; the "singularity"
+/// column holds SingularityType values.
+struct SweepTable {
+    std::vector<std::string> columns;
+    std::size_t singularityColumn = 0;
+    std::size_t steps = 0;
+    std::vector<double> values; ///< column c, step i at [c·steps + i]
+};
 
 /// A sweep whose every step has been solved: writing it cannot fail for want of a solution.
 class Sweep
@@ -20,6 +31,11 @@ public:
     /// Solves every step of the sweep `invocation` asks for on `design`, which must outlive
     /// the Sweep. The failure names the first step without a solution, or an unknown --var.
     static Result<Sweep> solve(const PreparedDesign &design, const Invocation &invocation);
+
+    /// The sweep of `var` over the display values `values`, in their order, each step solved
+    /// from the previous one as in `pkm sweep`; the failure names the first step without a
+    /// solution (as `pkm sweep` does) or an unknown `var`.
+    static Result<SweepTable> table(const PreparedDesign &design, const std::string &var, std::vector<double> values);
 
     enum class Outcome {
         Written,
@@ -43,7 +59,11 @@ private:
     {
     }
 
-    /// Display value of step i: evenly from m_from to m_to, both exactly.
+    /// Checks `var` and takes its unit; the failure names an unknown one.
+    std::optional<Failure> setVariable(const std::string &var);
+    /// "sweep step 3 of 10 (theta = 75°)": the context of a failure at step i.
+    std::string stepContext(std::int64_t i) const;
+    /// Display value of step i: m_values[i] if given, else evenly from m_from to m_to, both exactly.
     double valueAt(std::int64_t i) const;
     /// Solves step i from the pose `near` (the previous step's). Never allocates in a
     /// pose-variable sweep unless it fails.
@@ -58,6 +78,7 @@ private:
     Unit m_unit;
     double m_from = 0.0;
     double m_to = 0.0;
+    std::vector<double> m_values; ///< the steps' values when given one by one
     std::int64_t m_steps = 1;
     bool m_json = false;
 };

@@ -87,47 +87,26 @@ std::string modeSuffix(const Mechanism &mechanism)
     return modes.empty() ? std::string() : " (" + modes + ")";
 }
 
-std::optional<Failure> emptyWorkspace(const Context &context, const MapSummary &summary)
+std::optional<Failure> emptyWorkspace(const PreparedDesign &prepared, const MapSummary &summary)
 {
     if (summary.reachableCells > 0)
         return std::nullopt;
     const MapGrid &grid = summary.grid;
-    return Failure {FailureKind::Unreachable, context.prepared.origin,
-        "The workspace of " + context.prepared.origin + modeSuffix(*context.prepared.mechanism)
+    return Failure {FailureKind::Unreachable, prepared.origin,
+        "The workspace of " + prepared.origin + modeSuffix(*prepared.mechanism)
             + " has no reachable cell on the " + std::to_string(grid.columns) + " × " + std::to_string(grid.rows)
             + " grid over " + intervalText(grid.bounds.min().x(), grid.bounds.max().x()) + " × "
             + intervalText(grid.bounds.min().y(), grid.bounds.max().y())
             + " mm: it is empty or thinner than a cell (try a larger --grid)."};
 }
 
-int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
+int runWorkspace(const Context &context)
 {
     const Mechanism &mechanism = *context.prepared.mechanism;
-    const auto start = Clock::now();
-    ComputedMap map;
-    map.summary = computeInto(workspace, MapQuantity::Determinant, context.resolution, map.values, nullptr);
-    map.grid = map.summary.grid;
-    if (auto empty = emptyWorkspace(context, map.summary))
-        return failWith(context.err, *empty);
-    const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
-    const std::vector<const ParameterInfo *> modes = modeParameters(mechanism);
-    std::vector<float> buffer;
-    const std::vector<ModeArea> areas = modeAreas(mechanism, modes, map.summary, context.resolution, buffer);
-    const ModeRegions united = modes.empty() ? ModeRegions {} : modeRegions(mechanism, modes, context.resolution);
-    const auto named = namedModeAreas(modes, areas);
-    // --require: where in the workspace the actuators deliver what is asked
-    const auto requirements = requirementsOf(context.prepared, context.invocation);
-    if (!requirements)
-        return failWith(context.err, requirements.failure());
-    ComputedMap region;
-    capability::SpecificationSummary specification;
-    if (!requirements->empty()) {
-        region.summary = computeCapabilityInto(mechanism, context.prepared.pose, MapQuantity::Specification,
-                                               *requirements, context.resolution, region.values, region.margins,
-                                               &specification);
-        region.grid = region.summary.grid;
-    }
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const auto computed = computeCommandWorkspace(context.prepared, context.invocation);
+    if (!computed)
+        return failWith(context.err, computed.failure());
+    const auto &[map, box, modes, areas, united, named, requirements, region, specification, seconds] = *computed;
 
     const std::string suffix = modeSuffix(mechanism);
     if (const auto &path = context.invocation.output) {
@@ -164,78 +143,7 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
 
     std::string out;
     if (context.invocation.json) {
-        JsonWriter json(out, JsonWriter::Style::Pretty);
-        json.beginObject();
-        json.key("design").string(context.prepared.origin);
-        json.key("mechanism").string(mechanism.kind());
-        writeParametersJson(json, mechanism, true);
-        // Where an area is known in closed form (the O-X glide's), that is the area, and the
-        // grid's count is given beside it as "…_grid", an estimate of it.
-        const PlanarWorkspace *planar = mechanism.planarWorkspace();
-        const std::vector<ExactArea> exact = planar ? planar->exactAreas() : std::vector<ExactArea> {};
-        const auto exactArea = [&](const std::string &key) -> std::optional<double> {
-            for (const ExactArea &known : exact)
-                if (known.key == key)
-                    return known.area;
-            return std::nullopt;
-        };
-        const auto writeArea = [&](const std::string &key, double gridArea) {
-            const auto known = exactArea(key);
-            json.key(key).number(known ? *known : gridArea);
-            if (known)
-                json.key(key + "_grid").number(gridArea);
-        };
-        writeArea("area", map.summary.area);
-        json.key("bounds");
-        json.beginObject(true);
-        writeBoxJson(json, box);
-        json.endObject();
-        writeGridJson(json, map.grid, context.resolution);
-        json.key("reachable_cells").integer(static_cast<std::int64_t>(map.summary.reachableCells));
-        for (const auto &[name, area] : named)
-            writeArea("area_" + name, area);
-        if (!modes.empty())
-            json.key("area_union").number(united.unionArea);
-        json.key("exact_areas");
-        if (exact.empty()) {
-            json.null();
-        } else {
-            json.beginObject(true);
-            for (const ExactArea &known : exact)
-                json.key(known.key).number(known.area);
-            json.endObject();
-        }
-        // a mechanism carried by an axis (the O-X glide on z): its 3D workspace is the planar
-        // one extruded over that axis' travel
-        if (const auto travel = carriedTravel(mechanism)) {
-            json.key("travel").number(*travel);
-            json.key("volume").number(exactArea("area").value_or(map.summary.area) * *travel);
-            if (!modes.empty())
-                json.key("volume_union").number(united.unionArea * *travel);
-        }
-        json.key("modes");
-        json.beginArray();
-        for (const ModeArea &mode : areas) {
-            json.beginObject(true);
-            for (std::size_t i = 0; i < modes.size(); ++i) {
-                if (modes[i]->choices.empty())
-                    json.key(modes[i]->name).number(mode.values[i]);
-                else
-                    json.key(modes[i]->name).string(modeValueText(*modes[i], mode.values[i]));
-            }
-            json.key("area").number(mode.area);
-            json.key("reachable_cells").integer(static_cast<std::int64_t>(mode.reachableCells));
-            json.key("current").boolean(mode.current);
-            if (!mode.note.empty())
-                json.key("note").string(mode.note);
-            json.endObject();
-        }
-        json.endArray();
-        if (!requirements->empty())
-            writeSpecificationJson(json, mechanism, *requirements, specification, region.summary);
-        json.key("seconds").number(seconds);
-        json.endObject();
-        out += '\n';
+        out = workspaceJson(context.prepared, *computed, context.resolution);
     } else {
         out = designHeading(context.prepared);
         TextTable table({false, true, false});
@@ -280,10 +188,10 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
             modeTable.render(out);
             out.append("Union of the modes: ").append(fixedText(united.unionArea, 1)).append(" mm²\n");
         }
-        if (!requirements->empty()) {
+        if (!requirements.empty()) {
             TextTable spec({false, true, false});
             spec.heading("\nSpecification (what the actuators deliver, on the same grid)");
-            addSpecificationRows(spec, mechanism, *requirements, specification, region.summary);
+            addSpecificationRows(spec, mechanism, requirements, specification, region.summary);
             spec.render(out);
         }
         if (const auto &path = context.invocation.output)
@@ -292,37 +200,16 @@ int runWorkspace(const Context &context, const PlanarWorkspace &workspace)
     return printOutput(context.out, context.err, out);
 }
 
-int runMap(const Context &context, const PlanarWorkspace &workspace)
+int runMap(const Context &context)
 {
     const Mechanism &mechanism = *context.prepared.mechanism;
-    // --require alone maps where the requirements hold
-    const bool required = !context.invocation.requirements.empty();
-    // checked by the argument parser: a key of quantityOf()
-    const MapQuantity quantity
-        = quantityOf(context.invocation.quantity.value_or(required ? "spec" : "det")).value_or(MapQuantity::Determinant);
-    if (auto failure = capabilityMapFailure(context.prepared, context.invocation, workspace, quantity))
-        return failWith(context.err, *failure);
-    const auto requirements = requirementsOf(context.prepared, context.invocation);
-    if (!requirements)
-        return failWith(context.err, requirements.failure());
-    ComputedMap map;
-    capability::SpecificationSummary specification;
-    if (isCapability(quantity)) {
-        map.summary = computeCapabilityInto(mechanism, context.prepared.pose, quantity, *requirements,
-                                            context.resolution, map.values, map.margins, &specification);
-    } else {
-        map.summary = computeInto(workspace, quantity, context.resolution, map.values, &map.margins);
-    }
-    map.grid = map.summary.grid;
-    if (quantity == MapQuantity::OrientationRange) {
-        // the core maps radians; the command line gives angles in degrees, as everywhere
-        for (float &value : map.values)
-            value = static_cast<float>(value / units::degree);
-        map.summary.min /= units::degree;
-        map.summary.max /= units::degree;
-    }
-    if (auto empty = emptyWorkspace(context, map.summary))
-        return failWith(context.err, *empty);
+    auto computed = computeCommandMap(context.prepared, context.invocation);
+    if (!computed)
+        return failWith(context.err, computed.failure());
+    const MapQuantity quantity = computed->quantity;
+    const ComputedMap &map = computed->map;
+    const std::vector<capability::Requirement> &requirements = computed->requirements;
+    const capability::SpecificationSummary &specification = computed->specification;
     const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
 
     const auto &path = context.invocation.output;
@@ -368,7 +255,7 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
         json.key("near_singular_cells").integer(static_cast<std::int64_t>(map.summary.nearSingularCells));
         json.key("near_singular_margin").number(nearSingularMargin);
         if (quantity == MapQuantity::Specification)
-            writeSpecificationJson(json, mechanism, *requirements, specification, map.summary);
+            writeSpecificationJson(json, mechanism, requirements, specification, map.summary);
         if (png) {
             json.key("colour_scale");
             json.beginObject(true);
@@ -391,7 +278,7 @@ int runMap(const Context &context, const PlanarWorkspace &workspace)
         table.cells({"near-singular cells", std::to_string(map.summary.nearSingularCells),
             "margin < " + numberText(nearSingularMargin)});
         if (quantity == MapQuantity::Specification)
-            addSpecificationRows(table, mechanism, *requirements, specification, map.summary);
+            addSpecificationRows(table, mechanism, requirements, specification, map.summary);
         if (png) {
             std::string scale("[");
             scale += shortNumber(colourMin) + ", " + shortNumber(limit) + "]";
@@ -425,21 +312,100 @@ bool writesPicture(const Invocation &invocation)
     return invocation.command == Command::Map && extension == "png";
 }
 
-int runWorkspaceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
+Result<const PlanarWorkspace *> planarWorkspaceOf(const PreparedDesign &prepared, Command command)
 {
     const Mechanism &mechanism = *prepared.mechanism;
-    const std::string command(commandName(*invocation.command));
-    const PlanarWorkspace *workspace = mechanism.planarWorkspace();
-    if (!workspace) {
-        const std::string kinds = planarKinds();
-        return failWith(err,
-            usageFailure(prepared.origin,
-                "The " + inSentence(kindTitle(mechanism.kind())) + " has no planar workspace: 'pkm " + command + " "
-                    + prepared.origin + "' needs a mechanism whose output is a point of the plane"
-                    + (kinds.empty() ? std::string() : " (" + kinds + ")") + "."));
+    if (const PlanarWorkspace *workspace = mechanism.planarWorkspace())
+        return workspace;
+    const std::string kinds = planarKinds();
+    return usageFailure(prepared.origin,
+        "The " + inSentence(kindTitle(mechanism.kind())) + " has no planar workspace: 'pkm " + std::string(commandName(command))
+            + " " + prepared.origin + "' needs a mechanism whose output is a point of the plane"
+            + (kinds.empty() ? std::string() : " (" + kinds + ")") + ".");
+}
+
+Result<CommandWorkspace> computeCommandWorkspace(const PreparedDesign &prepared, const Invocation &invocation)
+{
+    const auto workspace = planarWorkspaceOf(prepared, Command::Workspace);
+    if (!workspace)
+        return workspace.failure();
+    const Mechanism &mechanism = *prepared.mechanism;
+    const int resolution = invocation.grid.value_or(defaultGrid);
+    CommandWorkspace computed;
+    auto &[map, box, modes, areas, united, named, requirements, region, specification, seconds] = computed;
+    const auto start = Clock::now();
+    map.summary = computeInto(**workspace, MapQuantity::Determinant, resolution, map.values, nullptr);
+    map.grid = map.summary.grid;
+    if (auto empty = emptyWorkspace(prepared, map.summary))
+        return *empty;
+    box = reachableBounds(map.grid, map.values);
+    modes = modeParameters(mechanism);
+    std::vector<float> buffer;
+    areas = modeAreas(mechanism, modes, map.summary, resolution, buffer);
+    if (!modes.empty())
+        united = modeRegions(mechanism, modes, resolution);
+    named = namedModeAreas(modes, areas);
+    // --require: where in the workspace the actuators deliver what is asked
+    auto required = requirementsOf(prepared, invocation);
+    if (!required)
+        return required.failure();
+    requirements = std::move(*required);
+    if (!requirements.empty()) {
+        region.summary = computeCapabilityInto(mechanism, prepared.pose, MapQuantity::Specification, requirements,
+                                               resolution, region.values, region.margins, &specification);
+        region.grid = region.summary.grid;
     }
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+    return computed;
+}
+
+Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invocation &invocation)
+{
+    const auto workspace = planarWorkspaceOf(prepared, Command::Map);
+    if (!workspace)
+        return workspace.failure();
+    const Mechanism &mechanism = *prepared.mechanism;
+    // --require alone maps where the requirements hold
+    const bool required = !invocation.requirements.empty();
+    CommandMap computed;
+    // checked by the argument parser: a key of quantityOf()
+    computed.quantity = quantityOf(invocation.quantity.value_or(required ? "spec" : "det")).value_or(MapQuantity::Determinant);
+    const MapQuantity quantity = computed.quantity;
+    if (auto failure = capabilityMapFailure(prepared, invocation, **workspace, quantity))
+        return *failure;
+    auto requirements = requirementsOf(prepared, invocation);
+    if (!requirements)
+        return requirements.failure();
+    computed.requirements = std::move(*requirements);
+    ComputedMap &map = computed.map;
+    const int resolution = invocation.grid.value_or(defaultGrid);
+    if (isCapability(quantity)) {
+        map.summary = computeCapabilityInto(mechanism, prepared.pose, quantity, computed.requirements, resolution,
+                                            map.values, map.margins, &computed.specification);
+    } else {
+        map.summary = computeInto(**workspace, quantity, resolution, map.values, &map.margins);
+    }
+    map.grid = map.summary.grid;
+    if (quantity == MapQuantity::OrientationRange) {
+        // the core maps radians; the command line gives angles in degrees, as everywhere
+        for (float &value : map.values)
+            value = static_cast<float>(value / units::degree);
+        map.summary.min /= units::degree;
+        map.summary.max /= units::degree;
+    }
+    if (auto empty = emptyWorkspace(prepared, map.summary))
+        return *empty;
+    return computed;
+}
+
+int runWorkspaceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
+{
+    const auto workspace = planarWorkspaceOf(prepared, *invocation.command);
+    if (!workspace)
+        return failWith(err, workspace.failure());
     Context context {prepared, invocation, out, err, invocation.grid.value_or(defaultGrid)};
-    return invocation.command == Command::Map ? runMap(context, *workspace) : runWorkspace(context, *workspace);
+    return invocation.command == Command::Map ? runMap(context) : runWorkspace(context);
 }
 
 } // namespace pkm::cli

@@ -13,7 +13,9 @@
 /// failure leaves neither a file nor half an output.
 
 #include "cli/cliarguments.h"
+#include "capabilitymap.h"
 #include "cli/clidesign.h"
+#include "cli/cliworkspaceparts.h"
 #include "planarworkspace.h"
 #include "report/workspaceanalysis.h"
 
@@ -29,6 +31,43 @@ namespace pkm::cli {
 /// Runs `pkm workspace` or `pkm map` (invocation.command) on `prepared`: the exit status, with
 /// one sentence on `err` on failure and nothing on `out` unless the command succeeds.
 int runWorkspaceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err);
+
+/// The design's planar workspace, or the failure that says the command (workspace, map)
+/// needs one and which kinds have one.
+Result<const PlanarWorkspace *> planarWorkspaceOf(const PreparedDesign &prepared, Command command);
+
+/// A map as `pkm map` computes it from --quantity, --grid and --require (or the design's
+/// requirements), in display units (the orientation range in degrees). The failure says why
+/// the design cannot be mapped so, or that no cell of the grid is reachable. The command and
+/// the Python module both map through it, so their maps are the same numbers.
+struct CommandMap {
+    MapQuantity quantity = MapQuantity::Determinant;
+    ComputedMap map;
+    std::vector<capability::Requirement> requirements;
+    capability::SpecificationSummary specification;
+};
+Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invocation &invocation);
+
+/// The workspace as `pkm workspace` computes it from --grid and --require (or the design's
+/// requirements): the det J map of the design's modes (its reachable cells are the finite
+/// ones), the box of those cells, the area of every mode combination and their union, and
+/// the specification region. The failure says the design has no planar workspace or that no
+/// cell of the grid is reachable.
+struct CommandWorkspace {
+    ComputedMap map;
+    Eigen::AlignedBox2d box;
+    std::vector<const ParameterInfo *> modes; ///< the ±1 mode parameters
+    std::vector<report::ModeArea> areas;      ///< per combination of them
+    report::ModeRegions united;               ///< their regions on one grid
+    std::vector<std::pair<std::string, double>> named; ///< ("O", area), ("X", area)
+    std::vector<capability::Requirement> requirements;
+    ComputedMap region; ///< where every requirement holds (when there are requirements)
+    capability::SpecificationSummary specification;
+    double seconds = 0.0;
+};
+Result<CommandWorkspace> computeCommandWorkspace(const PreparedDesign &prepared, const Invocation &invocation);
+/// What `pkm workspace --json` prints for it on a grid of `resolution` (cliworkspacejson.cpp).
+std::string workspaceJson(const PreparedDesign &prepared, const CommandWorkspace &computed, int resolution);
 
 /// Writers of the PNG pictures of `pkm workspace -o` and `pkm map -o`. They need QtGui, which
 /// `pkm` does not load: the drawing half of the command line (pkm-draw, clidrawing.h) sets them

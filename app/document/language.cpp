@@ -102,8 +102,13 @@ bool apply(const QString &code)
     if (!language || !QCoreApplication::instance())
         return false;
     // English has a catalogue too: the plural forms ("1 loop", "2 loops").
+    // An installed catalogue (share/pkm-studio/translations beside the program's bin folder,
+    // where `cmake --install` puts them) comes before the built-in one, so that a translator
+    // can try a new .qm file without building the program again.
     auto own = std::make_unique<QTranslator>();
-    if (!own->load(QStringLiteral(":/i18n/pkm_studio_") + code))
+    const QString file = QStringLiteral("pkm_studio_") + code;
+    const QString shared = QCoreApplication::applicationDirPath() + QStringLiteral("/../share/pkm-studio/translations");
+    if (!own->load(file, shared) && !own->load(QStringLiteral(":/i18n/") + file))
         return false;
     // Qt's own words (standard buttons, file dialogs) where Debian ships them (Russian).
     auto qt = std::make_unique<QTranslator>();

@@ -47,7 +47,7 @@ int main(int argc, char *argv[])
     QApplication::setApplicationName(QStringLiteral("pkm-studio"));
     QApplication::setApplicationDisplayName(QStringLiteral("PKM Studio"));
     QApplication::setApplicationVersion(QStringLiteral(PKM_VERSION));
-    QApplication::setDesktopFileName(QStringLiteral("pkm-studio"));
+    QApplication::setDesktopFileName(QStringLiteral("org.pkmstudio.PKMStudio"));
     // A classroom projects this: a size larger than the desktop default reads from the back row.
     QFont font = QApplication::font();
     if (font.pointSizeF() < 10.5)

@@ -120,6 +120,51 @@ char *SweepRowFormatter::csvRow(char *out, const Mechanism &mechanism, const Pos
     return out;
 }
 
+std::vector<std::string> SweepRowFormatter::columnNames() const
+{
+    std::vector<std::string> names;
+    names.reserve(m_parameters.size() + m_columns.size());
+    for (const ParameterInfo *info : m_parameters)
+        names.push_back(info->name);
+    for (const Column &column : m_columns)
+        names.push_back(column.name);
+    return names;
+}
+
+std::size_t SweepRowFormatter::singularityColumn() const
+{
+    const auto found = std::find_if(
+        m_columns.begin(), m_columns.end(), [](const Column &column) { return column.kind == Column::SingularityType; });
+    return m_parameters.size() + static_cast<std::size_t>(found - m_columns.begin());
+}
+
+void SweepRowFormatter::numberRow(
+    double *row, std::size_t stride, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
+{
+    const Singularity singularity = mechanism.evaluate(pose, values);
+    evaluateCapability(mechanism, pose, singularity.type, values);
+    const double nan = std::nan("");
+    if (!m_parameters.empty()) {
+        const ParameterSet parameters = mechanism.parameters();
+        for (const ParameterInfo *info : m_parameters) {
+            const auto it = parameters.find(info->name);
+            *row = it != parameters.end() ? info->unit.toDisplay(it->second) : nan;
+            row += stride;
+        }
+    }
+    for (const Column &column : m_columns) {
+        double number = nan;
+        if (column.kind == Column::Value)
+            number = column.unit.toDisplay(values[static_cast<std::size_t>(column.offset)]);
+        else if (column.kind == Column::SingularityType)
+            number = static_cast<double>(static_cast<int>(singularity.type));
+        else
+            number = singularity.margin;
+        *row = std::isfinite(number) ? number : nan;
+        row += stride;
+    }
+}
+
 void SweepRowFormatter::jsonRow(
     std::string &out, std::int64_t index, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
 {

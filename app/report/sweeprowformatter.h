@@ -38,6 +38,18 @@ public:
     /// parameter sweep, the row's actuators.
     char *csvRow(char *out, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const;
 
+    /// The names of the columns, as csvHeader() gives them.
+    std::vector<std::string> columnNames() const;
+    /// Index into columnNames() of "singularity", whose numbers numberRow() gives as
+    /// SingularityType values (singularityName() names them).
+    std::size_t singularityColumn() const;
+
+    /// Evaluates `pose` into `values` and writes the number of column c to row[c·stride], the
+    /// value csvRow() prints (display units), NaN where csvRow() leaves the field empty. For
+    /// the Python module's sweeps: the same columns and numbers as the CSV, unformatted.
+    void numberRow(double *row, std::size_t stride, const Mechanism &mechanism, const Pose &pose,
+        std::span<double> values) const;
+
     /// Evaluates `pose` into `values` and appends its JSON row, the row number `index` of the
     /// sweep (rows after the first are preceded by ",\n").
     void jsonRow(std::string &out, std::int64_t index, const Mechanism &mechanism, const Pose &pose,
