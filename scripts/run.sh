@@ -10,7 +10,7 @@ export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
 
 scripts/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build build --target pkm-studio pkm
+cmake --build build --target pkm-studio pkm pkm_python
 if [[ $# -eq 0 ]]; then
     set -- pjoint-prototype
 fi
