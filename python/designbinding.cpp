@@ -107,6 +107,14 @@ py::list variableList(const Mechanism &mechanism)
     return list;
 }
 
+/// The design at the pose the keyword arguments give, as --set solves pose variables.
+DesignPy designAt(const DesignPy &design, const py::kwargs &pose)
+{
+    const auto settings = settingsOf(pose);
+    checkSettings(*design.prepared.mechanism, settings, false);
+    return DesignPy {take(cli::applySettings(design.prepared, settings))};
+}
+
 DesignPy withPose(const DesignPy &design, MechanismPtr mechanism, const Pose &pose)
 {
     DesignPy changed = design;
@@ -187,18 +195,12 @@ void bindDesign(py::module_ &module)
             "their order does not matter. The pose keeps its outputs where the new design reaches them. "
             "A bad value raises ValueError with the command line's message.")
         .def("at",
-            [](const DesignPy &self, const py::kwargs &pose) {
-                const auto settings = settingsOf(pose);
-                checkSettings(*self.prepared.mechanism, settings, false);
-                return DesignPy {take(cli::applySettings(self.prepared, settings))};
-            },
+            &designAt,
             "The same design at another pose: give the outputs (inverse kinematics) or the actuated "
             "inputs (direct kinematics), as `pkm --set` does. Raises NoSolution where there is none.")
         .def("solve",
             [](const DesignPy &self, const py::kwargs &pose) {
-                const auto settings = settingsOf(pose);
-                checkSettings(*self.prepared.mechanism, settings, false);
-                DesignPy solved {take(cli::applySettings(self.prepared, settings))};
+                const DesignPy solved = designAt(self, pose);
                 return PosePy {solved.prepared.mechanism, solved.prepared.pose};
             },
             "The pose with the given outputs (inverse kinematics) or inputs (direct kinematics), in the "

@@ -66,7 +66,7 @@ struct CommandWorkspace {
     double seconds = 0.0;
 };
 Result<CommandWorkspace> computeCommandWorkspace(const PreparedDesign &prepared, const Invocation &invocation);
-/// What `pkm workspace --json` prints for it on a grid of `resolution` (cliworkspacejson.cpp).
+/// What `pkm workspace --json` prints for it on a grid of `resolution` (cliworkspaceparts.cpp).
 std::string workspaceJson(const PreparedDesign &prepared, const CommandWorkspace &computed, int resolution);
 
 /// Writers of the PNG pictures of `pkm workspace -o` and `pkm map -o`. They need QtGui, which
