@@ -5,6 +5,7 @@
 #include "report/numberformat.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <optional>
 #include <cstring>
@@ -56,6 +57,7 @@ SweepRowFormatter::SweepRowFormatter(const Mechanism &mechanism, bool withParame
     for (ReportGroup group : groupsAfterSingularity)
         addEntries(group);
     addEntries(std::nullopt);
+    m_lastText.resize(m_columns.size());
 }
 
 void SweepRowFormatter::evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type,
@@ -102,11 +104,27 @@ char *SweepRowFormatter::csvRow(char *out, const Mechanism &mechanism, const Pos
             *out++ = ',';
         }
     }
-    for (const Column &column : m_columns) {
+    const LastText *before = nullptr; // the previous value column's, in this row
+    for (std::size_t c = 0; c < m_columns.size(); ++c) {
+        const Column &column = m_columns[c];
         if (column.kind == Column::Value) {
             const double value = column.unit.toDisplay(values[static_cast<std::size_t>(column.offset)]);
-            if (std::isfinite(value))
-                out = writeNumber(out, value); // else an empty field
+            if (std::isfinite(value)) { // else an empty field
+                LastText &last = m_lastText[c];
+                const auto bits = std::bit_cast<std::uint64_t>(value);
+                if (bits != last.bits) {
+                    // the column before often has the same value (force_worst and force_best of
+                    // a one-output mechanism)
+                    if (before && before->bits == bits)
+                        last = *before;
+                    else
+                        last.length = static_cast<unsigned char>(writeNumber(last.text, value) - last.text);
+                    last.bits = bits;
+                }
+                before = &last;
+                std::memcpy(out, last.text, maxNumberLength); // whole, as writeNumber writes words
+                out += last.length;
+            }
         } else if (column.kind == Column::SingularityType) {
             const std::string_view name = singularityName(singularity.type);
             std::memcpy(out, name.data(), name.size());

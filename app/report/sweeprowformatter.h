@@ -5,6 +5,7 @@
 
 #include "capability.h"
 #include "mechanism.h"
+#include "report/numberformat.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -74,6 +75,15 @@ private:
     bool m_withParameters = false;
     std::vector<const ParameterInfo *> m_parameters;
     std::vector<Column> m_columns;
+    /// The text csvRow() last wrote for each value column, and the value it was: a column that
+    /// stays the same from row to row (a stroke, a constant stiffness) is copied, not formatted
+    /// again. Formatting is most of a CSV sweep's time.
+    struct LastText {
+        std::uint64_t bits = ~std::uint64_t {0}; ///< a NaN pattern no value column gives
+        unsigned char length = 0;
+        char text[maxNumberLength];
+    };
+    mutable std::vector<LastText> m_lastText;
 };
 
 } // namespace pkm::report

@@ -2374,6 +2374,14 @@ void TestCli::fastNumbersMatchToChars()
         check(i * degree / degree);
         check(i / 7.0);
     }
+    // near a tie of the 15th digit, where the fast path needs the product's exact error
+    std::uniform_int_distribution<std::uint64_t> fifteenDigits(100000000000000, 999999999999999);
+    std::uniform_int_distribution<int> shift(-18, 14);
+    for (int i = 0; i < 1000000; ++i) {
+        const double tie = (static_cast<double>(fifteenDigits(random)) + 0.5) * std::pow(10.0, shift(random));
+        for (double value : {tie, std::nextafter(tie, 0.0), std::nextafter(tie, 1e300)})
+            check(value);
+    }
     for (int power = -6; power <= 16; ++power) {
         const double p = std::pow(10.0, power);
         for (double value : {p, std::nextafter(p, 0.0), std::nextafter(p, 1e300), p * 0.99999999999999995,

@@ -16,7 +16,7 @@ namespace {
 using solids::at;
 using solids::bar;
 using solids::pin;
-const Eigen::Vector3d &ux = solids::unitX, &uy = solids::unitY, &uz = solids::unitZ;
+const Eigen::Vector3d &uy = solids::unitY, &uz = solids::unitZ;
 } // namespace
 
 Scene3D PJoint::scene3d(const Pose &pose) const
