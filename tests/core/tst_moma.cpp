@@ -1280,6 +1280,28 @@ private slots:
         QVERIFY((*rebuilt)->parameters() == values);
     }
 
+    void guideTurnsShowAsTyped()
+    {
+        // γᵢ = αᵢ − 270° is derived: computed in radians, αᵢ − 3π/2 cancelled two digits and
+        // γ₁ of α₁ = 265° read −4.99999999999999° in every report. In degrees it keeps them.
+        const Unit angle = units::angle;
+        const std::pair<double, double> alphaGamma[] = {{265, -5}, {262.5, -7.5}, {266.25, -3.75}, {264.9, -5.1},
+                                                        {267.7, -2.3}, {265.123456789, -4.876543211}};
+        for (const auto &[alphaDeg, expected] : alphaGamma) {
+            auto m = make(ParameterSet {})->withParameter("alpha1", angle.fromDisplay(alphaDeg));
+            QVERIFY(m.ok());
+            const double gammaDeg = angle.toDisplay((*m)->parameters().at("gamma1"));
+            // as reports print it (15 significant digits), not QCOMPARE's fuzzy equality
+            QCOMPARE(QByteArray::number(gammaDeg, 'g', 15), QByteArray::number(expected, 'g', 15));
+        }
+        for (double gammaDeg : {-5.0, -7.5, -2.25, -4.1, -6.3}) {
+            auto byGamma = make(ParameterSet {})->withParameter("gamma1", angle.fromDisplay(gammaDeg));
+            QVERIFY(byGamma.ok());
+            const double shown = angle.toDisplay((*byGamma)->parameters().at("gamma1"));
+            QCOMPARE(QByteArray::number(shown, 'g', 15), QByteArray::number(gammaDeg, 'g', 15));
+        }
+    }
+
     void gammaBeyondQuarterTurn_data()
     {
         QTest::addColumn<double>("gammaDeg");

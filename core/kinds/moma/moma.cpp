@@ -122,10 +122,16 @@ Failure guideClash(double, double)
 template <int Leg>
 FieldAccess<MomaDesign> guideTurn()
 {
-    return {[](const MomaDesign &d) { return std::remainder(d.alpha[Leg] - 1.5 * pi, 2 * pi); },
+    // γ = α − 270° cancels the leading digits of α: in radians, α₁ = 265° gave γ₁ =
+    // −4.99999999999999° in every report. Worked in degrees and rounded to the 12 decimals
+    // to which α (below 1000°, 15 significant digits) is known, γ reads as it was typed.
+    return {[](const MomaDesign &d) {
+                const double gamma = std::remainder(units::angle.toDisplay(d.alpha[Leg]) - 270.0, 360.0);
+                return units::angle.fromDisplay(std::round(gamma * 1e12) / 1e12);
+            },
             [](MomaDesign &d, double gamma) {
-                const double alpha = std::fmod(1.5 * pi + gamma, 2 * pi);
-                d.alpha[Leg] = alpha < 0 ? alpha + 2 * pi : alpha;
+                const double alpha = std::fmod(270.0 + units::angle.toDisplay(gamma), 360.0);
+                d.alpha[Leg] = units::angle.fromDisplay(alpha < 0 ? alpha + 360.0 : alpha);
             }};
 }
 } // namespace
