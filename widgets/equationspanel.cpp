@@ -4,6 +4,9 @@
 
 #include <QEvent>
 #include <QScrollBar>
+#include <QTextBlock>
+#include <QTextCursor>
+#include <QTextDocument>
 
 namespace pkm {
 
@@ -18,14 +21,19 @@ QString number(const EquationNumber &number)
 
 /// A formula as HTML that a narrow dock wraps only after an operator, never between "sin" and
 /// its angle or a number and its unit.
-QString formulaHtml(const QString &text)
+QString formulaText(const QString &text)
 {
     const QChar keep(0x00A0);
     QString kept = text;
     kept.replace(QLatin1Char(' '), keep);
     for (const QString &op : {QStringLiteral("="), QStringLiteral("+"), QStringLiteral("−"), QStringLiteral("/")})
         kept.replace(keep + op + keep, keep + op + QLatin1Char(' '));
-    return kept.toHtmlEscaped();
+    return kept;
+}
+
+QString formulaHtml(const QString &text)
+{
+    return formulaText(text).toHtmlEscaped();
 }
 } // namespace
 
@@ -34,6 +42,8 @@ EquationsPanel::EquationsPanel(QWidget *parent)
 {
     setOpenLinks(false);
     setFrameShape(QFrame::NoFrame);
+    // the numbers are rewritten in place on every pose: no undo history may pile up
+    document()->setUndoRedoEnabled(false);
     setFocusPolicy(Qt::NoFocus);
 }
 
@@ -86,11 +96,12 @@ void EquationsPanel::refresh()
     m_results.clear();
     m_substituted.clear();
     if (!m_mechanism || !m_pose) {
+        m_structure.clear();
         setHtml(QString());
         return;
     }
     m_equations = mechanismEquations(*m_mechanism, *m_pose);
-    QString html;
+    QString structure;
     for (const Equation &equation : m_equations) {
         const QString result = number(equation.result);
         QString line = QStringLiteral("= ");
@@ -101,6 +112,19 @@ void EquationsPanel::refresh()
         line += result;
         m_results << result;
         m_substituted << line;
+        structure += toQString(equation.title) + QChar(0x1F) + toQString(equation.source) + QChar(0x1F)
+            + toQString(equation.symbolic) + QChar(0x1F) + toQString(equation.note) + QChar(0x1E);
+    }
+    if (updateNumbers(structure))
+        return;
+
+    QString html;
+    std::vector<int> lineBlocks;
+    int blocks = 0;
+    for (std::size_t i = 0; i < m_equations.size(); ++i) {
+        const Equation &equation = m_equations[i];
+        const QString &line = m_substituted[qsizetype(i)];
+        const QString &result = m_results[qsizetype(i)];
         html += QStringLiteral("<p style=\"margin-top:10px; margin-bottom:2px\"><b>%1</b> "
                                "<span style=\"color:%2; font-size:small\">— %3</span></p>")
                     .arg(toQString(equation.title).toHtmlEscaped(), QLatin1String(quietColour),
@@ -111,9 +135,12 @@ void EquationsPanel::refresh()
         const qsizetype cut = line.size() - result.size();
         html += QStringLiteral("<p style=\"margin-left:24px; margin-top:0px; margin-bottom:2px; font-size:large\">%1<b>%2</b></p>")
                     .arg(formulaHtml(line.left(cut)), formulaHtml(result));
+        lineBlocks.push_back(blocks + 2);
+        blocks += 3;
         if (!equation.note.empty()) {
             html += QStringLiteral("<p style=\"margin-left:12px; margin-top:0px; color:%1\">%2</p>")
                         .arg(QLatin1String(noteColour), toQString(equation.note).toHtmlEscaped());
+            ++blocks;
         }
     }
     if (m_equations.empty())
@@ -122,6 +149,40 @@ void EquationsPanel::refresh()
     const int scroll = verticalScrollBar()->value();
     setHtml(html);
     verticalScrollBar()->setValue(scroll);
+    // Later poses rewrite the lines in place, once the blocks are known to be where counted.
+    m_structure.clear();
+    m_lineBlocks.clear();
+    bool placed = !m_equations.empty() && document()->blockCount() == blocks;
+    for (std::size_t i = 0; placed && i < lineBlocks.size(); ++i)
+        placed = document()->findBlockByNumber(lineBlocks[i]).text() == formulaText(m_substituted[qsizetype(i)]);
+    if (placed) {
+        m_structure = structure;
+        m_lineBlocks = std::move(lineBlocks);
+    }
+}
+
+bool EquationsPanel::updateNumbers(const QString &structure)
+{
+    if (m_structure.isEmpty() || structure != m_structure || m_lineBlocks.size() != m_equations.size())
+        return false;
+    QTextCursor edit(document());
+    edit.beginEditBlock(); // one layout pass for all the lines
+    for (std::size_t i = 0; i < m_lineBlocks.size(); ++i) {
+        const QTextBlock block = document()->findBlockByNumber(m_lineBlocks[i]);
+        const QString &line = m_substituted[qsizetype(i)];
+        const QString &result = m_results[qsizetype(i)];
+        // the formats the page gave the line: large, and bold for the result
+        QTextCharFormat plain = block.begin().fragment().charFormat();
+        plain.setFontWeight(QFont::Normal);
+        QTextCharFormat bold = plain;
+        bold.setFontWeight(QFont::Bold);
+        QTextCursor cursor(block);
+        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+        cursor.insertText(formulaText(line.left(line.size() - result.size())), plain);
+        cursor.insertText(formulaText(result), bold);
+    }
+    edit.endEditBlock();
+    return true;
 }
 
 } // namespace pkm

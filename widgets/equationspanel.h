@@ -42,6 +42,9 @@ protected:
 
 private:
     void refresh();
+    /// Rewrites only the lines with the pose's numbers, in place; false when the page must be
+    /// built again (another mechanism, a note that changed, a language).
+    bool updateNumbers(const QString &structure);
 
     MechanismPtr m_mechanism;
     std::optional<Pose> m_pose;
@@ -49,6 +52,12 @@ private:
     QStringList m_results;
     QStringList m_substituted;
     bool m_stale = false; ///< a pose arrived while the panel was hidden
+    /// What a pose does not change (titles, sources, formulas, notes) as the page shows it,
+    /// and the block of each equation's line of numbers. While it stays, a new pose rewrites
+    /// only those lines: rebuilding the page by setHtml() was a third of the main window's
+    /// repaint on every slider step.
+    QString m_structure;
+    std::vector<int> m_lineBlocks;
 };
 
 } // namespace pkm

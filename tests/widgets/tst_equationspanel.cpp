@@ -9,6 +9,8 @@
 
 #include <QRegularExpression>
 #include <QTest>
+#include <QTextBlock>
+#include <QTextDocument>
 
 #include <cmath>
 
@@ -58,6 +60,46 @@ private slots:
             values.setPose(*moved);
             compareWithValues(panel, values, *m);
         }
+    }
+
+    void numbersRewrittenInPlaceReadAsAFreshPage_data() { test::addKindRows(); }
+    void numbersRewrittenInPlaceReadAsAFreshPage()
+    {
+        // A slider step rewrites only the lines of numbers (the page is not built again): what
+        // it shows must be what a panel that built its page at that pose shows, results bold.
+        QFETCH(QString, kind);
+        const MechanismPtr m = test::makeKind(kind.toStdString());
+        EquationsPanel stepped;
+        stepped.show();
+        stepped.setMechanism(m);
+        Pose pose = m->homePose();
+        stepped.setPose(pose);
+        const Interval range = m->variableRange(0);
+        for (double fraction : {0.3, 0.6, 0.8}) {
+            auto moved = m->solveWith(pose, 0, range.min + fraction * (range.max - range.min));
+            if (!moved)
+                continue;
+            pose = *moved;
+            stepped.setPose(pose);
+            EquationsPanel fresh;
+            fresh.show();
+            fresh.setMechanism(m);
+            fresh.setPose(pose);
+            QCOMPARE(stepped.toPlainText(), fresh.toPlainText());
+            for (int i = 0; i < int(stepped.shownEquations().size()); ++i)
+                QCOMPARE(stepped.resultText(i), fresh.resultText(i));
+        }
+        // the results are still bold, and no undo history grows under the slider
+        QVERIFY(!stepped.document()->isUndoAvailable());
+        QStringList bold;
+        for (QTextBlock block = stepped.document()->begin(); block.isValid(); block = block.next()) {
+            for (auto it = block.begin(); !it.atEnd(); ++it) {
+                if (it.fragment().charFormat().fontWeight() == QFont::Bold)
+                    bold << it.fragment().text().replace(QChar(0x00A0), QLatin1Char(' '));
+            }
+        }
+        for (int i = 0; i < int(stepped.shownEquations().size()); ++i)
+            QVERIFY2(bold.contains(stepped.resultText(i)), qPrintable(stepped.resultText(i)));
     }
 
     void followsThePose()
