@@ -205,38 +205,71 @@ Result<MechanismPtr> FiveBar::create(const FiveBarDesign &d)
 FiveBar::FiveBar(const FiveBarDesign &design)
     : m_design(design)
 {
-    // Home: on a grid of crank angles, the pose farthest from the singularities (and from the
-    // ends of limited crank ranges); none means the loop never closes in the design's modes.
-    constexpr int samples = 73;
+    // Home: the crank angles farthest from the singularities (and from the ends of limited
+    // crank ranges); none means the loop never closes in the design's modes. A coarse grid,
+    // then a pattern search around its best (~450 closures instead of the 73² of a fine grid,
+    // which is kept for a loop the coarse grid slips past).
     double best = -1.0;
-    for (int i = 0; i < samples; ++i) {
-        for (int j = 0; j < samples; ++j) {
-            const std::array<int, 2> index = {i, j};
-            std::array<double, 2> theta{};
-            double centrality = 0.25;
-            for (int leg = 0; leg < 2; ++leg) {
-                const Interval &r = design.range[leg];
-                theta[leg] = r.min + (r.max - r.min) * index[leg] / (samples - 1);
-                const double fromEnds = std::min(theta[leg] - r.min, r.max - theta[leg]) / (r.max - r.min);
-                if (!fivebar::fullTurn(r))
-                    centrality = std::min(centrality, fromEnds);
-            }
-            const Check check = checkDirect(theta[0], theta[1], solverTolerance);
-            if (!check.ok())
-                continue;
-            const auto [inverse, direct] = marginsOf(design, vectorsOf(design, check.elbows, check.C));
-            const double score = std::min({inverse, direct, 4.0 * centrality}) + 1e-3 * centrality;
-            if (score > best) {
-                best = score;
-                m_home.inputs.resize(2);
-                m_home.inputs << theta[0], theta[1];
-                m_home.outputs.resize(2);
-                m_home.outputs << check.C.x(), check.C.y();
+    std::array<double, 2> bestTheta {};
+    const auto consider = [&](const std::array<double, 2> &theta) {
+        double centrality = 0.25;
+        for (int leg = 0; leg < 2; ++leg) {
+            const Interval &r = design.range[leg];
+            const double fromEnds = std::min(theta[leg] - r.min, r.max - theta[leg]) / (r.max - r.min);
+            if (!fivebar::fullTurn(r))
+                centrality = std::min(centrality, fromEnds);
+        }
+        const Check check = checkDirect(theta[0], theta[1], solverTolerance);
+        if (!check.ok())
+            return;
+        const auto [inverse, direct] = marginsOf(design, vectorsOf(design, check.elbows, check.C));
+        const double score = std::min({inverse, direct, 4.0 * centrality}) + 1e-3 * centrality;
+        if (score > best) {
+            best = score;
+            bestTheta = theta;
+            m_home.inputs.resize(2);
+            m_home.inputs << theta[0], theta[1];
+            m_home.outputs.resize(2);
+            m_home.outputs << check.C.x(), check.C.y();
+        }
+    };
+    const auto searchGrid = [&](int samples) {
+        for (int i = 0; i < samples; ++i) {
+            for (int j = 0; j < samples; ++j) {
+                const std::array<int, 2> index = {i, j};
+                std::array<double, 2> theta {};
+                for (int leg = 0; leg < 2; ++leg) {
+                    const Interval &r = design.range[leg];
+                    theta[leg] = r.min + (r.max - r.min) * index[leg] / (samples - 1);
+                }
+                consider(theta);
             }
         }
-    }
-    if (m_home.inputs.size())
+    };
+    constexpr int coarse = 19;
+    searchGrid(coarse);
+    if (!m_home.inputs.size())
+        searchGrid(73);
+    if (m_home.inputs.size()) {
+        const double span = std::max(design.range[0].max - design.range[0].min, design.range[1].max - design.range[1].min);
+        for (double step = 0.5 / (coarse - 1); step * span > 1e-3 * span; step /= 2) {
+            const std::array<double, 2> around = bestTheta;
+            for (int di = -1; di <= 1; ++di) {
+                for (int dj = -1; dj <= 1; ++dj) {
+                    if (!di && !dj)
+                        continue;
+                    std::array<double, 2> theta = around;
+                    const std::array<int, 2> direction = {di, dj};
+                    for (int leg = 0; leg < 2; ++leg) {
+                        const Interval &r = design.range[leg];
+                        theta[leg] = r.clamp(theta[leg] + direction[leg] * step * (r.max - r.min));
+                    }
+                    consider(theta);
+                }
+            }
+        }
         m_bounds = computeBounds();
+    }
 }
 
 std::vector<std::string> FiveBar::designWarnings() const
