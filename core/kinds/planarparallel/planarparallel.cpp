@@ -266,23 +266,64 @@ PlanarParallel::PlanarParallel(const PlanarParallelDesign &design)
         m_home = *pose;
         return;
     }
-    const int samples = n == 2 ? 17 : 9;
+    // Three legs: a coarse grid of inputs, then a pattern search around its best. Each direct
+    // solution finds every assembly mode (a polynomial of degree 6), and a 9³ grid made
+    // creating a 3-DOF design take ~30 ms, on every edit. The fine grid is kept for a
+    // mechanism that assembles only where the coarse grid does not look.
     double best = -1.0;
-    Coordinates q(n);
-    const int total = n == 2 ? samples * samples : samples * samples * samples;
-    for (int index = 0; index < total; ++index) {
-        int rest = index;
-        for (int i = 0; i < n; ++i) {
-            const Interval &r = design.legs[std::size_t(i)].inputRange();
-            q[i] = r.min + (r.max - r.min) * (0.5 + rest % samples) / samples;
-            rest /= samples;
-        }
+    Coordinates bestInputs(n);
+    const auto consider = [&](const Coordinates &q) {
         if (auto pose = solveDirect(q)) {
             const double margin = singularity(*pose).margin;
             if (margin > best) {
                 best = margin;
                 m_home = *pose;
+                bestInputs = q;
             }
+        }
+    };
+    const auto searchGrid = [&](int samples) {
+        Coordinates q(n);
+        const int total = n == 2 ? samples * samples : samples * samples * samples;
+        for (int index = 0; index < total; ++index) {
+            int rest = index;
+            for (int i = 0; i < n; ++i) {
+                const Interval &r = design.legs[std::size_t(i)].inputRange();
+                q[i] = r.min + (r.max - r.min) * (0.5 + rest % samples) / samples;
+                rest /= samples;
+            }
+            consider(q);
+        }
+    };
+    if (n == 2) { // a two-leg platform's direct solution is closed-form: the fine grid is cheap
+        searchGrid(17);
+        return;
+    }
+    constexpr int coarse = 5;
+    searchGrid(coarse);
+    if (m_home.inputs.size() == 0) {
+        searchGrid(9);
+        return;
+    }
+    constexpr int neighbours = 27;
+    for (double step = 0.5 / coarse; step > 0.02 / coarse; step /= 2) {
+        const Coordinates around = bestInputs;
+        for (int index = 0; index < neighbours; ++index) {
+            Coordinates q = around;
+            int rest = index;
+            bool centre = true;
+            for (int i = 0; i < n; ++i) {
+                const int direction = rest % 3 - 1;
+                rest /= 3;
+                centre = centre && direction == 0;
+                // no nearer the ends of a range than the fine grid goes: a home at a stop
+                // could not be moved both ways
+                const Interval &r = design.legs[std::size_t(i)].inputRange();
+                const double inset = 0.5 / 9 * (r.max - r.min);
+                q[i] = std::clamp(q[i] + direction * step * (r.max - r.min), r.min + inset, r.max - inset);
+            }
+            if (!centre)
+                consider(q);
         }
     }
 }
