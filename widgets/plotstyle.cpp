@@ -83,7 +83,40 @@ Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer)
         item->setLayer(layer);
         item->setSelectable(false);
     }
+    // The axis rect's size is known only once a replot has laid the plot out (the first
+    // showing, a resize): the label is placed again then, before it is drawn.
+    QCPItemText *label = cursor.label;
+    QCPItemTracer *marker = cursor.marker;
+    QObject::connect(plot, &QCustomPlot::afterLayout, label, [plot, label, marker] {
+        const QPointF at = marker->position->coords();
+        placeCursorLabel(plot, label, at.x(), at.y());
+    });
     return cursor;
+}
+
+void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y)
+{
+    constexpr double gap = 12.0; // pixels between the marker and the label
+    const QRect rect = plot->axisRect()->rect();
+    const QFontMetrics metrics(label->font());
+    const QStringList lines = label->text().split(QLatin1Char('\n'));
+    int textWidth = 0;
+    for (const QString &line : lines)
+        textWidth = std::max(textWidth, metrics.horizontalAdvance(line));
+    const QMargins padding = label->padding();
+    const double width = textWidth + padding.left() + padding.right();
+    const double height = metrics.height() * lines.size() + padding.top() + padding.bottom();
+    const QPointF marker(plot->xAxis->coordToPixel(x), plot->yAxis->coordToPixel(y));
+    // beside the marker where there is more room, then inwards until it is whole
+    const auto place = [](double at, double low, double high, double size) {
+        const bool before = at - low > high - at;
+        const double highest = std::max(low + 2.0, high - 2.0 - size);
+        return std::clamp(before ? at - gap - size : at + gap, low + 2.0, highest);
+    };
+    const double left = place(marker.x(), rect.left(), rect.right(), width);
+    const double top = place(marker.y(), rect.top(), rect.bottom(), height);
+    label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+    label->position->setCoords(left - marker.x(), top - marker.y());
 }
 
 namespace {

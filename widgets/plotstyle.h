@@ -31,6 +31,10 @@ struct Cursor {
     QCPItemText *label = nullptr;
 };
 Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer);
+/// Puts the cursor's label (its text set) beside the marker at (x, y), plot coordinates: on
+/// the side with more room, above or below as there is room, and moved inwards as far as it
+/// must to stay whole inside the axis rect — a narrow plot on a projector cut it off before.
+void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y);
 
 /// Styles `plot` with fonts derived from `base` and adds a "bands" layer below the grid and the
 /// buffered "cursor" layer; the legend is visible, in the row under the subtitle.

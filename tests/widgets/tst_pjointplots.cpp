@@ -124,6 +124,7 @@ private slots:
     void valueRangeSkipsNearSingularSamples();
     void valueText();
     void subtitleWrapsInANarrowPlot();
+    void cursorLabelStaysWholeInANarrowPlot();
 };
 
 void TestPJointPlots::plotsAndTabs()
@@ -545,6 +546,40 @@ void TestPJointPlots::subtitleWrapsInANarrowPlot()
     plot.resize(1200, 300);
     plotstyle::fitText(subtitle);
     QCOMPARE(subtitle->text(), text);
+}
+
+void TestPJointPlots::cursorLabelStaysWholeInANarrowPlot()
+{
+    // The Geometry tab as a projector at 1280×720 shows it (560×600, fig. 8's axis rect under
+    // 200 px wide): with the cursor near the middle, the label beside the marker ran past the
+    // axis rect, which cut it off ("d = 183.1" without its unit).
+    PJointPlots plots;
+    plots.resize(560, 600);
+    plots.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plots));
+    plots.setDesign(prototype());
+    int checked = 0;
+    for (const double theta : {-60.0, -30.0, -2.0, 0.0, 0.05, 2.0, 30.0, 60.0}) {
+        plots.setTheta(theta * degree);
+        for (int i = 0; i < plots.plotCount(); ++i) {
+            QCustomPlot *plot = plots.plot(i);
+            if (!plot->isVisible())
+                continue; // on another tab
+            plot->replot(); // lays the plot out; the label is placed again before it is drawn
+            const auto labels = cursorItems<QCPItemText>(plot);
+            QCOMPARE(labels.size(), 1);
+            const QRectF label = QRectF(labels[0]->topLeft->pixelPosition(), labels[0]->bottomRight->pixelPosition()).normalized();
+            const QRectF rect = plot->axisRect()->rect();
+            if (rect.width() < label.width() + 4)
+                continue; // no room for it anywhere
+            QVERIFY2(rect.contains(label),
+                qPrintable(QStringLiteral("θ = %1°, %2: label %3 at x %4…%5 outside the axis rect x %6…%7")
+                               .arg(theta).arg(plots.plotName(i), labels[0]->text()).arg(label.left()).arg(label.right())
+                               .arg(rect.left()).arg(rect.right())));
+            ++checked;
+        }
+    }
+    QVERIFY(checked >= 16);
 }
 
 QTEST_MAIN(TestPJointPlots)

@@ -322,7 +322,6 @@ void FourBarPlots::placeCursor(int index)
     p.cursorLine->point2->setCoords(x, 1.0);
 
     // The marker sits on the curve; off the y range it waits at the edge with an arrow.
-    const QCPRange xRange = p.plot->xAxis->range();
     const QCPRange yRange = p.plot->yAxis->range();
     const bool finite = std::isfinite(value);
     const double shown = finite ? std::clamp(value, yRange.lower, yRange.upper) : yRange.upper;
@@ -361,11 +360,7 @@ void FourBarPlots::placeCursor(int index)
         text += QStringLiteral(" ↓");
     }
     p.cursorLabel->setText(text);
-    const bool right = x > xRange.center();
-    const bool upper = shown > yRange.center();
-    p.cursorLabel->setPositionAlignment(
-        (right ? Qt::AlignRight : Qt::AlignLeft) | (upper ? Qt::AlignTop : Qt::AlignBottom));
-    p.cursorLabel->position->setCoords(right ? -12.0 : 12.0, upper ? 12.0 : -12.0);
+    plotstyle::placeCursorLabel(p.plot, p.cursorLabel, x, shown);
 }
 
 void FourBarPlots::refresh(int index)

@@ -350,7 +350,6 @@ void PJointPlots::placeCursor(int index)
 
     // The marker sits on the curve; off the y range it is hidden and the label waits at the
     // edge with an arrow, so a near-singular value never moves the axes.
-    const QCPRange xRange = p.plot->xAxis->range();
     const QCPRange yRange = p.plot->yAxis->range();
     const bool finite = std::isfinite(value);
     const double shown = finite ? std::clamp(value, yRange.lower, yRange.upper) : yRange.upper;
@@ -363,13 +362,7 @@ void PJointPlots::placeCursor(int index)
     else if (value < yRange.lower)
         text += QStringLiteral(" ↓");
     p.cursorLabel->setText(text);
-
-    // Beside the marker, on the side with more room.
-    const bool right = x > xRange.center();
-    const bool upper = shown > yRange.center();
-    p.cursorLabel->setPositionAlignment(
-        (right ? Qt::AlignRight : Qt::AlignLeft) | (upper ? Qt::AlignTop : Qt::AlignBottom));
-    p.cursorLabel->position->setCoords(right ? -12.0 : 12.0, upper ? 12.0 : -12.0);
+    plotstyle::placeCursorLabel(p.plot, p.cursorLabel, x, shown);
 }
 
 void PJointPlots::refresh(int index, bool queued)
