@@ -125,6 +125,7 @@ private slots:
     void valueText();
     void subtitleWrapsInANarrowPlot();
     void cursorLabelStaysWholeInANarrowPlot();
+    void thetaTicksNeverCrowd();
 };
 
 void TestPJointPlots::plotsAndTabs()
@@ -580,6 +581,21 @@ void TestPJointPlots::cursorLabelStaysWholeInANarrowPlot()
         }
     }
     QVERIFY(checked >= 16);
+}
+
+void TestPJointPlots::thetaTicksNeverCrowd()
+{
+    // θ from −90° to 90°: the step leaves every label ("−60°", ~34 px) at least 44 px, so a
+    // plot 150 px wide (figs 9 and 10 on a projector) gets 45° steps, not 30° ones that overlap.
+    QCOMPARE(pjointcurves::thetaStep(180, 800), 15.0);
+    QCOMPARE(pjointcurves::thetaStep(180, 400), 30.0);
+    QCOMPARE(pjointcurves::thetaStep(180, 200), 45.0);
+    QCOMPARE(pjointcurves::thetaStep(180, 120), 90.0);
+    for (int pixels = 80; pixels <= 1200; pixels += 10) {
+        const double step = pjointcurves::thetaStep(180, pixels);
+        QVERIFY2(step == 90.0 || pixels * step / 180 >= 44.0, qPrintable(QString::number(pixels)));
+    }
+    QCOMPARE(pjointcurves::thetaStep(30, 100), 5.0);
 }
 
 QTEST_MAIN(TestPJointPlots)

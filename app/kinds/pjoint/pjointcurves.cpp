@@ -185,7 +185,13 @@ double thetaStep(double span, int pixels)
 {
     if (span <= 40.0)
         return 5.0;
-    return pixels * 15.0 / span >= 64.0 ? 15.0 : 30.0;
+    if (pixels * 15.0 / span >= 64.0)
+        return 15.0;
+    // a label "−60°" at 11 pt is ~34 px wide: below ~44 px a step, they run into each other
+    for (const double step : {30.0, 45.0})
+        if (pixels * step / span >= 44.0)
+            return step;
+    return 90.0;
 }
 
 } // namespace pkm::pjointcurves

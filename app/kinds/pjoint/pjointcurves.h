@@ -101,7 +101,8 @@ QString valueText(int index, double value);
 /// Tick step of an angle axis (φ, μ) spanning `span` °: at most 8 intervals.
 double angleStep(double span);
 
-/// θ tick step, °: every 15° where the labels have room (~64 px a step at 11 pt), else 30°.
+/// θ tick step, °: every 15° where the labels have room (~64 px a step at 11 pt), else 30°,
+/// 45° or 90° in a narrower plot (at least ~44 px a step), so that the labels never overlap.
 double thetaStep(double span, int pixels);
 
 } // namespace pkm::pjointcurves

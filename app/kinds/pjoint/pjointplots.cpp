@@ -21,6 +21,16 @@ namespace pkm {
 
 namespace {
 
+/// The θ tick step for the axis rect's width: the width the last layout gave it, or an
+/// estimate before the first (the plot less its y tick labels, axis title and margins).
+void fitThetaTicks(QCustomPlot *plot)
+{
+    const int laidOut = plot->axisRect()->width();
+    const int axisPixels = laidOut > 0 ? laidOut : plot->width() - 110;
+    qSharedPointerCast<QCPAxisTickerFixed>(plot->xAxis->ticker())
+        ->setTickStep(pjointcurves::thetaStep(plot->xAxis->range().size(), axisPixels));
+}
+
 using pjointcurves::familyK;
 using pjointcurves::quantities;
 using pjointcurves::Quantity;
@@ -209,6 +219,15 @@ void PJointPlots::createPanel(int index)
 
     // Cursor: a vertical line at θ, a marker on this design's curve, its value beside it.
     const plotstyle::Cursor cursor = plotstyle::addCursor(plot, font(), header.cursorLayer);
+    // The tick step is for the width the layout gives the axis rect, known only after it: a
+    // step that no longer fits is changed for the next frame.
+    connect(plot, &QCustomPlot::afterLayout, this, [plot] {
+        const auto ticker = qSharedPointerCast<QCPAxisTickerFixed>(plot->xAxis->ticker());
+        const double before = ticker->tickStep();
+        fitThetaTicks(plot);
+        if (ticker->tickStep() != before)
+            plot->replot(QCustomPlot::rpQueuedReplot);
+    });
     p.cursorLine = cursor.line;
     p.cursorMarker = cursor.marker;
     p.cursorLabel = cursor.label;
@@ -381,9 +400,7 @@ void PJointPlots::refresh(int index, bool queued)
 void PJointPlots::fitToWidth(int index)
 {
     QCustomPlot *plot = m_panels[index].plot;
-    const int axisPixels = plot->width() - 110; // less the y tick labels, axis title and margins
-    qSharedPointerCast<QCPAxisTickerFixed>(plot->xAxis->ticker())
-        ->setTickStep(pjointcurves::thetaStep(plot->xAxis->range().size(), axisPixels));
+    fitThetaTicks(plot);
 
     // A name longer than the plot is wide wraps rather than run off its edge (a narrow
     // projector screen, a longer language); then as many legend columns as the width allows,
@@ -400,12 +417,30 @@ void PJointPlots::fitToWidth(int index)
         if (shown && p.weakTransmissionSwatch && p.weakTransmissionSwatch->removeFromLegend())
             p.weakTransmissionSwatch->addToLegend(); // the band's entry stays last
     };
+    // Still too tall (a longer language wraps every name in two lines): the design's own
+    // two entries go too, since fig. 8 beside them names the same line styles; a band's
+    // entry, which only this plot has, stays.
+    const auto setDesignShown = [&](bool shown) {
+        for (QCPAbstractPlottable *graph : {static_cast<QCPAbstractPlottable *>(p.design),
+                                            static_cast<QCPAbstractPlottable *>(p.extension)})
+            if (graph && !graph->name().isEmpty())
+                shown ? graph->addToLegend() : graph->removeFromLegend();
+    };
     const bool shortened = index != DiagonalPlot && p.family[0];
+    if (shortened && !plot->legend->hasItemWithPlottable(p.design)) {
+        setDesignShown(true);
+        if (p.weakTransmissionSwatch && p.weakTransmissionSwatch->removeFromLegend())
+            p.weakTransmissionSwatch->addToLegend(); // the band's entry stays last
+    }
     if (shortened && !plot->legend->hasItemWithPlottable(p.family[0]))
         setFamilyShown(true);
-    if (plotstyle::layOutLegend(plot) + 120 + 150 > plot->height() && shortened) {
+    const auto tooTall = [&] { return plotstyle::layOutLegend(plot) + 120 + 150 > plot->height(); };
+    if (shortened && tooTall()) {
         setFamilyShown(false);
-        plotstyle::layOutLegend(plot);
+        if (tooTall()) {
+            setDesignShown(false);
+            plotstyle::layOutLegend(plot);
+        }
     }
 }
 
