@@ -1,5 +1,5 @@
-# Type stubs of pkmstudio._core, the C++ extension (python/*.cpp). Design.evaluate, sweep,
-# map, workspace and show are added by pkmstudio/__init__.py.
+# Type hints of pkmstudio._core, the C++ extension (python/*.cpp), for editors and type
+# checkers. Design.evaluate, sweep, map, workspace and show are added by pkmstudio/__init__.py.
 from typing import Any, Iterator, Optional, Sequence
 
 import numpy
