@@ -3,12 +3,13 @@
 /// outputs are a point of the plane, and the specification region: the cells where every
 /// requirement the user states ("force_worst >= 50 N") holds.
 ///
-/// Each cell is solved by inverse kinematics near a given pose (so in its working and assembly
-/// modes; a platform that turns keeps the pose's angle φ), classified (inverse, direct,
-/// combined singular or regular) and evaluated as `pkm eval` evaluates a pose, so that a cell
-/// equals the values panel at that pose, with the exact 0 or ∞ of a singular one. This costs a
-/// solve per cell — about a hundred times a closed-form det J cell (1 µs against 10 ns) — so
-/// the GUI caps its grid at defaultGrid cells along the longer side.
+/// A cell equals the values panel at the pose solved there, in the design's working and
+/// assembly modes (a platform that turns at φ = phi_map), with the exact 0 or ∞ of a singular
+/// one. Every kind with a planar workspace computes its rows in closed form in its own map loop
+/// (PlanarWorkspace::fillCapabilityRow(), capabilitycell.h), at about the cost of its det J
+/// map; otherwise — a platform held at another φ, a requirement on an entry no map shows —
+/// each cell is solved by inverse kinematics near the given pose, classified and evaluated as
+/// `pkm eval` evaluates a pose, some fifty times slower.
 
 #include "capability.h"
 #include "planarworkspace.h"
@@ -22,8 +23,6 @@
 #include <vector>
 
 namespace pkm::capability {
-
-inline constexpr int defaultGrid = 500;
 
 /// The capability entry a map quantity shows ("force_worst"…), or empty for det J, κ, the
 /// orientation range and the specification.

@@ -17,6 +17,10 @@
 
 namespace pkm {
 
+namespace capability {
+struct CellLimits;
+}
+
 enum class MapQuantity {
     Determinant, ///< det J = det J_x / det J_q; 0 at a direct, ±∞ at an inverse singularity
     Condition,   ///< condition number of J (σ_max/σ_min, ≥ 1); +∞ at any singularity
@@ -96,6 +100,18 @@ public:
     virtual bool offers(MapQuantity quantity) const
     {
         return quantity == MapQuantity::Determinant || quantity == MapQuantity::Condition;
+    }
+    /// Whether fillCapabilityRow() maps what the actuators deliver. Where it does not, a
+    /// capability map solves and evaluates every cell (capabilitymap.cpp).
+    virtual bool fillsCapabilityRows() const { return false; }
+    /// Fills one row of a map of `limits.quantity` (capabilitycell.h; core units, ∞ where it
+    /// is undefined) and `margins` (the same size), as fillMapRow() fills det J: NaN in both
+    /// where the design cannot reach in its current modes (a platform that turns: at φ =
+    /// phi_map). Thread-safe, never allocates.
+    virtual void fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
+                                   std::span<float> values, std::span<float> margins) const
+    {
+        (void)limits, (void)y, (void)x0, (void)dx, (void)values, (void)margins;
     }
 };
 

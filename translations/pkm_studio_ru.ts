@@ -6693,8 +6693,8 @@ Please verify the correct file name was given.</source>
         <translation>%1 (%2): %3, цвета до %4</translation>
     </message>
     <message>
-        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is solved, on a grid of at most %1 cells along the longer side.</source>
-        <translation>Что приводы обеспечивают в каждой точке рабочего пространства по своим пределам в конструкции: ровно 0 или ∞ в особом положении. Каждая ячейка решается отдельно, на сетке не более %1 ячеек по длинной стороне.</translation>
+        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is the value of the pose solved there.</source>
+        <translation>Что приводы обеспечивают в каждой точке рабочего пространства по своим пределам в конструкции: ровно 0 или ∞ в особом положении. Каждая ячейка — значение в положении, решённом в этой точке.</translation>
     </message>
     <message>
         <source>No requirements stated (Edit ▸ Requirements…): the whole workspace %1 meets them</source>

@@ -6693,8 +6693,8 @@ Please verify the correct file name was given.</source>
         <translation>%1 (%2): %3, боје до %4</translation>
     </message>
     <message>
-        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is solved, on a grid of at most %1 cells along the longer side.</source>
-        <translation>Шта погони дају у свакој тачки радног простора, према својим границама у конструкцији: тачно 0 или ∞ у сингуларном положају. Свака ћелија се решава, на мрежи од највише %1 ћелија по дужој страни.</translation>
+        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is the value of the pose solved there.</source>
+        <translation>Шта погони дају у свакој тачки радног простора, према својим границама у конструкцији: тачно 0 или ∞ у сингуларном положају. Свака ћелија је вредност положаја решеног у тој тачки.</translation>
     </message>
     <message>
         <source>No requirements stated (Edit ▸ Requirements…): the whole workspace %1 meets them</source>

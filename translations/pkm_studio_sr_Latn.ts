@@ -6693,8 +6693,8 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>%1 (%2): %3, boje do %4</translation>
     </message>
     <message>
-        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is solved, on a grid of at most %1 cells along the longer side.</source>
-        <translation>Šta pogoni daju u svakoj tački radnog prostora, prema svojim granicama u konstrukciji: tačno 0 ili ∞ u singularnom položaju. Svaka ćelija se rešava, na mreži od najviše %1 ćelija po dužoj strani.</translation>
+        <source>What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ exactly at a singularity. Every cell is the value of the pose solved there.</source>
+        <translation>Šta pogoni daju u svakoj tački radnog prostora, prema svojim granicama u konstrukciji: tačno 0 ili ∞ u singularnom položaju. Svaka ćelija je vrednost položaja rešenog u toj tački.</translation>
     </message>
     <message>
         <source>No requirements stated (Edit ▸ Requirements…): the whole workspace %1 meets them</source>

@@ -132,9 +132,7 @@ void WorkspaceMapView::updateCapabilityTitle()
                                                        coreLabel(m_shownLabel), significant(m_colourLimit)),
                                               m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
     m_plot->setToolTip(tr("What the actuators deliver at each point of the workspace, from their limits in the "
-                          "design: 0 or ∞ exactly at a singularity. Every cell is solved, on a grid of at most %1 "
-                          "cells along the longer side.")
-                           .arg(workspacemap::capabilityResolution));
+                          "design: 0 or ∞ exactly at a singularity. Every cell is the value of the pose solved there."));
 }
 
 } // namespace pkm

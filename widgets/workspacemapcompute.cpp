@@ -110,8 +110,7 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         return result;
     }
     const bool delivered = isCapability(quantity);
-    const MapGrid grid = squareGrid(workspace->workspaceBounds(),
-                                    delivered ? std::min(resolution, workspacemap::capabilityResolution) : resolution);
+    const MapGrid grid = squareGrid(workspace->workspaceBounds(), resolution);
     result->values.resize(grid.cells());
     std::vector<float> margins(full ? grid.cells() : 0);
     result->summary = delivered

@@ -73,8 +73,7 @@ public:
     /// The shown specification map's area where every requirement holds, mm² (0 otherwise).
     double specificationArea() const { return m_specificationArea; }
 
-    /// Cells along the longer side of the workspace bounds (default 500; a capability map
-    /// solves each cell and uses at most capability::defaultGrid); recomputes.
+    /// Cells along the longer side of the workspace bounds (default 500); recomputes.
     void setResolution(int cells);
     int resolution() const { return m_resolution; }
 

@@ -58,10 +58,6 @@ QCPColorGradient specificationGradient();
 /// written out for very large and very small magnitudes.
 QString significant(double value);
 
-/// The most cells of a capability map along the longer side: each cell is solved
-/// (capabilitymap.h), a hundred times the cost of a closed-form cell.
-inline constexpr int capabilityResolution = capability::defaultGrid;
-
 /// A capability map or the specification (workspacemapcapability.cpp) into `result` on the
 /// worker: values in display units, the entry's texts, the specification's area.
 MapSummary computeCapability(const Mechanism &mechanism, const Pose &pose, MapQuantity quantity,

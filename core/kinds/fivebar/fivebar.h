@@ -148,6 +148,9 @@ public:
     Eigen::AlignedBox2d workspaceBounds() const override { return m_bounds; }
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
+    bool fillsCapabilityRows() const override { return true; }
+    void fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
+                           std::span<float> values, std::span<float> margins) const override;
     /// The legs stretched or folded (inverse) and the distal links in line (direct), where
     /// they are poses of the design.
     std::vector<SingularCurve> singularCurves() const override;

@@ -1,6 +1,7 @@
 // The five-bar's workspace and singularity maps: the inner loop of every map, the singular
 // curves drawn over them and the box that holds the workspace.
 #include "fivebar.h"
+#include "capabilitycell.h"
 #include "text.h"
 
 #include <cmath>
@@ -51,60 +52,103 @@ MapLeg legOf(const FiveBarDesign &d, int leg)
     return m;
 }
 
+/// What the map loop knows of one cell, for the quantity it maps.
+struct Cell {
+    double q[2];    ///< Q_i
+    double root[2]; ///< √Q_i
+    double lx[2], ly[2]; ///< L_i = C − P_i
+    double detJx;   ///< L₁×L₂
+    double inverseMargin, directMargin;
+};
+
 /// The map row, written so that the compiler can vectorise it: no branches, selects only.
 /// Per cell C and leg i, with g = C − G_i, r² = |g|², Q_i = ((a + b)² − r²)(r² − (a − b)²)
 /// (16·area² of the triangle G_i P_i C, ≥ 0 where the leg reaches C):
 ///   P_i − G_i = ((a² − b² + r²)·g + w_i·√Q_i·g⊥)/(2r²)   (the elbow in working mode w_i)
 ///   k_i = −w_i·√Q_i/2,  L_i = C − P_i
-/// so det J = det J_x/(k₁k₄) = 4·(L₁×L₂)/(w₁w₄·√Q₁·√Q₄), and J's rows L_i/k_i have squared
-/// lengths 4b_i²/Q_i.
-template <bool Condition, bool Margins>
-void mapRow(const FiveBarDesign &d, double y, double x0, double dx, float *values, float *margins, int count)
+/// then the quantity `value(cell)`.
+template <bool Margins, class Value>
+[[gnu::always_inline]] inline void mapRow(const FiveBarDesign &d, double y, double x0, double dx, float *values,
+                                          float *margins, int count, const Value &value)
 {
     const std::array<MapLeg, 2> legs = {legOf(d, 0), legOf(d, 1)};
     const double assembly = d.assembly;
     const double sideTolerance = -1e-9 * d.link[0] * d.link[1];
     const double inverseLinkProduct = 1.0 / (d.link[0] * d.link[1]);
+    const double inverseTwoAB[2] = {1.0 / legs[0].twoAB, 1.0 / legs[1].twoAB};
     const float nan = std::numeric_limits<float>::quiet_NaN();
     for (int i = 0; i < count; ++i) {
         const double x = x0 + i * dx;
-        double q[2], root[2], lx[2], ly[2], range[2], r2[2];
+        Cell cell;
+        double range[2], r2[2];
         for (int leg = 0; leg < 2; ++leg) {
             const MapLeg &m = legs[std::size_t(leg)];
             const double gx = x - m.gx, gy = y;
             r2[leg] = gx * gx + gy * gy;
-            q[leg] = (m.sum2 - r2[leg]) * (r2[leg] - m.difference2);
-            root[leg] = std::sqrt(q[leg] > 0.0 ? q[leg] : 0.0);
+            cell.q[leg] = (m.sum2 - r2[leg]) * (r2[leg] - m.difference2);
+            cell.root[leg] = std::sqrt(cell.q[leg] > 0.0 ? cell.q[leg] : 0.0);
             const double half = 0.5 / (r2[leg] > 0.0 ? r2[leg] : 1.0);
-            const double along = m.a2b2 + r2[leg], across = m.working * root[leg];
+            const double along = m.a2b2 + r2[leg], across = m.working * cell.root[leg];
             const double ex = (along * gx - across * gy) * half, ey = (along * gy + across * gx) * half;
-            lx[leg] = gx - ex;
-            ly[leg] = gy - ey;
+            cell.lx[leg] = gx - ex;
+            cell.ly[leg] = gy - ey;
             range[leg] = m.sign * std::min(m.ux * ey - m.uy * ex, ex * m.wy - ey * m.wx) + m.offset;
         }
-        const double detJx = lx[0] * ly[1] - ly[0] * lx[1];
+        cell.detJx = cell.lx[0] * cell.ly[1] - cell.ly[0] * cell.lx[1];
+        cell.inverseMargin = std::min(cell.root[0] * inverseTwoAB[0], cell.root[1] * inverseTwoAB[1]);
+        cell.directMargin = std::abs(cell.detJx) * inverseLinkProduct;
         // the smallest of the slacks is ≥ 0 exactly when every condition holds
-        const double slack = std::min(std::min(q[0], q[1]),
-                                      std::min(assembly * detJx - sideTolerance, std::min(range[0], range[1])));
+        const double slack = std::min(std::min(cell.q[0], cell.q[1]),
+                                      std::min(assembly * cell.detJx - sideTolerance, std::min(range[0], range[1])));
         const bool ok = (slack >= 0.0) & (r2[0] > 0.0) & (r2[1] > 0.0);
-        const double product = root[0] * root[1];
-        double value;
-        if constexpr (Condition) {
-            const double frobenius = 4.0 * legs[0].b2 / q[0] + 4.0 * legs[1].b2 / q[1];
-            // at a singularity ∞/∞ would give NaN, which means "unreachable": κ is +∞ there
-            const bool regular = (q[0] > 0.0) & (q[1] > 0.0) & (detJx != 0.0);
-            value = regular ? fivebar::conditionNumber(frobenius, 4.0 * std::abs(detJx) / product)
-                            : std::numeric_limits<double>::infinity();
-        } else {
-            value = 4.0 * detJx / (legs[0].working * legs[1].working * product);
-        }
-        values[i] = ok ? static_cast<float>(value) : nan;
-        if constexpr (Margins) {
-            const double margin = std::min(std::min(root[0] / legs[0].twoAB, root[1] / legs[1].twoAB),
-                                           std::abs(detJx) * inverseLinkProduct);
-            margins[i] = ok ? static_cast<float>(margin) : nan;
-        }
+        values[i] = ok ? static_cast<float>(value(cell)) : nan;
+        if constexpr (Margins)
+            margins[i] = ok ? static_cast<float>(std::min(cell.inverseMargin, cell.directMargin)) : nan;
     }
+}
+
+/// det J = det J_x/(k₁k₄) = 4·(L₁×L₂)/(w₁w₄·√Q₁·√Q₄).
+struct Determinant {
+    double workings; ///< w₁w₄
+    double operator()(const Cell &c) const { return 4.0 * c.detJx / (workings * c.root[0] * c.root[1]); }
+};
+
+/// κ from J's rows L_i/k_i, of squared lengths 4b_i²/Q_i.
+struct Condition {
+    double b2[2];
+    double operator()(const Cell &c) const
+    {
+        const double frobenius = 4.0 * b2[0] / c.q[0] + 4.0 * b2[1] / c.q[1];
+        // at a singularity ∞/∞ would give NaN, which means "unreachable": κ is +∞ there
+        const bool regular = (c.q[0] > 0.0) & (c.q[1] > 0.0) & (c.detJx != 0.0);
+        return regular ? fivebar::conditionNumber(frobenius, 4.0 * std::abs(c.detJx) / (c.root[0] * c.root[1]))
+                       : std::numeric_limits<double>::infinity();
+    }
+};
+
+/// What the actuators deliver (capabilitycell.h): J_q = diag(k_i) with |k_i| = √Q_i/2, J_x
+/// rows L_i of length b_i.
+template <MapQuantity Q>
+struct Delivered {
+    capability::CellLimits limits; // a copy: loads the loop may hoist
+    double link[2];
+    double operator()(const Cell &c) const
+    {
+        return capability::cell2<Q>(limits, 0.5 * c.root[0], 0.5 * c.root[1], c.lx[0], c.ly[0], c.lx[1], c.ly[1], link[0],
+                                    link[1], c.inverseMargin < FiveBar::singularTolerance,
+                                    c.directMargin < FiveBar::singularTolerance);
+    }
+};
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#define PKM_MAP_CLONES [[gnu::target_clones("avx512f", "avx2", "default")]]
+#else
+#define PKM_MAP_CLONES
+#endif
+template <bool Margins, class Value>
+PKM_MAP_CLONES void row(const FiveBarDesign &d, double y, double x0, double dx, float *v, float *m, int n, Value value)
+{
+    mapRow<Margins>(d, y, x0, dx, v, m, n, value);
 }
 
 /// Appends to `curves` the runs of two or more consecutive samples t ∈ [from, to] at which
@@ -141,15 +185,32 @@ void FiveBar::fillMapRow(MapQuantity quantity, double y, double x0, double dx, s
     const int count = static_cast<int>(values.size());
     float *v = values.data();
     float *m = margins.empty() ? nullptr : margins.data();
-    const bool condition = quantity == MapQuantity::Condition;
-    if (condition && m)
-        mapRow<true, true>(m_design, y, x0, dx, v, m, count);
-    else if (condition)
-        mapRow<true, false>(m_design, y, x0, dx, v, m, count);
-    else if (m)
-        mapRow<false, true>(m_design, y, x0, dx, v, m, count);
+    const FiveBarDesign &d = m_design;
+    const Condition condition{{d.link[0] * d.link[0], d.link[1] * d.link[1]}};
+    const Determinant determinant{double(d.working[0] * d.working[1])};
+    if (quantity == MapQuantity::Condition)
+        m ? row<true>(d, y, x0, dx, v, m, count, condition) : row<false>(d, y, x0, dx, v, m, count, condition);
     else
-        mapRow<false, false>(m_design, y, x0, dx, v, m, count);
+        m ? row<true>(d, y, x0, dx, v, m, count, determinant) : row<false>(d, y, x0, dx, v, m, count, determinant);
+}
+
+void FiveBar::fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
+                                std::span<float> values, std::span<float> margins) const
+{
+    const int count = static_cast<int>(values.size());
+    const FiveBarDesign &d = m_design;
+    const double link[2] = {d.link[0], d.link[1]};
+    float *v = values.data(), *m = margins.data();
+    switch (limits.quantity) {
+    case MapQuantity::ForceWorst:
+        return row<true>(d, y, x0, dx, v, m, count, Delivered<MapQuantity::ForceWorst>{limits, {link[0], link[1]}});
+    case MapQuantity::SpeedWorst:
+        return row<true>(d, y, x0, dx, v, m, count, Delivered<MapQuantity::SpeedWorst>{limits, {link[0], link[1]}});
+    case MapQuantity::ResolutionWorst:
+        return row<true>(d, y, x0, dx, v, m, count, Delivered<MapQuantity::ResolutionWorst>{limits, {link[0], link[1]}});
+    default:
+        return row<true>(d, y, x0, dx, v, m, count, Delivered<MapQuantity::StiffnessWorst>{limits, {link[0], link[1]}});
+    }
 }
 
 std::vector<SingularCurve> FiveBar::singularCurves() const

@@ -127,6 +127,9 @@ public:
     Eigen::AlignedBox2d workspaceBounds() const override { return m_bounds; }
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
+    bool fillsCapabilityRows() const override { return true; }
+    void fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
+                           std::span<float> values, std::span<float> margins) const override;
     std::vector<SingularCurve> singularCurves() const override;
     std::string singularityMeaning(SingularCurve::Type type) const override
     {

@@ -1,6 +1,7 @@
 // MOMA's workspace and singularity maps (the MOMA document's figs. 6–10): the inner loop
 // of every map, and the singular curves drawn over them.
 #include "moma.h"
+#include "capabilitycell.h"
 #include "text.h"
 
 #include <cmath>
@@ -26,20 +27,30 @@ Leg legOf(const MomaDesign &d, int i)
             d.length[i] * d.length[i], d.length[i], double(d.branch[i]), oneSide};
 }
 
+/// What the map loop knows of one cell, for the quantity it maps.
+struct Cell {
+    double sa, sb;            ///< β_i√D_i without the sign: |L_i·a_i|
+    double Da, Db;            ///< D_i of (9)
+    double lax, lay, lbx, lby;///< L_i = P − Z_i
+    double crossLinks;        ///< L₁×L₂
+    double inverseMargin, directMargin;
+};
+
 /// The map row, written so that the compiler vectorises it: no branches, selects only.
-/// Per cell: inverse kinematics of both legs (7–9), the link vectors L_i = P − Z_i, then
-/// det J = det J_x / det J_p = (L₁×L₂) / (β₁√D₁ · β₂√D₂), because 2p_i − 2B_i = 2β_i√D_i and
-/// the side of P from the line Z₁Z₂ is (Z₂ − Z₁)×(P − Z₁) = L₁×L₂.
-template <bool Condition, bool Margins>
-[[gnu::always_inline]] inline void mapRow(const MomaDesign &d, double y, double x0, double dx, float *values, float *margins, int count)
+/// Per cell: inverse kinematics of both legs (7–9), the link vectors L_i = P − Z_i, then the
+/// quantity `value(cell)`: for det J = det J_x / det J_p = (L₁×L₂) / (β₁√D₁ · β₂√D₂), because
+/// 2p_i − 2B_i = 2β_i√D_i and the side of P from the line Z₁Z₂ is (Z₂ − Z₁)×(P − Z₁) = L₁×L₂.
+template <bool Margins, class Value>
+[[gnu::always_inline]] inline void mapRow(const MomaDesign &d, double y, double x0, double dx, float *values, float *margins,
+                                          int count, const Value &value)
 {
     const Leg a = legOf(d, 0), b = legOf(d, 1);
     const double pMin = d.strokeMin, pMax = d.strokeMax;
     const double assembly = d.assembly;
-    const double branches = a.branch * b.branch;
     const double sideTolerance = -1e-9 * a.length * b.length;
     const double oneSideTolerance = -1e-9 * std::max(a.length, b.length);
     const double inverseLengthProduct = 1.0 / (a.length * b.length);
+    const double inverseA = 1.0 / a.length, inverseB = 1.0 / b.length;
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const double eya = y - a.ry, eyb = y - b.ry;
     for (int i = 0; i < count; ++i) {
@@ -62,30 +73,48 @@ template <bool Condition, bool Margins>
                                       std::min(assembly * crossLinks - sideTolerance,
                                                std::min(sideA - oneSideTolerance, sideB - oneSideTolerance)));
         const bool ok = slack >= 0.0;
-        const double product = sa * sb;
-        double value;
-        if constexpr (Condition) {
-            // σ_max/σ_min of J with rows −L_i/(β_i√D_i), |L_i| = l_i: (T + √(T² − 4δ²))/(2|δ|)
-            const double inverseA = 1.0 / Da, inverseB = 1.0 / Db;
-            const double frobenius = a.lengthSquared * inverseA + b.lengthSquared * inverseB;
-            const double det = std::abs(crossLinks) / product;
-            const double spread = std::sqrt(std::max(0.0, frobenius * frobenius - 4.0 * det * det));
-            // at a singularity ∞/∞ would give NaN, which means "unreachable": κ is +∞ there
-            const bool regular = (Da > 0.0) & (Db > 0.0) & (crossLinks != 0.0);
-            value = regular ? (frobenius + spread) / (2.0 * det) : std::numeric_limits<double>::infinity();
-        } else {
-            value = branches * crossLinks / product;
-        }
-        values[i] = ok ? static_cast<float>(value) : nan;
-        if constexpr (Margins) {
-            const double direct = std::abs(crossLinks) * inverseLengthProduct;
-            const double margin = std::min(std::min(sa / a.length, sb / b.length), direct);
-            margins[i] = ok ? static_cast<float>(margin) : nan;
-        }
+        const Cell cell{sa, sb, Da, Db, lax, lay, lbx, lby, crossLinks,
+                        std::min(sa * inverseA, sb * inverseB), std::abs(crossLinks) * inverseLengthProduct};
+        values[i] = ok ? static_cast<float>(value(cell)) : nan;
+        if constexpr (Margins)
+            margins[i] = ok ? static_cast<float>(std::min(cell.inverseMargin, cell.directMargin)) : nan;
     }
 }
 
-// The four variants, each built for AVX-512 and AVX2 as well as the baseline; the loader picks the best the
+/// σ_max/σ_min of J with rows −L_i/(β_i√D_i), |L_i| = l_i: (T + √(T² − 4δ²))/(2|δ|).
+struct Condition {
+    double lengthSquaredA, lengthSquaredB;
+    double operator()(const Cell &c) const
+    {
+        const double frobenius = lengthSquaredA / c.Da + lengthSquaredB / c.Db;
+        const double det = std::abs(c.crossLinks) / (c.sa * c.sb);
+        const double spread = std::sqrt(std::max(0.0, frobenius * frobenius - 4.0 * det * det));
+        // at a singularity ∞/∞ would give NaN, which means "unreachable": κ is +∞ there
+        const bool regular = (c.Da > 0.0) & (c.Db > 0.0) & (c.crossLinks != 0.0);
+        return regular ? (frobenius + spread) / (2.0 * det) : std::numeric_limits<double>::infinity();
+    }
+};
+
+struct Determinant {
+    double branches; ///< β₁β₂
+    double operator()(const Cell &c) const { return branches * c.crossLinks / (c.sa * c.sb); }
+};
+
+/// What the actuators deliver (capabilitycell.h): J_p = diag(2β_i√D_i), J_x rows 2L_i (18, 20),
+/// whose signs the cell does not need.
+template <MapQuantity Q>
+struct Delivered {
+    capability::CellLimits limits; // a copy: loads the loop may hoist
+    double rowA, rowB;             // |J_x,i| = 2l_i: the links have their length
+    double operator()(const Cell &c) const
+    {
+        return capability::cell2<Q>(limits, 2.0 * c.sa, 2.0 * c.sb, 2.0 * c.lax, 2.0 * c.lay, 2.0 * c.lbx, 2.0 * c.lby,
+                                    rowA, rowB, c.inverseMargin < Moma::singularTolerance,
+                                    c.directMargin < Moma::singularTolerance);
+    }
+};
+
+// The variants, each built for AVX-512 and AVX2 as well as the baseline; the loader picks the best the
 // processor has (GCC function multi-versioning), so one binary runs everywhere.
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
 #define PKM_MAP_CLONES [[gnu::target_clones("avx512f", "avx2", "default")]]
@@ -94,20 +123,31 @@ template <bool Condition, bool Margins>
 #endif
 PKM_MAP_CLONES void determinantRow(const MomaDesign &d, double y, double x0, double dx, float *v, float *, int n)
 {
-    mapRow<false, false>(d, y, x0, dx, v, nullptr, n);
+    mapRow<false>(d, y, x0, dx, v, nullptr, n, Determinant{double(d.branch[0] * d.branch[1])});
 }
 PKM_MAP_CLONES void determinantMarginRow(const MomaDesign &d, double y, double x0, double dx, float *v, float *m, int n)
 {
-    mapRow<false, true>(d, y, x0, dx, v, m, n);
+    mapRow<true>(d, y, x0, dx, v, m, n, Determinant{double(d.branch[0] * d.branch[1])});
 }
 PKM_MAP_CLONES void conditionRow(const MomaDesign &d, double y, double x0, double dx, float *v, float *, int n)
 {
-    mapRow<true, false>(d, y, x0, dx, v, nullptr, n);
+    mapRow<false>(d, y, x0, dx, v, nullptr, n, Condition{d.length[0] * d.length[0], d.length[1] * d.length[1]});
 }
 PKM_MAP_CLONES void conditionMarginRow(const MomaDesign &d, double y, double x0, double dx, float *v, float *m, int n)
 {
-    mapRow<true, true>(d, y, x0, dx, v, m, n);
+    mapRow<true>(d, y, x0, dx, v, m, n, Condition{d.length[0] * d.length[0], d.length[1] * d.length[1]});
 }
+#define PKM_MOMA_DELIVERED(name, quantity)                                                                             \
+    PKM_MAP_CLONES void name(const MomaDesign &d, const capability::CellLimits &l, double y, double x0, double dx,     \
+                             float *v, float *m, int n)                                                                \
+    {                                                                                                                  \
+        mapRow<true>(d, y, x0, dx, v, m, n, Delivered<quantity>{l, 2.0 * d.length[0], 2.0 * d.length[1]}); \
+    }
+PKM_MOMA_DELIVERED(forceRow, MapQuantity::ForceWorst)
+PKM_MOMA_DELIVERED(speedRow, MapQuantity::SpeedWorst)
+PKM_MOMA_DELIVERED(resolutionRow, MapQuantity::ResolutionWorst)
+PKM_MOMA_DELIVERED(stiffnessRow, MapQuantity::StiffnessWorst)
+#undef PKM_MOMA_DELIVERED
 
 } // namespace
 
@@ -124,6 +164,16 @@ void Moma::fillMapRow(MapQuantity quantity, double y, double x0, double dx, std:
         withMargins ? determinantMarginRow(m_design, y, x0, dx, values.data(), m, count)
                     : determinantRow(m_design, y, x0, dx, values.data(), m, count);
     }
+}
+
+void Moma::fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
+                             std::span<float> values, std::span<float> margins) const
+{
+    const auto row = limits.quantity == MapQuantity::ForceWorst        ? forceRow
+                   : limits.quantity == MapQuantity::SpeedWorst        ? speedRow
+                   : limits.quantity == MapQuantity::ResolutionWorst   ? resolutionRow
+                                                                       : stiffnessRow;
+    row(m_design, limits, y, x0, dx, values.data(), margins.data(), static_cast<int>(values.size()));
 }
 
 std::vector<SingularCurve> Moma::singularCurves() const

@@ -208,6 +208,9 @@ public:
     Eigen::AlignedBox2d workspaceBounds() const override { return m_bounds; }
     void fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
                     std::span<float> margins) const override;
+    bool fillsCapabilityRows() const override { return true; }
+    void fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
+                           std::span<float> values, std::span<float> margins) const override;
     /// Inverse curves (a leg's crank and link in line, a link ⟂ its guide) and, for 2 DOF,
     /// direct ones (the distal links in line), traced in closed form (ppcurves.cpp); for 3 DOF
     /// those of the slice at φ = phi_map (the direct ones contoured, directSlice).

@@ -3,6 +3,7 @@
 // kinematic chain for the mobility analysis.
 #include "planarparallel.h"
 
+#include "capabilitycell.h"
 #include "mobility.h"
 #include "text.h"
 
@@ -155,6 +156,39 @@ void PlanarParallel::fillMapRow(MapQuantity quantity, double y, double x0, doubl
         values[c] = static_cast<float>(value);
         if (!margins.empty())
             margins[c] = static_cast<float>(singularity(pose).margin);
+    }
+}
+
+void PlanarParallel::fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
+                                       std::span<float> values, std::span<float> margins) const
+{
+    const int n = m_design.legCount();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    Pose pose;
+    pose.outputs.resize(n);
+    for (std::size_t c = 0; c < values.size(); ++c) {
+        const Eigen::Vector3d X(x0 + double(c) * dx, y, n == 3 ? m_design.mapPhi : 0.0);
+        int culprit = 0;
+        if (inverseCheck(X, nullptr, pose.inputs, culprit) != planar::Reach::Yes) {
+            values[c] = margins[c] = nan;
+            continue;
+        }
+        pose.outputs[0] = X.x();
+        pose.outputs[1] = X.y();
+        if (n == 3)
+            pose.outputs[2] = X.z();
+        // every leg's J_q is its own: diagonal, as capabilitycell.h takes it
+        Eigen::Matrix3d jq, jx;
+        jacobianParts(pose, jq, jx);
+        const Singularity s = singularity(pose);
+        const bool inverse = s.type == SingularityType::Inverse || s.type == SingularityType::Combined;
+        const bool direct = s.type == SingularityType::Direct || s.type == SingularityType::Combined;
+        const double value = n == 3
+            ? capability::cell3(limits, jq.diagonal(), jx, inverse, direct)
+            : capability::cell2(limits, jq(0, 0), jq(1, 1), jx(0, 0), jx(0, 1), jx(1, 0), jx(1, 1),
+                                jx.row(0).head<2>().norm(), jx.row(1).head<2>().norm(), inverse, direct);
+        values[c] = capability::cellValue(value);
+        margins[c] = static_cast<float>(s.margin);
     }
 }
 
