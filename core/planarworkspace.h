@@ -36,12 +36,23 @@ enum class MapQuantity {
     StiffnessWorst,  ///< smallest eigenvalue of K = Jᵀ·K_q·J; 0 at a direct one
     /// Where the design meets every stated requirement on the capability (1) or not (0).
     Specification,
+    /// The first-order worst-case error of the platform point from the design's tolerances
+    /// (tolerance.h), mm, mapped by tolerancemap.h; +∞ at a direct singularity.
+    ToleranceWorst,
 };
 
 /// Whether `quantity` is one of what the actuators deliver (capabilitymap.h computes it).
 constexpr bool isCapability(MapQuantity quantity)
 {
-    return quantity >= MapQuantity::ForceWorst;
+    return quantity >= MapQuantity::ForceWorst && quantity <= MapQuantity::Specification;
+}
+
+/// Whether every cell of a map of `quantity` is a value of the pose solved there, with a name
+/// and a unit of its own (what the actuators deliver, the worst-case error): such a map has a
+/// sequential colour scale from 0 and a title in words.
+constexpr bool isPoseValue(MapQuantity quantity)
+{
+    return isCapability(quantity) || quantity == MapQuantity::ToleranceWorst;
 }
 
 /// A regular grid of cell centres over a box: cell (column c, row r) has its centre at

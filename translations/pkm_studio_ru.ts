@@ -4096,6 +4096,10 @@ Please verify the correct file name was given.</source>
         <source>The requirement &apos;%1&apos; does not end in a finite number.</source>
         <translation>Требование «%1» не заканчивается конечным числом.</translation>
     </message>
+    <message>
+        <source>worst-case error from the tolerances</source>
+        <translation>наибольшая ошибка от допусков</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6703,6 +6707,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>State what the actuators must deliver with Edit ▸ Requirements….</source>
         <translation>Задайте, что должны обеспечить приводы, в меню Правка ▸ Требования….</translation>
+    </message>
+    <message>
+        <source>The first-order worst-case error of the platform point at each point of the workspace, from the tolerances of the Tolerances panel: ∞ at a direct singularity.</source>
+        <translation>Наибольшая ошибка точки платформы в первом приближении в каждой точке рабочего пространства по допускам панели «Допуски»: ∞ в особом положении прямой кинематики.</translation>
+    </message>
+    <message>
+        <source>worst-case error from the tolerances</source>
+        <translation>наибольшая ошибка от допусков</translation>
     </message>
 </context>
 <context>

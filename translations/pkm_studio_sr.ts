@@ -4096,6 +4096,10 @@ Please verify the correct file name was given.</source>
         <source>The requirement &apos;%1&apos; does not end in a finite number.</source>
         <translation>Захтев „%1“ се не завршава коначним бројем.</translation>
     </message>
+    <message>
+        <source>worst-case error from the tolerances</source>
+        <translation>највећа грешка од толеранција</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6703,6 +6707,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>State what the actuators must deliver with Edit ▸ Requirements….</source>
         <translation>Задајте шта погони морају да дају у менију Уређивање ▸ Захтеви….</translation>
+    </message>
+    <message>
+        <source>The first-order worst-case error of the platform point at each point of the workspace, from the tolerances of the Tolerances panel: ∞ at a direct singularity.</source>
+        <translation>Највећа грешка тачке платформе у првом приближењу у свакој тачки радног простора, према толеранцијама панела „Толеранције”: ∞ у сингуларитету директне кинематике.</translation>
+    </message>
+    <message>
+        <source>worst-case error from the tolerances</source>
+        <translation>највећа грешка од толеранција</translation>
     </message>
 </context>
 <context>

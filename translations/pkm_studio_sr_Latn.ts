@@ -4096,6 +4096,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>The requirement &apos;%1&apos; does not end in a finite number.</source>
         <translation>Zahtev „%1“ se ne završava konačnim brojem.</translation>
     </message>
+    <message>
+        <source>worst-case error from the tolerances</source>
+        <translation>najveća greška od tolerancija</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6703,6 +6707,14 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>State what the actuators must deliver with Edit ▸ Requirements….</source>
         <translation>Zadajte šta pogoni moraju da daju u meniju Uređivanje ▸ Zahtevi….</translation>
+    </message>
+    <message>
+        <source>The first-order worst-case error of the platform point at each point of the workspace, from the tolerances of the Tolerances panel: ∞ at a direct singularity.</source>
+        <translation>Najveća greška tačke platforme u prvom približenju u svakoj tački radnog prostora, prema tolerancijama panela „Tolerancije”: ∞ u singularitetu direktne kinematike.</translation>
+    </message>
+    <message>
+        <source>worst-case error from the tolerances</source>
+        <translation>najveća greška od tolerancija</translation>
     </message>
 </context>
 <context>

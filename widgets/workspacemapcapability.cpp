@@ -131,8 +131,11 @@ void WorkspaceMapView::updateCapabilityTitle()
                                                   .arg(toQString(m_shownSymbol), coreLabel(m_shownUnit),
                                                        coreLabel(m_shownLabel), significant(m_colourLimit)),
                                               m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
-    m_plot->setToolTip(tr("What the actuators deliver at each point of the workspace, from their limits in the "
-                          "design: 0 or ∞ exactly at a singularity. Every cell is the value of the pose solved there."));
+    m_plot->setToolTip(m_shownQuantity == MapQuantity::ToleranceWorst
+            ? tr("The first-order worst-case error of the platform point at each point of the workspace, from the "
+                 "tolerances of the Tolerances panel: ∞ at a direct singularity.")
+            : tr("What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ "
+                 "exactly at a singularity. Every cell is the value of the pose solved there."));
 }
 
 } // namespace pkm

@@ -100,7 +100,7 @@ void appendPolyline(QVector<QCPCurveData> &curve, const std::vector<Eigen::Vecto
 /// Touches nothing but its arguments, so it may outlive the request that started it.
 std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQuantity quantity, int resolution,
     bool full, const std::shared_ptr<std::atomic<bool>> &cancel, const Pose &pose,
-    const std::vector<capability::Requirement> &requirements)
+    const std::vector<capability::Requirement> &requirements, const ParameterSet &tolerances)
 {
     auto result = std::make_shared<WorkspaceMapResult>();
     result->quantity = quantity;
@@ -109,11 +109,13 @@ std::shared_ptr<WorkspaceMapResult> compute(const MechanismPtr &mechanism, MapQu
         result->summary.cancelled = true;
         return result;
     }
-    const bool delivered = isCapability(quantity);
+    const bool delivered = isPoseValue(quantity);
     const MapGrid grid = squareGrid(workspace->workspaceBounds(), resolution);
     result->values.resize(grid.cells());
     std::vector<float> margins(full ? grid.cells() : 0);
-    result->summary = delivered
+    result->summary = quantity == MapQuantity::ToleranceWorst
+        ? workspacemap::computeTolerance(mechanism, pose, tolerances, grid, *result, margins, cancel.get())
+        : delivered
         ? workspacemap::computeCapability(*mechanism, pose, quantity, requirements, grid, *result, margins, cancel.get())
         : computeMap(*workspace, quantity, grid, result->values, margins, cancel.get());
     if (result->summary.cancelled || cancel->load()) {
@@ -246,8 +248,9 @@ void WorkspaceMapView::start(JobKind kind, const MechanismPtr &mechanism)
         finished(finishedKind, generation, std::move(result));
     });
     watcher->setFuture(QtConcurrent::run([mechanism, quantity, resolution = m_resolution, full, cancel = job->cancel,
-                                          pose = m_fullPose, requirements = m_requirements] {
-        return compute(mechanism, quantity, resolution, full, cancel, pose, requirements);
+                                          pose = m_fullPose, requirements = m_requirements,
+                                          tolerances = m_tolerances] {
+        return compute(mechanism, quantity, resolution, full, cancel, pose, requirements, tolerances);
     }));
     m_jobs.push_back(std::move(job));
 }

@@ -119,7 +119,7 @@ void WorkspaceMapView::applyMap(WorkspaceMapResult &result)
 
     m_colorMap->setData(result.colours.release()); // takes ownership, no copy
     const bool range = result.quantity == MapQuantity::OrientationRange;
-    const bool delivered = isCapability(result.quantity);
+    const bool delivered = isPoseValue(result.quantity);
     const bool specification = result.quantity == MapQuantity::Specification;
     m_shownSymbol = result.symbol;
     m_shownLabel = result.label;
@@ -224,7 +224,7 @@ void WorkspaceMapView::updateTitle()
 {
     const bool condition = m_shownQuantity == MapQuantity::Condition;
     const QString symbol = condition ? QStringLiteral("κ(J)") : QStringLiteral("det J"); // symbols
-    if (isCapability(m_shownQuantity) && !m_mapBounds.isEmpty() && m_summary.reachableCells > 0) {
+    if (isPoseValue(m_shownQuantity) && !m_mapBounds.isEmpty() && m_summary.reachableCells > 0) {
         updateCapabilityTitle();
         return;
     }
@@ -315,6 +315,7 @@ void WorkspaceMapView::retranslate()
     if (const int range = m_quantityBox->findData(int(MapQuantity::OrientationRange)); range >= 0)
         m_quantityBox->setItemText(range, tr("orientation range of φ"));
     retranslateCapabilityItems();
+    retranslateToleranceItem();
     m_busyLabel->setText(tr("computing…"));
     m_plot->xAxis->setLabel(tr("x (mm)"));
     m_plot->yAxis->setLabel(tr("y (mm)"));

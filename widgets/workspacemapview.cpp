@@ -296,6 +296,7 @@ void WorkspaceMapView::setMechanism(MechanismPtr mechanism)
         m_quantityBox->setCurrentIndex(m_quantityBox->findData(int(m_quantity)));
     }
     syncCapabilityItems();
+    syncToleranceItem();
     requestMap();
 }
 
@@ -305,6 +306,16 @@ void WorkspaceMapView::setRequirements(std::vector<capability::Requirement> requ
         return;
     m_requirements = std::move(requirements);
     if (m_quantity == MapQuantity::Specification && m_mechanism && m_mechanism->planarWorkspace())
+        requestMap();
+}
+
+void WorkspaceMapView::setTolerances(ParameterSet tolerances)
+{
+    if (tolerances == m_tolerances)
+        return;
+    m_tolerances = std::move(tolerances);
+    syncToleranceItem();
+    if (m_quantity == MapQuantity::ToleranceWorst && m_mechanism && m_mechanism->planarWorkspace())
         requestMap();
 }
 

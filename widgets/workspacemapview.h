@@ -70,6 +70,9 @@ public:
 
     /// What the specification map checks (core units); recomputes it when it is shown.
     void setRequirements(std::vector<capability::Requirement> requirements);
+    /// The design's tolerances (core units): with any, the Map list offers the worst-case error
+    /// from them (tolerancemap.h); recomputes it when it is shown.
+    void setTolerances(ParameterSet tolerances);
     /// The shown specification map's area where every requirement holds, mm² (0 otherwise).
     double specificationArea() const { return m_specificationArea; }
 
@@ -150,6 +153,8 @@ private:
     /// Adds or removes the capability items of the combo box as the design declares actuators.
     void syncCapabilityItems();
     void retranslateCapabilityItems();
+    void syncToleranceItem();
+    void retranslateToleranceItem();
     void updateLegend();
     void fitView();
     void resetView();
@@ -166,6 +171,7 @@ private:
     int m_resolution = 500;
     Pose m_fullPose; ///< the last pose given: a capability map's cells start from its modes
     std::vector<capability::Requirement> m_requirements;
+    ParameterSet m_tolerances;
     double m_specificationArea = 0.0;
     std::string m_shownSymbol, m_shownLabel, m_shownUnit; ///< a capability map's entry
 

@@ -64,6 +64,12 @@ MapSummary computeCapability(const Mechanism &mechanism, const Pose &pose, MapQu
                              const std::vector<capability::Requirement> &requirements, const MapGrid &grid,
                              WorkspaceMapResult &result, std::span<float> margins, const std::atomic<bool> *cancel);
 
+/// The worst-case error from `tolerances` (core units) into `result` on the worker, in mm,
+/// with det J's margins; an empty map if the tolerances cannot be analysed.
+MapSummary computeTolerance(const MechanismPtr &mechanism, const Pose &pose, const ParameterSet &tolerances,
+                            const MapGrid &grid, WorkspaceMapResult &result, std::span<float> margins,
+                            const std::atomic<bool> *cancel);
+
 } // namespace workspacemap
 
 } // namespace pkm

@@ -31,6 +31,7 @@ enum OptionFlag : unsigned {
     OptionEquations = 1u << 11, ///< --equations
     OptionTolerance = 1u << 12, ///< --tol, --samples, --seed, --normal
     OptionRequire = 1u << 13, ///< --require NAME>=VALUE (workspace, map)
+    OptionTol = 1u << 14, ///< --tol NAME=±V (tolerance; map --quantity tolerance)
 };
 
 struct CommandSpec {
@@ -49,12 +50,12 @@ constexpr std::array<CommandSpec, 9> commandSpecs = {{
     {Command::Workspace, "workspace", OptionDesign | OptionJson | OptionSet | OptionGrid | OptionOutput | OptionRequire,
         {"png", "svg"}},
     {Command::Map, "map",
-        OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput | OptionRequire,
+        OptionDesign | OptionJson | OptionSet | OptionGrid | OptionQuantity | OptionOutput | OptionRequire | OptionTol,
         {"png", "csv"}},
     {Command::Render, "render", OptionDesign | OptionSet | OptionOutput | OptionPicture | OptionSweep,
         {"png", "svg", "pdf", "gif", "mp4", "webm"}, true},
     {Command::Sheet, "sheet", OptionDesign | OptionSet | OptionOutput | OptionLanguage, {"pdf", "json", "csv"}, true},
-    {Command::Tolerance, "tolerance", OptionDesign | OptionJson | OptionSet | OptionTolerance | OptionGrid},
+    {Command::Tolerance, "tolerance", OptionDesign | OptionJson | OptionSet | OptionTolerance | OptionTol | OptionGrid},
 }};
 
 const CommandSpec *findCommand(std::string_view name)
@@ -92,7 +93,9 @@ unsigned optionFlag(std::string_view option)
         return OptionModes;
     if (option == "--equations")
         return OptionEquations;
-    if (option == "--tol" || option == "--samples" || option == "--seed" || option == "--normal")
+    if (option == "--tol")
+        return OptionTol;
+    if (option == "--samples" || option == "--seed" || option == "--normal")
         return OptionTolerance;
     if (option == "--require")
         return OptionRequire;
@@ -361,8 +364,8 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
                 return usageFailure("--quantity",
                     context + ": the quantity must be 'det' (det J), 'cond' (the condition number of J), 'range' (the "
                               "orientation range of a platform that turns), one of what the actuators deliver "
-                              "('force_worst', 'speed_worst', 'resolution_worst', 'stiffness_worst') or 'spec' (where "
-                              "every --require holds).");
+                              "('force_worst', 'speed_worst', 'resolution_worst', 'stiffness_worst'), 'spec' (where "
+                              "every --require holds) or 'tolerance' (the worst-case error from --tol).");
             }
             invocation.quantity = value;
         } else if (option == "--require") {

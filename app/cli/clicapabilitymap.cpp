@@ -3,6 +3,7 @@
 #include "cli/cliarguments.h"
 #include "report/numberformat.h"
 #include "text.h"
+#include "tolerance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,7 @@ constexpr QuantityName quantityNames[] = {
     {MapQuantity::ResolutionWorst, "resolution_worst", "worst resolution"},
     {MapQuantity::StiffnessWorst, "stiffness_worst", "stiffness in the weakest direction"},
     {MapQuantity::Specification, "spec", "specification region"},
+    {MapQuantity::ToleranceWorst, "tolerance", "worst-case error from the tolerances"},
 };
 } // namespace
 
@@ -109,6 +111,8 @@ MapSummary computeCapabilityInto(const Mechanism &mechanism, const Pose &pose, M
 
 std::string capabilityUnit(const Mechanism &mechanism, MapQuantity quantity)
 {
+    if (quantity == MapQuantity::ToleranceWorst)
+        return std::string(tolerance::normUnit(mechanism).symbol);
     if (!isCapability(quantity) || quantity == MapQuantity::Specification)
         return {};
     return std::string(unitOf(mechanism, capability::entryName(quantity)).symbol);
@@ -183,6 +187,10 @@ std::optional<Failure> capabilityMapFailure(const PreparedDesign &prepared, cons
         return usageFailure("--quantity", "'--quantity spec' maps where the requirements hold, and "
             + prepared.origin + " states none: give at least one --require NAME>=VALUE (for example "
             "--require force_worst>=50).");
+    }
+    if (quantity != MapQuantity::ToleranceWorst && !invocation.tolerances.empty()) {
+        return usageFailure("--tol", "--tol maps the worst-case error from the tolerances (--quantity tolerance); it "
+                                     "does not go with '--quantity " + std::string(quantityKey(quantity)) + "'.");
     }
     if (quantity != MapQuantity::Specification && !invocation.requirements.empty()) {
         return usageFailure("--require", "--require maps where the requirements hold (--quantity spec); it does "

@@ -21,10 +21,10 @@ Commands:
          [-o FILE.png|.svg]                reachable workspace: area, bounds, the area
                                            of every assembly/working mode, where the
                                            actuators deliver what is required
-  map    DESIGN [--grid K] [--quantity det|cond|range|force_worst|…|spec]
-         [--require N>=V]... [--set N=V]... [--json] [-o FILE.png|.csv]
-                                           singularity or capability map over the
-                                           workspace
+  map    DESIGN [--grid K] [--quantity det|cond|range|force_worst|…|spec|tolerance]
+         [--require N>=V]... [--tol N=±V]... [--set N=V]... [--json]
+         [-o FILE.png|.csv]                singularity, capability or worst-case
+                                           error map over the workspace
   render DESIGN [--set N=V]... [--view 2d|3d] [--size WxH] [--camera front|top|side|iso]
          [--orthographic] [--no-caption] -o FILE.png|.svg|.pdf
                                            a picture of the mechanism in a pose: the
@@ -215,7 +215,7 @@ anything is printed. An empty workspace (no reachable cell) exits with status 3.
 
 constexpr std::string_view mapHelp
     = R"(Usage: pkm map DESIGN [--grid K] [--quantity QUANTITY] [--require NAME>=VALUE]...
-               [--set NAME=VALUE]... [--json] [-o FILE.png|FILE.csv]
+               [--tol NAME=±VALUE]... [--set NAME=VALUE]... [--json] [-o FILE.png|FILE.csv]
 
 Computes a singularity map over the workspace of a mechanism whose output is a point of the
 plane, on a grid of square cells over the workspace bounds (the design's current modes),
@@ -231,12 +231,18 @@ and the greatest finite value, the number of near-singular cells (singularity ma
                       total width of the angles φ at which it can be held, in degrees
   --quantity force_worst|speed_worst|resolution_worst|stiffness_worst
                       what the actuators deliver at each cell, as 'pkm eval' gives it in
-                      its "capability" group (N, mm/s, mm, N/mm): each cell is solved (about
-                      1 µs a cell); 0 or ∞ exactly at a singularity
+                      its "capability" group (N, mm/s, mm, N/mm), at about the cost of
+                      det J; 0 or ∞ exactly at a singularity
   --quantity spec     1 where every requirement holds, 0 where one fails (the default
                       with --require); the requirements of --require, else the design
                       file's
+  --quantity tolerance
+                      the first-order worst-case error of the platform point (mm) from the
+                      tolerances, as 'pkm tolerance' gives it at a pose (the default with
+                      --tol); the design file's tolerances, then --tol; ∞ at a direct
+                      singularity; at most 400 cells a side
   --require N>=V      a requirement, as in 'pkm workspace'; repeatable
+  --tol NAME=±VALUE   a tolerance, as in 'pkm tolerance'; repeatable
   --set NAME=VALUE    applied first, as in 'pkm eval'
   --json              {"design", "mechanism", "parameters", "quantity", "unit" (of a
                        capability map), "grid":
@@ -244,12 +250,14 @@ and the greatest finite value, the number of near-singular cells (singularity ma
                        "y_max"}, "cell_size", "bounds", "reachable_cells", "area", "min",
                        "max", "near_singular_cells", "near_singular_margin",
                        "specification" (with spec: as 'pkm workspace --require'),
+                       "tolerances" (with tolerance: NAME: VALUE in the display unit),
                        "colour_scale" (with -o FILE.png), "seconds"}
   -o FILE.png         the map as a picture, one pixel per cell, y up, unreachable cells
                       transparent; det J blue (< 0) – white (0) – red (> 0), clipped at the
                       95th percentile of |det J|; the condition number on a log scale from 1
                       (dark) to 100 (yellow); what the actuators deliver from 0 (dark) to
-                      its 95th percentile (yellow); the specification green where met
+                      its 95th percentile (yellow), the worst-case error alike; the
+                      specification green where met
   -o FILE.csv         the full map: a header line x,y,value,margin and one row per reachable
                       cell (mm, from the bottom row up); a value that is not finite (det J
                       at an inverse singularity) is an empty field

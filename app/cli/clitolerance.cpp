@@ -247,6 +247,32 @@ std::string jsonText(const Context &c)
 
 } // namespace
 
+Result<ParameterSet> tolerancesOf(const PreparedDesign &prepared, const Invocation &invocation,
+                                  const std::string &command)
+{
+    const Mechanism &m = *prepared.mechanism;
+    ParameterSet tolerances = prepared.design.tolerances;
+    for (const ToleranceSetting &setting : invocation.tolerances) {
+        const std::string context = "--tol " + setting.text;
+        auto info = tolerance::checkParameter(m, setting.name);
+        if (!info)
+            return inContext(info.failure(), context);
+        const double value = (*info)->unit.fromDisplay(setting.value);
+        if (value == 0.0) {
+            tolerances.erase(setting.name);
+            continue;
+        }
+        if (auto checked = tolerance::checkTolerance(m, setting.name, value); !checked)
+            return inContext(checked.failure(), context);
+        tolerances[setting.name] = value;
+    }
+    if (tolerances.empty()) {
+        return usageFailure("--tol", command + " needs at least one --tol NAME=±VALUE (or a design file with "
+                                               "tolerances) (see 'pkm tolerance --help').");
+    }
+    return tolerances;
+}
+
 int runToleranceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err)
 {
     const Mechanism &m = *prepared.mechanism;
@@ -254,27 +280,10 @@ int runToleranceCommand(const PreparedDesign &prepared, const Invocation &invoca
         printError(err, failure.message);
         return cliExitCode(failure);
     };
-    // the design file's tolerances, then --tol in order (0 removes one)
-    ParameterSet tolerances = prepared.design.tolerances;
-    for (const ToleranceSetting &setting : invocation.tolerances) {
-        const std::string context = "--tol " + setting.text;
-        auto info = tolerance::checkParameter(m, setting.name);
-        if (!info)
-            return fail(inContext(info.failure(), context));
-        const double value = (*info)->unit.fromDisplay(setting.value);
-        if (value == 0.0) {
-            tolerances.erase(setting.name);
-            continue;
-        }
-        if (auto checked = tolerance::checkTolerance(m, setting.name, value); !checked)
-            return fail(inContext(checked.failure(), context));
-        tolerances[setting.name] = value;
-    }
-    if (tolerances.empty()) {
-        return fail(usageFailure("--tol", "'pkm tolerance' needs at least one --tol NAME=±VALUE (or a design file with "
-                                          "tolerances) (see 'pkm tolerance --help')."));
-    }
-    auto analysis = tolerance::Analysis::make(prepared.mechanism, tolerances);
+    auto tolerances = tolerancesOf(prepared, invocation, "'pkm tolerance'");
+    if (!tolerances)
+        return fail(tolerances.failure());
+    auto analysis = tolerance::Analysis::make(prepared.mechanism, *tolerances);
     if (!analysis)
         return fail(analysis.failure());
     Context c{prepared, invocation, *analysis, analysis->firstOrder(prepared.pose), std::nullopt, std::nullopt,

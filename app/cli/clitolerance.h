@@ -13,4 +13,10 @@ namespace pkm::cli {
 /// one-sentence message naming the culprit on `err`; returns the exit status.
 int runToleranceCommand(const PreparedDesign &prepared, const Invocation &invocation, std::FILE *out, std::FILE *err);
 
+/// The tolerances a command works with, in core units: the design file's, then each --tol in
+/// order (±0 removes one). The failure names the --tol at fault, or says there are none
+/// (`command` names the command in that sentence: "'pkm tolerance'").
+Result<ParameterSet> tolerancesOf(const PreparedDesign &prepared, const Invocation &invocation,
+                                  const std::string &command);
+
 } // namespace pkm::cli

@@ -2,6 +2,7 @@
 
 #include "cli/cli.h"
 #include "cli/clicapabilitymap.h"
+#include "cli/clitolerance.h"
 #include "cli/cliworkspaceparts.h"
 #include "document/savefile.h"
 #include "registry.h"
@@ -10,6 +11,7 @@
 #include "report/report.h"
 #include "report/texttable.h"
 #include "report/workspaceoutline.h"
+#include "tolerancemap.h"
 #include "units.h"
 
 #include <QByteArray>
@@ -256,6 +258,15 @@ int runMap(const Context &context)
         json.key("near_singular_margin").number(nearSingularMargin);
         if (quantity == MapQuantity::Specification)
             writeSpecificationJson(json, mechanism, requirements, specification, map.summary);
+        if (quantity == MapQuantity::ToleranceWorst) {
+            json.key("tolerances"); // in the parameters' display units, as --tol takes them
+            json.beginObject(true);
+            for (const auto &[name, value] : computed->tolerances) {
+                const ParameterInfo *info = mechanism.findParameter(name);
+                json.key(name).number(info ? info->unit.toDisplay(value) : value);
+            }
+            json.endObject();
+        }
         if (png) {
             json.key("colour_scale");
             json.beginObject(true);
@@ -366,11 +377,14 @@ Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invoc
     if (!workspace)
         return workspace.failure();
     const Mechanism &mechanism = *prepared.mechanism;
-    // --require alone maps where the requirements hold
+    // --require alone maps where the requirements hold, --tol alone the worst-case error
     const bool required = !invocation.requirements.empty();
     CommandMap computed;
     // checked by the argument parser: a key of quantityOf()
-    computed.quantity = quantityOf(invocation.quantity.value_or(required ? "spec" : "det")).value_or(MapQuantity::Determinant);
+    computed.quantity = quantityOf(invocation.quantity.value_or(required                          ? "spec"
+                                                                : !invocation.tolerances.empty() ? "tolerance"
+                                                                                                 : "det"))
+                            .value_or(MapQuantity::Determinant);
     const MapQuantity quantity = computed.quantity;
     if (auto failure = capabilityMapFailure(prepared, invocation, **workspace, quantity))
         return *failure;
@@ -380,7 +394,24 @@ Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invoc
     computed.requirements = std::move(*requirements);
     ComputedMap &map = computed.map;
     const int resolution = invocation.grid.value_or(defaultGrid);
-    if (isCapability(quantity)) {
+    if (quantity == MapQuantity::ToleranceWorst) {
+        auto tolerances = tolerancesOf(prepared, invocation, "'pkm map --quantity tolerance'");
+        if (!tolerances)
+            return tolerances.failure();
+        if (resolution > tolerance::maxMapGrid) {
+            return usageFailure("--grid", "--grid " + std::to_string(resolution) + ": the worst-case map takes at most "
+                                              + std::to_string(tolerance::maxMapGrid) + " cells per side.");
+        }
+        auto analysis = tolerance::Analysis::make(prepared.mechanism, *tolerances);
+        if (!analysis)
+            return analysis.failure();
+        // the margins are det J's on the same grid: where the mechanism is near a singularity
+        const MapSummary closed = computeInto(**workspace, MapQuantity::Determinant, resolution, map.values, &map.margins);
+        map.summary = tolerance::computeMap(*analysis, capability::mapStart(mechanism, prepared.pose), closed.grid,
+                                            map.values);
+        map.summary.nearSingularCells = closed.nearSingularCells;
+        computed.tolerances = std::move(*tolerances);
+    } else if (isCapability(quantity)) {
         map.summary = computeCapabilityInto(mechanism, prepared.pose, quantity, computed.requirements, resolution,
                                             map.values, map.margins, &computed.specification);
     } else {

@@ -45,6 +45,7 @@ struct CommandMap {
     ComputedMap map;
     std::vector<capability::Requirement> requirements;
     capability::SpecificationSummary specification;
+    ParameterSet tolerances; ///< --quantity tolerance: core units
 };
 Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invocation &invocation);
 

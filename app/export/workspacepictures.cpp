@@ -138,8 +138,8 @@ QImage mapImage(const MapGrid &grid, std::span<const float> values, MapQuantity 
                 line[c] = interpolate(sequential, t);
             } else if (quantity == MapQuantity::Specification) {
                 line[c] = value > 0.5 ? specificationMet : specificationFailed;
-            } else if (quantity == MapQuantity::OrientationRange || isCapability(quantity)) {
-                // what the actuators deliver runs from 0 (none: at a singularity) upwards; an
+            } else if (quantity == MapQuantity::OrientationRange || isPoseValue(quantity)) {
+                // what the actuators deliver and the error run from 0 (none: at a singularity) upwards; an
                 // infinite value (the resolution at a direct singularity) takes the top colour
                 line[c] = interpolate(sequential, std::isinf(value) ? 1.0 : std::clamp(value / limit, 0.0, 1.0));
             } else {

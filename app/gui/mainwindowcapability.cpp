@@ -86,6 +86,13 @@ void MainWindow::createRequirementsAction(QMenu *editMenu)
     editMenu->addAction(m_requirementsAction);
     connect(m_document, &Document::requirementsChanged, this, &MainWindow::showRequirements);
     connect(m_document, &Document::designChanged, this, &MainWindow::showRequirements);
+    // the tolerances of the Tolerances panel: the workspace map offers their worst-case error
+    const auto showTolerances = [this] {
+        for (WorkspaceMapView *map : findChildren<WorkspaceMapView *>())
+            map->setTolerances(m_document->tolerances());
+    };
+    connect(m_document, &Document::tolerancesChanged, this, showTolerances);
+    connect(m_document, &Document::designChanged, this, showTolerances);
 }
 
 void MainWindow::editRequirements()

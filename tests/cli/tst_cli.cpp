@@ -2251,7 +2251,7 @@ void TestCli::help_data()
     QTest::newRow("--help lists workspace") << QStringList{QStringLiteral("--help")}
                                             << QStringLiteral("workspace DESIGN [--grid K]");
     QTest::newRow("--help lists map") << QStringList{QStringLiteral("--help")}
-                                      << QStringLiteral("map    DESIGN [--grid K] [--quantity det|cond|range|force_worst|…|spec]");
+                                      << QStringLiteral("map    DESIGN [--grid K] [--quantity det|cond|range|force_worst|…|spec|tolerance]");
     QTest::newRow("workspace --help") << args({"workspace", "--help"}) << QStringLiteral("Usage: pkm workspace");
     QTest::newRow("help map") << args({"help", "map"}) << QStringLiteral("Usage: pkm map");
     QTest::newRow("map -h wins over errors") << args({"map", "--grid", "1", "-h"}) << QStringLiteral("-o FILE.csv");

@@ -1,10 +1,12 @@
 // `pkm tolerance` (docs/cli.md): the first-order worst case and the Monte Carlo at the pose for
 // a preset of every kind, the ways of writing ±, the refusals that name the parameter, the
-// design file's "tolerances", the map summary and reproducibility of the seed.
+// design file's "tolerances", the map summary and reproducibility of the seed; and the map of
+// the worst case (`pkm map --quantity tolerance`), whose cells are `pkm tolerance` at their point.
 
 #include "support/app.h"
 #include "support/process.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -129,6 +131,13 @@ private slots:
         QTest::newRow("seed") << args({"tolerance", "pjoint-prototype", "--tol", "a=1", "--seed", "-3"}) << "--seed";
         QTest::newRow("no map") << args({"tolerance", "pjoint-prototype", "--tol", "a=1", "--grid", "20"})
                                 << "no planar workspace";
+        // the map of the worst case
+        QTest::newRow("map, no tolerance") << args({"map", "moma-3a", "--quantity", "tolerance"}) << "--tol NAME=±VALUE";
+        QTest::newRow("map, another quantity") << args({"map", "moma-3a", "--quantity", "det", "--tol", "l1=±0.1"})
+                                               << "does not go with '--quantity det'";
+        QTest::newRow("map, grid too fine") << args({"map", "moma-3a", "--tol", "l1=±0.1", "--grid", "401"})
+                                            << "at most 400 cells";
+        QTest::newRow("map, not a parameter") << args({"map", "moma-3a", "--tol", "speed=±1"}) << "speed";
     }
     /// One message naming the culprit, exit status 2, nothing on standard output.
     void refusals()
@@ -184,6 +193,55 @@ private slots:
         QVERIFY(map.value(QLatin1String("reachable_cells")).toInt() > 0);
         QVERIFY(map.value(QLatin1String("max")).toDouble() >= map.value(QLatin1String("min")).toDouble());
         QVERIFY(map.value(QLatin1String("min")).toDouble() > 0);
+    }
+
+    /// `pkm map --tol`: every sampled cell of the CSV is the worst case `pkm tolerance` gives at
+    /// the pose solved there, for a 2-DOF and a 3-DOF platform (at φ = phi_map).
+    void mapCellsAreTheWorstCase_data()
+    {
+        QTest::addColumn<QString>("preset");
+        QTest::addColumn<QStringList>("tolerances");
+        QTest::addRow("MOMA") << QStringLiteral("moma-3a") << args({"--tol", "l1=±0.1", "--tol", "R1x=±0.05"});
+        QTest::addRow("3-RRR") << QStringLiteral("pp-3rrr") << args({"--tol", "l1=±0.1", "--tol", "r2=±0.05"});
+    }
+    void mapCellsAreTheWorstCase()
+    {
+        QFETCH(QString, preset);
+        QFETCH(QStringList, tolerances);
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("error.csv"));
+        const QJsonObject r = pkmJson(QStringList{QStringLiteral("map"), preset} + args({"--grid", "30", "--json", "-o"})
+                                      + QStringList{csv} + tolerances);
+        QCOMPARE(r.value(QLatin1String("quantity")).toString(), QStringLiteral("tolerance")); // --tol alone
+        QCOMPARE(r.value(QLatin1String("unit")).toString(), QStringLiteral("mm"));
+        QVERIFY(r.value(QLatin1String("tolerances")).toObject().contains(QLatin1String("l1")));
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().split('\n');
+        QCOMPARE(lines.front(), QByteArray("x,y,value,margin"));
+        int compared = 0;
+        for (qsizetype i = 1; i + 1 < lines.size(); i += std::max<qsizetype>(1, lines.size() / 7)) {
+            const QList<QByteArray> cells = lines[i].split(',');
+            QCOMPARE(cells.size(), 4);
+            QStringList at = QStringList{QStringLiteral("tolerance"), preset} + args({"--samples", "0", "--json", "--set"})
+                + QStringList{QStringLiteral("x=") + QString::fromLatin1(cells[0]), QStringLiteral("--set"),
+                              QStringLiteral("y=") + QString::fromLatin1(cells[1])};
+            if (preset.startsWith(QLatin1String("pp-3")))
+                at += args({"--set", "phi=0"});
+            const QJsonObject pose = pkmJson(at + tolerances);
+            const double expected = pose.value(QLatin1String("first_order")).toObject()
+                                        .value(QLatin1String("worst_norm")).toDouble();
+            const double cell = cells[2].toDouble();
+            QVERIFY2(std::abs(cell - expected) <= 1e-6 * expected,
+                     qPrintable(QStringLiteral("%1: %2 against %3").arg(QString::fromLatin1(lines[i])).arg(cell).arg(expected)));
+            ++compared;
+        }
+        QVERIFY(compared >= 5);
+        // the picture, through the drawing half of the command line
+        const QString png = dir.filePath(QStringLiteral("error.png"));
+        QCOMPARE(runPkm(QStringList{QStringLiteral("map"), preset} + args({"--grid", "30", "-o"}) + QStringList{png}
+                        + tolerances).exitCode, 0);
+        QVERIFY(QFile::exists(png));
     }
 };
 

@@ -5,6 +5,7 @@
 #include "planarworkspace.h"
 #include "quantityformat.h"
 #include "registry.h"
+#include "tolerance.h"
 #include "workspacemapview.h"
 #include "document/designfile.h"
 
@@ -91,6 +92,7 @@ private slots:
     void conditionNumber();
     void orientationRange();
     void capabilityMaps();
+    void toleranceMap();
     void comparison();
     void directSingularities3d();
     void noPlanarWorkspace();
@@ -399,6 +401,53 @@ void TestWorkspaceMapView::capabilityMaps()
     QVERIFY(ready.wait(waitMilliseconds));
     QCOMPARE(view.specificationArea(), 0.0);
     QVERIFY(view.plot()->toolTip().contains(QStringLiteral("speed_worst")));
+}
+
+/// The design's tolerances put their worst-case error in the Map list: the cell under the pose
+/// is the pose's first-order worst case, the scale starts at 0, and without tolerances the
+/// entry goes and det J comes back.
+void TestWorkspaceMapView::toleranceMap()
+{
+    auto design = designfile::load(QStringLiteral("moma-3a"));
+    QVERIFY(design);
+    WorkspaceMapView view;
+    view.setPose(design->pose);
+    QVERIFY(showMap(view, design->mechanism));
+    QCOMPARE(view.quantityBox()->findData(int(MapQuantity::ToleranceWorst)), -1);
+    const ParameterSet tolerances{{"l1", 0.1}, {"R1x", 0.05}};
+    view.setTolerances(tolerances);
+    const int item = view.quantityBox()->findData(int(MapQuantity::ToleranceWorst));
+    QVERIFY(item >= 0);
+    QSignalSpy ready(&view, &WorkspaceMapView::mapReady);
+    emit view.quantityBox()->activated(item);
+    QVERIFY(ready.wait(waitMilliseconds));
+    QCOMPARE(view.quantity(), MapQuantity::ToleranceWorst);
+    QVERIFY(view.summary().reachableCells > 1000);
+    QCOMPARE(view.colorMap()->dataRange().lower, 0.0);
+    QVERIFY(view.plot()->toolTip().contains(QStringLiteral("tolerances")));
+    // the cell under the pose against the analysis at the cell's centre
+    const MapGrid &grid = view.summary().grid;
+    const Eigen::Vector2d at = platform(design->pose);
+    const int c = int((at.x() - grid.bounds.min().x()) / grid.dx()), r = int((at.y() - grid.bounds.min().y()) / grid.dy());
+    Coordinates centre = design->pose.outputs;
+    centre[0] = grid.x(c);
+    centre[1] = grid.y(r);
+    const auto pose = design->mechanism->solveInverse(centre, &design->pose);
+    QVERIFY(pose);
+    const auto analysis = tolerance::Analysis::make(design->mechanism, tolerances);
+    QVERIFY(analysis);
+    const double expected = analysis->firstOrder(*pose).worstNorm;
+    const double cell = view.valueAt({grid.x(c), grid.y(r)});
+    QVERIFY2(std::abs(cell - expected) <= 1e-5 * expected, qPrintable(QStringLiteral("%1 against %2").arg(cell).arg(expected)));
+    // a changed tolerance recomputes the map; none takes the entry away
+    ready.clear();
+    view.setTolerances({{"l1", 0.2}});
+    QVERIFY(ready.wait(waitMilliseconds));
+    ready.clear();
+    view.setTolerances({});
+    QCOMPARE(view.quantityBox()->findData(int(MapQuantity::ToleranceWorst)), -1);
+    QCOMPARE(view.quantity(), MapQuantity::Determinant);
+    QVERIFY(ready.wait(waitMilliseconds));
 }
 
 void TestWorkspaceMapView::comparison()
