@@ -43,14 +43,20 @@ Eigen::AlignedBox2d reachableBounds(const MapGrid &grid, std::span<const float> 
     int cMin = grid.columns, cMax = -1, rMin = grid.rows, rMax = -1;
     for (int r = 0; r < grid.rows; ++r) {
         const float *row = values.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(grid.columns);
-        for (int c = 0; c < grid.columns; ++c) {
-            if (!reachable(row[c]))
-                continue;
-            cMin = std::min(cMin, c);
-            cMax = std::max(cMax, c);
-            rMin = std::min(rMin, r);
-            rMax = std::max(rMax, r);
-        }
+        // a row's first and last reachable cells, read from either end: the cells between them
+        // cannot widen the box (a 3000² map is read in a fraction of the time)
+        int first = 0;
+        while (first < grid.columns && !reachable(row[first]))
+            ++first;
+        if (first == grid.columns)
+            continue;
+        int last = grid.columns - 1;
+        while (!reachable(row[last]))
+            --last;
+        cMin = std::min(cMin, first);
+        cMax = std::max(cMax, last);
+        rMin = std::min(rMin, r);
+        rMax = std::max(rMax, r);
     }
     Eigen::AlignedBox2d box; // empty
     if (cMax < 0)
