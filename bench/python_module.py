@@ -22,19 +22,7 @@ import time
 import numpy as np
 
 import pkmstudio
-
-
-def machine():
-    model, flags = "unknown CPU", []
-    with open("/proc/cpuinfo") as cpuinfo:
-        for line in cpuinfo:
-            key, _, value = line.partition(":")
-            if key.strip() == "model name":
-                model = value.strip()
-            elif key.strip() == "flags":
-                flags = value.split()
-    extensions = [f for f in ("sse4_2", "avx", "avx2", "fma", "avx512f") if f in flags]
-    return f"{model}, {os.cpu_count()} cores ({' '.join(extensions)})"
+from benchmachine import machine
 
 
 def best(runs, work):

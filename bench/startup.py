@@ -17,20 +17,7 @@ import subprocess
 import sys
 import time
 
-
-def machine():
-    model, flags = "unknown CPU", set()
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name") and model == "unknown CPU":
-                    model = line.split(":", 1)[1].strip()
-                if line.startswith("flags") and not flags:
-                    flags = set(line.split(":", 1)[1].split())
-    except OSError:
-        pass
-    extensions = [e for e in ("sse4_2", "avx", "avx2", "fma", "avx512f") if e in flags]
-    return f"{model} ({' '.join(extensions)}), {os.cpu_count()} cores"
+from benchmachine import machine
 
 
 def main():

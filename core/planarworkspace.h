@@ -136,6 +136,9 @@ struct MapSummary {
     double min = 0.0; ///< over the reachable, finite cells (0 when there are none)
     double max = 0.0;
     double area = 0.0; ///< reachable cells × cell area, mm²
+    /// The box of the reachable cells (their edges, mm; empty when none), filled by a planar
+    /// workspace's computeMap() and summariseMap() only.
+    Eigen::AlignedBox2d reachableBox;
     double seconds = 0.0;
     bool cancelled = false;
 };
@@ -146,6 +149,12 @@ struct MapSummary {
 MapSummary computeMap(const PlanarWorkspace &workspace, MapQuantity quantity, const MapGrid &grid,
                       std::span<float> values, std::span<float> margins = {},
                       const std::atomic<bool> *cancel = nullptr, int threads = 0);
+
+/// computeMap()'s summary without keeping the cells: each thread fills and tallies one row at
+/// a time in a buffer of its own, so memory does not grow with the grid. near-singular cells
+/// are counted only `withMargins`.
+MapSummary summariseMap(const PlanarWorkspace &workspace, MapQuantity quantity, const MapGrid &grid,
+                        bool withMargins = true, const std::atomic<bool> *cancel = nullptr, int threads = 0);
 
 /// The grid of `resolution` cells along the longer side of the workspace bounds, with square
 /// cells (resolution ≥ 2).

@@ -205,16 +205,16 @@ int runWorkspace(const Context &context)
 int runMap(const Context &context)
 {
     const Mechanism &mechanism = *context.prepared.mechanism;
-    auto computed = computeCommandMap(context.prepared, context.invocation);
+    const auto &path = context.invocation.output;
+    auto computed = computeCommandMap(context.prepared, context.invocation, path.has_value());
     if (!computed)
         return failWith(context.err, computed.failure());
     const MapQuantity quantity = computed->quantity;
     const ComputedMap &map = computed->map;
     const std::vector<capability::Requirement> &requirements = computed->requirements;
     const capability::SpecificationSummary &specification = computed->specification;
-    const Eigen::AlignedBox2d box = reachableBounds(map.grid, map.values);
+    const Eigen::AlignedBox2d &box = computed->box;
 
-    const auto &path = context.invocation.output;
     const bool png = path && fileExtension(*path) == "png";
     double limit = 0.0;
     if (path) {
@@ -371,7 +371,7 @@ Result<CommandWorkspace> computeCommandWorkspace(const PreparedDesign &prepared,
     return computed;
 }
 
-Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invocation &invocation)
+Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invocation &invocation, bool keepCells)
 {
     const auto workspace = planarWorkspaceOf(prepared, Command::Map);
     if (!workspace)
@@ -414,10 +414,13 @@ Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invoc
     } else if (isCapability(quantity)) {
         map.summary = computeCapabilityInto(mechanism, prepared.pose, quantity, computed.requirements, resolution,
                                             map.values, map.margins, &computed.specification);
-    } else {
+    } else if (keepCells) {
         map.summary = computeInto(**workspace, quantity, resolution, map.values, &map.margins);
+    } else {
+        map.summary = summariseMap(**workspace, quantity, squareGrid((*workspace)->workspaceBounds(), resolution));
     }
     map.grid = map.summary.grid;
+    computed.box = map.values.empty() ? map.summary.reachableBox : reachableBounds(map.grid, map.values);
     if (quantity == MapQuantity::OrientationRange) {
         // the core maps radians; the command line gives angles in degrees, as everywhere
         for (float &value : map.values)

@@ -46,8 +46,12 @@ struct CommandMap {
     std::vector<capability::Requirement> requirements;
     capability::SpecificationSummary specification;
     ParameterSet tolerances; ///< --quantity tolerance: core units
+    Eigen::AlignedBox2d box; ///< the reachable cells' box, mm
 };
-Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invocation &invocation);
+/// Without `keepCells` a det J or κ map is summarised row by row and map.values stays empty
+/// (`pkm map --json` without -o needs only the summary).
+Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invocation &invocation,
+                                     bool keepCells = true);
 
 /// The workspace as `pkm workspace` computes it from --grid and --require (or the design's
 /// requirements): the det J map of the design's modes (its reachable cells are the finite

@@ -960,6 +960,52 @@ private slots:
         QCOMPARE(refused.area, 0.0);
     }
 
+    /// The tally (integer keys for min and max, a row's ends for the box) against a plain
+    /// loop over the kept cells, and summariseMap(), which keeps none, against computeMap().
+    void summaryWithoutCells_data() { addPresetRows(); }
+    void summaryWithoutCells()
+    {
+        auto m = rowMoma();
+        for (const MapQuantity quantity : {MapQuantity::Determinant, MapQuantity::Condition}) {
+            const Map map = computed(*m, quantity, 257, true);
+            std::size_t reachable = 0, nearSingular = 0;
+            double low = std::numeric_limits<double>::infinity(), high = -low;
+            Eigen::AlignedBox2d box;
+            for (int r = 0; r < map.grid.rows; ++r) {
+                for (int c = 0; c < map.grid.columns; ++c) {
+                    const std::size_t i = std::size_t(r) * std::size_t(map.grid.columns) + std::size_t(c);
+                    const float v = map.values[i];
+                    if (std::isnan(v))
+                        continue;
+                    ++reachable;
+                    nearSingular += map.margins[i] < nearSingularMargin;
+                    if (std::isfinite(v)) {
+                        low = std::min(low, double(v));
+                        high = std::max(high, double(v));
+                    }
+                    const Eigen::Vector2d corner = map.grid.bounds.min() + Eigen::Vector2d(c * map.grid.dx(), r * map.grid.dy());
+                    box.extend(corner);
+                    box.extend(corner + Eigen::Vector2d(map.grid.dx(), map.grid.dy()));
+                }
+            }
+            QVERIFY(reachable > 0);
+            QCOMPARE(map.summary.reachableCells, reachable);
+            QCOMPARE(map.summary.nearSingularCells, nearSingular);
+            QCOMPARE(map.summary.min, low);
+            QCOMPARE(map.summary.max, high);
+            QVERIFY(map.summary.reachableBox.isApprox(box, 1e-12));
+
+            const MapSummary streamed = summariseMap(*m, quantity, map.grid);
+            QCOMPARE(streamed.reachableCells, reachable);
+            QCOMPARE(streamed.nearSingularCells, nearSingular);
+            QCOMPARE(streamed.min, low);
+            QCOMPARE(streamed.max, high);
+            QCOMPARE(streamed.area, map.summary.area);
+            QVERIFY(streamed.reachableBox.isApprox(box, 1e-12));
+            QCOMPARE(summariseMap(*m, quantity, map.grid, false).nearSingularCells, std::size_t(0));
+        }
+    }
+
     void outlineIsClosed_data() { addPresetRows(); }
     void outlineIsClosed()
     {

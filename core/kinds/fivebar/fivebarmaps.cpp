@@ -1,6 +1,7 @@
 // The five-bar's workspace and singularity maps: the inner loop of every map, the singular
 // curves drawn over them and the box that holds the workspace.
 #include "fivebar.h"
+#include "mapclones.h"
 #include "capabilitycell.h"
 #include "text.h"
 
@@ -140,11 +141,6 @@ struct Delivered {
     }
 };
 
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-#define PKM_MAP_CLONES [[gnu::target_clones("avx512f", "avx2", "default")]]
-#else
-#define PKM_MAP_CLONES
-#endif
 template <bool Margins, class Value>
 PKM_MAP_CLONES void row(const FiveBarDesign &d, double y, double x0, double dx, float *v, float *m, int n, Value value)
 {

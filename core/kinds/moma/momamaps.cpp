@@ -1,6 +1,7 @@
 // MOMA's workspace and singularity maps (the MOMA document's figs. 6–10): the inner loop
 // of every map, and the singular curves drawn over them.
 #include "moma.h"
+#include "mapclones.h"
 #include "capabilitycell.h"
 #include "text.h"
 
@@ -114,13 +115,7 @@ struct Delivered {
     }
 };
 
-// The variants, each built for AVX-512 and AVX2 as well as the baseline; the loader picks the best the
-// processor has (GCC function multi-versioning), so one binary runs everywhere.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-#define PKM_MAP_CLONES [[gnu::target_clones("avx512f", "avx2", "default")]]
-#else
-#define PKM_MAP_CLONES
-#endif
+// The variants, each built for AVX-512 and AVX2 as well as the baseline (mapclones.h).
 PKM_MAP_CLONES void determinantRow(const MomaDesign &d, double y, double x0, double dx, float *v, float *, int n)
 {
     mapRow<false>(d, y, x0, dx, v, nullptr, n, Determinant{double(d.branch[0] * d.branch[1])});
