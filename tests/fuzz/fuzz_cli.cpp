@@ -122,8 +122,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             pkm::fuzz::fail("a failed command wrote to stdout", output);
     } else if (arguments.contains(QStringLiteral("--json")) && !arguments.contains(QStringLiteral("--help")) &&
                !arguments.contains(QStringLiteral("-h")) && arguments.first() != QStringLiteral("--version") &&
-               arguments.first() != QStringLiteral("-V")) {
-        // (help anywhere, and --version first, win over every other option and print text)
+               arguments.first() != QStringLiteral("-V") && arguments.first() != QStringLiteral("help")) {
+        // (help anywhere, and the help command or --version first, win over every other option
+        // and print text: `pkm help eval --json` is eval's usage)
         pkm::fuzz::checkJson(QByteArray(output.data(), qsizetype(output.size())));
     }
     std::free(outBuffer);
