@@ -252,6 +252,7 @@ private:
     Eigen::AlignedBox3d m_view3dExtent; ///< of the model last fitted in the 3D view
     QStackedWidget *m_plots = nullptr;
     QSplitter *m_splitter = nullptr;
+    QLabel *m_statusText = nullptr; // the status message, wrapped (watchStatusBar)
     QLabel *m_poseLabel = nullptr;
     QLabel *m_singularityLabel = nullptr;
     QString m_lastStatus;

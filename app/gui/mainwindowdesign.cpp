@@ -230,7 +230,7 @@ void MainWindow::showStatus(const QString &message, bool error)
 {
     m_lastStatus = message;
     m_statusIsError = error;
-    statusBar()->setStyleSheet(error ? QStringLiteral("QStatusBar { color: #b3261e; font-weight: bold; }")
+    statusBar()->setStyleSheet(error ? QStringLiteral("QStatusBar, QLabel#statusText { color: #b3261e; font-weight: bold; }")
                                      : QString());
     statusBar()->showMessage(message); // an error stays until the next change succeeds
     fitStatusMessage(); // also when only its weight changed

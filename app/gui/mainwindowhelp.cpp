@@ -26,6 +26,8 @@
 #include <QStatusBar>
 #include <QWhatsThis>
 
+#include <algorithm>
+
 namespace pkm {
 
 namespace {
@@ -50,9 +52,13 @@ private:
     std::function<void()> m_react;
 };
 
-/// QStatusBar draws its message from 6 px to 12 px before its right edge, or to 2 px before
-/// the first permanent widget shown (qstatusbar.cpp); the rest is the layout's spacing.
+/// The room QStatusBar leaves around its items: its margins and the layout's spacing.
 constexpr int statusMessageMargins = 6 + 12 + 2;
+/// A message longer than this many lines of the bar is cut with an ellipsis; the tooltip
+/// keeps the whole of it.
+constexpr int statusMessageLines = 3;
+/// Where the message starts, from the bar's left edge.
+constexpr int statusTextIndent = 4;
 
 } // namespace
 
@@ -124,6 +130,19 @@ void MainWindow::updateWhatsThis()
 
 void MainWindow::watchStatusBar()
 {
+    // QStatusBar draws a message on one line, cut at the bar's edge. The message is shown by a
+    // word-wrapped label instead, the first permanent widget, which also leaves the bar's own
+    // drawing no room (it ends 2 px before the first permanent widget shown). The bar's
+    // message stays the one state: the label only follows it.
+    m_statusText = new QLabel(this);
+    m_statusText->setObjectName(QStringLiteral("statusText"));
+    m_statusText->setWordWrap(true);
+    m_statusText->setTextFormat(Qt::PlainText);
+    m_statusText->setContentsMargins(statusTextIndent, 0, 0, 0);
+    // its size is set from the message (fitStatusMessage): a word-wrapped label's own minimum
+    // is its text at the narrowest width, as tall as the screen
+    m_statusText->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    statusBar()->insertPermanentWidget(0, m_statusText, 1);
     connect(statusBar(), &QStatusBar::messageChanged, this, &MainWindow::fitStatusMessage);
     statusBar()->installEventFilter(new ResizeWatcher(this, [this] { fitStatusMessage(); }));
 }
@@ -131,18 +150,19 @@ void MainWindow::watchStatusBar()
 void MainWindow::fitStatusMessage()
 {
     // A message is worth more than the pose read-out beside it (the sliders show the pose too):
-    // when both do not fit, the read-out steps aside while the message is shown. The tooltip
-    // keeps the whole message for a bar narrower than the message itself.
-    if (!m_poseLabel)
+    // when both do not fit, the read-out steps aside while the message is shown. A message
+    // wider than the whole bar wraps onto up to three lines, and the bar grows while it shows.
+    if (!m_poseLabel || !m_statusText)
         return; // a message before the read-outs exist
     QStatusBar *bar = statusBar();
     const QString message = bar->currentMessage();
     bar->setToolTip(message);
+    QFont font = bar->font();
+    font.setBold(m_statusIsError && !message.isEmpty()); // errors are bold (showStatus)
+    const QFontMetrics metrics(font);
     bool readOuts = true;
     if (!message.isEmpty()) {
-        QFont font = bar->font();
-        font.setBold(m_statusIsError); // errors are bold (showStatus)
-        const int needed = QFontMetrics(font).horizontalAdvance(message) + statusMessageMargins;
+        const int needed = metrics.horizontalAdvance(message) + statusMessageMargins;
         int beside = 0;
         for (QLabel *label : {m_poseLabel, m_singularityLabel}) {
             if (!label->text().isEmpty())
@@ -152,6 +172,24 @@ void MainWindow::fitStatusMessage()
     }
     m_poseLabel->setVisible(readOuts);
     m_singularityLabel->setVisible(readOuts);
+
+    const int room = std::max(1, bar->width() - statusMessageMargins - statusTextIndent);
+    const int maxHeight = statusMessageLines * metrics.lineSpacing();
+    QString shown = message;
+    const auto height = [&](const QString &text) {
+        return metrics.boundingRect(QRect(0, 0, room, 100000), Qt::TextWordWrap, text).height();
+    };
+    if (height(shown) > maxHeight) {
+        // cut to three lines' worth and step back until the wrapped text fits (word breaks
+        // waste part of each line); each step is a tenth of a line, so this ends quickly
+        int width = statusMessageLines * room;
+        do {
+            width -= std::max(1, room / 10);
+            shown = metrics.elidedText(message, Qt::ElideRight, width);
+        } while (width > room && height(shown) > maxHeight);
+    }
+    m_statusText->setText(shown);
+    m_statusText->setFixedHeight(std::max(metrics.lineSpacing(), message.isEmpty() ? 0 : height(shown)));
 }
 
 } // namespace pkm

@@ -72,20 +72,6 @@ QStringList links(const QTextDocument *document)
     return found;
 }
 
-/// The room QStatusBar gives its message: from 6 px to 2 px before the first permanent widget
-/// shown, or to 12 px before its right edge (qstatusbar.cpp).
-int statusRoom(QStatusBar *bar, const QList<QLabel *> &permanent)
-{
-    int right = bar->width() - 12;
-    for (QLabel *label : permanent) {
-        if (label->isVisible()) {
-            right = std::min(right, label->x() - 2);
-            break;
-        }
-    }
-    return right - 6;
-}
-
 } // namespace
 
 class TestHelp : public QObject
@@ -254,19 +240,26 @@ private slots:
                 messages << w.linkageView()->message();
             }
         }
-        // an error as long as a failed move's explanation and a reason after it
+        // an error as long as a failed move's explanation and a reason after it, and one longer
+        // than three lines of the bar
         messages << messages.join(QStringLiteral(" "));
+        messages << QStringList(4, messages.last()).join(QStringLiteral(" "));
 
+        QStatusBar *bar = w.statusBar();
+        QLabel *text = bar->findChild<QLabel *>(QStringLiteral("statusText"));
+        QVERIFY(text);
         QLabel *readOut = nullptr;
-        for (QLabel *label : w.statusBar()->findChildren<QLabel *>()) {
-            if (!label->text().isEmpty())
+        for (QLabel *label : bar->findChildren<QLabel *>()) {
+            if (label != text && !label->text().isEmpty())
                 readOut = label;
         }
         QVERIFY(readOut);
-        const QList<QLabel *> permanent = w.statusBar()->findChildren<QLabel *>();
+        int wrapped = 0, cut = 0;
         for (const QString &message : std::as_const(messages)) {
-            // the toast: every line inside the view, the whole text inside the box
+            // the toast: every line inside the view, the whole text inside the box (for the
+            // messages the view shows: the last one is for the status bar alone)
             LinkageView *view = w.linkageView();
+            if (&message != &messages.last()) {
             const QRectF area(view->rect());
             const auto layout = ScenePainter::messageLayout(area, message, view->sceneStyle(), view);
             QVERIFY2(area.contains(layout.box), qPrintable(QStringLiteral("box %1×%2 at %3,%4 in %5×%6: %7").arg(layout.box.width()).arg(layout.box.height()).arg(layout.box.x()).arg(layout.box.y()).arg(area.width()).arg(area.height()).arg(message)));
@@ -278,25 +271,39 @@ private slots:
                                     .arg(layout.text.width()).arg(layout.text.height())));
             if (metrics.horizontalAdvance(message) > layout.text.width()) // too long for a line: it wraps
                 QCOMPARE_GT(layout.text.height(), 1.5 * metrics.height());
+            }
 
-            // the status bar: the text no wider than its room
+            // the status bar: the message whole (or, past three lines, cut with an ellipsis),
+            // wrapped inside its label, the label inside the bar and clear of the read-out
             emit w.workspacePanel()->statusMessage(message, true);
             QCoreApplication::processEvents();
-            QCOMPARE(w.statusBar()->currentMessage(), message);
-            QFont bold = w.statusBar()->font();
-            bold.setBold(true);
-            const int width = QFontMetrics(bold).horizontalAdvance(message);
-            const int room = statusRoom(w.statusBar(), permanent);
-            if (width <= w.statusBar()->width() - 18) { // a message the bar can hold at all
-                QVERIFY2(width <= room, qPrintable(QStringLiteral("“%1” needs %2 px, has %3 px").arg(message).arg(width).arg(room)));
+            QCOMPARE(bar->currentMessage(), message);
+            QCOMPARE(bar->toolTip(), message); // whole in the tooltip in any case
+            const QString shown = text->text();
+            if (shown != message) {
+                QVERIFY2(shown.endsWith(QChar(0x2026)) && message.startsWith(shown.chopped(1)), qPrintable(shown));
+                ++cut;
             }
-            QCOMPARE(w.statusBar()->toolTip(), message); // and whole in the tooltip in any case
+            const QFontMetrics font(text->font());
+            QVERIFY(text->font().bold()); // an error
+            const QRect box = font.boundingRect(QRect(0, 0, text->contentsRect().width(), 100000), Qt::TextWordWrap, shown);
+            QVERIFY2(box.height() <= text->contentsRect().height() && box.height() <= 3 * font.lineSpacing(),
+                     qPrintable(QStringLiteral("“%1” needs %2 px in height, has %3 px").arg(shown).arg(box.height()).arg(text->contentsRect().height())));
+            if (box.height() > font.lineSpacing())
+                ++wrapped;
+            QVERIFY2(bar->rect().contains(text->geometry()), qPrintable(message));
+            if (readOut->isVisible())
+                QVERIFY(readOut->x() >= text->geometry().right());
         }
-        // the read-out comes back when the message goes
-        w.statusBar()->clearMessage();
+        QCOMPARE_GE(wrapped, 1); // the bar's width was passed and the message wrapped
+        QCOMPARE(cut, 1);        // only the message longer than three lines is cut
+        // the read-out comes back when the message goes, and the bar is one line again
+        bar->clearMessage();
         QCoreApplication::processEvents();
         QVERIFY(readOut->isVisible());
-        QVERIFY(w.statusBar()->toolTip().isEmpty());
+        QVERIFY(bar->toolTip().isEmpty());
+        QVERIFY(text->text().isEmpty());
+        QTRY_VERIFY2(bar->height() <= 2 * QFontMetrics(bar->font()).lineSpacing() + 8, qPrintable(QString::number(bar->height())));
     }
 };
 
