@@ -174,6 +174,15 @@ MapSummary summariseMap(const PlanarWorkspace &workspace, MapQuantity quantity, 
     return run(workspace, quantity, grid, false, {}, {}, withMargins, cancel, threads);
 }
 
+std::optional<std::pair<int, int>> reachableEnds(std::span<const float> row)
+{
+    const auto first = std::find_if(row.begin(), row.end(), reachableCell);
+    if (first == row.end())
+        return std::nullopt;
+    const auto last = std::find_if(row.rbegin(), row.rend(), reachableCell);
+    return std::pair{static_cast<int>(first - row.begin()), static_cast<int>(row.rend() - last) - 1};
+}
+
 MapGrid squareGrid(const Eigen::AlignedBox2d &bounds, int resolution)
 {
     resolution = std::max(2, resolution);

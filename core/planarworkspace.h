@@ -11,8 +11,11 @@
 #include <Eigen/Geometry>
 
 #include <atomic>
+#include <cmath>
+#include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pkm {
@@ -155,6 +158,17 @@ MapSummary computeMap(const PlanarWorkspace &workspace, MapQuantity quantity, co
 /// are counted only `withMargins`.
 MapSummary summariseMap(const PlanarWorkspace &workspace, MapQuantity quantity, const MapGrid &grid,
                         bool withMargins = true, const std::atomic<bool> *cancel = nullptr, int threads = 0);
+
+/// Whether a map cell is reachable: finite or infinite values are, NaN is not.
+inline bool reachableCell(float value)
+{
+    return !std::isnan(value);
+}
+
+/// The first and the last reachable cell of a map row (columns), or nothing when none is:
+/// only these two can widen a box of the reachable cells, so a row is read from either end
+/// and the cells between are never touched.
+std::optional<std::pair<int, int>> reachableEnds(std::span<const float> row);
 
 /// The grid of `resolution` cells along the longer side of the workspace bounds, with square
 /// cells (resolution ≥ 2).

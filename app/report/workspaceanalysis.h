@@ -16,11 +16,7 @@
 
 namespace pkm::report {
 
-/// Whether a map cell is reachable: finite or infinite values are, NaN is not.
-inline bool reachableCell(float value)
-{
-    return !std::isnan(value);
-}
+using pkm::reachableCell; // the core's (planarworkspace.h), under the name the reports use
 
 /// The map of `workspace` over squareGrid(its bounds, resolution) into `values` (and
 /// `margins`, if not null), resized to the grid.

@@ -320,14 +320,10 @@ Eigen::AlignedBox2d Moma::computeBounds() const
     Eigen::AlignedBox2d reached;
     for (int r = 0; r < grid.rows; ++r) {
         fillMapRow(MapQuantity::Determinant, grid.y(r), grid.x(0), grid.dx(), row, {});
-        // only the row's first and last reachable cells can widen the box
-        const auto reachable = [](float value) { return !std::isnan(value); };
-        const auto first = std::find_if(row.begin(), row.end(), reachable);
-        if (first == row.end())
-            continue;
-        const auto last = std::find_if(row.rbegin(), row.rend(), reachable);
-        reached.extend(Eigen::Vector2d(grid.x(static_cast<int>(first - row.begin())), grid.y(r)));
-        reached.extend(Eigen::Vector2d(grid.x(static_cast<int>(row.rend() - last) - 1), grid.y(r)));
+        if (const auto ends = reachableEnds(row)) {
+            reached.extend(Eigen::Vector2d(grid.x(ends->first), grid.y(r)));
+            reached.extend(Eigen::Vector2d(grid.x(ends->second), grid.y(r)));
+        }
     }
     reached.extend(m_home.outputs.head<2>());
     // Thin parts of the workspace can slip between grid points: its boundary is made of the
