@@ -338,8 +338,15 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
             const double file = saved.inputs[i];
             same = std::abs(exact->inputs[i] - file) <= writtenDigitsTolerance * std::max(1.0, std::abs(file));
         }
-        if (same)
-            return *exact;
+        if (same) {
+            // ...and with the file's inputs as written: they agree to those digits, and the
+            // recomputed ones may not (q = 40 came back as 40.0000000000003, and every save
+            // moved it on).
+            Pose kept = *exact;
+            for (int i = 0; i < inputs; ++i)
+                kept.inputs[i] = saved.inputs[i];
+            return kept;
+        }
     }
     return pose;
 }

@@ -86,6 +86,38 @@ private slots:
         QCOMPARE(designfile::serialize(*again), saved);
     }
 
+    /// Found by fuzzing: a 3-RRR/RPR platform whose home pose amplifies round-off. The outputs
+    /// solved from the written inputs drift, so the reader solves the inputs from the written
+    /// outputs — and those came back as q1 = 40.0000000000003, so the second save differed from
+    /// the first. The inputs the file wrote are kept when they agree to the digits written.
+    void savedPoseOfAMixedPlatformIsAFixedPoint()
+    {
+        const QByteArray file = R"({
+  "format": "pkm-studio-design", "version": 1, "id": "pp-3rrr", "mechanism": "planar-parallel",
+  "parameters": {
+    "platform": "free",
+    "leg1_type": "RRR", "A1x": 0, "A1y": 0, "A2x": 400, "A2y": 0, "B2x": 43.30127, "B2y": -25.0,
+    "r2": 120, "l2": 150, "alpha2": 0, "a2": 170, "k2": 0.4, "q2_min": 10, "q2_max": 581,
+    "theta2_min": -180, "theta2_max": 180, "working2": 1,
+    "A3x": 200, "A3y": 346.410162, "B2x": 0.0, "B3y": 50.0, "r3": 120, "l1": 150, "alpha3": 0,
+    "a3": 170, "k3": 0.4, "q3_min": 10, "q3_max": 200, "theta3_min": -180, "theta3_max": 180,
+    "working3": 1, "assembly": 1, "phi_map": 0
+  }
+})";
+        auto design = designfile::parse(file, QStringLiteral("fuzzed.pkm.json"));
+        QVERIFY2(design.ok(), design ? "" : design.failure().message.c_str());
+        QByteArray saved = designfile::serialize(*design);
+        for (int round = 0; round < 3; ++round) {
+            auto again = designfile::parse(saved, QStringLiteral("saved"));
+            QVERIFY2(again.ok(), again ? "" : again.failure().message.c_str());
+            QCOMPARE(designfile::serialize(*again), saved);
+            // The pose read back is the saved one to the digits written.
+            for (int i = 0; i < design->pose.inputs.size(); ++i)
+                QVERIFY(std::abs(again->pose.inputs[i] - design->pose.inputs[i]) <= 1e-11 * std::max(1.0, std::abs(design->pose.inputs[i])));
+            saved = designfile::serialize(*again);
+        }
+    }
+
     /// A file's own text reaches a dialog or a terminal escaped and cut short: a control
     /// character or a megabyte name in a file cannot clear the screen or fill it.
     void messagesQuoteTheFileSafely()
