@@ -5215,6 +5215,10 @@ Please verify the correct file name was given.</source>
         <source>Re&amp;quirements…</source>
         <translation>&amp;Требования…</translation>
     </message>
+    <message>
+        <source>Presentation P&amp;lot</source>
+        <translation>Гра&amp;фик презентации</translation>
+    </message>
 </context>
 <context>
     <name>pkm::MobilityPanel</name>

@@ -5215,6 +5215,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>Re&amp;quirements…</source>
         <translation>&amp;Zahtevi…</translation>
     </message>
+    <message>
+        <source>Presentation P&amp;lot</source>
+        <translation>Gra&amp;fikon prezentacije</translation>
+    </message>
 </context>
 <context>
     <name>pkm::MobilityPanel</name>

@@ -200,12 +200,14 @@ void LinkageView::renderTo(QPainter &painter, const QRectF &target) const
 
 void LinkageView::fitToView()
 {
-    // The scene's extent, and the ghosts where they are now, so they can be clicked.
+    // The scene's extent, and the ghosts' joints where they are now, so they can be clicked —
+    // not their points of interest: a ghost four-bar's instant centre lies wherever AB and DC
+    // meet, far out when they are nearly parallel, and left the linkage small in a corner.
     Eigen::AlignedBox3d extent = m_scene.extent;
     if (!extent.isEmpty()) {
         for (const Scene &ghost : m_ghosts) {
             for (const SceneJoint &joint : ghost.joints) {
-                if (joint.position.allFinite())
+                if (joint.kind != JointKind::Point && joint.position.allFinite())
                     extent.extend(joint.position);
             }
         }

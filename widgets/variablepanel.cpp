@@ -122,6 +122,10 @@ void VariablePanel::changeEvent(QEvent *event)
                 describe(i);
             updateRanges(); // the limits beside the sliders, in the new locale
         }
+    } else if (event->type() == QEvent::FontChange && m_mechanism) {
+        // A larger text size (presentation mode) needs wider spin boxes, or "183.10 mm" is cut
+        // to "183.10 mı". Queued: the spin boxes take the new font after their panel does.
+        QMetaObject::invokeMethod(this, [this] { if (m_mechanism) updateRanges(); }, Qt::QueuedConnection);
     }
     QWidget::changeEvent(event);
 }

@@ -452,8 +452,10 @@ void MainWindow::setLanguage(const QString &code)
 
 void MainWindow::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         retranslate();
+        fillPresentationPlotMenu(false); // the plots' titles are listed again as it opens
+    }
     QMainWindow::changeEvent(event);
 }
 

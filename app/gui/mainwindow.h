@@ -17,6 +17,7 @@
 #include <vector>
 
 class QAction;
+class QCustomPlot;
 class QDockWidget;
 class QLabel;
 class QToolBar;
@@ -173,6 +174,12 @@ private:
     void applySceneStyle();
     /// The sliders large in presentation mode, as usual otherwise (new sliders included).
     void styleSliders();
+    /// In presentation mode one plot per page of the panel's tabs, the chosen one in front;
+    /// every plot otherwise (and on the panels not shown).
+    void applyPresentationPlots();
+    /// View ▸ Presentation Plot: enabled where a page has several plots; with `entries` (as it
+    /// opens) the current panel's plots by title, the one shown checked.
+    void fillPresentationPlotMenu(bool entries);
     void addBookmark();
     void goToBookmark(int index);
     /// The next (+1) or previous (−1) bookmark, round the list.
@@ -276,6 +283,8 @@ private:
     capability::Actuators m_actuators;
     capability::ShapeScales m_shapeScales;
     QMenu *m_textSizeMenu = nullptr;
+    QMenu *m_presentationPlotMenu = nullptr;
+    QPointer<QCustomPlot> m_presentationPlot; ///< the plot presentation mode shows, when chosen
     QShortcut *m_leavePresentation = nullptr;
     bool m_presenting = false;
     QPointer<GuideWindow> m_guide;

@@ -113,6 +113,7 @@ void MainWindow::onDesignChanged()
                             page == m_currentPanel ? QSizePolicy::Preferred : QSizePolicy::Ignored);
     }
     m_plots->setVisible(m_currentPanel != nullptr);
+    applyPresentationPlots(); // one plot per page of the new panel while presenting
     onPoseChanged();
     keepMechanismInView();
     update3d(true);

@@ -1,10 +1,15 @@
 // The main window in front of a class: View ▸ Text Size (100 % to 250 %, remembered) and
 // View ▸ Presentation Mode — full screen, high contrast, the panels reduced to the linkage, its
-// plot or map, large sliders and the Play bar, at a text size of its own.
+// plot or map, large sliders and the Play bar, at a text size of its own — and View ▸
+// Presentation Plot, which of a page's plots presentation mode shows alone.
 
 #include "gui/mainwindow.h"
 
+#include "kinds/kindpanel.h"
 #include "linkageview.h"
+#include "plotfocus.h"
+
+#include <qcustomplot.h>
 #include "textscale.h"
 #include "variablepanel.h"
 
@@ -18,6 +23,7 @@
 #include <QShortcut>
 #include <QSlider>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTimer>
 #include <QToolBar>
 
@@ -76,6 +82,54 @@ void MainWindow::createPresentationActions(QMenu *viewMenu)
     }
     const int remembered = QSettings().value(textSizeKey(false), 100).toInt();
     setTextScale(remembered / 100.0);
+
+    m_presentationPlotMenu = viewMenu->addMenu(QString());
+    m_presentationPlotMenu->setObjectName(QStringLiteral("presentationPlotMenu"));
+    translated(m_presentationPlotMenu->menuAction(), QT_TR_NOOP("Presentation P&lot"));
+    // Filled as it opens: the plots and their titles follow the design and the language.
+    connect(m_presentationPlotMenu, &QMenu::aboutToShow, this, [this] { fillPresentationPlotMenu(true); });
+    fillPresentationPlotMenu(false);
+}
+
+void MainWindow::fillPresentationPlotMenu(bool entries)
+{
+    m_presentationPlotMenu->clear();
+    const QList<QCustomPlot *> plots = m_currentPanel ? plotfocus::plots(m_currentPanel) : QList<QCustomPlot *>();
+    // Only where a page holds more than one plot is there a choice to make.
+    m_presentationPlotMenu->menuAction()->setEnabled(plots.size() > 1);
+    if (!entries || plots.size() < 2)
+        return; // the titles as the menu opens, in the language of that moment
+    QCustomPlot *shown = m_presenting ? plotfocus::shownAlone(m_currentPanel) : m_presentationPlot.data();
+    auto *group = new QActionGroup(m_presentationPlotMenu);
+    for (int i = 0; i < plots.size(); ++i) {
+        QCustomPlot *plot = plots[i];
+        QAction *action = m_presentationPlotMenu->addAction(plotfocus::title(plot));
+        action->setObjectName(QStringLiteral("presentationPlot_%1").arg(i));
+        action->setCheckable(true);
+        action->setChecked(plot == shown);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, plot = QPointer<QCustomPlot>(plot)] {
+            m_presentationPlot = plot;
+            applyPresentationPlots();
+        });
+    }
+}
+
+void MainWindow::applyPresentationPlots()
+{
+    for (int i = 0; i < m_plots->count(); ++i) {
+        QWidget *panel = m_plots->widget(i);
+        if (auto *kindPanel = qobject_cast<KindPanel *>(panel))
+            kindPanel->setPresenting(m_presenting && panel == m_currentPanel);
+        if (m_presenting && panel == m_currentPanel)
+            plotfocus::showOnePerPage(panel, m_presentationPlot);
+        else
+            plotfocus::showAll(panel);
+    }
+    // Chosen outside presentation mode: its tab comes to the front now, and it is alone later.
+    if (!m_presenting && m_presentationPlot && m_currentPanel && m_currentPanel->isAncestorOf(m_presentationPlot))
+        plotfocus::bringToFront(m_presentationPlot);
+    fillPresentationPlotMenu(false);
 }
 
 void MainWindow::setTextScale(double factor)
@@ -156,6 +210,7 @@ void MainWindow::setPresentationMode(bool on)
         // The linkage is what the class looks at: the larger share, beside its plot or map.
         const int width = screen() ? screen()->geometry().width() : this->width();
         m_splitter->setSizes({width * 11 / 20, width * 9 / 20});
+        applyPresentationPlots();
         showStatus(tr("Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks."));
     } else {
         setPalette(QPalette());
@@ -163,6 +218,7 @@ void MainWindow::setPresentationMode(bool on)
         setTextScale(QSettings().value(textSizeKey(false), 100).toInt() / 100.0);
         restoreState(m_stateBeforePresentation); // the docks and toolbars as they were
         m_splitter->restoreState(m_splitterBeforePresentation);
+        applyPresentationPlots();
         if (m_maximizedBeforePresentation)
             showMaximized();
         else

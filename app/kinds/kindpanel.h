@@ -24,6 +24,10 @@ public:
     virtual void setDesign(const MechanismPtr &mechanism, const QString &title) = 0;
     /// A new pose of the current design: cursors and markers follow.
     virtual void setPose(const Pose &pose) = 0;
+    /// Presentation mode on or off: a panel with controls and texts beside its plots keeps only
+    /// the plots or map while presenting, which is what a class looks at (the main window shows
+    /// one plot per tab, plotfocus.h). Nothing changes by default.
+    virtual void setPresenting(bool on) { Q_UNUSED(on) }
 
 signals:
     /// A message for the status bar (an error in red).

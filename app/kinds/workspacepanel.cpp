@@ -85,6 +85,12 @@ void WorkspacePanel::setDesign(const MechanismPtr &mechanism, const QString &tit
     }
 }
 
+void WorkspacePanel::setPresenting(bool on)
+{
+    for (QWidget *widget : {static_cast<QWidget *>(m_label), static_cast<QWidget *>(m_compare), static_cast<QWidget *>(m_pin)})
+        widget->setVisible(!on);
+}
+
 void WorkspacePanel::setPose(const Pose &pose)
 {
     m_map->setPose(pose);

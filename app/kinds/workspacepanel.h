@@ -27,6 +27,8 @@ public:
     /// A new design (`title` names it in the comparison list).
     void setDesign(const MechanismPtr &mechanism, const QString &title) override;
     void setPose(const Pose &pose) override;
+    /// Presenting: the map alone, without the comparison row.
+    void setPresenting(bool on) override;
 
 protected:
     /// A new language: the texts and the comparison list again, the choice kept.

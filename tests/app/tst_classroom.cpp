@@ -7,6 +7,7 @@
 #include "document/language.h"
 #include "linkageview.h"
 #include "playbar.h"
+#include "plotfocus.h"
 #include "textscale.h"
 #include "support/app.h"
 
@@ -205,6 +206,95 @@ private slots:
         QVERIFY(!w.isPresenting());
         QVERIFY(design->isVisible());
         QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - before), 0.01);
+    }
+
+    /// Presentation mode shows one plot per page, filling it: three plots side by side at 150 %
+    /// text on a 1280×720 projector overlapped and could not be read. View ▸ Presentation Plot
+    /// chooses which, its tab comes to the front, and every plot is back after presenting.
+    void presentationShowsOnePlotAtATime()
+    {
+        language::apply(QStringLiteral("en"));
+        MainWindow &w = *m_window;
+        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
+        QTabWidget *tabs = nullptr; // the П-joint's Geometry, Jacobian and Actuator tabs
+        for (QTabWidget *candidate : w.findChildren<QTabWidget *>()) {
+            if (candidate->count() == 3 && candidate->tabText(0) == QLatin1String("Geometry"))
+                tabs = candidate;
+        }
+        QVERIFY(tabs);
+        const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
+        QCOMPARE(plots.size(), 8); // figs. 8–12 and 15–17
+        const auto shownOn = [&](int page) {
+            QList<QCustomPlot *> shown;
+            for (QCustomPlot *plot : plots) {
+                if (plot->parentWidget() == tabs->widget(page) && !plot->isHidden())
+                    shown.append(plot);
+            }
+            return shown;
+        };
+        QCOMPARE(shownOn(0).size(), 3);
+        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
+        QVERIFY(w.isPresenting());
+        for (int page = 0; page < tabs->count(); ++page)
+            QCOMPARE(shownOn(page).size(), 1);
+        QCOMPARE(shownOn(0).first(), plots[0]);
+
+        // The menu lists every plot by its title; fig. 15 (the Actuator tab) is chosen.
+        auto *menu = w.findChild<QMenu *>(QStringLiteral("presentationPlotMenu"));
+        QVERIFY(menu && menu->menuAction()->isEnabled());
+        emit menu->aboutToShow();
+        QCOMPARE(menu->actions().size(), plots.size());
+        QVERIFY(menu->actions().at(0)->isChecked());
+        QVERIFY(menu->actions().at(5)->text().startsWith(QLatin1String("Fig. 15")));
+        menu->actions().at(5)->trigger();
+        QCOMPARE(tabs->currentIndex(), 2);
+        QCOMPARE(shownOn(2), QList<QCustomPlot *> {plots[5]});
+        // alone, it has the page's whole width (the three shared it before)
+        QTRY_VERIFY(plots[5]->width() >= tabs->currentWidget()->width() - 20);
+        emit menu->aboutToShow();
+        QVERIFY(menu->actions().at(5)->isChecked());
+
+        // Another kind while presenting: its pages show one plot each too.
+        QVERIFY(w.openDesign(QStringLiteral("fourbar-example")));
+        auto *fourbarTabs = w.findChild<QTabWidget *>(QStringLiteral("fourbarPlotTabs"));
+        QVERIFY(fourbarTabs);
+        for (int page = 0; page < fourbarTabs->count(); ++page) {
+            int shown = 0;
+            for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
+                shown += plot->parentWidget() == fourbarTabs->widget(page) && !plot->isHidden();
+            QCOMPARE(shown, 1);
+        }
+        // and the lengths, Grashof's class and the γ gauge above them step aside
+        auto *grashof = w.findChild<QLabel *>(QStringLiteral("grashofLabel"));
+        QVERIFY(grashof && grashof->parentWidget()->isHidden());
+        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        for (QCustomPlot *plot : plots)
+            QVERIFY(!plot->isHidden());
+        for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
+            QVERIFY(!plot->isHidden());
+        QVERIFY(!grashof->parentWidget()->isHidden());
+    }
+
+    /// Fit frames the linkage, not its ghosts' points of interest: the crossed branch's instant
+    /// centre lies far out when AB and DC are nearly parallel, and the fit took it in, leaving
+    /// the four-bar's 140 mm ground about a quarter of the view's width, in a corner. The motion
+    /// box (both branches) replaced the rocker's whole circle too.
+    void fitFramesTheFourBar()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(w.openDesign(QStringLiteral("fourbar-example")));
+        LinkageView *view = w.linkageView();
+        QTest::keyClick(view, Qt::Key_Home);
+        const ViewMapping mapping = view->mapping();
+        const QPointF A = mapping.toDevice(Eigen::Vector2d(0.0, 0.0));
+        const QPointF D = mapping.toDevice(Eigen::Vector2d(140.0, 0.0));
+        QCOMPARE_GT(D.x() - A.x(), 0.5 * view->width());
+        for (const SceneJoint &joint : view->scene().joints) {
+            if (joint.kind != JointKind::Point)
+                QVERIFY(QRectF(view->rect()).contains(mapping.toDevice(Eigen::Vector2d(joint.position.head<2>()))));
+        }
     }
 
     void textSizeReachesPlotsAndDrawing()

@@ -105,6 +105,13 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(6);
 
+    // The lengths and the texts: hidden in presentation mode, which shows the plots alone.
+    m_details = new QWidget(this);
+    auto *details = new QVBoxLayout(m_details);
+    details->setContentsMargins(0, 0, 0, 0);
+    details->setSpacing(6);
+    layout->addWidget(m_details);
+
     // -- link lengths: two per row --------------------------------------------------------------
     auto *links = new QGroupBox(this);
     m_linksGroup = links;
@@ -162,7 +169,7 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
                 requestLength(name, value, spin->stepping());
         });
     }
-    layout->addWidget(links);
+    details->addWidget(links);
 
     m_linkMessage = new QLabel(this);
     m_linkMessage->setObjectName(QStringLiteral("linkMessage"));
@@ -171,7 +178,7 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
     m_linkMessage->setStyleSheet(
         QStringLiteral("QLabel { color: #b3261e; background: #fde7e5; border: 1px solid #e0a0a0; padding: 5px; }"));
     m_linkMessage->hide();
-    layout->addWidget(m_linkMessage);
+    details->addWidget(m_linkMessage);
 
     // -- the design in words and the transmission angle ----------------------------------------
     auto *info = new QHBoxLayout;
@@ -213,7 +220,7 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
     column->addWidget(m_gauge);
     column->addWidget(m_transmissionRange);
     info->addWidget(transmission, 2);
-    layout->addLayout(info);
+    details->addLayout(info);
 
     // -- plots ----------------------------------------------------------------------------------
     m_plots = new FourBarPlots(this);
@@ -429,6 +436,11 @@ void FourBarPanel::showDesignInfo()
             : tr("over the motion %1° … %2°: inside %3° … %4°")
                   .arg(QLocale().toString(lo, 'f', 1), QLocale().toString(hi, 'f', 1),
                       limitText(FourBar::poorTransmission), limitText(180.0 - FourBar::poorTransmission)));
+}
+
+void FourBarPanel::setPresenting(bool on)
+{
+    m_details->setVisible(!on);
 }
 
 void FourBarPanel::setPose(const Pose &pose)

@@ -32,6 +32,8 @@ public:
     /// A new design (the pose is the document's).
     void setDesign(const MechanismPtr &mechanism, const QString &title = {}) override;
     void setPose(const Pose &pose) override;
+    /// Presenting: the plots alone, without the lengths, Grashof's class and the γ gauge.
+    void setPresenting(bool on) override;
 
     /// The links, in the order of the sliders: "AB", "BC", "CD", "AD".
     static constexpr std::array<const char *, 4> linkNames = {"AB", "BC", "CD", "AD"};
@@ -79,6 +81,7 @@ private:
     MechanismPtr m_mechanism;
     Pose m_pose; ///< the pose shown last
     std::array<LinkRow, 4> m_rows;
+    QWidget *m_details = nullptr; ///< everything above the plots
     QGroupBox *m_linksGroup = nullptr;
     QGroupBox *m_transmissionGroup = nullptr;
     QLabel *m_linkMessage = nullptr;

@@ -238,6 +238,11 @@ void OxGlidePanel::showFormButtons()
     m_formX->setChecked(form == oxglide::formX);
 }
 
+void OxGlidePanel::setPresenting(bool on)
+{
+    m_mapPanel->setPresenting(on);
+}
+
 void OxGlidePanel::setPose(const Pose &pose)
 {
     if (pose.outputs.size() >= 2)

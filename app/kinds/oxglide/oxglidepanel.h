@@ -34,6 +34,8 @@ public:
     /// A new design (`title` names it in the map's comparison list).
     void setDesign(const MechanismPtr &mechanism, const QString &title) override;
     void setPose(const Pose &pose) override;
+    /// Presenting: the map tab without its comparison row.
+    void setPresenting(bool on) override;
 
     FormWorkspaceView *formView() const { return m_formView; }
     WorkspacePanel *mapPanel() const { return m_mapPanel; }

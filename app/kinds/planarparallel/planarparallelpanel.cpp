@@ -95,6 +95,12 @@ void PlanarParallelPanel::setDesign(const MechanismPtr &mechanism, const QString
     showDesign();
 }
 
+void PlanarParallelPanel::setPresenting(bool on)
+{
+    m_box->setVisible(!on);
+    m_map->setPresenting(on);
+}
+
 void PlanarParallelPanel::setPose(const Pose &pose)
 {
     m_pose = pose;

@@ -31,6 +31,8 @@ public:
 
     void setDesign(const MechanismPtr &mechanism, const QString &title) override;
     void setPose(const Pose &pose) override;
+    /// Presenting: the map alone; the legs are edited in the working layout.
+    void setPresenting(bool on) override;
 
     WorkspacePanel *mapPanel() const { return m_map; }
     QComboBox *platformBox() const { return m_platform; }

@@ -266,6 +266,12 @@ FourBar::FourBar(const FourBarDesign &design)
 
     // Sample the input range: the output, lifted continuously, the home pose and the curve.
     const double lo = m_alphaRange.min, hi = m_alphaRange.max;
+    // The drawing's extent: the ground, and B, C and M over the motion in both branches (a
+    // mode switch keeps the view). The rocker's whole circle made the linkage small in its view.
+    FourBarDesign otherBranch = design;
+    otherBranch.branch = -design.branch;
+    m_motionBox.extend(Eigen::Vector2d(0.0, 0.0));
+    m_motionBox.extend(Eigen::Vector2d(d, 0.0));
     std::vector<double> deltas(rangeSamples + 1, 0.0);
     std::vector<double> alphas(rangeSamples + 1, 0.0);
     double previous = nan;
@@ -273,6 +279,13 @@ FourBar::FourBar(const FourBarDesign &design)
     for (int i = 0; i <= rangeSamples; ++i) {
         const double alpha = lo + (hi - lo) * i / rangeSamples;
         alphas[std::size_t(i)] = alpha;
+        for (const FourBarDesign *branch : {&design, static_cast<const FourBarDesign *>(&otherBranch)}) {
+            if (const fourbar::Position q = fourbar::position(*branch, alpha); q.valid) {
+                m_motionBox.extend(q.B);
+                m_motionBox.extend(q.C);
+                m_motionBox.extend(q.B + design.couplerPoint * (q.C - q.B));
+            }
+        }
         const fourbar::Position p = fourbar::position(design, alpha);
         if (!p.valid) {
             deltas[std::size_t(i)] = previous; // B on D: a single singular point

@@ -193,6 +193,7 @@ private:
     bool m_outputFullTurn = false;
     Pose m_home;
     std::vector<Eigen::Vector2d> m_curve;
+    Eigen::AlignedBox2d m_motionBox; ///< the joints over the motion, both branches
 };
 
 } // namespace pkm

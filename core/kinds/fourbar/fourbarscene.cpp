@@ -64,14 +64,10 @@ Scene FourBar::scene(const Pose &pose) const
     for (const Eigen::Vector2d &p : m_curve)
         curve.points.push_back(to3(p));
     s.polylines.push_back(std::move(curve));
-    // constant over the motion: the crank's and the rocker's circles and the ground
+    // constant over the motion: where the joints go in either branch (the constructor's samples)
     Eigen::AlignedBox3d extent;
-    extent.extend(Eigen::Vector3d(-d.crank, -d.crank, 0.0));
-    extent.extend(Eigen::Vector3d(d.crank, d.crank, 0.0));
-    extent.extend(Eigen::Vector3d(d.ground - d.rocker, -d.rocker, 0.0));
-    extent.extend(Eigen::Vector3d(d.ground + d.rocker, d.rocker, 0.0));
-    for (const Eigen::Vector2d &p : m_curve)
-        extent.extend(to3(p));
+    extent.extend(to3(m_motionBox.min()));
+    extent.extend(to3(m_motionBox.max()));
     const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.08 * scaleOf(d));
     s.extent = Eigen::AlignedBox3d(extent.min() - pad, extent.max() + pad);
     s.extent.min().z() = s.extent.max().z() = 0.0;
