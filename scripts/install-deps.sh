@@ -14,6 +14,7 @@ packages=(
     python3-numpy
     python3-ezdxf
     poppler-utils
+    desktop-file-utils appstream man-db   # the install checks: desktop entry, AppStream metadata, manual pages
     clang libclang-rt-14-dev
     pybind11-dev python3-dev python3-pytest python3-matplotlib
 )
