@@ -75,6 +75,8 @@ private slots:
             QTest::addRow("fivebar %s", name) << "fivebar" << ParameterSet{} << quantity;
             QTest::addRow("oxglide %s", name) << "oxglide" << ParameterSet{} << quantity;
             QTest::addRow("5R legs %s", name) << "planar-parallel" << fiveR() << quantity;
+            QTest::addRow("5R П-joints %s", name) << "planar-parallel" << legdesigns::fiveRPjoint() << quantity;
+            QTest::addRow("2-PRR %s", name) << "planar-parallel" << legdesigns::moma3a() << quantity;
             QTest::addRow("3-PRR %s", name) << "planar-parallel" << threePrr() << quantity;
         }
     }

@@ -157,24 +157,10 @@ private slots:
         QTest::addColumn<ParameterSet>("design");
         QTest::newRow("5R") << fiveR();
         QTest::newRow("2-PRR") << moma3a();
-        // resources/presets/pp-5r-pjoint.pkm.json: the 5R driven by two П-joints
-        QTest::newRow("5R П-joints") << ParameterSet{{"platform", 0}, {"leg1_type", 3}, {"leg2_type", 3}, {"A1x", 0}, {"A1y", 0},
-                                                     {"A2x", 200}, {"A2y", 0}, {"l1", 200}, {"l2", 200}, {"alpha1", 30 * deg},
-                                                     {"alpha2", -30 * deg}, {"a1", 170}, {"a2", 170}, {"k1", 0.4}, {"k2", 0.4},
-                                                     {"q1_min", 116.5}, {"q1_max", 231}, {"q2_min", 116.5}, {"q2_max", 231},
-                                                     {"working1", 1}, {"working2", -1}, {"assembly", 1}};
+        QTest::newRow("5R П-joints") << pkm::test::legdesigns::fiveRPjoint();
         // a crank and a slider, a strut and a crank
-        ParameterSet mixed = fiveR();
-        mixed["leg2_type"] = 1;
-        mixed["alpha2"] = 90 * deg;
-        mixed["q2_min"] = -100;
-        mixed["q2_max"] = 250;
-        QTest::newRow("RRR + PRR") << mixed;
-        ParameterSet strut = fiveR();
-        strut["leg1_type"] = 2;
-        strut["q1_min"] = 20;
-        strut["q1_max"] = 250;
-        QTest::newRow("RPR + RRR") << strut;
+        QTest::newRow("RRR + PRR") << pkm::test::legdesigns::crankAndSlider();
+        QTest::newRow("RPR + RRR") << pkm::test::legdesigns::strutAndCrank();
         QTest::newRow("3-RRR") << threeRrr(10 * deg);
         // resources/presets/pp-3rpr.pkm.json: the 3-RPR of Innocenti and Parenti-Castelli, whose
         // slice at φ = 0 has direct curves inside it and no inverse ones

@@ -29,6 +29,37 @@ inline ParameterSet moma3a()
             {"q2_min", 0}, {"q2_max", 200}, {"working1", -1}, {"working2", -1}, {"assembly", -1}};
 }
 
+/// resources/presets/pp-5r-pjoint.pkm.json in core units: the 5R driven by two П-joints.
+inline ParameterSet fiveRPjoint()
+{
+    constexpr double deg = units::degree;
+    return {{"platform", 0}, {"leg1_type", 3}, {"leg2_type", 3}, {"A1x", 0}, {"A1y", 0}, {"A2x", 200}, {"A2y", 0},
+            {"l1", 200}, {"l2", 200}, {"alpha1", 30 * deg}, {"alpha2", -30 * deg}, {"a1", 170}, {"a2", 170},
+            {"k1", 0.4}, {"k2", 0.4}, {"q1_min", 116.5}, {"q1_max", 231}, {"q2_min", 116.5}, {"q2_max", 231},
+            {"working1", 1}, {"working2", -1}, {"assembly", 1}};
+}
+
+/// The 5R with its second crank replaced by a slider on a vertical guide (R̲RR + P̲RR).
+inline ParameterSet crankAndSlider()
+{
+    ParameterSet mixed = fiveR();
+    mixed["leg2_type"] = 1;
+    mixed["alpha2"] = 90 * units::degree;
+    mixed["q2_min"] = -100;
+    mixed["q2_max"] = 250;
+    return mixed;
+}
+
+/// The 5R with its first crank replaced by a strut (RP̲R + R̲RR).
+inline ParameterSet strutAndCrank()
+{
+    ParameterSet strut = fiveR();
+    strut["leg1_type"] = 2;
+    strut["q1_min"] = 20;
+    strut["q1_max"] = 250;
+    return strut;
+}
+
 /// A 3-PRR with a free platform: three sliders at 120° and unequal actuators, in core units.
 inline ParameterSet threePrr()
 {

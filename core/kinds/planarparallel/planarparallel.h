@@ -249,6 +249,15 @@ private:
     /// Inverse kinematics of every leg and the 2-DOF assembly check; the culprit leg on failure.
     planar::Reach inverseCheck(const Eigen::Vector3d &X, const Coordinates *reference, Coordinates &q, int &culprit) const;
     std::array<planar::LegCircle, 3> circles(const Coordinates &inputs) const;
+    /// One map row of `quantity` (det J, κ, or with `limits` what the actuators deliver): a
+    /// 2-DOF platform's in blocks of cells, branch-free and vectorised, the rest cell by cell
+    /// (ppmaprow.cpp).
+    void fillRow(MapQuantity quantity, const capability::CellLimits *limits, double y, double x0, double dx,
+                 std::span<float> values, std::span<float> margins) const;
+    /// One cell of a map as the pose at X (φ = phi_map for 3 DOF) evaluates it: NaN in both
+    /// where the design does not reach X in its modes; `pose` is the caller's scratch.
+    void mapCell(MapQuantity quantity, const capability::CellLimits *limits, const Eigen::Vector3d &X, Pose &pose,
+                 float &value, float &margin) const;
     Eigen::AlignedBox2d computeBounds() const;
     /// The direct singular curves of a 3-DOF platform's slice at φ = phi_map: the zero set of
     /// det J_x over a grid of the slice (marching squares, each crossing refined by bisection).

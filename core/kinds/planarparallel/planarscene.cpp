@@ -1,14 +1,12 @@
-// What the planar parallel mechanism shows and how it is built: the workspace box and the map
-// rows (the inverse kinematics of every leg per cell), the 2D scene of a pose, and the
-// kinematic chain for the mobility analysis.
+// What the planar parallel mechanism shows and how it is built: the workspace box (the map rows
+// are in ppmaprow.cpp), the 2D scene of a pose, and the kinematic chain for the mobility
+// analysis.
 #include "planarparallel.h"
 
-#include "capabilitycell.h"
 #include "mobility.h"
 #include "text.h"
 
 #include <Eigen/Dense>
-#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -91,105 +89,6 @@ Eigen::AlignedBox2d PlanarParallel::computeBounds() const
     const Eigen::Vector2d pad = 2.0 * step + Eigen::Vector2d::Constant(1.0);
     return Eigen::AlignedBox2d(reached.min() - pad, reached.max() + pad).intersection(
         Eigen::AlignedBox2d(box.min() - pad, box.max() + pad));
-}
-
-void PlanarParallel::fillMapRow(MapQuantity quantity, double y, double x0, double dx, std::span<float> values,
-                                std::span<float> margins) const
-{
-    const int n = m_design.legCount();
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    const double phi = n == 3 ? m_design.mapPhi : 0.0;
-    if (quantity == MapQuantity::OrientationRange) {
-        // the total width of the reachable φ at each (x, y); 2-DOF platforms never turn
-        std::array<Interval, 8> found;
-        for (std::size_t c = 0; c < values.size(); ++c) {
-            double margin = 0.0;
-            const int count = n == 3 ? orientationIntervals({x0 + double(c) * dx, y}, found, &margin) : 0;
-            double width = 0.0;
-            for (int k = 0; k < count; ++k)
-                width += found[std::size_t(k)].max - found[std::size_t(k)].min;
-            values[c] = count > 0 ? static_cast<float>(width) : nan;
-            if (!margins.empty())
-                margins[c] = count > 0 ? static_cast<float>(margin) : nan;
-        }
-        return;
-    }
-    Pose pose;
-    pose.outputs.resize(n);
-    for (std::size_t c = 0; c < values.size(); ++c) {
-        const Eigen::Vector3d X(x0 + double(c) * dx, y, phi);
-        int culprit = 0;
-        if (inverseCheck(X, nullptr, pose.inputs, culprit) != planar::Reach::Yes) {
-            values[c] = nan;
-            if (!margins.empty())
-                margins[c] = nan;
-            continue;
-        }
-        pose.outputs[0] = X.x();
-        pose.outputs[1] = X.y();
-        if (n == 3)
-            pose.outputs[2] = phi;
-        Eigen::Matrix3d jq, jx;
-        jacobianParts(pose, jq, jx);
-        double value = 0.0;
-        const double detJq = jq.diagonal().head(n).prod();
-        if (quantity == MapQuantity::Determinant) {
-            value = (n == 2 ? jx.topLeftCorner<2, 2>().determinant() : jx.determinant()) / detJq;
-        } else {
-            value = std::numeric_limits<double>::infinity();
-            if (detJq != 0.0) {
-                Eigen::Matrix3d J = jx;
-                for (int i = 0; i < n; ++i)
-                    J.row(i) /= jq(i, i);
-                if (n == 2) {
-                    const Eigen::Matrix2d j2 = J.topLeftCorner<2, 2>();
-                    const double f = j2.squaredNorm(), d = std::abs(j2.determinant());
-                    if (d > 0.0)
-                        value = (f + std::sqrt(std::max(0.0, f * f - 4.0 * d * d))) / (2.0 * d);
-                } else {
-                    const Eigen::Vector3d s = Eigen::JacobiSVD<Eigen::Matrix3d>(J).singularValues();
-                    if (s[2] > 0.0)
-                        value = s[0] / s[2];
-                }
-            }
-        }
-        values[c] = static_cast<float>(value);
-        if (!margins.empty())
-            margins[c] = static_cast<float>(singularity(pose).margin);
-    }
-}
-
-void PlanarParallel::fillCapabilityRow(const capability::CellLimits &limits, double y, double x0, double dx,
-                                       std::span<float> values, std::span<float> margins) const
-{
-    const int n = m_design.legCount();
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    Pose pose;
-    pose.outputs.resize(n);
-    for (std::size_t c = 0; c < values.size(); ++c) {
-        const Eigen::Vector3d X(x0 + double(c) * dx, y, n == 3 ? m_design.mapPhi : 0.0);
-        int culprit = 0;
-        if (inverseCheck(X, nullptr, pose.inputs, culprit) != planar::Reach::Yes) {
-            values[c] = margins[c] = nan;
-            continue;
-        }
-        pose.outputs[0] = X.x();
-        pose.outputs[1] = X.y();
-        if (n == 3)
-            pose.outputs[2] = X.z();
-        // every leg's J_q is its own: diagonal, as capabilitycell.h takes it
-        Eigen::Matrix3d jq, jx;
-        jacobianParts(pose, jq, jx);
-        const Singularity s = singularity(pose);
-        const bool inverse = s.type == SingularityType::Inverse || s.type == SingularityType::Combined;
-        const bool direct = s.type == SingularityType::Direct || s.type == SingularityType::Combined;
-        const double value = n == 3
-            ? capability::cell3(limits, jq.diagonal(), jx, inverse, direct)
-            : capability::cell2(limits, jq(0, 0), jq(1, 1), jx(0, 0), jx(0, 1), jx(1, 0), jx(1, 1),
-                                jx.row(0).head<2>().norm(), jx.row(1).head<2>().norm(), inverse, direct);
-        values[c] = capability::cellValue(value);
-        margins[c] = static_cast<float>(s.margin);
-    }
 }
 
 // -- drawing -------------------------------------------------------------------------------
