@@ -1230,8 +1230,8 @@ Please verify the correct file name was given.</source>
         <translation>Карта сингулярностей: det J</translation>
     </message>
     <message>
-        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1.</source>
-        <translation>Как в &apos;pkm map -o FILE.png&apos;: det J синим ниже 0, белым при 0 (прямая сингулярность), красным выше 0, с ограничением ±%1.</translation>
+        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1; the inverse singular curves dark red, the direct ones dashed.</source>
+        <translation>Как в &apos;pkm map -o FILE.png&apos;: det J синим ниже 0, белым при 0 (прямая сингулярность), красным выше 0, с ограничением ±%1; обратные кривые особых положений тёмно-красные, прямые — штриховые.</translation>
     </message>
     <message>
         <source>Singular poses in the workspace</source>

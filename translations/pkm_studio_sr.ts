@@ -1230,8 +1230,8 @@ Please verify the correct file name was given.</source>
         <translation>Мапа сингуларитета: det J</translation>
     </message>
     <message>
-        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1.</source>
-        <translation>Као &apos;pkm map -o FILE.png&apos;: det J плаво испод 0, бело у 0 (директни сингуларитет), црвено изнад 0, одсечено на ±%1.</translation>
+        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1; the inverse singular curves dark red, the direct ones dashed.</source>
+        <translation>Као &apos;pkm map -o FILE.png&apos;: det J плаво испод 0, бело у 0 (директни сингуларитет), црвено изнад 0, одсечено на ±%1; инверзне сингуларне криве тамноцрвене, директне испрекидане.</translation>
     </message>
     <message>
         <source>Singular poses in the workspace</source>

@@ -1230,8 +1230,8 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Mapa singulariteta: det J</translation>
     </message>
     <message>
-        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1.</source>
-        <translation>Kao &apos;pkm map -o FILE.png&apos;: det J plavo ispod 0, belo u 0 (direktni singularitet), crveno iznad 0, odsečeno na ±%1.</translation>
+        <source>As &apos;pkm map -o FILE.png&apos;: det J blue below 0, white at 0 (a direct singularity), red above 0, clipped at ±%1; the inverse singular curves dark red, the direct ones dashed.</source>
+        <translation>Kao &apos;pkm map -o FILE.png&apos;: det J plavo ispod 0, belo u 0 (direktni singularitet), crveno iznad 0, odsečeno na ±%1; inverzne singularne krive tamnocrvene, direktne isprekidane.</translation>
     </message>
     <message>
         <source>Singular poses in the workspace</source>

@@ -82,6 +82,16 @@ int failWith(std::FILE *err, const Failure &failure)
     return cliExitCode(failure);
 }
 
+/// The singular curves drawn over a picture of a map of `quantity`, as the map view draws them:
+/// none over the orientation range, which is not a slice at one platform angle.
+std::vector<SingularCurve> singularCurves(const Mechanism &mechanism, MapQuantity quantity)
+{
+    const PlanarWorkspace *workspace = mechanism.planarWorkspace();
+    if (!workspace || quantity == MapQuantity::OrientationRange)
+        return {};
+    return workspace->singularCurves();
+}
+
 /// The design's modes for headings: " (branch1 = -1, …)" or "".
 std::string modeSuffix(const Mechanism &mechanism)
 {
@@ -134,8 +144,9 @@ int runWorkspace(const Context &context)
                 "Workspaces of the modes of " + context.prepared.origin + suffix
                     + " (the design's own darker), their union outlined");
         } else {
+            const std::vector<SingularCurve> curves = singularCurves(mechanism, MapQuantity::Determinant);
             failure = writePicture(pictureWriters().workspace, *path, map.grid, std::span<const float>(map.values),
-                "Workspace of " + context.prepared.origin + suffix);
+                std::span<const SingularCurve>(curves), "Workspace of " + context.prepared.origin + suffix);
         }
         if (failure) {
             printError(context.err, *failure);
@@ -221,8 +232,10 @@ int runMap(const Context &context)
         std::optional<std::string> failure;
         if (png) {
             limit = mapColourLimit(map.values, quantity);
+            const std::vector<SingularCurve> curves = singularCurves(mechanism, quantity);
             failure = writePicture(pictureWriters().map, *path, map.grid, std::span<const float>(map.values), quantity,
-                limit, quantityTitle(mechanism, quantity) + " of " + context.prepared.origin + modeSuffix(mechanism));
+                limit, std::span<const SingularCurve>(curves),
+                quantityTitle(mechanism, quantity) + " of " + context.prepared.origin + modeSuffix(mechanism));
         } else {
             failure = saveMapCsv(*path, map);
         }

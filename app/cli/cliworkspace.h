@@ -79,14 +79,14 @@ std::string workspaceJson(const PreparedDesign &prepared, const CommandWorkspace
 /// and `pkm` hands it the commands that write pictures (writesPicture). Each returns the
 /// failure sentence, or nothing once the file is written.
 struct WorkspacePictureWriters {
-    std::optional<std::string> (*workspace)(
-        const std::string &path, const MapGrid &grid, std::span<const float> values, const std::string &title)
+    std::optional<std::string> (*workspace)(const std::string &path, const MapGrid &grid, std::span<const float> values,
+        std::span<const SingularCurve> curves, const std::string &title)
         = nullptr;
     std::optional<std::string> (*regions)(
         const std::string &path, const report::ModeRegions &regions, const std::string &title)
         = nullptr;
     std::optional<std::string> (*map)(const std::string &path, const MapGrid &grid, std::span<const float> values,
-        MapQuantity quantity, double limit, const std::string &title)
+        MapQuantity quantity, double limit, std::span<const SingularCurve> curves, const std::string &title)
         = nullptr;
 };
 void setWorkspacePictureWriters(const WorkspacePictureWriters &writers);

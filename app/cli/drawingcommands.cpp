@@ -19,10 +19,10 @@ std::optional<std::string> savePicture(const std::string &path, QImage image, co
     return pictures::savePng(path, image);
 }
 
-std::optional<std::string> workspacePicture(
-    const std::string &path, const MapGrid &grid, std::span<const float> values, const std::string &title)
+std::optional<std::string> workspacePicture(const std::string &path, const MapGrid &grid, std::span<const float> values,
+    std::span<const SingularCurve> curves, const std::string &title)
 {
-    return savePicture(path, pictures::workspaceImage(grid, values), title);
+    return savePicture(path, pictures::workspaceImage(grid, values, curves), title);
 }
 
 std::optional<std::string> regionsPicture(
@@ -32,9 +32,9 @@ std::optional<std::string> regionsPicture(
 }
 
 std::optional<std::string> mapPicture(const std::string &path, const MapGrid &grid, std::span<const float> values,
-    MapQuantity quantity, double limit, const std::string &title)
+    MapQuantity quantity, double limit, std::span<const SingularCurve> curves, const std::string &title)
 {
-    return savePicture(path, pictures::mapImage(grid, values, quantity, limit), title);
+    return savePicture(path, pictures::mapImage(grid, values, quantity, limit, curves), title);
 }
 
 } // namespace

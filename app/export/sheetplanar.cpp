@@ -241,12 +241,13 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
     map.key = "map";
     map.kind = FigureKind::Image;
     const double limit = report::mapColourLimit(values, MapQuantity::Determinant);
-    map.image = pictures::mapImage(grid, values, MapQuantity::Determinant, limit);
+    const std::vector<SingularCurve> curves = workspace.singularCurves();
+    map.image = pictures::mapImage(grid, values, MapQuantity::Determinant, limit, curves);
     map.imageBounds = grid.bounds;
     map.title = QCoreApplication::translate("Sheet", "Singularity map: det J");
     map.caption = QCoreApplication::translate("Sheet",
         "As 'pkm map -o FILE.png': det J blue below 0, white at 0 (a direct singularity), red above 0, "
-        "clipped at ±%1.")
+        "clipped at ±%1; the inverse singular curves dark red, the direct ones dashed.")
                       .arg(numberText(limit, 3));
     if (!map.image.isNull())
         section.figures.push_back(std::move(map));
@@ -255,7 +256,6 @@ void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, con
     Section &singular = parts.singular;
     singular.key = "singular";
     singular.title = QCoreApplication::translate("Sheet", "Singular poses in the workspace");
-    const std::vector<SingularCurve> curves = workspace.singularCurves();
     singular.items.push_back(numberItem("near_singular_cells", QCoreApplication::translate("Sheet", "cells"),
         QCoreApplication::translate("Sheet", "near-singular cells (margin < %1, about 3° from a singular pose)")
             .arg(numberText(nearSingularMargin, 2)),

@@ -7,6 +7,8 @@
 #include "document/savefile.h"
 
 #include <QBuffer>
+#include <QPainter>
+#include <QPainterPath>
 
 #include <algorithm>
 #include <array>
@@ -50,6 +52,72 @@ constexpr QRgb workspaceLine = qRgb(31, 78, 121);
 constexpr QRgb currentModeFill = qRgb(43, 92, 143); ///< the design's own mode among the others
 constexpr QRgb specificationMet = qRgb(46, 158, 79);     ///< a green, where every requirement holds
 constexpr QRgb specificationFailed = qRgb(214, 214, 214); ///< the rest of the workspace, grey
+constexpr QRgb inverseCurve = qRgb(165, 15, 21); ///< dark red, as the map view draws them
+constexpr QRgb directCurve = qRgb(17, 17, 17);   ///< black, dashed
+
+/// The singular curves over a picture of `grid` at `scale` pixels per cell (y up): inverse
+/// ones solid dark red, direct ones dashed black, lines a little wider than a cell of the
+/// larger grids so that they show at any size. Only pixels `inside` the workspace take them,
+/// so what lies outside stays as it was (white, or transparent in a map).
+void drawSingularCurves(QImage &image, const MapGrid &grid, int scale, std::span<const SingularCurve> curves,
+                        bool (*inside)(QRgb))
+{
+    if (curves.empty() || image.isNull())
+        return;
+    QImage overlay(image.size(), QImage::Format_ARGB32_Premultiplied);
+    overlay.fill(Qt::transparent);
+    {
+        QPainter painter(&overlay);
+        painter.setRenderHint(QPainter::Antialiasing);
+        const double width = std::max(1.5, std::max(image.width(), image.height()) / 250.0);
+        const auto pixel = [&](const Eigen::Vector2d &p) {
+            return QPointF((p.x() - grid.bounds.min().x()) / grid.dx() * scale,
+                           (grid.rows - (p.y() - grid.bounds.min().y()) / grid.dy()) * scale);
+        };
+        // a white halo under every curve first, as the map view has, so that a dark red curve
+        // shows on a dark red map
+        for (const bool halo : {true, false}) {
+            for (const SingularCurve &curve : curves) {
+                if (curve.points.size() < 2)
+                    continue;
+                QPainterPath path(pixel(curve.points.front()));
+                for (std::size_t k = 1; k < curve.points.size(); ++k)
+                    path.lineTo(pixel(curve.points[k]));
+                const bool inverse = curve.type == SingularCurve::Type::Inverse;
+                QPen pen(QColor(inverse ? inverseCurve : directCurve), width, inverse ? Qt::SolidLine : Qt::CustomDashLine);
+                if (halo)
+                    pen = QPen(QColor(255, 255, 255, 200), 2.0 * width);
+                else if (!inverse)
+                    pen.setDashPattern({4.0, 2.5});
+                painter.setPen(pen);
+                painter.drawPath(path);
+            }
+        }
+    }
+    // the overlay (premultiplied) over the opaque pixels inside
+    for (int y = 0; y < image.height(); ++y) {
+        QRgb *line = reinterpret_cast<QRgb *>(image.scanLine(y));
+        const QRgb *over = reinterpret_cast<const QRgb *>(overlay.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x) {
+            const int alpha = qAlpha(over[x]);
+            if (alpha == 0 || !inside(line[x]))
+                continue;
+            const auto channel = [&](int top, int below) { return top + below * (255 - alpha) / 255; };
+            line[x] = qRgba(channel(qRed(over[x]), qRed(line[x])), channel(qGreen(over[x]), qGreen(line[x])),
+                            channel(qBlue(over[x]), qBlue(line[x])), qAlpha(line[x]));
+        }
+    }
+}
+
+bool opaque(QRgb pixel)
+{
+    return qAlpha(pixel) == 255;
+}
+
+bool notWhite(QRgb pixel)
+{
+    return (pixel & 0xffffffu) != 0xffffffu;
+}
 } // namespace
 
 QImage regionsImage(const MapGrid &grid, const std::vector<std::pair<const std::vector<char> *, QRgb>> &layers)
@@ -109,17 +177,20 @@ QImage modeRegionsImage(const report::ModeRegions &regions)
     return regionsImage(regions.grid, layers);
 }
 
-QImage workspaceImage(const MapGrid &grid, std::span<const float> values)
+QImage workspaceImage(const MapGrid &grid, std::span<const float> values, std::span<const SingularCurve> curves)
 {
     if (grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells())
         return {};
     std::vector<char> reached(grid.cells());
     for (std::size_t i = 0; i < reached.size(); ++i)
         reached[i] = reachable(values[i]) ? 1 : 0;
-    return regionsImage(grid, {{&reached, workspaceFill}});
+    QImage image = regionsImage(grid, {{&reached, workspaceFill}});
+    drawSingularCurves(image, grid, image.width() / grid.columns, curves, notWhite);
+    return image;
 }
 
-QImage mapImage(const MapGrid &grid, std::span<const float> values, MapQuantity quantity, double limit)
+QImage mapImage(const MapGrid &grid, std::span<const float> values, MapQuantity quantity, double limit,
+                std::span<const SingularCurve> curves)
 {
     if (grid.columns <= 0 || grid.rows <= 0 || values.size() < grid.cells())
         return {};
@@ -148,6 +219,7 @@ QImage mapImage(const MapGrid &grid, std::span<const float> values, MapQuantity 
             }
         }
     }
+    drawSingularCurves(image, grid, 1, curves, opaque);
     return image;
 }
 

@@ -324,6 +324,7 @@ private slots:
     void mapJson();
     void mapText();
     void mapPng();
+    void picturesShowSingularCurves();
     void mapCsv();
     void outputFileErrors();
     void mapColourLimitIgnoresSpikes();
@@ -1561,6 +1562,58 @@ void TestCli::outputFileErrors()
     QFile file(existing);
     QVERIFY(file.open(QIODevice::ReadOnly));
     QVERIFY(file.readAll().startsWith("x,y,value,margin\n"));
+}
+
+void TestCli::picturesShowSingularCurves()
+{
+    // The map and workspace pictures carry the singular curves, as the map view does: inverse
+    // ones dark red, direct ones dashed black, on the workspace only (outside stays transparent).
+    MapGrid grid;
+    grid.bounds = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(100, 100));
+    grid.columns = grid.rows = 100;
+    std::vector<float> cells(grid.cells(), -1.0f);
+    for (int r = 0; r < 100; ++r) {
+        for (int c = 80; c < 100; ++c)
+            cells[std::size_t(r) * 100 + std::size_t(c)] = std::numeric_limits<float>::quiet_NaN(); // x > 80 unreachable
+    }
+    const std::vector<SingularCurve> curves = {
+        {SingularCurve::Type::Inverse, "inverse", {Eigen::Vector2d(0, 25.5), Eigen::Vector2d(100, 25.5)}},
+        {SingularCurve::Type::Direct, "direct", {Eigen::Vector2d(40.5, 0), Eigen::Vector2d(40.5, 100)}}};
+    const QImage plain = pictures::mapImage(grid, cells, MapQuantity::Determinant, 1.0);
+    const QImage image = pictures::mapImage(grid, cells, MapQuantity::Determinant, 1.0, curves);
+    QCOMPARE(image.size(), plain.size());
+    const QRgb red = image.pixel(20, 100 - 26); // y up: y = 25.5 mm is row 74 from the top
+    QVERIFY2(qRed(red) > 120 && qGreen(red) < 60 && qBlue(red) < 60, qPrintable(QString::number(red, 16)));
+    int dark = 0;
+    for (int y = 0; y < 100; ++y) {
+        const QRgb p = image.pixel(40, y);
+        dark += qRed(p) < 70 && qGreen(p) < 70 && qBlue(p) < 70;
+    }
+    QVERIFY2(dark > 30 && dark < 90, qPrintable(QString::number(dark))); // dashed
+    for (int y = 0; y < 100; ++y) {
+        for (int x = 80; x < 100; ++x)
+            QCOMPARE(qAlpha(image.pixel(x, y)), 0);
+    }
+    QCOMPARE(plain.pixel(20, 100 - 26), plain.pixel(20, 10));
+
+    // the five-bar's map from pkm, all blue (det J < 0): its inverse curves (a leg stretched)
+    // run red along the outer edge
+    QTemporaryDir directory;
+    for (const char *design : {"fivebar-example", "pp-5r"}) {
+        const QString path = directory.filePath(QStringLiteral("%1.png").arg(QLatin1String(design)));
+        const Run run = runPkm(args({"map", design, "--grid", "300", "-o"}) << path);
+        QCOMPARE(run.exitCode, 0);
+        const QImage map(path);
+        QVERIFY(!map.isNull());
+        qsizetype red = 0;
+        for (int y = 0; y < map.height(); ++y) {
+            for (int x = 0; x < map.width(); ++x) {
+                const QRgb p = map.pixel(x, y);
+                red += qAlpha(p) == 255 && qRed(p) > qGreen(p) + 60 && qRed(p) > qBlue(p) + 60;
+            }
+        }
+        QVERIFY2(red > 100, qPrintable(QStringLiteral("%1: %2 red pixels").arg(QLatin1String(design)).arg(red)));
+    }
 }
 
 void TestCli::mapColourLimitIgnoresSpikes()
