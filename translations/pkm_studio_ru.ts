@@ -5542,6 +5542,10 @@ Please verify the correct file name was given.</source>
         <translation>Режимы: %1</translation>
     </message>
     <message>
+        <source>→ %1:</source>
+        <translation>→ %1:</translation>
+    </message>
+    <message>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
@@ -6395,6 +6399,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>input, actuated</source>
         <translation>вход, с приводом</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>вход</translation>
     </message>
     <message>
         <source>output</source>

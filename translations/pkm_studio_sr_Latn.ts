@@ -5542,6 +5542,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Modovi: %1</translation>
     </message>
     <message>
+        <source>→ %1:</source>
+        <translation>→ %1:</translation>
+    </message>
+    <message>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
@@ -6395,6 +6399,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>input, actuated</source>
         <translation>ulaz, sa pogonom</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>ulaz</translation>
     </message>
     <message>
         <source>output</source>

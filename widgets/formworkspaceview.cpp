@@ -2,6 +2,7 @@
 
 #include "plotfont.h"
 #include "plotfit.h"
+#include "plotstyle.h"
 #include "plotticker.h"
 #include "quantityformat.h"
 
@@ -126,7 +127,7 @@ FormWorkspaceView::FormWorkspaceView(QWidget *parent)
 void FormWorkspaceView::setForms(const QString &title, const std::vector<FormRegion> &forms,
                                  const std::vector<SingularCurve> &singular, const QString &singularLabel)
 {
-    m_title->setText(title);
+    plotstyle::setFittedText(m_title, title);
     m_bounds.setEmpty();
     for (const FormRegion &form : forms)
         m_bounds.extend(form.mechanism->planarWorkspace()->workspaceBounds());
@@ -260,13 +261,21 @@ QString FormWorkspaceView::legendText() const
     QStringList items;
     for (int i = 0; i < m_plot->legend->itemCount(); ++i) {
         if (auto *item = qobject_cast<QCPPlottableLegendItem *>(m_plot->legend->item(i)))
-            items << item->plottable()->name();
+            items << item->plottable()->name().replace(QLatin1Char('\n'), QLatin1Char(' ')); // as one line, however wrapped
     }
     return items.join(QLatin1Char('\n'));
 }
 
 void FormWorkspaceView::fitView()
 {
+    // a new width or a new text size (presentation mode scales the plot's fonts): the title
+    // and the legend are broken again, and laid out on the next replot
+    const QString fittedFor = QStringLiteral("%1 %2 %3").arg(m_plot->width()).arg(m_title->font().key(), m_plot->legend->font().key());
+    if (fittedFor != m_fittedFor) {
+        m_fittedFor = fittedFor;
+        fitTexts();
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    }
     if (m_bounds.isEmpty())
         return;
     // equal scales on both axes, the whole union in view with a margin
@@ -299,11 +308,23 @@ void FormWorkspaceView::retranslate()
     if (m_swatches.empty())
         return;
     m_outline->setName(tr("union, outlined: %1").arg(areaText(m_unionShown)));
+    plotstyle::forgetLegendNames(m_plot); // the names just given are the whole ones
+    fitTexts();
     const QLocale locale;
     const QString columns = locale.toString(m_grid.columns), rows = locale.toString(m_grid.rows);
     m_plot->setToolTip(m_exactAreas
             ? tr("Areas of the forms: exact (closed form). Union: counted on a %1 × %2 grid.").arg(columns, rows)
             : tr("Areas counted on a %1 × %2 grid.").arg(columns, rows));
+}
+
+void FormWorkspaceView::fitTexts()
+{
+    // At a projector's 1280×720 and 150 % text the title and the legend are wider than the
+    // plot: the title breaks into lines and the legend takes as many columns as fit, its
+    // names broken too, so that no area or unit is cut off.
+    plotstyle::fitText(m_title);
+    plotstyle::wrapLegendNames(m_plot);
+    plotstyle::layOutLegend(m_plot);
 }
 
 void FormWorkspaceView::changeEvent(QEvent *event)

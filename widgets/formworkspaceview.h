@@ -65,6 +65,8 @@ protected:
 private:
     void fitView();
     void retranslate();
+    /// The title and the legend broken and laid out for the plot's width.
+    void fitTexts();
     void mouseReleased(QMouseEvent *event);
 
     QCustomPlot *m_plot = nullptr;
@@ -86,6 +88,7 @@ private:
     bool m_exactAreas = false;
     Eigen::AlignedBox2d m_bounds;
     int m_refits = 0; ///< relayouts in a row asked by fitView(), to stop a ping-pong of margins
+    QString m_fittedFor; ///< the width and fonts the title and legend were last broken for
     QPoint m_pressPosition;
 };
 

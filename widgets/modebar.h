@@ -41,6 +41,8 @@ private:
     FlowLayout *m_layout = nullptr;
     QStringList m_labels;
     QList<QPushButton *> m_buttonList;
+    QList<QLabel *> m_groupLabels; ///< the captions of the groups of numbered modes
+    QList<int> m_groupOf;          ///< per button, its group's caption (−1: none)
 };
 
 } // namespace pkm

@@ -56,6 +56,12 @@ PlayBar::PlayBar(QWidget *parent)
     retranslate();
 }
 
+void PlayBar::setCompact(bool compact)
+{
+    for (QWidget *widget : std::initializer_list<QWidget *> {m_fromLabel, m_from, m_toLabel, m_to})
+        widget->setVisible(!compact);
+}
+
 void PlayBar::setMechanism(const MechanismPtr &mechanism)
 {
     const bool sameKind = m_mechanism && mechanism && m_mechanism->kind() == mechanism->kind();

@@ -42,6 +42,10 @@ public:
     void setMode(PlayMode mode);
     /// Shows the button as Pause (playing) or Play.
     void setPlaying(bool playing);
+    /// Without the range's fields (from, to), which keep their values: presentation mode,
+    /// where at a large text size the whole bar in a longer language is wider than a
+    /// 1280×720 projector and its combo boxes would be cut.
+    void setCompact(bool compact);
     bool isPlaying() const { return m_playing; }
 
     QToolButton *playButton() const { return m_play; }

@@ -150,6 +150,17 @@ QString wrapped(const QString &text, const QFont &font, int width)
         }
     }
     lines << line;
+    // No short word alone on the last line ("(fig." over "5)"): the word before it goes down
+    // with it, where the line still fits.
+    if (lines.size() > 1 && lines.last().size() <= 3) {
+        QString &before = lines[lines.size() - 2];
+        const qsizetype space = before.lastIndexOf(QLatin1Char(' '));
+        const QString moved = space > 0 ? before.mid(space + 1) + QLatin1Char(' ') + lines.last() : QString();
+        if (space > 0 && fits(moved)) {
+            lines.last() = moved;
+            before.truncate(space);
+        }
+    }
     return lines.join(QLatin1Char('\n'));
 }
 

@@ -48,7 +48,8 @@ void VariablePanel::rebuild()
     m_rows.clear();
     const auto &variables = m_mechanism->variableInfo();
     QFont big = font();
-    big.setPointSizeF(big.pointSizeF() * 1.25);
+    if (!m_compact) // compact rows keep the panel's size (setCompact)
+        big.setPointSizeF(big.pointSizeF() * 1.25);
     for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
         const VariableInfo &info = variables[i];
         Row row;
@@ -104,12 +105,34 @@ void VariablePanel::describe(int i)
     Row &row = m_rows[i];
     const QString symbol = toQString(info.symbol);
     const QString label = coreLabel(info.label);
-    const QString role = info.actuated ? tr("input, actuated") : tr("output");
+    const QString role = info.actuated ? (m_compact ? tr("input") : tr("input, actuated")) : tr("output");
     row.name->setText(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>").arg(symbol.toHtmlEscaped(), role));
+    // compact: one line that the slider makes room for, never a second line the rows lack
+    row.name->setWordWrap(!m_compact);
     row.name->setToolTip(label);
     const QString unit = unitText(info.unit);
     const QSignalBlocker blocker(row.spinBox);
     row.spinBox->setSuffix(unit.startsWith(QChar(0x00B0)) ? unit : QLatin1Char(' ') + unit);
+}
+
+void VariablePanel::setCompact(bool compact)
+{
+    if (compact == m_compact)
+        return;
+    m_compact = compact;
+    // Compact rows take the panel's text size, already large in presentation mode: the
+    // quarter more of the usual rows would leave a 3-DOF design's six rows taller than a
+    // 1280×720 projector's window has room for.
+    QFont rows = font();
+    if (!compact)
+        rows.setPointSizeF(rows.pointSizeF() * 1.25);
+    for (int i = 0; m_mechanism && i < m_rows.size(); ++i) {
+        m_rows[i].name->setFont(rows);
+        m_rows[i].spinBox->setFont(rows);
+        describe(i);
+    }
+    if (m_mechanism)
+        updateRanges(); // the spin boxes' widths for their new text
 }
 
 void VariablePanel::changeEvent(QEvent *event)

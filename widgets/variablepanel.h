@@ -25,6 +25,11 @@ public:
     void setMechanism(const MechanismPtr &mechanism);
     void setPose(const Pose &pose);
 
+    /// Short roles ("input" for "input, actuated"), one line a row: presentation mode, where
+    /// a 3-DOF design's six rows at a large text size leave no room for a second line.
+    void setCompact(bool compact);
+    bool isCompact() const { return m_compact; }
+
     QSlider *slider(int variable) const { return m_rows.value(variable).slider; }
     QDoubleSpinBox *spinBox(int variable) const { return m_rows.value(variable).spinBox; }
     static constexpr int sliderSteps = 10000;
@@ -62,6 +67,7 @@ private:
     MechanismPtr m_mechanism;
     QGridLayout *m_grid = nullptr;
     QVector<Row> m_rows;
+    bool m_compact = false;
     bool m_updating = false;
 };
 

@@ -7,6 +7,7 @@
 
 #include "kinds/kindpanel.h"
 #include "linkageview.h"
+#include "playbar.h"
 #include "plotfocus.h"
 
 #include <qcustomplot.h>
@@ -206,6 +207,8 @@ void MainWindow::setPresentationMode(bool on)
         // on the sliders themselves, after the text size: a style sheet on the panel would stop
         // the application's new font from reaching its labels.
         styleSliders();
+        m_variables->setCompact(true);
+        m_playBar->setCompact(true);
         showFullScreen();
         // The linkage is what the class looks at: the larger share, beside its plot or map.
         const int width = screen() ? screen()->geometry().width() : this->width();
@@ -215,6 +218,8 @@ void MainWindow::setPresentationMode(bool on)
     } else {
         setPalette(QPalette());
         styleSliders();
+        m_variables->setCompact(false);
+        m_playBar->setCompact(false);
         setTextScale(QSettings().value(textSizeKey(false), 100).toInt() / 100.0);
         restoreState(m_stateBeforePresentation); // the docks and toolbars as they were
         m_splitter->restoreState(m_splitterBeforePresentation);
@@ -226,8 +231,16 @@ void MainWindow::setPresentationMode(bool on)
         showStatus(QString());
     }
     applySceneStyle();
-    // Once the window has its new size (full screen or back): the linkage fills the view.
-    QTimer::singleShot(100, m_view, &LinkageView::fitToView);
+    // Once the window has its new size (full screen or back): the splitter shared out again
+    // over the width the window really has (the screen's was a first guess), and the linkage
+    // fills the view.
+    QTimer::singleShot(100, this, [this] {
+        if (m_presenting) {
+            const int width = m_splitter->width();
+            m_splitter->setSizes({width * 11 / 20, width * 9 / 20});
+        }
+        m_view->fitToView();
+    });
 }
 
 } // namespace pkm

@@ -9,6 +9,8 @@
 #include "playbar.h"
 #include "plotfocus.h"
 #include "textscale.h"
+#include "variablepanel.h"
+#include "modebar.h"
 #include "support/app.h"
 
 #include <qcustomplot.h>
@@ -17,6 +19,8 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QStyle>
+#include <QStyleOptionComboBox>
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QLabel>
@@ -24,6 +28,7 @@
 #include <QAbstractSpinBox>
 #include <QMenu>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
@@ -107,8 +112,11 @@ QStringList clippedTexts(QWidget *root)
         if (!visible(box))
             continue;
         const int needed = box->fontMetrics().horizontalAdvance(box->currentText());
-        // the text's room: the box less its frame and drop-down arrow (about 2 em)
-        const int room = box->width() - 2 * box->fontMetrics().height();
+        // the text's room: the box less its frame and drop-down arrow, as the style draws them
+        QStyleOptionComboBox option;
+        option.initFrom(box);
+        option.editable = box->isEditable();
+        const int room = box->style()->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, box).width();
         if (needed > room + 1)
             clipped << QStringLiteral("QComboBox '%1' needs %2 px, has %3 px").arg(box->currentText().left(60)).arg(needed).arg(room);
     }
@@ -275,6 +283,96 @@ private slots:
         for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
             QVERIFY(!plot->isHidden());
         QVERIFY(!grashof->parentWidget()->isHidden());
+    }
+
+    /// Presentation mode on a projector's 1280×720 screen and 150 % text, in all four
+    /// languages: no label or button is cut, no wrapped label is shorter than its lines (the
+    /// sliders' "q₁ (input, actuated)" lost its second line under a 3-DOF design's six rows),
+    /// the rows are one line each, a 3-RP̲R's five other assembly modes fit one caption and
+    /// five numbers, and every plot's title and legend lie inside the plot (the O-X glide's
+    /// fig. 5 title and areas ran off both sides).
+    void nothingClippedWhilePresenting_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("preset");
+        for (const char *code : {"en", "ru", "sr", "sr_Latn"}) {
+            for (const char *preset : {"oxglide-prototype", "pp-3rpr", "moma-3a"})
+                QTest::addRow("%s %s", code, preset) << QString::fromLatin1(code) << QString::fromLatin1(preset);
+        }
+    }
+    void nothingClippedWhilePresenting()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, preset);
+        MainWindow &w = *m_window;
+        QVERIFY(language::apply(language));
+        w.setPresentationMode(false); // whatever an earlier row left
+        QVERIFY(w.openDesign(preset));
+        w.showNormal();
+        w.resize(1000, 700);
+        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
+        QVERIFY(w.isPresenting());
+        const auto leave = qScopeGuard([&w] { // a failed row leaves the window as it found it
+            w.setPresentationMode(false);
+            language::apply(QStringLiteral("en"));
+        });
+        QTest::qWait(150); // the fonts and the wrapped texts laid out anew
+        // the window fits the projector (the test's screen is 1280×720), or its bottom or
+        // right edge would be off the screen; it is given that size, as full screen gives it
+        const QSize least = w.minimumSizeHint().expandedTo(w.minimumSize());
+        QVERIFY2(least.width() <= 1280 && least.height() <= 720,
+                 qPrintable(QStringLiteral("presenting, the window asks for %1×%2").arg(least.width()).arg(least.height())));
+        w.resize(1280, 720);
+        QTRY_COMPARE(w.size(), QSize(1280, 720));
+        QTest::qWait(150); // the splitter shared out for the width the window has
+        QCoreApplication::processEvents();
+        QStringList clipped = clippedTexts(&w);
+        for (QLabel *label : w.findChildren<QLabel *>()) {
+            if (!label->isVisibleTo(&w) || !label->wordWrap() || label->text().isEmpty() || label->height() <= 0)
+                continue;
+            const int needed = label->heightForWidth(label->width());
+            if (needed > label->height() + 1)
+                clipped << QStringLiteral("QLabel '%1' needs %2 px high, has %3 px").arg(label->text().left(60)).arg(needed).arg(label->height());
+        }
+        QVERIFY(w.variablePanel()->isCompact());
+        for (QLabel *label : w.variablePanel()->findChildren<QLabel *>()) {
+            if (label->text().contains(QLatin1String("<b>")) && label->height() > 2.2 * label->fontMetrics().height())
+                clipped << QStringLiteral("slider label '%1' takes %2 px").arg(label->text()).arg(label->height());
+        }
+        for (QCustomPlot *plot : w.findChildren<QCustomPlot *>()) {
+            if (!plot->isVisibleTo(&w) || plot->width() <= 0)
+                continue;
+            plot->replot(QCustomPlot::rpImmediateRefresh);
+            const QRect room = plot->rect().adjusted(-1, -1, 1, 1);
+            for (QCPLayoutElement *element : plot->plotLayout()->elements(true)) {
+                if (auto *title = qobject_cast<QCPTextElement *>(element)) {
+                    const QFontMetrics metrics(title->font());
+                    for (const QString &line : title->text().split(QLatin1Char('\n'))) {
+                        if (metrics.horizontalAdvance(line) > plot->width())
+                            clipped << QStringLiteral("plot title '%1' needs %2 px, has %3 px").arg(line).arg(metrics.horizontalAdvance(line)).arg(plot->width());
+                    }
+                }
+            }
+            QCPLegend *legend = plot->legend;
+            for (int i = 0; legend && legend->visible() && i < legend->itemCount(); ++i) {
+                QCPAbstractLegendItem *item = legend->item(i);
+                if (item && !room.contains(item->outerRect()))
+                    clipped << QStringLiteral("legend item %1 of a plot at %2,%3 %4×%5 px lies outside it").arg(i)
+                                   .arg(item->outerRect().x()).arg(item->outerRect().y()).arg(item->outerRect().width()).arg(item->outerRect().height());
+            }
+        }
+        if (preset == QLatin1String("pp-3rpr")) {
+            // the numbers on the buttons, one caption before them
+            int numbers = 0;
+            for (int i = 0; w.modeBar()->button(i); ++i)
+                numbers += w.modeBar()->button(i)->text().toInt() > 0;
+            QCOMPARE_GE(numbers, 5);
+        }
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        QVERIFY(!w.variablePanel()->isCompact());
+        language::apply(QStringLiteral("en"));
+        QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join(QStringLiteral("\n"))));
     }
 
     /// Fit frames the linkage, not its ghosts' points of interest: the crossed branch's instant
