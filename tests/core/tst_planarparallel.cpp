@@ -410,6 +410,33 @@ private slots:
 
     /// П̲RR legs: the crank angle follows the П-joint (3–5), and the П-joint at θ = ±90° is a
     /// direct singularity of the whole mechanism (J_x carries ∂d/∂θ).
+    /// The other assembly modes of a 3-DOF design are made with one shared search of their
+    /// home poses (modeNeighbours): each comes out as withParameters() makes it alone, to the
+    /// last bit of its home pose and its bounds.
+    void assemblyNeighboursAsMadeAlone()
+    {
+        for (const ParameterSet &parameters : {threeRpr(), pkm::test::legdesigns::threePrr()}) {
+            const auto m = build(parameters);
+            QVERIFY(m);
+            int assemblies = 0;
+            for (const ModeAlternative &neighbour : m->modeNeighbours()) {
+                const auto alone = m->withParameters(neighbour.changes);
+                QVERIFY(alone);
+                const Pose a = neighbour.mechanism->homePose(), b = (*alone)->homePose();
+                QCOMPARE(a.inputs.size(), b.inputs.size());
+                for (int i = 0; i < a.inputs.size(); ++i)
+                    QCOMPARE(a.inputs[i], b.inputs[i]);
+                for (int i = 0; i < a.outputs.size(); ++i)
+                    QCOMPARE(a.outputs[i], b.outputs[i]);
+                const auto boundsOf = [](const Mechanism &mechanism) { return mechanism.planarWorkspace()->workspaceBounds(); };
+                QVERIFY(boundsOf(*neighbour.mechanism).min() == boundsOf(**alone).min());
+                QVERIFY(boundsOf(*neighbour.mechanism).max() == boundsOf(**alone).max());
+                assemblies += neighbour.changes.size() == 1 && neighbour.changes.count("assembly");
+            }
+            QVERIFY(assemblies >= 2);
+        }
+    }
+
     void pjointLegs()
     {
         PlanarLeg leg;

@@ -15,11 +15,16 @@ namespace pkm {
 
 Result<MechanismPtr> PlanarParallel::withParameters(const ParameterSet &changes) const
 {
+    return withParameters(changes, nullptr);
+}
+
+Result<MechanismPtr> PlanarParallel::withParameters(const ParameterSet &changes, SharedSearch *shared) const
+{
     auto design = table().apply(m_design, changes, true);
     if (!design)
         return design.failure();
     const Eigen::Vector3d reference = platformPose(m_home.outputs);
-    return blameChange(assemble(*design, &reference), changes);
+    return blameChange(assemble(*design, &reference, shared), changes);
 }
 
 bool PlanarParallel::parameterApplies(std::string_view name) const

@@ -197,7 +197,8 @@ Result<MechanismPtr> PlanarParallel::create(const PlanarParallelDesign &design)
     return assemble(design, nullptr);
 }
 
-Result<MechanismPtr> PlanarParallel::assemble(const PlanarParallelDesign &design, const Eigen::Vector3d *reference)
+Result<MechanismPtr> PlanarParallel::assemble(const PlanarParallelDesign &design, const Eigen::Vector3d *reference,
+                                              SharedSearch *shared)
 {
     if (auto checked = table().checkDesign(design); !checked)
         return checked.failure();
@@ -216,7 +217,7 @@ Result<MechanismPtr> PlanarParallel::assemble(const PlanarParallelDesign &design
         if ((legs[1].platform - legs[0].platform).norm() + (legs[2].platform - legs[0].platform).norm() <= 0.0)
             return invalid("B1x", text::translate("core", "The platform points B₁, B₂, B₃ coincide: the platform's angle is undetermined."));
     }
-    std::shared_ptr<PlanarParallel> made(new PlanarParallel(design));
+    std::shared_ptr<PlanarParallel> made(new PlanarParallel(design, shared));
     if (made->m_home.inputs.size() == 0 && reference) {
         // the grid of inputs missed it, but the pose the edit starts from may still assemble
         Coordinates outputs(n == 3 ? 3 : 2);
@@ -235,9 +236,16 @@ Result<MechanismPtr> PlanarParallel::assemble(const PlanarParallelDesign &design
     return MechanismPtr(made);
 }
 
-PlanarParallel::PlanarParallel(const PlanarParallelDesign &design)
+PlanarParallel::PlanarParallel(const PlanarParallelDesign &design, SharedSearch *shared)
     : m_design(design)
+    , m_shared(shared)
 {
+    // the search's shared solutions serve the constructor only: the mechanism made is a value
+    // that many threads may read
+    struct Forget {
+        SharedSearch *&shared;
+        ~Forget() { shared = nullptr; }
+    } forget{m_shared};
     for (PlanarLeg &leg : m_design.legs)
         leg.guide = planar::direction(leg.alpha);
     const int n = design.legCount();
@@ -255,7 +263,16 @@ PlanarParallel::PlanarParallel(const PlanarParallelDesign &design)
     if (n == 3)
         m_variables.push_back({"phi", "φ", QT_TRANSLATE_NOOP("core", "platform angle"), units::angle, false, 2});
     buildReport();
-    m_bounds = computeBounds();
+    // the bounds depend on the working modes, not on the assembly mode (SharedSearch)
+    const std::array<int, 3> working = {design.legs[0].working, design.legs[1].working, design.legs[2].working};
+    const Eigen::AlignedBox2d *known = nullptr;
+    if (m_shared) {
+        if (const auto found = m_shared->bounds.find(working); found != m_shared->bounds.end())
+            known = &found->second;
+    }
+    m_bounds = known ? *known : computeBounds();
+    if (m_shared && !known)
+        m_shared->bounds.emplace(working, m_bounds);
 
     // The home pose: the inputs in the middle of their ranges if the mechanism assembles there
     // in its modes away from singularities, else the best of a grid of inputs.
@@ -371,6 +388,7 @@ Pose makePose(const Coordinates &inputs, const Eigen::Vector3d &X, int n)
 std::vector<Pose> PlanarParallel::assemblies(const Coordinates &inputs) const
 {
     const int n = m_design.legCount();
+
     const auto c = circles(inputs);
     std::vector<Eigen::Vector3d> candidates;
     for (int i = 0; i < n; ++i) {
@@ -392,6 +410,13 @@ std::vector<Pose> PlanarParallel::assemblies(const Coordinates &inputs) const
             const Eigen::Vector2d X = p + along * u + side * across * Eigen::Vector2d(-u.y(), u.x());
             candidates.emplace_back(X.x(), X.y(), 0.0);
         }
+    } else if (m_shared) {
+        // solved once for every design that shares the search (SharedSearch)
+        const auto key = std::make_tuple(inputs[0], inputs[1], inputs[2]);
+        auto found = m_shared->solutions.find(key);
+        if (found == m_shared->solutions.end())
+            found = m_shared->solutions.emplace(key, planar::threeCircleSolutions(m_design.legs, c)).first;
+        candidates = found->second;
     } else {
         candidates = planar::threeCircleSolutions(m_design.legs, c);
     }

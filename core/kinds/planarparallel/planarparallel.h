@@ -47,6 +47,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <tuple>
 #include <vector>
 
 namespace pkm {
@@ -237,10 +239,23 @@ public:
     Eigen::Vector3d platformPose(const Coordinates &outputs) const;
 
 private:
-    explicit PlanarParallel(const PlanarParallelDesign &design);
+    /// What designs that differ only in a 3-DOF platform's modes share while they are made
+    /// (modeNeighbours): every solution of the three circles at each input the home search
+    /// tries (the modes only choose among them) and, per set of working modes, the workspace
+    /// bounds (found by inverse kinematics, which has no assembly mode). The designs come out
+    /// exactly as create() makes them; nine searches cost little more than one.
+    struct SharedSearch {
+        std::map<std::tuple<double, double, double>, std::vector<Eigen::Vector3d>> solutions;
+        std::map<std::array<int, 3>, Eigen::AlignedBox2d> bounds;
+    };
+    explicit PlanarParallel(const PlanarParallelDesign &design, SharedSearch *shared = nullptr);
     /// create() that, given the platform pose an edit starts from, takes it as the home pose
     /// when the grid of inputs finds none, and otherwise says which leg fails there.
-    static Result<MechanismPtr> assemble(const PlanarParallelDesign &design, const Eigen::Vector3d *reference);
+    static Result<MechanismPtr> assemble(const PlanarParallelDesign &design, const Eigen::Vector3d *reference,
+                                         SharedSearch *shared = nullptr);
+    /// withParameters(), the search shared with the other designs that differ in the assembly
+    /// mode only.
+    Result<MechanismPtr> withParameters(const ParameterSet &changes, SharedSearch *shared) const;
     /// Why this design cannot hold the platform at X: the first leg that cannot reach it and
     /// why, or the other assembly mode (planardesign.cpp).
     std::string assemblyFailure(const Eigen::Vector3d &X) const;
@@ -269,6 +284,8 @@ private:
     ReportLayout m_layout;
     Eigen::AlignedBox2d m_bounds;
     Pose m_home;
+    /// Only while the constructor searches the home pose (SharedSearch); null after.
+    mutable SharedSearch *m_shared = nullptr;
 };
 
 } // namespace pkm
