@@ -118,6 +118,64 @@ private slots:
         QVERIFY(compared > reached / 2);
     }
 
+    /// A 3-DOF platform's det J slice at φ = phi_map, worked out a block at a time as well:
+    /// reached exactly where solveInverse() succeeds at that angle, with evaluate()'s det J and
+    /// margin, for struts, sliders and cranks (one of them П-joint-driven) at several angles.
+    void slicesArePoses_data()
+    {
+        QTest::addColumn<ParameterSet>("design");
+        for (const double phi : {0.0, 12.0, -30.0}) {
+            ParameterSet rpr = pkm::test::legdesigns::threeRpr(), prr = pkm::test::legdesigns::threePrr();
+            rpr["phi_map"] = prr["phi_map"] = phi * deg;
+            QTest::addRow("3-RPR at %g°", phi) << rpr;
+            QTest::addRow("3-PRR at %g°", phi) << prr;
+            // the 3-PRR with a crank and a П-joint in place of two sliders
+            ParameterSet mixed = prr;
+            mixed["leg1_type"] = 0;
+            mixed["r1"] = 120;
+            mixed["l1"] = 150;
+            mixed["leg2_type"] = 3;
+            mixed["a2"] = 170;
+            mixed["k2"] = 0.4;
+            mixed["l2"] = 200;
+            mixed["q2_min"] = 116.5;
+            mixed["q2_max"] = 231;
+            QTest::addRow("RRR + ПRR + PRR at %g°", phi) << mixed;
+        }
+    }
+    void slicesArePoses()
+    {
+        QFETCH(ParameterSet, design);
+        const auto pp = build(design);
+        QVERIFY(pp);
+        const double phi = pp->design().mapPhi;
+        const MapGrid grid = squareGrid(pp->workspaceBounds(), 90);
+        std::vector<float> det(grid.cells()), margins(grid.cells());
+        computeMap(*pp, MapQuantity::Determinant, grid, det, margins);
+        int reached = 0, compared = 0;
+        for (int r = 0; r < grid.rows; ++r) {
+            for (int c = 0; c < grid.columns; ++c) {
+                const std::size_t i = std::size_t(r) * std::size_t(grid.columns) + std::size_t(c);
+                const auto pose = pp->solveInverse(triple(grid.x(c), grid.y(r), phi));
+                const QString where = QString("cell (%1, %2) at (%3, %4)").arg(c).arg(r).arg(grid.x(c)).arg(grid.y(r));
+                QVERIFY2(std::isnan(det[i]) == !pose, qPrintable(where));
+                if (!pose)
+                    continue;
+                ++reached;
+                Singularity s;
+                const std::vector<double> v = evaluated(*pp, *pose, &s);
+                QVERIFY2(std::abs(margins[i] - s.margin) < 1e-6, qPrintable(where + QString(": margin %1, pose %2").arg(margins[i]).arg(s.margin)));
+                if (s.type != SingularityType::None)
+                    continue;
+                const double expected = entry(*pp, v, "det_J");
+                QVERIFY2(close(det[i], expected, 1e-6), qPrintable(where + QString(": det J %1, pose %2").arg(det[i]).arg(expected)));
+                ++compared;
+            }
+        }
+        QVERIFY2(reached > 100, qPrintable(QString::number(reached)));
+        QVERIFY(compared > reached / 2);
+    }
+
     /// The leg-built 5R and MOMA 3a map as the five-bar and MOMA themselves, cell by cell on
     /// one grid.
     void builtInKinds_data()

@@ -6,6 +6,7 @@
 #include "mechanism.h"
 #include "units.h"
 
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -58,6 +59,18 @@ inline ParameterSet strutAndCrank()
     strut["q1_min"] = 20;
     strut["q1_max"] = 250;
     return strut;
+}
+
+/// resources/presets/pp-3rpr.pkm.json in core units: the 3-RPR of Innocenti and
+/// Parenti-Castelli.
+inline ParameterSet threeRpr()
+{
+    const double d1 = 17.04, d2 = 16.54, d3 = 20.84;
+    const double bx = (d3 * d3 - d2 * d2 + d1 * d1) / (2 * d1), by = std::sqrt(d3 * d3 - bx * bx);
+    return {{"platform", 2}, {"leg1_type", 2}, {"leg2_type", 2}, {"leg3_type", 2}, {"A1x", 0}, {"A1y", 0},
+            {"A2x", 15.91}, {"A2y", 0}, {"A3x", 0}, {"A3y", 10}, {"B1x", 0}, {"B1y", 0}, {"B2x", d1}, {"B2y", 0},
+            {"B3x", bx}, {"B3y", by}, {"q1_min", 5}, {"q1_max", 30}, {"q2_min", 5}, {"q2_max", 30}, {"q3_min", 5},
+            {"q3_max", 30}, {"assembly", 1}};
 }
 
 /// A 3-PRR with a free platform: three sliders at 120° and unequal actuators, in core units.
