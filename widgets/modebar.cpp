@@ -5,6 +5,7 @@
 #include <QEvent>
 #include <QLabel>
 #include <QPushButton>
+#include <QToolButton>
 #include <QRegularExpression>
 
 namespace pkm {
@@ -70,9 +71,11 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
                 m_groupLabels.append(caption);
             }
             m_groupOf.append(inGroup ? int(m_groupLabels.size()) - 1 : -1);
-            auto *button = new QPushButton(this);
+            // a number on a tool button, as wide as it needs: a push button is never narrower
+            // than about 80 px, and five of them took two rows at 1280×720
+            QAbstractButton *button = inGroup ? static_cast<QAbstractButton *>(new QToolButton(this)) : new QPushButton(this);
             button->setObjectName(QStringLiteral("modeButton%1").arg(i));
-            connect(button, &QPushButton::clicked, this, [this, i] { emit switchRequested(i); });
+            connect(button, &QAbstractButton::clicked, this, [this, i] { emit switchRequested(i); });
             m_layout->addWidget(button);
             m_buttonList.append(button);
         }
@@ -106,7 +109,7 @@ void ModeBar::changeEvent(QEvent *event)
     QWidget::changeEvent(event);
 }
 
-QPushButton *ModeBar::button(int index) const
+QAbstractButton *ModeBar::button(int index) const
 {
     return index >= 0 && index < m_buttonList.size() ? m_buttonList[index] : nullptr;
 }

@@ -6,8 +6,8 @@
 #include <QStringList>
 #include <QWidget>
 
+class QAbstractButton;
 class QLabel;
-class QPushButton;
 
 namespace pkm {
 
@@ -24,7 +24,7 @@ public:
     /// the alternatives at this pose. Buttons are rebuilt only when the labels change.
     void setModes(const QString &current, const QStringList &labels);
     QStringList labels() const { return m_labels; }
-    QPushButton *button(int index) const;
+    QAbstractButton *button(int index) const;
 
 signals:
     void switchRequested(int index);
@@ -40,7 +40,7 @@ private:
     QString m_currentText;
     FlowLayout *m_layout = nullptr;
     QStringList m_labels;
-    QList<QPushButton *> m_buttonList;
+    QList<QAbstractButton *> m_buttonList;
     QList<QLabel *> m_groupLabels; ///< the captions of the groups of numbered modes
     QList<int> m_groupOf;          ///< per button, its group's caption (−1: none)
 };

@@ -398,7 +398,7 @@ private slots:
         const QRect inside = bar->rect();
         int rows = 0, lastTop = -1;
         for (int i = 0; i < 3; ++i) {
-            QPushButton *button = bar->button(i);
+            QAbstractButton *button = bar->button(i);
             const QRect where(button->mapTo(bar, QPoint(0, 0)), button->size());
             QVERIFY2(inside.contains(where), qPrintable(button->text()));
             QVERIFY(button->width() >= button->sizeHint().width()); // the whole text

@@ -256,7 +256,7 @@ private:
             const int modes = int(w.modeBar()->labels().size());
             if (modes == 0)
                 return QStringLiteral("no mode");
-            QPushButton *button = w.modeBar()->button(pick(modes));
+            QAbstractButton *button = w.modeBar()->button(pick(modes));
             if (!button || !button->isVisible() || !button->isEnabled())
                 return QStringLiteral("mode button hidden");
             const QString label = button->text(); // the click rebuilds the bar
