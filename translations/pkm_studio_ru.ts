@@ -4131,6 +4131,26 @@ Please verify the correct file name was given.</source>
 <context>
     <name>pkm::AnimationDialog</name>
     <message>
+        <source>Beside the view</source>
+        <translation>Рядом с видом</translation>
+    </message>
+    <message>
+        <source>Each frame shows the mechanism at the left and this plot at the right, its cursor following the pose.</source>
+        <translation>Каждый кадр показывает механизм слева и этот график справа; курсор графика следует за положением.</translation>
+    </message>
+    <message>
+        <source>Nothing</source>
+        <translation>Ничего</translation>
+    </message>
+    <message>
+        <source>The plot on screen: %1</source>
+        <translation>График на экране: %1</translation>
+    </message>
+    <message>
+        <source>%1 against %2 — %3</source>
+        <translation>%1 от %2 — %3</translation>
+    </message>
+    <message>
         <source>Export Animation</source>
         <translation>Экспорт анимации</translation>
     </message>
@@ -4233,6 +4253,21 @@ Please verify the correct file name was given.</source>
             <numerusform>Кодирование %n кадров…</numerusform>
             <numerusform>Кодирование %n кадров…</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>pkm::AnimationPlot</name>
+    <message>
+        <source>%1 against %2</source>
+        <translation>%1 в зависимости от %2</translation>
+    </message>
+    <message>
+        <source>— (undefined at this singular pose)</source>
+        <translation>— (не определено в этом особом положении)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a quantity the %2 can plot; it has %3</source>
+        <translation>«%1» — не величина, которую %2 может построить; есть: %3</translation>
     </message>
 </context>
 <context>

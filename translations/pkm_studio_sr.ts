@@ -4131,6 +4131,26 @@ Please verify the correct file name was given.</source>
 <context>
     <name>pkm::AnimationDialog</name>
     <message>
+        <source>Beside the view</source>
+        <translation>Поред приказа</translation>
+    </message>
+    <message>
+        <source>Each frame shows the mechanism at the left and this plot at the right, its cursor following the pose.</source>
+        <translation>Сваки кадар приказује механизам лево и овај дијаграм десно; курсор дијаграма прати положај.</translation>
+    </message>
+    <message>
+        <source>Nothing</source>
+        <translation>Ништа</translation>
+    </message>
+    <message>
+        <source>The plot on screen: %1</source>
+        <translation>Дијаграм на екрану: %1</translation>
+    </message>
+    <message>
+        <source>%1 against %2 — %3</source>
+        <translation>%1 од %2 — %3</translation>
+    </message>
+    <message>
         <source>Export Animation</source>
         <translation>Извоз анимације</translation>
     </message>
@@ -4233,6 +4253,21 @@ Please verify the correct file name was given.</source>
             <numerusform>Кодирање %n кадра…</numerusform>
             <numerusform>Кодирање %n кадрова…</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>pkm::AnimationPlot</name>
+    <message>
+        <source>%1 against %2</source>
+        <translation>%1 у зависности од %2</translation>
+    </message>
+    <message>
+        <source>— (undefined at this singular pose)</source>
+        <translation>— (није дефинисано у овом сингуларном положају)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a quantity the %2 can plot; it has %3</source>
+        <translation>„%1” није величина коју %2 може да прикаже; постоје: %3</translation>
     </message>
 </context>
 <context>

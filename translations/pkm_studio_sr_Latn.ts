@@ -4131,6 +4131,26 @@ Proverite da li je ime datoteke tačno.</translation>
 <context>
     <name>pkm::AnimationDialog</name>
     <message>
+        <source>Beside the view</source>
+        <translation>Pored prikaza</translation>
+    </message>
+    <message>
+        <source>Each frame shows the mechanism at the left and this plot at the right, its cursor following the pose.</source>
+        <translation>Svaki kadar prikazuje mehanizam levo i ovaj dijagram desno; kursor dijagrama prati položaj.</translation>
+    </message>
+    <message>
+        <source>Nothing</source>
+        <translation>Ništa</translation>
+    </message>
+    <message>
+        <source>The plot on screen: %1</source>
+        <translation>Dijagram na ekranu: %1</translation>
+    </message>
+    <message>
+        <source>%1 against %2 — %3</source>
+        <translation>%1 od %2 — %3</translation>
+    </message>
+    <message>
         <source>Export Animation</source>
         <translation>Izvoz animacije</translation>
     </message>
@@ -4233,6 +4253,21 @@ Proverite da li je ime datoteke tačno.</translation>
             <numerusform>Kodiranje %n kadra…</numerusform>
             <numerusform>Kodiranje %n kadrova…</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>pkm::AnimationPlot</name>
+    <message>
+        <source>%1 against %2</source>
+        <translation>%1 u zavisnosti od %2</translation>
+    </message>
+    <message>
+        <source>— (undefined at this singular pose)</source>
+        <translation>— (nije definisano u ovom singularnom položaju)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a quantity the %2 can plot; it has %3</source>
+        <translation>„%1” nije veličina koju %2 može da prikaže; postoje: %3</translation>
     </message>
 </context>
 <context>

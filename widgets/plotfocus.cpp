@@ -120,4 +120,19 @@ QCustomPlot *shownAlone(const QWidget *root)
     return nullptr;
 }
 
+QCustomPlot *active(const QWidget *root)
+{
+    if (QCustomPlot *alone = shownAlone(root); alone && alone->isVisible())
+        return alone;
+    for (QCustomPlot *plot : plots(root)) {
+        if (plot->isVisible())
+            return plot;
+    }
+    for (QCustomPlot *plot : root->findChildren<QCustomPlot *>()) {
+        if (plot->isVisible())
+            return plot; // a plot or map that is not on a tab's page
+    }
+    return nullptr;
+}
+
 } // namespace pkm::plotfocus

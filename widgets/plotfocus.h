@@ -28,5 +28,9 @@ void bringToFront(QCustomPlot *plot);
 void showAll(QWidget *root);
 /// The plot shown alone on the current page under `root`, or null when none is.
 QCustomPlot *shownAlone(const QWidget *root);
+/// The plot a viewer is looking at under `root`: the one shown alone, else the first visible
+/// one in tab order (the current page's first), else any visible plot or map; null when none
+/// is on screen.
+QCustomPlot *active(const QWidget *root);
 
 } // namespace pkm::plotfocus

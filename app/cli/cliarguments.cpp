@@ -1,5 +1,6 @@
 #include "cli/cliarguments.h"
 
+#include "cli/cliargumentvalues.h"
 #include "cli/clicapabilitymap.h"
 
 #include <algorithm>
@@ -25,7 +26,7 @@ enum OptionFlag : unsigned {
     OptionGrid = 1u << 5,
     OptionQuantity = 1u << 6,
     OptionOutput = 1u << 7, ///< -o FILE
-    OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption, --one-way
+    OptionPicture = 1u << 8, ///< --view, --size, --camera, --orthographic, --no-caption, --one-way, --plot
     OptionLanguage = 1u << 9, ///< --lang CODE
     OptionModes = 1u << 10, ///< --all-modes
     OptionEquations = 1u << 11, ///< --equations
@@ -85,7 +86,7 @@ unsigned optionFlag(std::string_view option)
     if (option == "-o" || option == "--output")
         return OptionOutput;
     if (option == "--view" || option == "--size" || option == "--camera" || option == "--orthographic"
-        || option == "--no-caption" || option == "--one-way")
+        || option == "--no-caption" || option == "--one-way" || option == "--plot")
         return OptionPicture;
     if (option == "--lang")
         return OptionLanguage;
@@ -102,69 +103,9 @@ unsigned optionFlag(std::string_view option)
     return 0;
 }
 
-/// Locale-independent: std::from_chars reads '.' as the decimal separator whatever LC_NUMERIC
-/// says. The whole text must be a finite number ("5mm", "nan" and "1e999" are refused).
-std::optional<double> parseNumber(std::string_view text)
-{
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-        text.remove_prefix(1);
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
-        text.remove_suffix(1);
-    if (text.size() > 1 && text.front() == '+' && text[1] != '-')
-        text.remove_prefix(1);
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-        return std::nullopt;
-    return value;
-}
-
-Failure notANumber(const std::string &context, const std::string &culprit, std::string_view text)
-{
-    std::string message = context + ": '" + std::string(text) + "' is not a number";
-    if (text.find(',') != std::string_view::npos)
-        message += " (use '.' as the decimal separator)";
-    return usageFailure(culprit, message + ".");
-}
-
 bool isHelp(const std::string &argument)
 {
     return argument == "-h" || argument == "--help";
-}
-
-/// "a .png, .svg or .pdf file"
-std::string fileTypes(const std::array<std::string_view, 6> &types)
-{
-    std::vector<std::string_view> used;
-    for (std::string_view type : types) {
-        if (!type.empty())
-            used.push_back(type);
-    }
-    std::string text("a ");
-    for (std::size_t i = 0; i < used.size(); ++i) {
-        if (i > 0)
-            text.append(i + 1 == used.size() ? " or " : ", ");
-        text.append(".").append(used[i]);
-    }
-    return text.append(" file");
-}
-
-/// "1600x1200" (also "1600X1200", "1600×1200"): whole numbers, or nothing.
-std::optional<std::pair<double, double>> parseSize(std::string_view text)
-{
-    std::size_t at = text.find_first_of("xX");
-    std::size_t separator = 1;
-    if (const std::size_t times = text.find("×"); times != std::string_view::npos && times < at) {
-        at = times;
-        separator = std::string_view("×").size();
-    }
-    if (at == std::string_view::npos)
-        return std::nullopt;
-    const auto width = parseNumber(text.substr(0, at));
-    const auto height = parseNumber(text.substr(at + separator));
-    if (!width || !height)
-        return std::nullopt;
-    return std::pair {*width, *height};
 }
 
 } // namespace
@@ -349,6 +290,8 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             invocation.seed = seed;
         } else if (option == "--var") {
             invocation.var = value;
+        } else if (option == "--plot") {
+            invocation.plot = value; // checked against the design's quantities by the command
         } else if (option == "--lang") {
             invocation.language = value;
         } else if (option == "--grid") {
@@ -454,6 +397,7 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
             : invocation.to                                            ? std::optional<std::string>("--to")
             : invocation.steps ? std::optional<std::string>("--steps")
             : invocation.oneWay ? std::optional<std::string>("--one-way")
+            : invocation.plot   ? std::optional<std::string>("--plot")
                                 : std::nullopt;
         if (sweepOption) {
             return usageFailure(*sweepOption,
@@ -462,8 +406,10 @@ Result<Invocation> parseArguments(const std::vector<std::string> &arguments)
     }
     if (animation) {
         if (!invocation.sizeGiven) {
-            invocation.width = video ? defaultVideoWidth : defaultAnimationWidth;
-            invocation.height = video ? defaultVideoHeight : defaultAnimationHeight;
+            // A plot beside the mechanism takes half the frame: a GIF gets the video's wide frame.
+            const bool wide = video || invocation.plot;
+            invocation.width = wide ? defaultVideoWidth : defaultAnimationWidth;
+            invocation.height = wide ? defaultVideoHeight : defaultAnimationHeight;
         }
         if (invocation.view.value_or("2d") != "2d") {
             return usageFailure("--view", std::string(video ? "A video" : "An animated GIF")

@@ -81,6 +81,7 @@ struct Invocation {
     bool orthographic = false; ///< --orthographic (render, 3d only)
     bool caption = true; ///< false with --no-caption (render)
     bool oneWay = false; ///< --one-way (render -o FILE.gif): no way back to the start
+    std::optional<std::string> plot; ///< --plot QUANTITY (render -o FILE.gif|.mp4|.webm): a plot beside the view
     int width = defaultPictureWidth; ///< --size WxH (render), pixels
     int height = defaultPictureHeight;
     bool sizeGiven = false; ///< --size was given (an animation's default size is smaller)

@@ -32,9 +32,10 @@ Commands:
   render DESIGN --var NAME --from A --to B --steps K [--one-way] -o FILE.gif
                                            an animated GIF of the 2D drawing as NAME
                                            moves from A to B
-  render DESIGN --var NAME --from A --to B --steps K [--one-way] -o FILE.mp4|.webm
-                                           the same as a video: H.264 or VP9, 30
-                                           frames/s, 1280x720 unless --size WxH
+  render DESIGN --var NAME --from A --to B --steps K [--one-way] [--plot QUANTITY]
+         -o FILE.mp4|.webm                 the same as a video: H.264 or VP9, 30
+                                           frames/s, 1280x720 unless --size WxH;
+                                           --plot draws QUANTITY against NAME beside it
   sheet  DESIGN [--set N=V]... [--lang CODE] -o FILE.pdf|.json|.csv
                                            the parameter sheet for building the
                                            prototype: parameters, dimensions, key
@@ -271,7 +272,8 @@ constexpr std::string_view renderHelp = R"(Usage: pkm render DESIGN [--set NAME=
                   [--camera front|top|side|iso] [--orthographic] [--no-caption]
                   -o FILE.png|FILE.svg|FILE.pdf
        pkm render DESIGN [--set NAME=VALUE]... --var NAME --from A --to B --steps K
-                  [--one-way] [--size WxH] [--no-caption] -o FILE.gif|FILE.mp4|FILE.webm
+                  [--one-way] [--size WxH] [--no-caption] [--plot QUANTITY]
+                  -o FILE.gif|FILE.mp4|FILE.webm
 
 Draws the mechanism in a pose — the design's stored pose, or the one the --set values
 give — and writes the picture to FILE. The 2D drawing is fitted to the range of motion, so
@@ -309,6 +311,10 @@ VP9) with the same options draws the same frames, one per step, at 30 frames/s: 
 --one-way is 3 seconds. Default size 1280x720 (--size 1920x1080 for full HD); a video's
 sides are even, 32 to 3840 wide and 32 to 2160 high. Each frame is encoded as soon as it is
 drawn. An encoder that cannot be started or a full disk exits with status 1, no file left.
+
+--plot QUANTITY (a scalar of 'pkm eval --json': d, torque, det_J…) puts QUANTITY against
+NAME beside the mechanism in each frame (default size 1280x720), with a cursor and its value
+at the pose: ∞ or — where a singular pose leaves it infinite or undefined.
 
 Prints one line: Wrote FILE, with the size and the view. The file is written completely
 or not at all (a temporary file renamed at the end); on an error nothing is written and

@@ -6,8 +6,10 @@
 #include "cli/clirender.h"
 #include "document/savefile.h"
 #include "export/animation.h"
+#include "export/animationplot.h"
 #include "export/videowriter.h"
 #include "report/texttable.h"
+#include "text.h"
 
 #include <QFileInfo>
 #include <QSize>
@@ -87,6 +89,17 @@ int runRenderAnimation(const PreparedDesign &prepared, const Invocation &invocat
     settings.caption = invocation.caption;
     settings.name = QFileInfo(QString::fromStdString(prepared.origin)).fileName();
     const std::string way = settings.bounce ? "forth and back)\n" : "one way)\n";
+    if (invocation.plot) {
+        // Solved once for the whole animation; each frame then draws it with its cursor.
+        auto plot = animationPlot(mechanism, prepared.pose, settings, *invocation.plot);
+        if (!plot) {
+            printError(err, "--plot " + text::printable(*invocation.plot, 40) + ": " + plot.failure().message);
+            return CliUsageError;
+        }
+        settings.beside = [plot = std::move(*plot), &mechanism](const Pose &pose, const QSize &side) {
+            return animationPlotImage(plot, mechanism, pose, side);
+        };
+    }
 
     std::string line("Wrote ");
     line.append(*invocation.output);

@@ -108,8 +108,21 @@ QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const Animat
     image.fill(style.background);
     QPainter painter(&image);
     painter.setRenderHint(QPainter::Antialiasing, true);
-    const QString caption = settings.caption ? pictures::poseCaption(mechanism, pose, settings.name) : QString();
-    pictures::paintScenePicture(painter, QRectF(image.rect()), mechanism.scene(pose), style, caption);
+    // Beside a plot the scene has half the width: the pose alone, which the caption is for.
+    const QString caption = settings.caption
+        ? pictures::poseCaption(mechanism, pose, settings.beside ? QString() : settings.name)
+        : QString();
+    QRect scene = image.rect();
+    if (settings.beside) {
+        // The mechanism at the left, the plot at the right: half each, the plot's side even.
+        const int plotWidth = (image.width() / 2) & ~1;
+        scene.setWidth(image.width() - plotWidth);
+        const QImage plot = settings.beside(pose, QSize(plotWidth, image.height()));
+        painter.drawImage(QRect(scene.right() + 1, 0, plotWidth, image.height()), plot);
+        painter.setPen(QColor(0xc8, 0xcf, 0xd9));
+        painter.drawLine(scene.topRight(), scene.bottomRight());
+    }
+    pictures::paintScenePicture(painter, QRectF(scene), mechanism.scene(pose), style, caption);
     painter.end();
     return image;
 }

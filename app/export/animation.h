@@ -27,6 +27,10 @@ struct AnimationSettings {
     int frameMilliseconds = 50; ///< GIF only: a video has videoFramesPerSecond
     bool caption = true; ///< the pose under each frame
     QString name;        ///< the design's name in the caption
+    /// A picture beside the mechanism, at the right half of each frame (none when empty): the
+    /// plot of a quantity (animationplot.h) or, in the GUI, the plot on screen. Called for
+    /// every frame from the thread that draws it, with the pose and the size it is to fill.
+    std::function<QImage(const Pose &pose, const QSize &size)> beside;
 };
 
 inline constexpr int minAnimationFrames = 2;

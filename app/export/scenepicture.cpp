@@ -69,6 +69,8 @@ QString poseCaption(const Mechanism &mechanism, const Pose &at, const QString &n
         if (word.group == ReportGroup::Pose)
             pose.append(pose.empty() ? "" : ", ").append(word.name).append(" ").append(word.text);
     }
+    if (name.isEmpty())
+        return QString::fromStdString(pose);
     return pose.empty() ? name : name + QStringLiteral(" — ") + QString::fromStdString(pose);
 }
 

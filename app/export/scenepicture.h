@@ -19,7 +19,7 @@ struct SceneStyle;
 namespace pkm::pictures {
 
 /// The caption of a picture of any pose: "NAME — θ = 30.00°, d = 187.13 mm", every pose
-/// variable in display units and the pose's words.
+/// variable in display units and the pose's words; the pose alone when `name` is empty.
 QString poseCaption(const Mechanism &mechanism, const Pose &pose, const QString &name);
 
 /// Draws the 2D picture into `area` of any paint device: background and grid, the scene fitted

@@ -2,12 +2,17 @@
 
 #include <malloc.h>
 
+#include "export/animationplot.h"
 #include "export/videowriter.h"
 #include "gui/backgroundtask.h"
+#include "kinds/kindpanel.h"
 #include "quantityformat.h"
+
+#include <qcustomplot.h>
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -16,10 +21,14 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
+#include <QPointer>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSaveFile>
 #include <QSpinBox>
+
+#include <chrono>
+#include <future>
 
 namespace pkm {
 
@@ -79,6 +88,11 @@ AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidg
     m_bounce->setChecked(true);
     form->addRow(QString(), m_bounce);
 
+    m_beside = new QComboBox(this);
+    m_beside->setObjectName(QStringLiteral("besideBox"));
+    m_beside->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    addRow(m_beside);
+
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     m_buttons = buttons;
     retranslate();
@@ -131,7 +145,41 @@ void AnimationDialog::retranslate()
     setRowLabel(m_size, tr("Size"));
     m_bounce->setText(tr("Play back to the start (a smooth loop)"));
     m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Export…"));
+    setRowLabel(m_beside, tr("Beside the view"));
+    m_beside->setToolTip(tr("Each frame shows the mechanism at the left and this plot at the right, its cursor "
+                            "following the pose."));
     showRangeUnit();
+    fillBeside();
+}
+
+void AnimationDialog::setShownPlot(const QString &title)
+{
+    m_shownPlot = title;
+    fillBeside();
+}
+
+QString AnimationDialog::besideChoice() const
+{
+    return m_beside->currentData().toString();
+}
+
+void AnimationDialog::fillBeside()
+{
+    if (!m_beside || m_variable->currentIndex() < 0)
+        return;
+    const QString chosen = m_beside->currentData().toString();
+    const QSignalBlocker blocker(m_beside);
+    m_beside->clear();
+    m_beside->addItem(tr("Nothing"), QString());
+    if (!m_shownPlot.isEmpty())
+        m_beside->addItem(tr("The plot on screen: %1").arg(m_shownPlot), shownPlotChoice());
+    const VariableInfo &moved = m_mechanism.variableInfo()[m_variable->currentIndex()];
+    for (const ReportEntry *entry : animationPlotQuantities(m_mechanism, m_variable->currentIndex())) {
+        m_beside->addItem(tr("%1 against %2 — %3")
+                              .arg(toQString(entry->symbol), toQString(moved.symbol), coreLabel(entry->label)),
+                          toQString(entry->name));
+    }
+    m_beside->setCurrentIndex(std::max(0, m_beside->findData(chosen)));
 }
 
 QString AnimationDialog::fileExtension() const
@@ -186,6 +234,7 @@ void AnimationDialog::selectVariable(int variable)
     showRangeUnit();
     m_from->setValue(lo);
     m_to->setValue(hi);
+    fillBeside();
 }
 
 AnimationSettings AnimationDialog::settings() const
@@ -279,6 +328,41 @@ void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, 
                          .arg(path, QLocale().toString((QFileInfo(path).size() + 512) / 1024)),
                     false);
         });
+}
+
+std::function<QImage(const Pose &, const QSize &)> shownPlotPictures(KindPanel *panel, QCustomPlot *plot)
+{
+    return [panel = QPointer<KindPanel>(panel), plot = QPointer<QCustomPlot>(plot)](const Pose &pose,
+                                                                                     const QSize &size) {
+        // A widget is drawn on the GUI thread only: the frame's thread asks it and waits. The
+        // wait gives up when the application is closing (its thread pool waits for this one).
+        auto picture = std::make_shared<std::promise<QImage>>();
+        std::future<QImage> made = picture->get_future();
+        QMetaObject::invokeMethod(
+            qApp,
+            [panel, plot, pose, size, picture] {
+                QImage image;
+                if (panel && plot) {
+                    panel->setPose(pose);
+                    // Laid out at the 720-pixel frame's scale, so a full-HD frame's plot is the
+                    // same plot enlarged rather than one with small print.
+                    const double scale = std::max(1.0, size.height() / 720.0);
+                    image = plot->toPixmap(int(size.width() / scale), int(size.height() / scale), scale).toImage();
+                }
+                picture->set_value(image);
+            },
+            Qt::QueuedConnection);
+        while (made.wait_for(std::chrono::milliseconds(20)) == std::future_status::timeout) {
+            if (QCoreApplication::closingDown())
+                return QImage();
+        }
+        QImage image = made.get();
+        if (image.isNull()) {
+            image = QImage(size, QImage::Format_RGB32);
+            image.fill(Qt::white);
+        }
+        return image.size() == size ? image : image.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+    };
 }
 
 } // namespace pkm

@@ -15,8 +15,11 @@ class QDialogButtonBox;
 class QDoubleSpinBox;
 class QFormLayout;
 class QSpinBox;
+class QCustomPlot;
 
 namespace pkm {
+
+class KindPanel;
 
 class AnimationDialog : public QDialog
 {
@@ -39,6 +42,14 @@ public:
     /// The chosen format's file extension: "gif", "mp4" or "webm".
     QString fileExtension() const;
 
+    /// Offers the plot on screen, titled `title`, beside the view (none when empty).
+    void setShownPlot(const QString &title);
+    QComboBox *besideBox() const { return m_beside; }
+    /// What goes beside the view: nothing (empty), the plot on screen (shownPlotChoice()) or
+    /// the name of a quantity plotted against the moved variable (animationplot.h).
+    QString besideChoice() const;
+    static QString shownPlotChoice() { return QStringLiteral("@shown"); }
+
 protected:
     /// A new language: labels, lists and units again, the choices kept.
     void changeEvent(QEvent *event) override;
@@ -52,6 +63,8 @@ private:
     /// The sizes the format offers (a video's are even, 720p and 1080p); the speed is a GIF's.
     void selectFormat();
     void showSizes();
+    /// The choices beside the view for the moved variable, the one chosen kept where it can be.
+    void fillBeside();
 
     const Mechanism &m_mechanism;
     QFormLayout *m_form = nullptr;
@@ -64,6 +77,8 @@ private:
     QComboBox *m_size = nullptr;
     QSpinBox *m_frameTime = nullptr;
     QCheckBox *m_bounce = nullptr;
+    QComboBox *m_beside = nullptr;
+    QString m_shownPlot;
 };
 
 /// Asks where to write the animation: a file name ending in .gif, .mp4 or .webm (`extension`
@@ -76,5 +91,12 @@ QString chooseAnimationPath(QWidget *parent, const QString &baseName, const QStr
 /// and whether it is an error.
 void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, const AnimationSettings &settings,
                      const QString &path, const std::function<void(const QString &, bool)> &done);
+
+/// The pictures of `plot`, a plot or map on screen, for the frames beside the view
+/// (AnimationSettings::beside): called from the thread that draws the frames, each is made on
+/// the GUI thread, `panel` given the frame's pose first so that its cursors and markers follow.
+/// The panel is given its pose back by the caller when the export ends. A plot closed meanwhile
+/// leaves the frames' right half blank.
+std::function<QImage(const Pose &, const QSize &)> shownPlotPictures(KindPanel *panel, QCustomPlot *plot);
 
 } // namespace pkm

@@ -107,7 +107,8 @@ public:
     void setQuestion(Question question) { m_question = std::move(question); }
     /// Draws the animation of the current design from its current pose off the GUI thread and
     /// writes the GIF to `path`; the status bar says when it is done.
-    void exportAnimationTo(const QString &path, AnimationSettings settings);
+    /// `beside`: what the frames show beside the view (AnimationDialog::besideChoice()).
+    void exportAnimationTo(const QString &path, AnimationSettings settings, const QString &beside = {});
 
     /// The Play controls and the player behind them (mainwindowplay.cpp).
     PlayBar *playBar() const { return m_playBar; }

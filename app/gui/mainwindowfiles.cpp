@@ -6,6 +6,8 @@
 #include "gui/mainwindowinternal.h"
 
 #include "gui/animationdialog.h"
+#include "export/animationplot.h"
+#include "plotfocus.h"
 #include "gui/backgroundtask.h"
 #include "designpanel.h"
 #include "document/designsession.h"
@@ -112,6 +114,9 @@ bool MainWindow::saveFileAs()
 void MainWindow::exportAnimationDialog()
 {
     AnimationDialog dialog(*m_document->mechanism(), 0, this);
+    QCustomPlot *shown = m_currentPanel ? plotfocus::active(m_currentPanel) : nullptr;
+    if (shown)
+        dialog.setShownPlot(plotfocus::title(shown));
     if (dialog.exec() != QDialog::Accepted)
         return;
     const QString base = m_session->filePath().isEmpty() ? QFileInfo(m_document->design().id).fileName()
@@ -119,14 +124,33 @@ void MainWindow::exportAnimationDialog()
     const QString path = chooseAnimationPath(this, base, dialog.fileExtension());
     if (path.isEmpty())
         return;
-    exportAnimationTo(path, dialog.settings());
+    exportAnimationTo(path, dialog.settings(), dialog.besideChoice());
 }
 
-void MainWindow::exportAnimationTo(const QString &path, AnimationSettings settings)
+void MainWindow::exportAnimationTo(const QString &path, AnimationSettings settings, const QString &beside)
 {
     settings.name = m_session->displayName();
-    exportAnimation(this, m_document->mechanism(), m_document->pose(), settings, path,
-                    [this](const QString &message, bool error) { showStatus(message, error); });
+    const MechanismPtr mechanism = m_document->mechanism();
+    if (beside == AnimationDialog::shownPlotChoice()) {
+        QCustomPlot *shown = m_currentPanel ? plotfocus::active(m_currentPanel) : nullptr;
+        if (shown)
+            settings.beside = shownPlotPictures(m_currentPanel, shown);
+    } else if (!beside.isEmpty()) {
+        auto plot = animationPlot(*mechanism, m_document->pose(), settings, beside.toStdString());
+        if (!plot) {
+            showStatus(failureText(plot.failure()), true);
+            return;
+        }
+        settings.beside = [plot = std::move(*plot), mechanism](const Pose &pose, const QSize &size) {
+            return animationPlotImage(plot, *mechanism, pose, size);
+        };
+    }
+    exportAnimation(this, mechanism, m_document->pose(), settings, path,
+                    [this, panel = QPointer<KindPanel>(m_currentPanel)](const QString &message, bool error) {
+                        if (panel) // the plot's cursors followed the frames: back to the pose
+                            panel->setPose(m_document->pose());
+                        showStatus(message, error);
+                    });
 }
 
 bool MainWindow::maybeSave()
