@@ -7,6 +7,7 @@
 #include "cli/drawingcommands.h"
 #include "document/designfile.h"
 #include "document/document.h"
+#include "document/language.h"
 #include "export/animation.h"
 #include "export/animationplot.h"
 #include "gui/animationdialog.h"
@@ -235,6 +236,22 @@ private slots:
         QCOMPARE(dialog.besideChoice(), QStringLiteral("torque"));
         dialog.variableBox()->setCurrentIndex(1); // another variable: the choice is kept
         QCOMPARE(dialog.besideChoice(), QStringLiteral("torque"));
+    }
+
+    void dialogFitsAProjectorInEveryLanguage()
+    {
+        const Design design = designfile::load(QStringLiteral("moma-3a")).value();
+        for (const QString &code : {QStringLiteral("en"), QStringLiteral("ru"), QStringLiteral("sr"),
+                                    QStringLiteral("sr_Latn")}) {
+            QVERIFY(language::apply(code));
+            AnimationDialog dialog(*design.mechanism, 0);
+            dialog.setShownPlot(QStringLiteral("Workspace and det J of the design, all modes (fig. 3a)"));
+            dialog.besideBox()->setCurrentIndex(dialog.besideBox()->count() - 1);
+            const QSize wanted = dialog.sizeHint();
+            QVERIFY2(wanted.width() <= 1024 && wanted.height() <= 720,
+                     qPrintable(QStringLiteral("%1: %2 × %3").arg(code).arg(wanted.width()).arg(wanted.height())));
+        }
+        language::apply(QStringLiteral("en"));
     }
 
     void windowExportsThePlotOnScreen()
