@@ -142,6 +142,25 @@ struct PartName {
 
 } // namespace
 
+std::vector<Label3D> jointLabels(const Scene &scene, const std::vector<Solid> &solids)
+{
+    Eigen::AlignedBox3d drawn;
+    for (const Solid &solid : solids)
+        drawn.extend(solidBounds(solid));
+    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(0.02 * drawn.sizes().maxCoeff());
+    drawn.extend(drawn.min() - margin).extend(drawn.max() + margin);
+    std::vector<Label3D> labels;
+    for (const SceneJoint &joint : scene.joints) {
+        if (joint.label.empty() || !finite(joint.position) || drawn.isEmpty() || !drawn.contains(joint.position))
+            continue;
+        const bool named = std::any_of(labels.begin(), labels.end(),
+                                       [&](const Label3D &label) { return label.text == joint.label; });
+        if (!named)
+            labels.push_back({joint.position, joint.label});
+    }
+    return labels;
+}
+
 Scene3D extrudeScene(const Scene &scene, double thickness)
 {
     const double t = std::isfinite(thickness) && thickness > 0.0 ? thickness : 1.0;
@@ -341,6 +360,7 @@ Scene3D extrudeScene(const Scene &scene, double thickness)
         for (std::size_t s = first; s < last; ++s)
             extent.extend(solidBounds(solids[s]));
     model.extent = extent;
+    model.labels = jointLabels(scene, model.solids);
     return model;
 }
 

@@ -84,8 +84,16 @@ struct Solid {
     }
 };
 
+/// A name drawn beside a point of the model ("A", "Z₁", "P"): the 2D scene's joint labels, so
+/// that the 3D view names the points the equations and the 2D view name.
+struct Label3D {
+    Eigen::Vector3d at = Eigen::Vector3d::Zero();
+    std::string text;
+};
+
 struct Scene3D {
     std::vector<Solid> solids;
+    std::vector<Label3D> labels;
     /// Box holding the model over the whole range of motion, so "fit" does not jump as the
     /// pose changes.
     Eigen::AlignedBox3d extent;
@@ -96,6 +104,11 @@ struct Scene3D {
 /// actuators as a motor body with its screw; the extent is the 2D extent thickened in z. For
 /// mechanisms that have no model of their own.
 Scene3D extrudeScene(const Scene &scene, double thickness);
+
+/// The named joints of a 2D scene as labels of its 3D model `solids` (whose frame is the
+/// scene's, see above): each name once, at its joint. Joints without a name or position, and
+/// points the model does not reach (a four-bar's pole far off), are left out.
+std::vector<Label3D> jointLabels(const Scene &scene, const std::vector<Solid> &solids);
 
 /// The orthonormal frame of a solid's centre line: `axis` from `from` to `to` (+x when they
 /// coincide), `up` the solid's up made perpendicular to it, `width` = axis × up.

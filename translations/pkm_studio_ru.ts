@@ -6498,6 +6498,14 @@ Please verify the correct file name was given.</source>
 <context>
     <name>pkm::View3DPanel</name>
     <message>
+        <source>Names</source>
+        <translation>Имена</translation>
+    </message>
+    <message>
+        <source>The names of the joints (A, B, … as in the 2D view) over the model</source>
+        <translation>Имена шарниров (A, B, … как на 2D-виде) поверх модели</translation>
+    </message>
+    <message>
         <source>Fit</source>
         <translation>Вписать</translation>
     </message>

@@ -6498,6 +6498,14 @@ Please verify the correct file name was given.</source>
 <context>
     <name>pkm::View3DPanel</name>
     <message>
+        <source>Names</source>
+        <translation>Имена</translation>
+    </message>
+    <message>
+        <source>The names of the joints (A, B, … as in the 2D view) over the model</source>
+        <translation>Имена зглобова (A, B, … као у 2D приказу) преко модела</translation>
+    </message>
+    <message>
         <source>Fit</source>
         <translation>Уклопи</translation>
     </message>

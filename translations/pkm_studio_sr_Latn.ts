@@ -6498,6 +6498,14 @@ Proverite da li je ime datoteke tačno.</translation>
 <context>
     <name>pkm::View3DPanel</name>
     <message>
+        <source>Names</source>
+        <translation>Imena</translation>
+    </message>
+    <message>
+        <source>The names of the joints (A, B, … as in the 2D view) over the model</source>
+        <translation>Imena zglobova (A, B, … kao u 2D prikazu) preko modela</translation>
+    </message>
+    <message>
         <source>Fit</source>
         <translation>Uklopi</translation>
     </message>

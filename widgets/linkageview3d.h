@@ -27,6 +27,8 @@ class QToolButton;
 
 namespace pkm {
 
+class Labels3DOverlay;
+
 class LinkageView3D : public QWidget
 {
     Q_OBJECT
@@ -58,6 +60,10 @@ public:
     /// with imageError(), when it cannot be rendered.
     QImage renderImage(const QSize &size);
     QString imageError() const { return m_imageError; }
+
+    /// The names of the model's points over it, in the view and its pictures (on by default).
+    void setLabelsShown(bool shown);
+    bool labelsShown() const;
 
     /// The OpenGL surface (a child filling the view), or null when OpenGL is unavailable.
     QOpenGLWidget *glWidget() const;
@@ -115,6 +121,7 @@ private:
     QString m_imageError;
     Canvas *m_canvas = nullptr;
     QLabel *m_unavailableLabel = nullptr;
+    Labels3DOverlay *m_labels = nullptr;
 
     Drag m_drag = Drag::None;
     QPoint m_lastPosition;
@@ -160,6 +167,7 @@ private:
     QToolButton *m_isometricButton = nullptr;
     QToolButton *m_saveButton = nullptr;
     QToolButton *m_perspectiveButton = nullptr;
+    QToolButton *m_labelsButton = nullptr;
     QString m_lastDirectory;
 };
 

@@ -5,6 +5,7 @@
 #include "document/savefile.h"
 #include "export/scenepicture.h"
 #include "export/workspacepictures.h"
+#include "labels3d.h"
 #include "linkageview.h"
 #include "mesh3d.h"
 #include "renderer3d.h"
@@ -141,6 +142,11 @@ QImage render3d(const PreparedDesign &prepared, const Invocation &invocation, do
         camera.pan(0.0, -0.5 * (height - fitted));
     }
     QImage image = Renderer3D::renderOffscreen(scene, camera, QSize(invocation.width, invocation.height), &error);
+    if (!image.isNull()) {
+        // The points' names, as the 3D view draws them, at the caption's size.
+        QPainter painter(&image);
+        paintLabels3D(painter, scene.labels, camera, pictures::captionFont(SceneStyle()));
+    }
     if (image.isNull()) {
         // The probe tells why a context cannot be had; renderOffscreen() why it failed later.
         const QString problem = Renderer3D::probeOpenGL();

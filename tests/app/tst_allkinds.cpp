@@ -230,6 +230,21 @@ private slots:
         const Scene3D model = design.mechanism->scene3d(design.pose);
         QVERIFY(!model.solids.empty());
         QVERIFY(!model.extent.isEmpty());
+        // the 3D view names the model's points, each once, at a point of the model (a pole
+        // such as the four-bar's P may lie outside the extent, on a marker of its own)
+        QVERIFY(!model.labels.empty());
+        Eigen::AlignedBox3d grown = model.extent;
+        for (const Solid &solid : model.solids)
+            grown.extend(solidBounds(solid));
+        const Eigen::Vector3d margin = 0.05 * grown.sizes();
+        grown.extend(grown.min() - margin).extend(grown.max() + margin);
+        for (std::size_t i = 0; i < model.labels.size(); ++i) {
+            const Label3D &label = model.labels[i];
+            QVERIFY(!label.text.empty());
+            QVERIFY2(grown.contains(label.at), label.text.c_str());
+            for (std::size_t j = 0; j < i; ++j)
+                QVERIFY2(model.labels[j].text != label.text, label.text.c_str());
+        }
     }
 
     /// The mobility analysis of the pose's kinematic chain runs; at a regular pose the

@@ -18,6 +18,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -162,6 +163,7 @@ private slots:
     void projectionChangesPicture();
     void emptySceneShowsOnlyGround();
     void savePictureWritesPng();
+    void labelsNameThePoints();
     void frameTime_data();
     void frameTime();
     void manySolidsFrameTime();
@@ -186,6 +188,9 @@ void TestView3D::initTestCase()
     QTRY_VERIFY(m_view->frameCount() > 0 || !m_view->isGlAvailable());
     QVERIFY2(m_view->isGlAvailable(), qPrintable(m_view->glStatus()));
     qInfo("%s", qPrintable(m_view->glStatus()));
+    // The model alone, as OpenGL draws it: the names over it are labelsNameThePoints()'s.
+    QVERIFY(m_view->labelsShown());
+    m_view->setLabelsShown(false);
 }
 
 void TestView3D::matchesReferencePicture_data()
@@ -308,6 +313,7 @@ void TestView3D::renderImageBeforeShown()
     const Camera3D camera = fixedCamera(scene, View::Isometric, Projection::Perspective);
     const QImage shown = render(scene, camera);
     LinkageView3D hidden;
+    hidden.setLabelsShown(false); // as the shown one
     hidden.setScene(scene);
     hidden.setCamera(camera);
     QVERIFY(hidden.isGlAvailable());
@@ -480,6 +486,43 @@ void TestView3D::manySolidsFrameTime()
     qInfo("300 solids, %zu triangles: per frame %.2f ms (setScene %.3f ms)",
         Mesh3D::fromScene(model(0.0)).triangleCount(), double(timer.nsecsElapsed()) / 1e6 / frames,
         double(sceneNanoseconds) / 1e6 / frames);
+}
+
+/// The names of the points (A, B, C, O of the П-joint) are drawn beside their points' projections
+/// in the picture and change nothing far from them; turned off they are gone.
+void TestView3D::labelsNameThePoints()
+{
+    const MechanismPtr m = makeKind("pjoint");
+    QVERIFY(m);
+    const Scene3D scene = m->scene3d(m->homePose());
+    QStringList names;
+    for (const Label3D &label : scene.labels)
+        names << QString::fromStdString(label.text);
+    names.sort();
+    QCOMPARE(names, (QStringList {QStringLiteral("A"), QStringLiteral("B"), QStringLiteral("C"), QStringLiteral("O")}));
+    const Camera3D camera = fixedCamera(scene, View::Front, Projection::Orthographic);
+    const QImage bare = render(scene, camera);
+    m_view->setLabelsShown(true);
+    const QImage named = render(scene, camera);
+    m_view->setLabelsShown(false);
+    keep(named, QStringLiteral("pjoint-labels"));
+    QCOMPARE(named.size(), bare.size());
+    const double reach = 0.12 * named.height(); // a name's box lies within this of its point
+    int changed = 0, far = 0;
+    for (int y = 0; y < named.height(); ++y) {
+        for (int x = 0; x < named.width(); ++x) {
+            if (named.pixel(x, y) == bare.pixel(x, y))
+                continue;
+            ++changed;
+            const bool near = std::any_of(scene.labels.begin(), scene.labels.end(), [&](const Label3D &label) {
+                return (camera.project(label.at) - Eigen::Vector2d(x, y)).norm() < reach;
+            });
+            far += near ? 0 : 1;
+        }
+    }
+    QVERIFY2(changed > 400, qPrintable(QString::number(changed))); // four names, each drawn
+    QCOMPARE(far, 0);
+    QCOMPARE(compare(render(scene, camera), bare).farFraction, 0.0); // off: the model alone again
 }
 
 QTEST_MAIN(TestView3D)

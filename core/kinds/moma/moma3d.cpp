@@ -62,6 +62,7 @@ Scene3D Moma::scene3d(const Pose &pose) const
     box.min().z() = zGuide - 0.5 * gw;
     box.max().z() = zPlatform + 0.8 * gw;
     model.extent = box;
+    model.labels = jointLabels(scene(pose), model.solids); // the same frame as the 2D scene
     return model;
 }
 

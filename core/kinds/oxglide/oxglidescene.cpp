@@ -129,6 +129,7 @@ Scene3D OxGlide::scene3d(const Pose &pose) const
         // the rod joint: a pin across the rod's plane
         parts.push_back(Solid::cylinder({centre.x(), 0.0, depth(k) - 0.45 * c}, {centre.x(), 0.0, depth(k) + 0.45 * c}, 0.28 * a,
                                         PartRole::Joint, text::format(rodJointPattern, {name})));
+        model.labels.push_back({Eigen::Vector3d(centre.x(), 0.0, depth(k)), name});
     }
     // the rigid pairs: A–B directly, C–D around below the other guides
     parts.push_back(Solid::box({xAB, guideY(guideA), depth(guideA)}, {xAB, guideY(guideB), depth(guideB)}, 0.35 * a, 0.35 * a, ux, PartRole::Slider,
@@ -154,6 +155,9 @@ Scene3D OxGlide::scene3d(const Pose &pose) const
     parts.push_back(Solid::box({x - 0.5 * s - 0.25 * a, y + 0.5 * thickness, z}, {x + 0.5 * s + 0.25 * a, y + 0.5 * thickness, z},
                                4.0 * c, thickness, uy, PartRole::Platform, text::translate("core", "platform")));
     parts.push_back(Solid::sphere({x, y + thickness + 0.2 * a, z}, 0.25 * a, PartRole::Marker, "T"));
+    // The model is built as the machine stands (guides stacked below the rods), not in the 2D
+    // scene's frame: its own points are named, the rod joints on their guides and the tool T.
+    model.labels.push_back({Eigen::Vector3d(x, y + thickness + 0.2 * a, z), "T"});
 
     model.extent = Eigen::AlignedBox3d(Eigen::Vector3d(-frameGap - a, bottom - 1.4 * a, d.zMin - 2.5 * c),
                                        Eigen::Vector3d(L + frameGap + a, l + thickness + 0.5 * a, d.zMax + 2.5 * c));

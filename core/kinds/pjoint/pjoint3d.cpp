@@ -81,6 +81,7 @@ Scene3D PJoint::scene3d(const Pose &pose) const
     const double motorReach = 0.15 * p.motorLength + p.motorWidth; // the motor's rear around O
     box.extend(Eigen::Vector3d(-motorReach, -motorReach, 0.0)).extend(Eigen::Vector3d(motorReach, motorReach, 0.0));
     model.extent = box;
+    model.labels = jointLabels(scene(pose), model.solids); // the same frame as the 2D scene
     return model;
 }
 
