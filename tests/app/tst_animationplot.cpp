@@ -16,6 +16,7 @@
 #include "plotfocus.h"
 #include "plotstyle.h"
 #include "registry.h"
+#include "support/cliinprocess.h"
 
 #include <QComboBox>
 #include <QImageReader>
@@ -24,39 +25,14 @@
 #include <QTest>
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 using namespace pkm;
 
 namespace {
 
-QString readAll(std::FILE *file)
-{
-    std::rewind(file);
-    QByteArray bytes;
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, file))
-        bytes.append(buffer, static_cast<qsizetype>(n));
-    std::fclose(file);
-    return QString::fromUtf8(bytes);
-}
-
-struct Run {
-    int status = 0;
-    QString out, err;
-};
-
-Run run(const QStringList &arguments)
-{
-    std::FILE *out = std::tmpfile();
-    std::FILE *err = std::tmpfile();
-    Run result;
-    result.status = runCli(arguments, out, err);
-    result.out = readAll(out);
-    result.err = readAll(err);
-    return result;
-}
+using Run = test::CliRun;
+const auto run = test::runCliInProcess;
 
 /// Pixels near `rgb` (each channel within 40) in `area` of `image`.
 int pixelsNear(const QImage &image, const QRect &area, QRgb rgb)

@@ -9,6 +9,7 @@
 #include "gui/animationdialog.h"
 #include "gui/mainwindow.h"
 #include "registry.h"
+#include "support/cliinprocess.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -25,7 +26,6 @@ extern "C" {
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <cstdio>
 
 using namespace pkm;
 
@@ -93,33 +93,8 @@ Probe probe(const QString &path)
     return result;
 }
 
-struct Run {
-    int status = 0;
-    QString out;
-    QString err;
-};
-
-QString readAll(std::FILE *file)
-{
-    std::rewind(file);
-    QByteArray bytes;
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, file))
-        bytes.append(buffer, static_cast<qsizetype>(n));
-    std::fclose(file);
-    return QString::fromUtf8(bytes);
-}
-
-Run run(const QStringList &arguments)
-{
-    std::FILE *out = std::tmpfile();
-    std::FILE *err = std::tmpfile();
-    Run result;
-    result.status = runCli(arguments, out, err);
-    result.out = readAll(out);
-    result.err = readAll(err);
-    return result;
-}
+using Run = test::CliRun;
+const auto run = test::runCliInProcess;
 
 /// `pkm render fourbar-example --var alpha --from 0 --to 90 --steps K …`
 QStringList crank(int steps, const QString &path, const QStringList &more = {})
