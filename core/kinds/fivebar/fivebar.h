@@ -202,6 +202,8 @@ private:
     /// The crank angles to prefer: `near`'s, else the home pose's, else the ranges' middles.
     std::array<double, 2> referenceAngles(const Pose *near) const;
     Eigen::AlignedBox2d computeBounds() const;
+    /// The singular curves sampled `samples` times over each parameter's range.
+    std::vector<SingularCurve> tracedCurves(int samples) const;
 
     FiveBarDesign m_design;
     Eigen::AlignedBox2d m_bounds;

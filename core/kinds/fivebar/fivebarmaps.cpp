@@ -15,6 +15,7 @@ namespace {
 constexpr double pi = std::numbers::pi;
 /// Samples along each singular curve.
 constexpr int curveSamples = 720;
+constexpr int boundsCurveSamples = 180; // computeBounds()
 /// Relative slack with which a point of a singular curve still counts as a pose: the curves
 /// lie where the circles only touch and the modes meet.
 constexpr double curveTolerance = 1e-6;
@@ -152,12 +153,12 @@ PKM_MAP_CLONES void row(const FiveBarDesign &d, double y, double x0, double dx, 
 /// same point, so a run through it is one polyline.
 template <class PointAt>
 void traceRuns(std::vector<SingularCurve> &curves, SingularCurve::Type type, const std::string &label, double from,
-               double to, bool periodic, PointAt &&pointAt)
+               double to, bool periodic, int samples, PointAt &&pointAt)
 {
     std::vector<std::vector<Eigen::Vector2d>> runs(1);
-    for (int k = 0; k <= curveSamples; ++k) {
+    for (int k = 0; k <= samples; ++k) {
         Eigen::Vector2d point;
-        if (pointAt(from + (to - from) * k / curveSamples, point))
+        if (pointAt(from + (to - from) * k / samples, point))
             runs.back().push_back(point);
         else if (!runs.back().empty())
             runs.emplace_back();
@@ -211,6 +212,11 @@ void FiveBar::fillCapabilityRow(const capability::CellLimits &limits, double y, 
 
 std::vector<SingularCurve> FiveBar::singularCurves() const
 {
+    return tracedCurves(curveSamples);
+}
+
+std::vector<SingularCurve> FiveBar::tracedCurves(int samples) const
+{
     const FiveBarDesign &d = m_design;
     const std::array<double, 2> reference = referenceAngles(nullptr);
     std::vector<SingularCurve> curves;
@@ -231,7 +237,7 @@ std::vector<SingularCurve> FiveBar::singularCurves() const
                  QT_TRANSLATE_NOOP("core", "leg 2 folded (DE, CD in line)")},
             }};
             const std::string label = labels[std::size_t(leg)][stretched ? 0 : 1];
-            traceRuns(curves, SingularCurve::Type::Inverse, label, -pi, pi, true, [&](double t, Eigen::Vector2d &C) {
+            traceRuns(curves, SingularCurve::Type::Inverse, label, -pi, pi, true, samples, [&](double t, Eigen::Vector2d &C) {
                 C = G + rho * Eigen::Vector2d(std::cos(t), std::sin(t));
                 return checkInverse(C, curveTolerance, reference).ok();
             });
@@ -250,7 +256,7 @@ std::vector<SingularCurve> FiveBar::singularCurves() const
         for (const int side : {fivebar::left, fivebar::right}) {
             traceRuns(curves, SingularCurve::Type::Direct, QT_TRANSLATE_NOOP("core", "distal links in line"), d.range[0].min,
                       d.range[0].max,
-                      fivebar::fullTurn(d.range[0]), [&](double theta1, Eigen::Vector2d &C) {
+                      fivebar::fullTurn(d.range[0]), samples, [&](double theta1, Eigen::Vector2d &C) {
                           const Eigen::Vector2d B = fivebar::elbow(d, 0, theta1);
                           Eigen::Vector2d D;
                           if (fivebar::circleIntersection(B, rho, E, d.crank[1], side, D, 0.0) != fivebar::Meet::Yes)
@@ -290,7 +296,10 @@ Eigen::AlignedBox2d FiveBar::computeBounds() const
                 reached.extend(Eigen::Vector2d(grid.x(c), grid.y(r)));
         }
     }
-    for (const SingularCurve &curve : singularCurves()) {
+    // A quarter of the drawn curves' samples: a point between two of them lies within
+    // ρ·(1 − cos(π/boundsCurveSamples)) ≈ 1.5e-4·ρ of the box, far inside the two cells of pad
+    // (and a design for an optimiser is built in about half the time).
+    for (const SingularCurve &curve : tracedCurves(boundsCurveSamples)) {
         for (const Eigen::Vector2d &point : curve.points)
             reached.extend(point);
     }
