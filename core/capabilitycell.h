@@ -117,6 +117,75 @@ double cell2(const CellLimits &limits, double q1, double q2, double a, double b,
 /// translational part of the error).
 double cell3(const CellLimits &limits, const Eigen::Vector3d &q, const Eigen::Matrix3d &jx, bool inverse, bool direct);
 
+/// cell3() without Eigen or branches, for a loop that works a block of cells at once: J_x⁻¹ by
+/// cofactors (as Eigen's closed form for 3×3), G = J_x⁻¹·diag(q), then the same quantities and
+/// marks. `j` holds J_x's rows.
+template <MapQuantity Q>
+[[gnu::always_inline]] inline double cell3(const CellLimits &l, const double q[3], const double j[3][3], bool inverse,
+                                           bool direct)
+{
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    const double limit[3] = {l.limit[0], l.limit[1], l.limit[2]};
+    if constexpr (Q == MapQuantity::SpeedWorst) {
+        // J's rows J_x,i/q_i on the translation: min v_i·|q_i|/|J_x,i(x, y)|
+        double radius = infinity;
+        for (int i = 0; i < 3; ++i) {
+            const double norm = std::sqrt(j[i][0] * j[i][0] + j[i][1] * j[i][1]);
+            const double ratio = limit[i] * std::abs(q[i]) / (norm > 0.0 ? norm : 1.0);
+            radius = norm > 0.0 ? std::min(radius, ratio) : radius;
+        }
+        return inverse ? 0.0 : radius;
+    } else {
+        // the adjugate's entries over the determinant, each column scaled by q_c
+        const double c00 = j[1][1] * j[2][2] - j[1][2] * j[2][1], c01 = j[1][2] * j[2][0] - j[1][0] * j[2][2];
+        const double c02 = j[1][0] * j[2][1] - j[1][1] * j[2][0];
+        const double s = 1.0 / (j[0][0] * c00 + j[0][1] * c01 + j[0][2] * c02); // ∞ at a direct singularity
+        double g[3][3] = {{c00, j[0][2] * j[2][1] - j[0][1] * j[2][2], j[0][1] * j[1][2] - j[0][2] * j[1][1]},
+                          {c01, j[0][0] * j[2][2] - j[0][2] * j[2][0], j[0][2] * j[1][0] - j[0][0] * j[1][2]},
+                          {c02, j[0][1] * j[2][0] - j[0][0] * j[2][1], j[0][0] * j[1][1] - j[0][1] * j[1][0]}};
+        for (int c = 0; c < 3; ++c) {
+            const double scale = s * q[c];
+            g[0][c] *= scale, g[1][c] *= scale, g[2][c] *= scale;
+            // at an inverse singularity an actuator that moves the platform less than this moves it not at all
+            const double norm = std::sqrt(g[0][c] * g[0][c] + g[1][c] * g[1][c] + g[2][c] * g[2][c]);
+            const double keep = inverse && norm <= l.negligible[std::size_t(c)] ? 0.0 : 1.0;
+            g[0][c] *= keep, g[1][c] *= keep, g[2][c] *= keep;
+        }
+        if constexpr (Q == MapQuantity::ForceWorst) {
+            // a pure force: the slabs |(Gᵀ·F)_i| ≤ F_i over (F_x, F_y, 0)
+            double radius = infinity;
+            for (int c = 0; c < 3; ++c) {
+                const double norm = std::sqrt(g[0][c] * g[0][c] + g[1][c] * g[1][c]);
+                const double ratio = limit[c] / (norm > 0.0 ? norm : 1.0);
+                radius = norm > 0.0 ? std::min(radius, ratio) : radius;
+            }
+            return direct ? 0.0 : radius;
+        } else if constexpr (Q == MapQuantity::ResolutionWorst) {
+            // the translational part of G·u over the vertices u of the box ±h
+            double farthest = 0.0;
+            for (int signs = 0; signs < 8; ++signs) {
+                double x = 0.0, y = 0.0;
+                for (int c = 0; c < 3; ++c) {
+                    const double u = (signs >> c & 1) ? limit[c] : -limit[c];
+                    x += g[0][c] * u, y += g[1][c] * u;
+                }
+                farthest = std::max(farthest, x * x + y * y);
+            }
+            return direct ? infinity : std::sqrt(farthest);
+        } else {
+            static_assert(Q == MapQuantity::StiffnessWorst);
+            // the translational block of the compliance C = G·diag(1/k)·Gᵀ, its largest eigenvalue
+            double cxx = 0.0, cyy = 0.0, cxy = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                cxx += limit[c] * g[0][c] * g[0][c], cyy += limit[c] * g[1][c] * g[1][c];
+                cxy += limit[c] * g[0][c] * g[1][c];
+            }
+            const double half = 0.5 * (cxx - cyy);
+            return direct ? 0.0 : 1.0 / (0.5 * (cxx + cyy) + std::sqrt(half * half + cxy * cxy));
+        }
+    }
+}
+
 /// A map cell as capabilitymap.h stores it: undefined (0·∞) reads as ∞, since NaN means
 /// unreachable.
 inline float cellValue(double value)

@@ -78,6 +78,10 @@ private slots:
             QTest::addRow("5R П-joints %s", name) << "planar-parallel" << legdesigns::fiveRPjoint() << quantity;
             QTest::addRow("2-PRR %s", name) << "planar-parallel" << legdesigns::moma3a() << quantity;
             QTest::addRow("3-PRR %s", name) << "planar-parallel" << threePrr() << quantity;
+            // a 3-DOF slice away from φ = 0, through the rows that work the legs out in blocks
+            ParameterSet turned = legdesigns::threeRpr();
+            turned["phi_map"] = 12.0 * std::numbers::pi / 180.0;
+            QTest::addRow("3-RPR at 12° %s", name) << "planar-parallel" << turned << quantity;
         }
     }
     void cellsAreThePosesValues()

@@ -271,7 +271,9 @@ private:
                  std::span<float> values, std::span<float> margins) const;
     /// The det J row of a 3-DOF platform's slice at φ = phi_map, vectorised as fillRow()'s
     /// 2-DOF rows (ppmaprow3.cpp).
-    void fillThreeLegDeterminantRow(double y, double x0, double dx, std::span<float> values, std::span<float> margins) const;
+    /// The det J row, or with `limits` what the actuators deliver (ppmaprow3.cpp).
+    void fillThreeLegDeterminantRow(double y, double x0, double dx, std::span<float> values, std::span<float> margins,
+                                    const capability::CellLimits *limits = nullptr) const;
     /// One cell of a map as the pose at X (φ = phi_map for 3 DOF) evaluates it: NaN in both
     /// where the design does not reach X in its modes; `pose` is the caller's scratch.
     void mapCell(MapQuantity quantity, const capability::CellLimits *limits, const Eigen::Vector3d &X, Pose &pose,

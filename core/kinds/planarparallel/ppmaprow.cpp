@@ -210,8 +210,8 @@ void PlanarParallel::fillRow(MapQuantity quantity, const capability::CellLimits 
                              double dx, std::span<float> values, std::span<float> margins) const
 {
     const int n = m_design.legCount();
-    if (n == 3 && quantity == MapQuantity::Determinant && !limits) {
-        fillThreeLegDeterminantRow(y, x0, dx, values, margins);
+    if (n == 3 && (limits || quantity == MapQuantity::Determinant)) {
+        fillThreeLegDeterminantRow(y, x0, dx, values, margins, limits);
         return;
     }
     Pose pose;
