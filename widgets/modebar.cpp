@@ -44,15 +44,26 @@ ModeBar::ModeBar(QWidget *parent)
     setVisible(false);
 }
 
+void ModeBar::retire(QWidget *widget)
+{
+    m_layout->removeWidget(widget);
+    widget->hide();
+    widget->deleteLater();
+}
+
 void ModeBar::setModes(const QString &current, const QStringList &labels)
 {
     setVisible(!current.isEmpty() || !labels.isEmpty());
     m_currentText = current;
     if (labels != m_labels) {
         m_labels = labels;
-        qDeleteAll(m_buttonList);
+        // Later, not now: this runs inside the clicked() of one of these buttons (a switch
+        // changes the modes), and a button deleted in its own signal is used after it is freed.
+        for (QWidget *old : std::as_const(m_buttonList))
+            retire(old);
         m_buttonList.clear();
-        qDeleteAll(m_groupLabels);
+        for (QWidget *old : std::as_const(m_groupLabels))
+            retire(old);
         m_groupLabels.clear();
         m_groupOf.clear();
         for (int i = 0; i < labels.size(); ++i) {

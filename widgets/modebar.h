@@ -35,6 +35,9 @@ protected:
 private:
     /// "Modes: …" and the buttons' texts in the current language.
     void retranslate();
+    /// Takes a button or caption out of the bar and deletes it once control is back in the
+    /// event loop.
+    void retire(QWidget *widget);
 
     QLabel *m_current = nullptr;
     QString m_currentText;
