@@ -1,4 +1,5 @@
 #include "drawlistpainter.h"
+#include "rasterstroke.h"
 
 #include "scenegeometry.h"
 
@@ -23,19 +24,8 @@ namespace {
 QPen qtPen(const Pen &pen)
 {
     QPen result(pen.colour, pen.width, Qt::SolidLine, pen.cap, pen.join);
-    switch (pen.dash) {
-    case Dash::Solid:
-        break;
-    case Dash::Dashed:
-        result.setDashPattern({6.0, 4.0}); // in pen widths
-        break;
-    case Dash::Centre:
-        result.setDashPattern({14.0, 3.0, 2.0, 3.0});
-        break;
-    case Dash::Ghost:
-        result.setDashPattern({2.4, 1.2});
-        break;
-    }
+    if (const QVector<qreal> pattern = dashPattern(pen.dash); !pattern.isEmpty())
+        result.setDashPattern(pattern); // in pen widths
     return result;
 }
 
@@ -141,11 +131,25 @@ void paintDrawList(QPainter &painter, const DrawList &list)
             [&painter](const auto &shape) {
                 using T = std::decay_t<decltype(shape)>;
                 if constexpr (std::is_same_v<T, Lines>) {
+                    if (strokesOnRaster(painter, shape.pen)) {
+                        for (const QLineF &line : shape.lines)
+                            strokeOnRaster(painter, QPolygonF{line.p1(), line.p2()}, false, shape.pen);
+                        return;
+                    }
                     setStroke(painter, shape.pen);
                     painter.drawLines(shape.lines.data(), int(shape.lines.size()));
                 } else if constexpr (std::is_same_v<T, Band> || std::is_same_v<T, Member>) {
                     band(painter, shape.a, shape.b, shape.width, shape.colour);
                 } else if constexpr (std::is_same_v<T, Polygon>) {
+                    if (strokesOnRaster(painter, shape.pen)) {
+                        if (shape.fill.alpha() > 0 && shape.closed) {
+                            painter.setPen(Qt::NoPen);
+                            painter.setBrush(shape.fill);
+                            painter.drawPolygon(shape.points);
+                        }
+                        strokeOnRaster(painter, shape.points, shape.closed, shape.pen);
+                        return;
+                    }
                     setStroke(painter, shape.pen);
                     setFill(painter, shape.fill);
                     if (shape.closed)

@@ -87,8 +87,8 @@ void layoutPaths(const SceneCanvas &canvas, bool shapes)
         const bool velocity = polyline.kind == PathKind::VelocityPolygon || polyline.kind == PathKind::VelocityEllipse;
         const bool ellipse = polyline.kind == PathKind::VelocityEllipse || polyline.kind == PathKind::ForceEllipse;
         const Pen pen {!shapes ? style.path : velocity ? style.velocity : style.force,
-            (shapes && !ellipse ? 2.0 : 1.6) * canvas.px(), Qt::RoundCap, ellipse ? Dash::Dashed : Dash::Solid,
-            Qt::RoundJoin};
+            (shapes && !ellipse ? 2.0 : 1.6) * canvas.px(), ellipse ? Qt::FlatCap : Qt::RoundCap, ellipse ? Dash::Dashed : Dash::Solid,
+            ellipse ? Qt::BevelJoin : Qt::RoundJoin};
         QPolygonF run;
         bool broken = false;
         auto flush = [&] {
