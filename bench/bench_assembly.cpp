@@ -17,6 +17,7 @@
 // is the median of the ratios of the pairs.
 //
 //   bench_assembly [LIMIT_US] [--runs N] [--no-map] [--map-ratio R] [--map-size N] [--map-runs N]
+#include "benchmachine.h"
 #include "document/designfile.h"
 #include "planarworkspace.h"
 
@@ -186,6 +187,7 @@ bool benchMapRatio(double limitRatio, int size, int runs)
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv); // the presets are Qt resources
+    std::printf("machine: %s\n", pkm::bench::cpuText().c_str());
     double limitUs = 20.0, mapRatio = 3.0;
     int runs = 20000, mapSize = 400, mapRuns = 25;
     bool map = true;

@@ -28,6 +28,7 @@
 // the edit until the new map is on screen: the new mechanism, the debounce that lets a burst
 // of edits compute once (30 ms), the map on a worker thread, and the repaint (issue: maps at
 // the hardware limit; target ≤ 50 ms at the default grid).
+#include "benchmachine.h"
 #include "document/document.h"
 #include "gui/mainwindow.h"
 #include "kinds/workspacepanel.h"
@@ -54,6 +55,7 @@ int main(int argc, char *argv[])
                                                                      : qgetenv("QT_QPA_PLATFORM"));
     QApplication app(argc, argv);
     QStandardPaths::setTestModeEnabled(true);
+    std::printf("machine: %s\n", pkm::bench::cpuText().c_str());
     const double limitMs = argc > 1 ? std::atof(argv[1]) : 8.0;
     const QString preset = argc > 2 ? QString::fromLocal8Bit(argv[2]) : QString();
     const bool in3d = argc > 3 && QByteArray(argv[3]) == "3d";

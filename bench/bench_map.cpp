@@ -9,6 +9,7 @@
 //               unreachable (what bench/moma_map_numpy.py compares its own map with).
 // --json FILE:  the grid, the design and the timings, so that the NumPy script computes the same
 //               map: Moma's bounds come from sampling, so they are handed over, not recomputed.
+#include "benchmachine.h"
 #include "kinds/moma/moma.h"
 
 #include <algorithm>
@@ -117,6 +118,7 @@ int main(int argc, char *argv[])
         std::printf(" (target: median <= %.2f ms)", limitMs);
     std::printf("\n");
     std::printf("one thread: best %.3f ms\n", singleThread);
+    std::printf("machine: %s\n", pkm::bench::cpuText().c_str());
 
     if (writePath) {
         std::FILE *f = std::fopen(writePath, "wb");

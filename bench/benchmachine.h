@@ -1,12 +1,16 @@
 #pragma once
 // What the benchmarks print with their figures: the machine they belong to (issue of a
 // figure measured on one class of machine and read as holding on another).
+#include "mapclones.h"
+
 #include <fstream>
 #include <string>
 
 namespace pkm::bench {
 
-/// "AMD EPYC 7B13 (sse4_2 avx avx2 fma avx512f)": the CPU model and its vector extensions.
+/// "AMD EPYC 7B13 (sse4_2 avx avx2 fma avx512f; maps: AVX2)": the CPU model, its vector
+/// extensions and the ones the map loops use (mapclones.h: built without AVX-512, they time
+/// a machine with AVX2 alone).
 inline std::string cpuText()
 {
     std::ifstream info("/proc/cpuinfo");
@@ -29,6 +33,8 @@ inline std::string cpuText()
         text += extension;
         first = false;
     }
+    text += "; maps: ";
+    text += mapInstructionSet();
     text += ')';
     return text;
 }

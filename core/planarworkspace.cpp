@@ -11,6 +11,19 @@
 
 namespace pkm {
 
+const char *mapInstructionSet()
+{
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#ifndef PKM_MAP_CLONES_NO_AVX512
+    if (__builtin_cpu_supports("avx512f"))
+        return "AVX-512";
+#endif
+    return __builtin_cpu_supports("avx2") ? "AVX2" : "x86-64";
+#else
+    return "portable";
+#endif
+}
+
 namespace {
 /// Rows are handed out in blocks from a shared counter, so a thread that meets cheap rows
 /// (outside the workspace) takes more of them.
