@@ -250,6 +250,34 @@ ShapeScales scalesFor(const Mechanism &mechanism, const Actuators &actuators)
     return scales;
 }
 
+Shapes polygonsAt(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose, SingularityType type)
+{
+    Shapes shapes;
+    if (actuators.count < 2 || actuators.outputs < 2 || actuators.rotaryOutput)
+        return shapes;
+    const Jacobians j = mechanism.jacobians(pose);
+    if (j.inputs.rows() < actuators.count || j.outputs.cols() < actuators.outputs)
+        return shapes;
+    const Matrix jq = selected(j.inputs, actuators, false), jx = selected(j.outputs, actuators, true);
+    // a report gives no cut polygon: one that reaches this far is unbounded (its inscribed
+    // radius, the worst direction, may still be finite)
+    constexpr double huge = 1e12;
+    shapes = shapesOf(actuators, jq, jx, type, huge, huge);
+    // the slabs are cut from the clip box, whose size sets the rounding error of the vertices:
+    // cut again from a box just larger than the polygon
+    const auto clipFor = [](const Shape &shape) {
+        const double r = reach(shape);
+        return shape.unbounded || !(r > 0.0) ? huge : 2.0 * r;
+    };
+    shapes = shapesOf(actuators, jq, jx, type, clipFor(shapes.velocity), clipFor(shapes.force));
+    for (Shape *shape : {&shapes.velocity, &shapes.force}) {
+        shape->ellipse.clear();
+        if (shape->unbounded)
+            shape->polygon.clear();
+    }
+    return shapes;
+}
+
 void addShapes(Scene &scene, const Mechanism &mechanism, const Actuators &actuators, const ShapeScales &scales,
                const Pose &pose, SingularityType type)
 {

@@ -53,6 +53,13 @@ struct ShapeScales {
 Shapes shapesOf(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
                 double velocityClip, double forceClip);
 
+/// The exact polygons at `pose` for a report (pkm eval's "velocity_polygon" and
+/// "force_polygon"), in mm/s and N: a polygon that is unbounded at this pose comes back empty
+/// with `unbounded` set, one that is undefined empty without it. Nothing (both empty, not
+/// unbounded) where the output is not a point of the plane or there are fewer than two
+/// actuators. Allocates (Mechanism::jacobians()).
+Shapes polygonsAt(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose, SingularityType type);
+
 /// Scales for a design: the fastest and strongest directions at the home pose drawn about
 /// 0.3 of the size of the mechanism's extent, rounded so that the legend reads 1/2/5·10ⁿ.
 ShapeScales scalesFor(const Mechanism &mechanism, const Actuators &actuators);

@@ -116,9 +116,11 @@ class and the derived quantities, in display units.
                        formulas and by the rank of its loop equations; "capability" is what
                        the actuators deliver at the pose: force_worst, force_best,
                        speed_worst, speed_best, resolution_worst, stiffness (K = Jᵀ·K_q·J),
-                       stiffness_worst (and the П-joint's stiffness_measured), with its
-                       own "undefined" and "infinite" lists (0 or ∞ at a singular pose,
-                       why: singularity.reason)
+                       stiffness_worst (and the П-joint's stiffness_measured), the
+                       exact velocity_polygon and force_polygon of a platform point
+                       ([x, y] vertices in mm/s and N), with its own "undefined" and
+                       "infinite" lists (0 or ∞ at a singular pose, why:
+                       singularity.reason)
   --all-modes         also every real assembly mode at the pose's inputs (every solution
                       of the direct kinematics in the design's working modes, the pose's
                       own marked *); with --json "assembly_modes": [{"x", "y", …}, …],

@@ -156,6 +156,9 @@ CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose
         return report;
     report.values.assign(static_cast<std::size_t>(report.layout->size), std::nan(""));
     capability::evaluate(mechanism, actuators, pose, type, report.values);
+    report.hasPolygons = actuators.count >= 2 && actuators.outputs >= 2 && !actuators.rotaryOutput;
+    if (report.hasPolygons)
+        report.polygons = capability::polygonsAt(mechanism, actuators, pose, type);
     return report;
 }
 
@@ -169,20 +172,42 @@ void writeCapabilityJson(JsonWriter &json, const CapabilityReport &capability)
     json.beginObject();
     for (const ReportEntry &entry : capability.layout->entries)
         writeEntryJson(json, entry, capability.values);
-    json.key("undefined");
-    json.beginArray(true);
-    for (const ReportEntry &entry : capability.layout->entries) {
-        if (!allFinite(entry, capability.values))
-            json.string(entry.name);
+    const std::array<std::pair<const char *, const capability::Shape *>, 2> polygons = {
+        std::pair{"velocity_polygon", &capability.polygons.velocity},
+        std::pair{"force_polygon", &capability.polygons.force}};
+    if (capability.hasPolygons) {
+        for (const auto &[name, shape] : polygons) {
+            json.key(name);
+            if (shape->polygon.empty()) {
+                json.null();
+                continue;
+            }
+            json.beginArray(true);
+            for (const Eigen::Vector2d &p : shape->polygon) {
+                json.beginArray(true);
+                json.number(p.x());
+                json.number(p.y());
+                json.endArray();
+            }
+            json.endArray();
+        }
     }
-    json.endArray();
-    json.key("infinite");
-    json.beginArray(true);
-    for (const ReportEntry &entry : capability.layout->entries) {
-        if (anyInfinite(entry, capability.values))
-            json.string(entry.name);
-    }
-    json.endArray();
+    // as the values: "undefined" names every null, "infinite" those that are unbounded
+    const auto namesWhere = [&](const char *key, auto notFinite, bool unboundedOnly) {
+        json.key(key);
+        json.beginArray(true);
+        for (const ReportEntry &entry : capability.layout->entries) {
+            if (notFinite(entry, capability.values))
+                json.string(entry.name);
+        }
+        for (const auto &[name, shape] : polygons) {
+            if (capability.hasPolygons && shape->polygon.empty() && (shape->unbounded || !unboundedOnly))
+                json.string(name);
+        }
+        json.endArray();
+    };
+    namesWhere("undefined", [](const ReportEntry &e, std::span<const double> v) { return !allFinite(e, v); }, false);
+    namesWhere("infinite", [](const ReportEntry &e, std::span<const double> v) { return anyInfinite(e, v); }, true);
     json.endObject();
 }
 

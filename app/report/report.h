@@ -3,6 +3,7 @@
 /// the report groups, their order, and the report of one pose as JSON.
 
 #include "capability.h"
+#include "capabilityshapes.h"
 #include "report/jsonwriter.h"
 #include "mechanism.h"
 #include "report/texttable.h"
@@ -43,12 +44,18 @@ void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<con
 struct CapabilityReport {
     const ReportLayout *layout = nullptr;
     std::vector<double> values;
+    /// The exact velocity and force polygons (eval only; a sweep's rows leave them out), and
+    /// whether the mechanism has them: a platform point moved by two or more actuators.
+    capability::Shapes polygons;
+    bool hasPolygons = false;
 };
 /// Evaluates the capability group of `pose`, whose class (Mechanism::evaluate()) is `type`.
 CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type);
-/// "capability": its values in display units (null where not finite), then "undefined" and
-/// "infinite", the names of the values that are not finite and of those unbounded at this pose
-/// (why: singularity.reason); null when the mechanism declares no actuators.
+/// "capability": its values in display units (null where not finite), then, where the report
+/// has them, "velocity_polygon" and "force_polygon" (vertices [x, y] in mm/s and N, counter-
+/// clockwise; null where unbounded or undefined), then "undefined" and "infinite", the names
+/// of the values that are not finite and of those unbounded at this pose (why:
+/// singularity.reason); null when the mechanism declares no actuators.
 void writeCapabilityJson(JsonWriter &json, const CapabilityReport &capability);
 
 /// "mobility": the chain of the mechanism at `pose` counted by Chebyshev's and

@@ -196,7 +196,8 @@ void SweepRowFormatter::jsonRow(
         writeParametersJson(json, mechanism, true);
     writeReportJson(json, m_layout, values, singularity);
     if (m_capabilityLayout) {
-        CapabilityReport capability{m_capabilityLayout, {}};
+        CapabilityReport capability; // a sweep's rows carry no polygons
+        capability.layout = m_capabilityLayout;
         const auto mine = values.subspan(static_cast<std::size_t>(m_layout.size));
         capability.values.assign(mine.begin(), mine.end());
         writeCapabilityJson(json, capability);

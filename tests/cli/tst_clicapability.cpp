@@ -44,6 +44,43 @@ private slots:
             QVERIFY2(eval.value(QLatin1String(key)).isObject(), key);
     }
 
+    /// The exact polygons beside the numbers: the strongest direction is the farthest vertex,
+    /// the weakest the nearest edge (the numbers come from the slabs, not from the polygon).
+    void polygonsMatchTheWorstAndBest_data() { addPresetPerKindRows(); }
+    void polygonsMatchTheWorstAndBest()
+    {
+        PKM_FETCH_PRESET(preset);
+        const QJsonObject capability = pkmJson({QStringLiteral("eval"), preset, QStringLiteral("--json")})
+                                           .value(QLatin1String("capability"))
+                                           .toObject();
+        const bool platform = !preset.startsWith(QLatin1String("pjoint")) && !preset.startsWith(QLatin1String("fourbar"));
+        for (const char *quantity : {"velocity", "force"}) {
+            const QString key = QLatin1String(quantity) + QLatin1String("_polygon");
+            QCOMPARE(capability.contains(key), platform);
+            if (!platform)
+                continue;
+            const QJsonArray polygon = capability.value(key).toArray();
+            QVERIFY2(polygon.size() >= 4 && polygon.size() % 2 == 0, qPrintable(key)); // centrally symmetric
+            double farthest = 0.0, nearestEdge = INFINITY, area = 0.0;
+            for (qsizetype i = 0; i < polygon.size(); ++i) {
+                const QJsonArray a = polygon[i].toArray(), b = polygon[(i + 1) % polygon.size()].toArray();
+                const double ax = a[0].toDouble(), ay = a[1].toDouble(), bx = b[0].toDouble(), by = b[1].toDouble();
+                farthest = std::max(farthest, std::hypot(ax, ay));
+                const double cross = ax * by - ay * bx;
+                area += 0.5 * cross;
+                nearestEdge = std::min(nearestEdge, std::abs(cross) / std::hypot(bx - ax, by - ay));
+            }
+            QVERIFY2(area > 0.0, "counter-clockwise");
+            const QString q = QLatin1String(quantity) == QLatin1String("velocity") ? QStringLiteral("speed")
+                                                                                 : QStringLiteral("force");
+            const double best = capability.value(q + QLatin1String("_best")).toDouble();
+            const double worst = capability.value(q + QLatin1String("_worst")).toDouble();
+            QVERIFY2(std::abs(farthest - best) <= 1e-9 * best, qPrintable(QStringLiteral("%1 %2 %3").arg(key).arg(farthest).arg(best)));
+            QVERIFY2(std::abs(nearestEdge - worst) <= 1e-9 * best,
+                     qPrintable(QStringLiteral("%1 %2 %3").arg(key).arg(nearestEdge).arg(worst)));
+        }
+    }
+
     void pjointPrototype()
     {
         const QJsonObject eval = pkmJson(args({"eval", "pjoint-prototype", "--set", "theta=20", "--json"}));
@@ -101,6 +138,12 @@ private slots:
         QVERIFY(infinite.contains(QStringLiteral("stiffness_worst")));
         QCOMPARE(capability.value(QLatin1String("speed_best")).toDouble(), 0.0);
         QCOMPARE(capability.value(QLatin1String("resolution_worst")).toDouble(), 0.0);
+        // the force polygon is the whole plane, the velocity polygon the platform point alone
+        QVERIFY(capability.value(QLatin1String("force_polygon")).isNull());
+        QVERIFY(infinite.contains(QStringLiteral("force_polygon")));
+        QVERIFY(capability.value(QLatin1String("undefined")).toArray().contains(QStringLiteral("force_polygon")));
+        for (const QJsonValue &vertex : capability.value(QLatin1String("velocity_polygon")).toArray())
+            QCOMPARE(std::hypot(vertex.toArray()[0].toDouble(), vertex.toArray()[1].toDouble()), 0.0);
     }
 
     void sweepHasTheColumns()
