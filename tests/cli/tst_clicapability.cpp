@@ -97,6 +97,13 @@ private slots:
         QVERIFY(capability.value(QLatin1String("stiffness")).toDouble() > 3.5e4);
         const QJsonObject parameters = eval.value(QLatin1String("parameters")).toObject();
         QCOMPARE(parameters.value(QLatin1String("stiffness")).toDouble(), 20000.0);
+        // its actuator's limits are bounded as every other kind's (they gave 6e298 N·m)
+        for (const char *name : {"force_max", "step", "speed_max", "stiffness", "lead"}) {
+            const Run huge = runPkm({QStringLiteral("eval"), QStringLiteral("pjoint-prototype"), QStringLiteral("--set"),
+                                     QLatin1String(name) + QStringLiteral("=1e300")});
+            QCOMPARE(huge.exitCode, 2);
+            QVERIFY2(QString::fromUtf8(huge.err).contains(QLatin1String(name) + QStringLiteral(" (")), huge.err.constData());
+        }
     }
 
     void moma3a()

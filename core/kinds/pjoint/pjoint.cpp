@@ -164,6 +164,9 @@ const ParameterTable<PJointDesign> &PJoint::table()
     static const T table = [] {
         const Interval positive{0.0, infinity};
         const Interval halfTurn{-90.0 * units::degree, 90.0 * units::degree};
+        // as every other kind's actuators (actuatorparameters.h): beyond 1e9 a limit is no
+        // actuator's, and its products would leave the range a report prints
+        const Interval actuator{0.0, 1e9};
         using G = ParameterGroup;
         // k = b/a is kept as a ratio: it sizes the coupler from the crank (the new one, since
         // derived values are written after the stored ones)
@@ -179,13 +182,13 @@ const ParameterTable<PJointDesign> &PJoint::table()
             {{"k", "k", QT_TRANSLATE_NOOP("core", "ratio k = b/a"), units::none, G::Geometry, positive, true, false, false, 4, 0.01}, ratio, nullptr, "b", &couplerClash},
             {{"theta_min", "θ_min", QT_TRANSLATE_NOOP("core", "lower limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1}, T::real<&D::thetaMin>()},
             {{"theta_max", "θ_max", QT_TRANSLATE_NOOP("core", "upper limit of θ"), units::angle, G::Range, halfTurn, true, true, true, 2, 1}, T::real<&D::thetaMax>()},
-            {{"lead", "h", QT_TRANSLATE_NOOP("core", "lead of the screw"), units::millimetrePerRevolution, G::Actuator, positive, true, false, true, 4, 0.1}, T::real<&D::lead>()},
-            {{"step", "Δd", QT_TRANSLATE_NOOP("core", "linear step"), units::millimetrePerStep, G::Actuator, positive, true, false, true, 5, 0.001}, T::real<&D::step>()},
-            {{"speed_max", "ḋ_max", QT_TRANSLATE_NOOP("core", "max. linear speed"), units::millimetrePerSecond, G::Actuator, positive, true, false, true, 2, 1}, T::real<&D::speedMax>()},
-            {{"force_max", "F_max", QT_TRANSLATE_NOOP("core", "max. thrust force"), units::newton, G::Actuator, positive, true, false, true, 1, 5}, T::real<&D::forceMax>()},
+            {{"lead", "h", QT_TRANSLATE_NOOP("core", "lead of the screw"), units::millimetrePerRevolution, G::Actuator, actuator, true, false, true, 4, 0.1}, T::real<&D::lead>()},
+            {{"step", "Δd", QT_TRANSLATE_NOOP("core", "linear step"), units::millimetrePerStep, G::Actuator, actuator, true, false, true, 5, 0.001}, T::real<&D::step>()},
+            {{"speed_max", "ḋ_max", QT_TRANSLATE_NOOP("core", "max. linear speed"), units::millimetrePerSecond, G::Actuator, actuator, true, false, true, 2, 1}, T::real<&D::speedMax>()},
+            {{"force_max", "F_max", QT_TRANSLATE_NOOP("core", "max. thrust force"), units::newton, G::Actuator, actuator, true, false, true, 1, 5}, T::real<&D::forceMax>()},
             {{"efficiency", "η", QT_TRANSLATE_NOOP("core", "screw efficiency"), units::none, G::Actuator, Interval{0.0, 1.0}, true, false, true, 3, 0.01}, T::real<&D::efficiency>()},
-            {{"stiffness", "k_d", QT_TRANSLATE_NOOP("core", "axial stiffness of the actuator"), units::newtonPerMillimetre, G::Actuator, positive, true, false, true, 0, 100}, T::real<&D::stiffness>()},
-            {{"stiffness_measured", "K_m", QT_TRANSLATE_NOOP("core", "measured static stiffness of the joint"), units::newtonMetrePerRadian, G::Actuator, positive, true, false, true, 0, 1000}, T::real<&D::stiffnessMeasured>()},
+            {{"stiffness", "k_d", QT_TRANSLATE_NOOP("core", "axial stiffness of the actuator"), units::newtonPerMillimetre, G::Actuator, actuator, true, false, true, 0, 100}, T::real<&D::stiffness>()},
+            {{"stiffness_measured", "K_m", QT_TRANSLATE_NOOP("core", "measured static stiffness of the joint"), units::newtonMetrePerRadian, G::Actuator, actuator, true, false, true, 0, 1000}, T::real<&D::stiffnessMeasured>()},
             {{"motor_length", "L_M", QT_TRANSLATE_NOOP("core", "motor body length"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorLength>()},
             {{"motor_width", "W_M", QT_TRANSLATE_NOOP("core", "motor body width"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::motorWidth>()},
             {{"screw_diameter", "d_s", QT_TRANSLATE_NOOP("core", "screw diameter"), units::millimetre, G::Drawing, positive, true, false, true, 4, 0.1}, T::real<&D::screwDiameter>()},
