@@ -108,20 +108,49 @@ void Player::advance(double seconds)
     if (atEnd)
         next = m_direction > 0 ? m_settings.to : m_settings.from;
 
+    const VariableInfo &info = m.variableInfo()[std::size_t(variable)];
+    const auto stoppedBefore = [&](SingularityType type, double at) {
+        blocked(tr("Play stopped before a singular pose (%1) at %2 = %3.")
+                    .arg(singularName(type), toQString(info.symbol), formatQuantity(at, info.unit, info.decimals)));
+    };
     const auto ahead = m.solveWith(current, variable, next);
     if (!ahead) {
-        // As far as the mechanism goes (the document bisects the move), then say why.
-        m_document->setVariable(variable, next);
-        blocked(QString::fromStdString(ahead.failure().message));
+        // The mechanism ends within this step: where a leg stretches or folds (a singular
+        // pose), or at a limit. Going as far as it goes would land on that singular pose, so go
+        // as far as it stays clear of one (bisection), then say why.
+        const auto clear = [&](double v, SingularityType *type) {
+            const auto at = m.solveWith(current, variable, v);
+            if (!at)
+                return false;
+            const Singularity s = singularityAt(m, *at);
+            *type = s.type;
+            return s.type == SingularityType::None && s.margin >= stopMargin();
+        };
+        double good = value, bad = next;
+        SingularityType edge = SingularityType::None;
+        for (int i = 0; i < 48 && std::abs(bad - good) > 1e-9 * (1.0 + std::abs(good)); ++i) {
+            const double middle = 0.5 * (good + bad);
+            SingularityType type = SingularityType::None;
+            if (clear(middle, &type))
+                good = middle;
+            else {
+                bad = middle;
+                edge = type;
+            }
+        }
+        if (good != value)
+            m_document->setVariable(variable, good);
+        const Singularity here = singularityAt(m, m_document->pose());
+        if (here.margin < 2.0 * stopMargin() || edge != SingularityType::None)
+            stoppedBefore(edge, m.variableValue(m_document->pose(), variable));
+        else
+            blocked(QString::fromStdString(ahead.failure().message));
         return;
     }
     const Singularity there = singularityAt(m, *ahead);
     if (there.type != SingularityType::None
         || (there.margin < stopMargin() && there.margin < singularityAt(m, current).margin)) {
-        const VariableInfo &info = m.variableInfo()[std::size_t(variable)];
-        blocked(tr("Play stopped before a singular pose (%1) at %2 = %3.")
-                    .arg(singularName(there.type), toQString(info.symbol),
-                         formatQuantity(value, info.unit, info.decimals)));
+        stoppedBefore(there.type, value);
         return;
     }
     m_document->setVariable(variable, next);

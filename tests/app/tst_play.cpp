@@ -165,6 +165,32 @@ private slots:
         QVERIFY2(there.margin > 0, qPrintable(reason));
     }
 
+    /// Fast, forth and back over the five-bar crank's whole turn: each step that would pass
+    /// where the legs stretch stops short of it and turns, in Play's own words (it landed on
+    /// the singular pose itself, saying "theta1 = 62.208°, theta4 = …" in the solver's terms).
+    void forthAndBackTurnsBeforeASingularPose()
+    {
+        open(QStringLiteral("fivebar-example"));
+        MainWindow &w = *m_window;
+        w.playBar()->setVariable(0); // its range and speed as the bar offers them
+        w.playBar()->setMode(PlayMode::ForthAndBack);
+        QSignalSpy turned(w.player(), &Player::turned);
+        w.setPlaying(true);
+        for (int i = 0; i < 400 && w.player()->isPlaying(); ++i) {
+            w.player()->advance(1.0 / Player::framesPerSecond);
+            const Singularity here = singularityOf(*w.document()->mechanism(), w.document()->pose());
+            QCOMPARE(here.type, SingularityType::None);
+            QVERIFY2(here.margin >= Player::stopMargin(), qPrintable(w.lastStatus()));
+        }
+        QVERIFY(turned.count() >= 2);
+        for (const QList<QVariant> &turn : turned) {
+            const QString reason = turn.first().toString();
+            QVERIFY2(reason.contains(QStringLiteral("before a singular pose")), qPrintable(reason));
+            QVERIFY2(!reason.contains(QStringLiteral("theta")), qPrintable(reason));
+        }
+        w.setPlaying(false);
+    }
+
     void aNewDesignStopsPlay()
     {
         open(QStringLiteral("pjoint-prototype"));
