@@ -106,6 +106,15 @@ std::string millimetres(double value)
     return format(translate("core", "%1 mm"), {number(value, 2)});
 }
 
+std::pair<std::string, std::string> millimetresApart(double a, double b)
+{
+    int decimals = 2;
+    while (decimals < 12 && number(a, decimals) == number(b, decimals))
+        ++decimals;
+    const std::string pattern = translate("core", "%1 mm");
+    return {format(pattern, {number(a, decimals)}), format(pattern, {number(b, decimals)})};
+}
+
 std::string numberOutside(double value, double lo, double hi, int decimals)
 {
     const double bound = std::abs(value - lo) < std::abs(value - hi) ? lo : hi;

@@ -14,6 +14,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <string_view>
 
 #ifndef QT_TRANSLATE_NOOP
@@ -51,6 +52,9 @@ std::string number(double value, int decimals = 3);
 std::string numberOutside(double value, double lo, double hi, int decimals = 3);
 /// A length for a sentence: "12.5 mm".
 std::string millimetres(double value);
+/// Two lengths a sentence compares ("it lies 200.0001 mm from A, more than 200 mm"): both with
+/// the fewest decimals, from 2 up to 12, at which they no longer read as equal.
+std::pair<std::string, std::string> millimetresApart(double a, double b);
 /// Text from outside (a file, the command line) made safe to print inside a message: control
 /// characters and invalid UTF-8 as \xHH escapes (no ESC reaches a terminal, no newline fakes
 /// a line), cut after `maxCharacters` characters with "…".

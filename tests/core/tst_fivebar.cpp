@@ -875,6 +875,12 @@ void TestFiveBar::badPoses()
         QVERIFY2(f.culprit == c.culprit && f.kind == c.kind && f.message.find(c.says) != std::string::npos,
             f.message.c_str());
     }
+    // a hair beyond the reach: the lengths compared are printed so that they differ (it read
+    // "it lies 200 mm from A, more than AB + BC = 200 mm")
+    const auto hair = m->solveInverse(pair(0.0, 200.0 + 1e-4));
+    QVERIFY(!hair);
+    QVERIFY2(hair.failure().message.find("200.0001 mm from A, more than AB + BC = 200 mm") != std::string::npos,
+             hair.failure().message.c_str());
 }
 
 void TestFiveBar::dragging()

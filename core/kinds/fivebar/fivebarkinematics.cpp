@@ -132,16 +132,20 @@ Failure FiveBar::explain(const Check &check, bool direct, const std::string &cul
                                     {theta1, theta4, t.number,
                                      sidePhrase(-d.working[check.leg], t.elbow, joinText({t.ground, "→C"})), t.crank,
                                      t.link, t.working})};
-    case R::LegTooShort:
+    case R::LegTooShort: {
+        // with the decimals that show the difference: a point a hair beyond the reach is not
+        // "200 mm from A, more than 200 mm"
+        const auto [far, reach] = text::millimetresApart(distance, a + b);
         return Failure{FailureKind::Unreachable, culprit,
                        text::format(text::translate("core", "C cannot reach %1: it lies %2 from %3, more than %4 + %5 = %6."),
-                                    {point, text::millimetres(distance), t.ground, t.crank, t.link,
-                                     text::millimetres(a + b)})};
-    case R::LegTooLong:
+                                    {point, far, t.ground, t.crank, t.link, reach})};
+    }
+    case R::LegTooLong: {
+        const auto [near, reach] = text::millimetresApart(distance, std::abs(a - b));
         return Failure{FailureKind::Unreachable, culprit,
                        text::format(text::translate("core", "C cannot reach %1: it lies %2 from %3, less than |%4 − %5| = %6."),
-                                    {point, text::millimetres(distance), t.ground, t.crank, t.link,
-                                     text::millimetres(std::abs(a - b))})};
+                                    {point, near, t.ground, t.crank, t.link, reach})};
+    }
     case R::OnGroundJoint:
         return Failure{FailureKind::Singular, culprit,
                        text::format(text::translate("core", "C = %1 lies on %2 and %3 = %4: the crank angle %5 is undetermined."),
