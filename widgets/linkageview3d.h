@@ -19,6 +19,7 @@
 #include <QImage>
 #include <QPoint>
 #include <QString>
+#include <QTimer>
 #include <QWidget>
 
 class QLabel;
@@ -69,6 +70,9 @@ public:
     QOpenGLWidget *glWidget() const;
 
     int frameCount() const { return m_frameCount; }
+    /// The samples per pixel of the last frame: 4, or 1 for a frame drawn in motion by a
+    /// renderer on the CPU (it is drawn again with 4 once the motion rests).
+    int lastFrameSamples() const { return m_lastFrameSamples; }
     /// CPU time of the last paintGL(), ms (GL work may finish later).
     double lastFrameMilliseconds() const { return m_lastFrameMilliseconds; }
 
@@ -128,6 +132,9 @@ private:
 
     int m_frameCount = 0;
     double m_lastFrameMilliseconds = 0.0;
+    int m_lastFrameSamples = 0;
+    QTimer m_refine;           ///< the motion rests: the still frame with every sample
+    bool m_refining = false;
 };
 
 /// The 3D view under a row of large text buttons a classroom can read on a projector: Fit, the

@@ -110,7 +110,8 @@ QSurfaceFormat Renderer3D::surfaceFormat()
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    format.setSamples(4);
+    // None on the surface: render() draws its own samples where they are cheap or wanted.
+    format.setSamples(0);
     return format;
 }
 
@@ -187,6 +188,9 @@ bool Renderer3D::initialize()
         {QString::number(format.majorVersion()), QString::number(format.minorVersion()),
             QString::fromLatin1(reinterpret_cast<const char *>(m_gl->glGetString(GL_VERSION))),
             QString::fromLatin1(reinterpret_cast<const char *>(m_gl->glGetString(GL_RENDERER)))}};
+    const QString renderer = QString::fromLatin1(reinterpret_cast<const char *>(m_gl->glGetString(GL_RENDERER)));
+    m_software = renderer.contains(QLatin1String("llvmpipe")) || renderer.contains(QLatin1String("softpipe"))
+        || renderer.contains(QLatin1String("swrast"));
     m_dirty = true;
     return true;
 }
@@ -253,13 +257,44 @@ void Renderer3D::upload()
     m_dirty = false;
 }
 
-void Renderer3D::render(const Camera3D &camera, const QSize &viewport, qreal devicePixelRatio)
+void Renderer3D::render(const Camera3D &camera, const QSize &viewport, qreal devicePixelRatio, int samples)
 {
     if (!contextIsCurrent() || viewport.isEmpty())
         return;
     if (m_dirty)
         upload();
     const QSize pixels = viewport * devicePixelRatio;
+    if (samples <= 1) {
+        draw(camera, viewport, pixels);
+        return;
+    }
+    GLint target = 0, maximumSamples = 0;
+    m_gl->glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+    m_gl->glGetIntegerv(GL_MAX_SAMPLES, &maximumSamples);
+    samples = std::min(samples, int(maximumSamples));
+    if (!m_multisampled || m_multisampled->size() != pixels || m_multisampled->format().samples() != samples) {
+        QOpenGLFramebufferObjectFormat format;
+        format.setAttachment(QOpenGLFramebufferObject::Depth);
+        format.setSamples(samples);
+        format.setInternalTextureFormat(GL_RGBA8);
+        m_multisampled = std::make_unique<QOpenGLFramebufferObject>(pixels, format);
+    }
+    if (!m_multisampled->isValid() || !m_multisampled->bind()) {
+        m_multisampled.reset(); // no samples, then: the frame still shows
+        m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+        draw(camera, viewport, pixels);
+        return;
+    }
+    draw(camera, viewport, pixels);
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_multisampled->handle());
+    m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(target));
+    m_gl->glBlitFramebuffer(0, 0, pixels.width(), pixels.height(), 0, 0, pixels.width(), pixels.height(),
+        GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+}
+
+void Renderer3D::draw(const Camera3D &camera, const QSize &viewport, const QSize &pixels)
+{
     m_gl->glViewport(0, 0, pixels.width(), pixels.height());
     const QColor background = backgroundColour();
     m_gl->glClearColor(float(background.redF()), float(background.greenF()), float(background.blueF()), 1.0f);
@@ -430,6 +465,7 @@ void Renderer3D::cleanup()
     // Safe without the context: Qt defers deleting the programs until it is current or gone.
     m_solidProgram.reset();
     m_lineProgram.reset();
+    m_multisampled.reset(); // as the programs: Qt deletes its GL object when it can
     m_solidArray = m_lineArray = m_solidVertices = m_solidIndices = m_lineVertices = 0;
     m_uploadedIndices = m_uploadedLines = 0;
     m_gl = nullptr;

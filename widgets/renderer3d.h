@@ -13,6 +13,7 @@
 #include "scene3d.h"
 
 #include <QColor>
+#include <QOpenGLFramebufferObject>
 #include <QCoreApplication>
 #include <QImage>
 #include <QSize>
@@ -77,8 +78,14 @@ public:
     Eigen::AlignedBox3d drawnBounds() const;
 
     /// Draws into the bound framebuffer: `viewport` in logical pixels (the camera's), the GL
-    /// viewport in device pixels (× devicePixelRatio). Nothing without the context current.
-    void render(const Camera3D &camera, const QSize &viewport, qreal devicePixelRatio);
+    /// viewport in device pixels (× devicePixelRatio). With `samples` > 1 it draws into a
+    /// multisampled framebuffer of its own (kept for the next frame of that size) and resolves
+    /// it into the bound one: the view's surface has no samples, so that a renderer on the CPU
+    /// can draw moving frames without them (LinkageView3D). Nothing without the context current.
+    void render(const Camera3D &camera, const QSize &viewport, qreal devicePixelRatio, int samples = 0);
+    /// Whether the driver renders on the CPU (Mesa's llvmpipe, softpipe or swrast), where each
+    /// sample of each pixel costs processor time. Known once initialised.
+    bool isSoftware() const { return m_software; }
     /// Renders the camera's view into a multisampled framebuffer of `size` pixels (the camera's
     /// viewport set to it), resolves it and reads it back; the previously bound framebuffer is
     /// bound again. A null image, with errorString(), on failure. Needs the context current.
@@ -102,6 +109,7 @@ private:
     bool contextIsCurrent() const;
     bool buildPrograms();
     void upload();
+    void draw(const Camera3D &camera, const QSize &viewport, const QSize &pixels);
 
     QOpenGLContext *m_context = nullptr;
     QOpenGLFunctions_3_3_Core *m_gl = nullptr;
@@ -112,6 +120,8 @@ private:
     int m_uploadedIndices = 0;
     int m_uploadedLines = 0;
     bool m_dirty = true;
+    bool m_software = false;
+    std::unique_ptr<QOpenGLFramebufferObject> m_multisampled; ///< render()'s, at its last size
     Message m_error;
     Message m_description;
 

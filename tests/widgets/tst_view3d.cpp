@@ -1,9 +1,8 @@
-// The 3D view with a real OpenGL 3.3 context (ctest runs it under Xvfb with Mesa's llvmpipe):
-// pictures of every registered kind against reference PNGs, a pose change that shows, pictures
-// larger than the widget, the widget's own frames, an empty scene, "Save picture…" with and
-// without the names, and the time a frame takes while a slider is dragged.
-// PKM_UPDATE_REFERENCE_IMAGES=1 writes the references to tests/widgets/data/ instead of comparing;
-// every run leaves its pictures in <temp>/pkm-view3d/ to look at.
+// The 3D view with a real OpenGL 3.3 context (ctest runs it under Xvfb with Mesa's llvmpipe): every
+// kind against reference PNGs, a pose change, pictures larger than the widget, its own frames (one
+// sample in motion on the CPU, four at rest), an empty scene, "Save picture…" with and without the
+// names and a frame's time during a drag. PKM_UPDATE_REFERENCE_IMAGES=1 writes the references to
+// tests/widgets/data/; every run leaves its pictures in <temp>/pkm-view3d/ to look at.
 
 #include "linkageview3d.h"
 #include "mesh3d.h"
@@ -20,7 +19,6 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <string>
 #include <vector>
 
 Q_DECLARE_METATYPE(pkm::Camera3D::Projection)
@@ -51,9 +49,8 @@ const std::map<QString, std::vector<ReferenceView>> &referenceViews()
         {QStringLiteral("pjoint"),
             {{"isometric", View::Isometric, Projection::Perspective},
                 {"front-orthographic", View::Front, Projection::Orthographic}}},
-        {QStringLiteral("moma"),
-            {{"isometric", View::Isometric, Projection::Perspective},
-                {"top-orthographic", View::Top, Projection::Orthographic}}},
+        {QStringLiteral("moma"), {{"isometric", View::Isometric, Projection::Perspective},
+                                     {"top-orthographic", View::Top, Projection::Orthographic}}},
         {QStringLiteral("oxglide"),
             {{"isometric", View::Isometric, Projection::Perspective},
                 {"front-orthographic", View::Front, Projection::Orthographic}}},
@@ -299,6 +296,9 @@ void TestView3D::widgetPaintsWhatRenderImageRenders()
     QCOMPARE(frame.size(), pictureSize * m_view->devicePixelRatioF());
     const Difference d = compare(frame.scaled(pictureSize), offscreen);
     QVERIFY2(d.mean < 3.0, qPrintable(QString::number(d.mean)));
+    // on the CPU a frame in motion has one sample, and the frame the view rests on four
+    QCOMPARE(m_view->lastFrameSamples(), m_view->glStatus().contains(QLatin1String("llvmpipe")) ? 1 : 4);
+    QTRY_COMPARE(m_view->lastFrameSamples(), 4);
 }
 
 void TestView3D::renderImageBeforeShown()
