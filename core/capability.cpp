@@ -229,7 +229,7 @@ namespace {
 /// evaluate() for N actuators: fixed-size matrices, so that the solves and products are
 /// inlined (a sweep evaluates this once per row).
 template <int N>
-void evaluateFixed(const Actuators &actuators, const Matrix &jqIn, const Matrix &jxIn, SingularityType type,
+SingularityType evaluateFixed(const Actuators &actuators, const Matrix &jqIn, const Matrix &jxIn, SingularityType type,
                    std::span<double> values, const ReportLayout *layout)
 {
     using Matrix = Eigen::Matrix<double, N, N>;
@@ -251,16 +251,10 @@ void evaluateFixed(const Actuators &actuators, const Matrix &jqIn, const Matrix 
     // J = J_q⁻¹·J_x and G = J_x⁻¹·J_q; each is inf/NaN only where the marks replace what uses it
     const Matrix J = jq.partialPivLu().solve(jx);
     Matrix G = jx.partialPivLu().solve(jq);
-    if (type == SingularityType::Inverse || type == SingularityType::Combined) {
-        // An actuator whose leg is stretched moves the platform no more: at a pose the kind
-        // classifies singular (its margin below 10⁻⁷) its column of G is exactly 0, not the
-        // 10⁻⁸ of a hair inside, which would make the weakest force 10⁸ N (both legs of a
-        // five-bar stretched: the platform is locked, and holds any force)
-        for (int i = 0; i < n; ++i) {
-            if (G.col(i).norm() <= 1e-6 * actuators.transmission[std::size_t(i)])
-                G.col(i).setZero();
-        }
-    }
+    // An actuator whose leg is (nearly) stretched moves the platform no more: its column of G
+    // is exactly 0, not the 10⁻⁸ of a hair inside, which would make the weakest force 10⁸ N
+    // (both legs of a five-bar stretched: the platform is locked, and holds any force)
+    type = deliveryClass(actuators, G, type);
     const double toOutput = actuators.rotaryOutput ? 1.0 / perMetre : 1.0;
 
     values[SlotForceWorst] = inscribedRadius(G.transpose(), effort, t) * toOutput;
@@ -296,16 +290,17 @@ void evaluateFixed(const Actuators &actuators, const Matrix &jqIn, const Matrix 
     // no load, no deflection, whatever the pose (0·∞ would be undefined, not unbounded)
     if (load.isZero(0.0))
         std::fill(values.begin() + std::ptrdiff_t(firstDeflection), values.begin() + std::ptrdiff_t(endDeflection), 0.0);
+    return type;
 }
 
 } // namespace
 
-void evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
-              std::span<double> values)
+SingularityType evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
+                         std::span<double> values)
 {
     const ReportLayout *layout = layoutFor(actuators);
     if (!layout)
-        return;
+        return type;
     switch (actuators.count) {
     case 1:
         return evaluateFixed<1>(actuators, jq, jx, type, values, layout);
@@ -316,11 +311,11 @@ void evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, Si
     }
 }
 
-void evaluate(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose, SingularityType type,
-              std::span<double> values)
+SingularityType evaluate(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose,
+                         SingularityType type, std::span<double> values)
 {
     if (actuators.count == 0)
-        return;
+        return type;
     const Jacobians j = mechanism.jacobians(pose);
     const int n = actuators.count;
     Matrix jq(n, n), jx(n, n);
@@ -331,7 +326,24 @@ void evaluate(const Mechanism &mechanism, const Actuators &actuators, const Pose
             jx(r, c) = j.outputs(row, c);
         }
     }
-    evaluate(actuators, jq, jx, type, values);
+    return evaluate(actuators, jq, jx, type, values);
+}
+
+const char *nearSingularReason(SingularityType type, SingularityType kindType)
+{
+    if (type == kindType)
+        return nullptr;
+    switch (type) {
+    case SingularityType::Inverse:
+        return QT_TRANSLATE_NOOP("core", "near an inverse singularity: an actuator moves the platform less than "
+                                         "1/1000 of what it does at the home pose");
+    case SingularityType::Direct:
+        return QT_TRANSLATE_NOOP("core", "near a direct singularity: an actuator moves the platform more than "
+                                         "1000 times what it does at the home pose");
+    default:
+        return QT_TRANSLATE_NOOP("core", "near a combined singularity: one actuator moves the platform less than "
+                                         "1/1000, another more than 1000 times what it does at the home pose");
+    }
 }
 
 } // namespace pkm::capability

@@ -97,15 +97,55 @@ Actuators actuatorsOf(const Mechanism &mechanism);
 /// the layout is the group.
 const ReportLayout *layoutFor(const Actuators &actuators);
 
+/// How far from what it does at the home pose an actuator's effect on the platform may be
+/// before what the actuators deliver is reported as at a singular pose. The rigid model's
+/// numbers a hair from a singularity are exact but meaningless for a workshop: the five-bar
+/// with both legs 10⁻⁵° from stretched "holds" 6.6·10⁷ N with 2 N·m motors, where its links
+/// would have bent long before. So an actuator that moves the platform less than 1/1000 of
+/// what it does at home counts as not moving it (as at an inverse singularity: forces ∞,
+/// speeds 0), and one that moves it more than 1000 times as much marks a direct singularity
+/// (forces 0, speeds and errors ∞). The factor 1000 is far outside what a design meets in
+/// its working range (the П-joint's ratio varies by 2 over ±60°, MOMA's by less than 20).
+inline constexpr double nearSingular = 1e3;
+
+/// The class of the pose for this group: `type` (the kind's class), made inverse or direct
+/// where an actuator's column of G = J⁻¹ is below or above the bounds above (its
+/// `transmission`, nearSingular). The columns of actuators that no longer move the platform
+/// are set to exactly 0 in `G`.
+template <class Mat>
+SingularityType deliveryClass(const Actuators &actuators, Mat &G, SingularityType type)
+{
+    bool inverse = type == SingularityType::Inverse || type == SingularityType::Combined;
+    bool direct = type == SingularityType::Direct || type == SingularityType::Combined;
+    for (int i = 0; i < int(G.cols()); ++i) {
+        const double norm = G.col(i).norm(), home = actuators.transmission[std::size_t(i)];
+        if (norm <= home / nearSingular) {
+            G.col(i).setZero();
+            inverse = true;
+        } else if (home > 0.0 && !(norm < home * nearSingular)) { // NaN, ∞ or too large
+            direct = true;
+        }
+    }
+    return inverse && direct ? SingularityType::Combined
+         : inverse           ? SingularityType::Inverse
+         : direct            ? SingularityType::Direct
+                             : SingularityType::None;
+}
+
 /// Fills `values` (layoutFor(actuators)->size) from J_q and J_x of the pose (rows and columns
 /// of the actuators only, as selected by `actuators.inputs`), then settles the exact values
-/// of a singular pose of class `type`. Does not allocate.
-void evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
-              std::span<double> values);
+/// of a singular pose of the class deliveryClass() gives from `type`, and returns that class.
+/// Does not allocate.
+SingularityType evaluate(const Actuators &actuators, const Matrix &jq, const Matrix &jx, SingularityType type,
+                         std::span<double> values);
 
 /// The same from a mechanism and a pose (allocates: Mechanism::jacobians()).
-void evaluate(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose, SingularityType type,
-              std::span<double> values);
+SingularityType evaluate(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose,
+                         SingularityType type, std::span<double> values);
+
+/// A sentence on why the values of a pose of class `type` are 0 or ∞ where the kind's own class
+/// of the pose is `kindType` (untranslated, "core" context); nullptr where they agree.
+const char *nearSingularReason(SingularityType type, SingularityType kindType);
 
 } // namespace capability
 } // namespace pkm

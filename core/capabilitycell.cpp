@@ -1,5 +1,6 @@
 #include "capabilitycell.h"
 
+#include <limits>
 
 namespace pkm::capability {
 
@@ -32,7 +33,10 @@ CellLimits cellLimits(const Actuators &actuators, MapQuantity quantity)
             l.limit[k] = 1.0 / (a.stiffness * toMillimetre);
             break;
         }
-        l.negligible[k] = 1e-6 * actuators.transmission[k];
+        // as capability::deliveryClass(): no upper bound where the home pose gives no scale
+        const double home = actuators.transmission[k];
+        l.negligible[k] = home / nearSingular;
+        l.excessive[k] = home > 0.0 ? home * nearSingular : std::numeric_limits<double>::infinity();
     }
     return l;
 }

@@ -31,9 +31,11 @@ struct CellLimits {
     int count = 0;
     /// Per actuator: the force, the speed, half the step, or the compliance 1/k, by quantity.
     std::array<double, maxActuators> limit{};
-    /// 10⁻⁶·|G·e_i| at the home pose: at a pose classified inverse-singular, an actuator that
-    /// moves the platform less than this moves it not at all (capability.cpp).
+    /// |G·e_i| at the home pose over and times nearSingular: an actuator that moves the
+    /// platform less than `negligible` moves it not at all (inverse), one that moves it more
+    /// than `excessive` marks a direct singularity (capability::deliveryClass()).
     std::array<double, maxActuators> negligible{};
+    std::array<double, maxActuators> excessive{};
 };
 
 /// The limits of `actuators` for `quantity` (one of the four capability maps).
@@ -65,6 +67,15 @@ template <MapQuantity Q>
     // read once, outside every select, so that a vectorised loop loads them unconditionally
     const double limit1 = l.limit[0], limit2 = l.limit[1];
     const double negligible1 = l.negligible[0], negligible2 = l.negligible[1];
+    const double excessive1 = l.excessive[0], excessive2 = l.excessive[1];
+    const double det = a * d - b * c, absDet = std::abs(det);
+    // |G e_i| = |q_i|·|J_x,other|/|Δ|, compared without dividing by Δ: below `negligible` the
+    // actuator moves the platform no more (inverse), above `excessive` the pose is as direct-
+    // singular (capability::deliveryClass(); at Δ = 0, ∞·0 is NaN and the kind's mark decides)
+    const double m1 = std::abs(q1) * r2, m2 = std::abs(q2) * r1;
+    const bool zero1 = m1 <= negligible1 * absDet, zero2 = m2 <= negligible2 * absDet;
+    inverse = inverse | zero1 | zero2;
+    direct = direct | (m1 >= excessive1 * absDet) | (m2 >= excessive2 * absDet);
     // no square root and one division at most beyond the caller's: a vectorised loop pays
     // per square root and division, not per multiplication
     if constexpr (Q == MapQuantity::SpeedWorst) {
@@ -73,11 +84,6 @@ template <MapQuantity Q>
         const double v = smallerRatio(limit1 * std::abs(q1), r1, r1 > 0.0, limit2 * std::abs(q2), r2, r2 > 0.0);
         return inverse ? 0.0 : v;
     } else {
-        const double det = a * d - b * c, absDet = std::abs(det);
-        // |G e_i| = |q_i|·|J_x,other|/|Δ|, compared without dividing by Δ (0 where direct)
-        const double m1 = std::abs(q1) * r2, m2 = std::abs(q2) * r1;
-        const double below = inverse ? absDet : 0.0; // |G e_i| ≤ 10⁻⁶·transmission counts as 0 only there
-        const bool zero1 = m1 <= negligible1 * below, zero2 = m2 <= negligible2 * below;
         if constexpr (Q == MapQuantity::ForceWorst) {
             // the force slabs |(Gᵀ·F)_i| ≤ F_i: inscribed radius min F_i/|G e_i|, no slab where
             // G e_i is 0; over one denominator, min(F₁m₂, F₂m₁)/(m₁m₂), with m_i = 0 as 1
@@ -126,6 +132,25 @@ template <MapQuantity Q>
 {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const double limit[3] = {l.limit[0], l.limit[1], l.limit[2]};
+    // the adjugate's entries over the determinant, each column scaled by q_c: G, whose columns
+    // also decide whether the pose is as singular (capability::deliveryClass())
+    const double c00 = j[1][1] * j[2][2] - j[1][2] * j[2][1], c01 = j[1][2] * j[2][0] - j[1][0] * j[2][2];
+    const double c02 = j[1][0] * j[2][1] - j[1][1] * j[2][0];
+    const double s = 1.0 / (j[0][0] * c00 + j[0][1] * c01 + j[0][2] * c02); // ∞ at a direct singularity
+    double g[3][3] = {{c00, j[0][2] * j[2][1] - j[0][1] * j[2][2], j[0][1] * j[1][2] - j[0][2] * j[1][1]},
+                      {c01, j[0][0] * j[2][2] - j[0][2] * j[2][0], j[0][2] * j[1][0] - j[0][0] * j[1][2]},
+                      {c02, j[0][1] * j[2][0] - j[0][0] * j[2][1], j[0][0] * j[1][1] - j[0][1] * j[1][0]}};
+    for (int c = 0; c < 3; ++c) {
+        const double scale = s * q[c];
+        g[0][c] *= scale, g[1][c] *= scale, g[2][c] *= scale;
+        // an actuator that moves the platform less than `negligible` moves it not at all
+        const double norm = std::sqrt(g[0][c] * g[0][c] + g[1][c] * g[1][c] + g[2][c] * g[2][c]);
+        const bool zero = norm <= l.negligible[std::size_t(c)];
+        inverse = inverse | zero;
+        direct = direct | !(norm < l.excessive[std::size_t(c)]);
+        const double keep = zero ? 0.0 : 1.0;
+        g[0][c] *= keep, g[1][c] *= keep, g[2][c] *= keep;
+    }
     if constexpr (Q == MapQuantity::SpeedWorst) {
         // J's rows J_x,i/q_i on the translation: min v_i·|q_i|/|J_x,i(x, y)|
         double radius = infinity;
@@ -136,21 +161,6 @@ template <MapQuantity Q>
         }
         return inverse ? 0.0 : radius;
     } else {
-        // the adjugate's entries over the determinant, each column scaled by q_c
-        const double c00 = j[1][1] * j[2][2] - j[1][2] * j[2][1], c01 = j[1][2] * j[2][0] - j[1][0] * j[2][2];
-        const double c02 = j[1][0] * j[2][1] - j[1][1] * j[2][0];
-        const double s = 1.0 / (j[0][0] * c00 + j[0][1] * c01 + j[0][2] * c02); // ∞ at a direct singularity
-        double g[3][3] = {{c00, j[0][2] * j[2][1] - j[0][1] * j[2][2], j[0][1] * j[1][2] - j[0][2] * j[1][1]},
-                          {c01, j[0][0] * j[2][2] - j[0][2] * j[2][0], j[0][2] * j[1][0] - j[0][0] * j[1][2]},
-                          {c02, j[0][1] * j[2][0] - j[0][0] * j[2][1], j[0][0] * j[1][1] - j[0][1] * j[1][0]}};
-        for (int c = 0; c < 3; ++c) {
-            const double scale = s * q[c];
-            g[0][c] *= scale, g[1][c] *= scale, g[2][c] *= scale;
-            // at an inverse singularity an actuator that moves the platform less than this moves it not at all
-            const double norm = std::sqrt(g[0][c] * g[0][c] + g[1][c] * g[1][c] + g[2][c] * g[2][c]);
-            const double keep = inverse && norm <= l.negligible[std::size_t(c)] ? 0.0 : 1.0;
-            g[0][c] *= keep, g[1][c] *= keep, g[2][c] *= keep;
-        }
         if constexpr (Q == MapQuantity::ForceWorst) {
             // a pure force: the slabs |(Gᵀ·F)_i| ≤ F_i over (F_x, F_y, 0)
             double radius = infinity;

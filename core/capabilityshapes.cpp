@@ -164,17 +164,12 @@ Shapes shapesOf(const Actuators &actuators, const Matrix &jq, const Matrix &jx, 
         speed[i] = a.speed;
         effort[i] = a.force * (a.rotary ? perMetre : 1.0);
     }
-    const bool inverse = type == SingularityType::Inverse || type == SingularityType::Combined;
-    const bool direct = type == SingularityType::Direct || type == SingularityType::Combined;
     const Matrix J = jq.partialPivLu().solve(jx);
     Matrix G = jx.partialPivLu().solve(jq);
-    if (inverse) {
-        // as capability::evaluate(): a stretched leg's actuator moves the platform no more
-        for (int i = 0; i < n; ++i) {
-            if (G.col(i).norm() <= 1e-6 * actuators.transmission[std::size_t(i)])
-                G.col(i).setZero();
-        }
-    }
+    // as capability::evaluate(): a (nearly) stretched leg's actuator moves the platform no more
+    type = deliveryClass(actuators, G, type);
+    const bool inverse = type == SingularityType::Inverse || type == SingularityType::Combined;
+    const bool direct = type == SingularityType::Direct || type == SingularityType::Combined;
     // velocity: slabs |J_i·ẋ| ≤ q̇_max,i over the translations (the first two columns of J)
     if (!inverse && finite(J))
         shapes.velocity = slabShape(J.leftCols(2), speed, velocityClip);

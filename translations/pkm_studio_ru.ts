@@ -4100,6 +4100,18 @@ Please verify the correct file name was given.</source>
         <source>worst-case error from the tolerances</source>
         <translation>наибольшая ошибка от допусков</translation>
     </message>
+    <message>
+        <source>near an inverse singularity: an actuator moves the platform less than 1/1000 of what it does at the home pose</source>
+        <translation>вблизи особого положения обратной кинематики: привод перемещает платформу менее чем на 1/1000 того, что в исходном положении</translation>
+    </message>
+    <message>
+        <source>near a direct singularity: an actuator moves the platform more than 1000 times what it does at the home pose</source>
+        <translation>вблизи особого положения прямой кинематики: привод перемещает платформу более чем в 1000 раз сильнее, чем в исходном положении</translation>
+    </message>
+    <message>
+        <source>near a combined singularity: one actuator moves the platform less than 1/1000, another more than 1000 times what it does at the home pose</source>
+        <translation>вблизи комбинированного особого положения: один привод перемещает платформу менее чем на 1/1000, другой более чем в 1000 раз сильнее, чем в исходном положении</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6427,6 +6439,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Capability</source>
         <translation>Возможности приводов</translation>
+    </message>
+    <message>
+        <source>Capability: as at a singular pose</source>
+        <translation>Возможности: как в особом положении</translation>
     </message>
 </context>
 <context>

@@ -4100,6 +4100,18 @@ Please verify the correct file name was given.</source>
         <source>worst-case error from the tolerances</source>
         <translation>највећа грешка од толеранција</translation>
     </message>
+    <message>
+        <source>near an inverse singularity: an actuator moves the platform less than 1/1000 of what it does at the home pose</source>
+        <translation>близу сингуларитета инверзне кинематике: погон помера платформу мање од 1/1000 онога што чини у почетном положају</translation>
+    </message>
+    <message>
+        <source>near a direct singularity: an actuator moves the platform more than 1000 times what it does at the home pose</source>
+        <translation>близу сингуларитета директне кинематике: погон помера платформу више од 1000 пута више него у почетном положају</translation>
+    </message>
+    <message>
+        <source>near a combined singularity: one actuator moves the platform less than 1/1000, another more than 1000 times what it does at the home pose</source>
+        <translation>близу комбинованог сингуларитета: један погон помера платформу мање од 1/1000, други више од 1000 пута више него у почетном положају</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6427,6 +6439,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Capability</source>
         <translation>Могућности погона</translation>
+    </message>
+    <message>
+        <source>Capability: as at a singular pose</source>
+        <translation>Могућности: као у сингуларном положају</translation>
     </message>
 </context>
 <context>

@@ -4100,6 +4100,18 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>worst-case error from the tolerances</source>
         <translation>najveća greška od tolerancija</translation>
     </message>
+    <message>
+        <source>near an inverse singularity: an actuator moves the platform less than 1/1000 of what it does at the home pose</source>
+        <translation>blizu singulariteta inverzne kinematike: pogon pomera platformu manje od 1/1000 onoga što čini u početnom položaju</translation>
+    </message>
+    <message>
+        <source>near a direct singularity: an actuator moves the platform more than 1000 times what it does at the home pose</source>
+        <translation>blizu singulariteta direktne kinematike: pogon pomera platformu više od 1000 puta više nego u početnom položaju</translation>
+    </message>
+    <message>
+        <source>near a combined singularity: one actuator moves the platform less than 1/1000, another more than 1000 times what it does at the home pose</source>
+        <translation>blizu kombinovanog singulariteta: jedan pogon pomera platformu manje od 1/1000, drugi više od 1000 puta više nego u početnom položaju</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6427,6 +6439,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Capability</source>
         <translation>Mogućnosti pogona</translation>
+    </message>
+    <message>
+        <source>Capability: as at a singular pose</source>
+        <translation>Mogućnosti: kao u singularnom položaju</translation>
     </message>
 </context>
 <context>

@@ -119,6 +119,7 @@ void ValuesTable::rebuild()
         item->setFirstColumnSpanned(true);
         item->setFont(0, groupFont);
         item->setBackground(0, QColor(0xe8, 0xee, 0xf4));
+        return item;
     };
     const auto addItem = [&](const ReportEntry &entry) {
         const QString label = coreLabel(entry.label);
@@ -138,8 +139,9 @@ void ValuesTable::rebuild()
     }
     m_capabilityItems.clear();
     m_capabilityValues.clear();
+    m_capabilityGroup = nullptr;
     if (m_capabilityLayout) {
-        addGroup(tr("Capability"));
+        m_capabilityGroup = addGroup(tr("Capability"));
         m_capabilityValues.assign(std::size_t(m_capabilityLayout->size), 0.0);
         for (const ReportEntry &entry : m_capabilityLayout->entries)
             m_capabilityItems.push_back(addItem(entry));
@@ -167,9 +169,14 @@ void ValuesTable::setPose(const Pose &pose)
     for (std::size_t i = 0; i < layout.entries.size(); ++i)
         show(m_items[i], layout.entries[i], m_values);
     if (m_capabilityLayout) {
-        capability::evaluate(*m_mechanism, m_actuators, pose, singularity.type, m_capabilityValues);
+        const SingularityType type =
+            capability::evaluate(*m_mechanism, m_actuators, pose, singularity.type, m_capabilityValues);
         for (std::size_t i = 0; i < m_capabilityLayout->entries.size(); ++i)
             show(m_capabilityItems[i], m_capabilityLayout->entries[i], m_capabilityValues);
+        // near a singular pose the group's 0 and ∞ say so, and why, where the class does not
+        const char *reason = capability::nearSingularReason(type, singularity.type);
+        m_capabilityGroup->setText(0, reason ? tr("Capability: as at a singular pose") : tr("Capability"));
+        m_capabilityGroup->setToolTip(0, reason ? coreLabel(reason) : QString());
     }
     QString text = singularityText(singularity.type);
     if (singularity.type == SingularityType::None)
@@ -213,6 +220,8 @@ QString ValuesTable::valueText(const QString &name) const
 {
     if (name == QLatin1String("singularity"))
         return m_singularity ? m_singularity->text(1) : QString();
+    if (name == QLatin1String("capability"))
+        return m_capabilityGroup ? m_capabilityGroup->toolTip(0) : QString();
     for (const auto *items : {&m_items, &m_capabilityItems}) {
         for (const QTreeWidgetItem *item : *items) {
             if (item->data(0, Qt::UserRole).toString() == name)

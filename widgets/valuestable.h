@@ -23,7 +23,8 @@ public:
     void setMechanism(const MechanismPtr &mechanism);
     void setPose(const Pose &pose);
 
-    /// The text shown for a report entry ("J") or "singularity"; for tests.
+    /// The text shown for a report entry ("J") or "singularity", or why the capability group
+    /// is as at a singular pose ("capability"; empty where it is not); for tests.
     QString valueText(const QString &name) const;
 
 protected:
@@ -45,6 +46,7 @@ private:
     const ReportLayout *m_capabilityLayout = nullptr;
     std::vector<QTreeWidgetItem *> m_capabilityItems; ///< one per capability entry
     std::vector<double> m_capabilityValues;
+    QTreeWidgetItem *m_capabilityGroup = nullptr; ///< its title says when it is near-singular
     QTreeWidgetItem *m_singularity = nullptr;
     std::vector<double> m_values;
     std::optional<Pose> m_pose; ///< the pose shown, to show it again in another language

@@ -144,6 +144,8 @@ std::string evalText(const PreparedDesign &prepared, bool allModes, bool equatio
     addGroup(ReportGroup::Jacobian, "Jacobian");
     addGroup(ReportGroup::Derived, "Derived");
     addGroup(std::nullopt, "Capability");
+    if (const char *reason = capability::nearSingularReason(capability.type, capability.kindType))
+        table.text(std::string("capability as at a singular pose, ") + reason);
     table.heading("Singularity");
     table.cells({"type", std::string(singularityName(singularity.type)), "", "singularity class"});
     table.cells({"margin", fixedText(singularity.margin, 4), "", "distance from the nearest singularity, 0 at it"});

@@ -155,7 +155,8 @@ CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose
     if (!report.layout)
         return report;
     report.values.assign(static_cast<std::size_t>(report.layout->size), std::nan(""));
-    capability::evaluate(mechanism, actuators, pose, type, report.values);
+    report.kindType = type;
+    report.type = capability::evaluate(mechanism, actuators, pose, type, report.values);
     report.hasPolygons = actuators.count >= 2 && actuators.outputs >= 2 && !actuators.rotaryOutput;
     if (report.hasPolygons)
         report.polygons = capability::polygonsAt(mechanism, actuators, pose, type);
@@ -208,6 +209,12 @@ void writeCapabilityJson(JsonWriter &json, const CapabilityReport &capability)
     };
     namesWhere("undefined", [](const ReportEntry &e, std::span<const double> v) { return !allFinite(e, v); }, false);
     namesWhere("infinite", [](const ReportEntry &e, std::span<const double> v) { return anyInfinite(e, v); }, true);
+    json.key("singular").string(singularityName(capability.type));
+    json.key("reason");
+    if (const char *reason = capability::nearSingularReason(capability.type, capability.kindType))
+        json.string(reason);
+    else
+        json.null();
     json.endObject();
 }
 

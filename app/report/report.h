@@ -48,6 +48,9 @@ struct CapabilityReport {
     /// whether the mechanism has them: a platform point moved by two or more actuators.
     capability::Shapes polygons;
     bool hasPolygons = false;
+    /// The class the values are settled for (capability::deliveryClass()) and the kind's own.
+    SingularityType type = SingularityType::None;
+    SingularityType kindType = SingularityType::None;
 };
 /// Evaluates the capability group of `pose`, whose class (Mechanism::evaluate()) is `type`.
 CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type);
@@ -55,7 +58,9 @@ CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose
 /// has them, "velocity_polygon" and "force_polygon" (vertices [x, y] in mm/s and N, counter-
 /// clockwise; null where unbounded or undefined), then "undefined" and "infinite", the names
 /// of the values that are not finite and of those unbounded at this pose (why:
-/// singularity.reason); null when the mechanism declares no actuators.
+/// singularity.reason), then "singular", the class the values are settled for, and "reason",
+/// why it differs from the pose's class (near a singular pose), else null; null when the
+/// mechanism declares no actuators.
 void writeCapabilityJson(JsonWriter &json, const CapabilityReport &capability);
 
 /// "mobility": the chain of the mechanism at `pose` counted by Chebyshev's and

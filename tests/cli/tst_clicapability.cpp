@@ -153,6 +153,33 @@ private slots:
             QCOMPARE(std::hypot(vertex.toArray()[0].toDouble(), vertex.toArray()[1].toDouble()), 0.0);
     }
 
+    void nearSingularPoseSaysSo()
+    {
+        // 10⁻¹¹ mm below the stretched legs the kind calls the pose regular, but the rigid model's
+        // 6.6·10⁷ N from 2 N·m motors would be meaningless: the group reports it as at an inverse
+        // singularity (null and listed, speed 0) and says why
+        const QJsonObject near = pkmJson(args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=193.64916731037",
+                                               "--json"}));
+        QCOMPARE(near.value(QLatin1String("singularity")).toObject().value(QLatin1String("type")).toString(),
+                 QStringLiteral("none"));
+        const QJsonObject capability = near.value(QLatin1String("capability")).toObject();
+        QCOMPARE(capability.value(QLatin1String("singular")).toString(), QStringLiteral("inverse"));
+        QVERIFY(capability.value(QLatin1String("reason")).toString().contains(QLatin1String("1/1000")));
+        for (const char *name : {"force_worst", "force_best", "stiffness_worst"}) {
+            QVERIFY2(capability.value(QLatin1String(name)).isNull(), name);
+            QVERIFY2(capability.value(QLatin1String("infinite")).toArray().contains(QLatin1String(name)), name);
+        }
+        QCOMPARE(capability.value(QLatin1String("speed_worst")).toDouble(), 0.0);
+        const Run text = runPkm(args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=193.64916731037"}));
+        QVERIFY(QString::fromUtf8(text.out).contains(QLatin1String("capability as at a singular pose, near an inverse")));
+        // a regular pose: its own class and no reason
+        const QJsonObject regular = pkmJson(args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=150", "--json"}))
+                                        .value(QLatin1String("capability")).toObject();
+        QCOMPARE(regular.value(QLatin1String("singular")).toString(), QStringLiteral("none"));
+        QVERIFY(regular.value(QLatin1String("reason")).isNull());
+        QVERIFY(regular.value(QLatin1String("force_worst")).toDouble() > 20.0);
+    }
+
     void sweepHasTheColumns()
     {
         const Run csv = runPkm(args({"sweep", "moma-3a", "--var", "p1", "--from", "50", "--to", "150", "--steps", "3"}));

@@ -170,6 +170,71 @@ private slots:
         }
     }
 
+    /// Poses a hair from a singularity that the kind classifies as regular: an actuator that
+    /// moves the platform less than 1/1000 of what it does at home counts as not moving it
+    /// (speeds 0, as at an inverse singularity), one that moves it more than 1000 times as much
+    /// marks a direct singularity (forces 0, errors ∞) — in the map cell and in evaluate()
+    /// alike — while a factor 100 either way still gives the computed, finite values.
+    void nearSingularPoses_data()
+    {
+        QTest::addColumn<int>("n");
+        QTest::addColumn<double>("factor");
+        QTest::addColumn<bool>("parallel");
+        QTest::addColumn<pkm::SingularityType>("expected");
+        for (const int n : {2, 3}) {
+            QTest::addRow("%d, leg 1 nearly stretched", n) << n << 1e-4 << false << SingularityType::Inverse;
+            QTest::addRow("%d, leg 1 within the band", n) << n << 1e-2 << false << SingularityType::None;
+            QTest::addRow("%d, legs nearly parallel", n) << n << 1e-5 << true << SingularityType::Direct;
+            QTest::addRow("%d, legs within the band", n) << n << 1e-1 << true << SingularityType::None;
+        }
+    }
+    void nearSingularPoses()
+    {
+        QFETCH(int, n);
+        QFETCH(double, factor);
+        QFETCH(bool, parallel);
+        QFETCH(SingularityType, expected);
+        capability::Matrix jq = capability::Matrix::Zero(n, n), jx(n, n);
+        for (int i = 0; i < n; ++i) {
+            jq(i, i) = 30.0 + 10.0 * i;
+            for (int j = 0; j < n; ++j)
+                jx(i, j) = i == j ? 40.0 : 7.0 * (i + 1) - 3.0 * j;
+        }
+        // the home pose: each actuator's transmission is its column of G = J_x⁻¹·J_q there
+        const capability::Matrix home = jx.partialPivLu().solve(jq);
+        Actuators a = actuators(n, 1.0);
+        for (int i = 0; i < n; ++i)
+            a.transmission[std::size_t(i)] = home.col(i).norm();
+        if (parallel) // the last row moves towards the first, the determinant with it
+            jx.row(n - 1) = jx.row(0) + factor * (jx.row(n - 1) - jx.row(0));
+        else
+            jq(0, 0) *= factor;
+
+        const ReportLayout *layout = capability::layoutFor(a);
+        std::vector<double> values(std::size_t(layout->size));
+        QCOMPARE(capability::evaluate(a, jq, jx, SingularityType::None, values), expected);
+        for (const MapQuantity q : quantities) {
+            const float cell = closed(a, q, jq, jx, SingularityType::None);
+            QVERIFY2(same(cell, general(a, q, jq, jx, SingularityType::None)),
+                     qPrintable(QStringLiteral("quantity %1: %2").arg(int(q)).arg(cell)));
+            // what the class reports, as at a pose the kind itself calls singular
+            if (expected != SingularityType::None)
+                QVERIFY(same(cell, general(a, q, jq, jx, expected)));
+        }
+        const float force = closed(a, MapQuantity::ForceWorst, jq, jx, SingularityType::None);
+        const float speed = closed(a, MapQuantity::SpeedWorst, jq, jx, SingularityType::None);
+        const float resolution = closed(a, MapQuantity::ResolutionWorst, jq, jx, SingularityType::None);
+        QCOMPARE(speed == 0.0f, expected == SingularityType::Inverse);
+        QCOMPARE(force == 0.0f, expected == SingularityType::Direct);
+        QCOMPARE(std::isinf(resolution), expected == SingularityType::Direct);
+        if (expected == SingularityType::None)
+            QVERIFY(std::isfinite(force) && force > 0.0f && speed > 0.0f && std::isfinite(resolution));
+        // the sentence a report prints beside such values, none where the kind agrees
+        QCOMPARE(capability::nearSingularReason(expected, SingularityType::None) != nullptr,
+                 expected != SingularityType::None);
+        QVERIFY(capability::nearSingularReason(expected, expected) == nullptr);
+    }
+
     /// Every quantity is the same whichever way a kind orients its rows.
     void signsOfTheRowsDoNotMatter()
     {

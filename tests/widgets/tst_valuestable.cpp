@@ -1,0 +1,75 @@
+// The values panel (widgets/valuestable.h) a hair from a singular pose that the kind still calls
+// regular: the capability group reports what the actuators deliver as at the singular pose
+// (∞ and 0, never the rigid model's 10⁷ N), its title says so and its tooltip says why; back at a
+// regular pose the title and the finite values return.
+
+#include "kinds/fivebar/fivebar.h"
+#include "support/kinematics.h"
+#include "valuestable.h"
+
+#include <QTest>
+#include <QTreeWidget>
+
+#include <cmath>
+
+using namespace pkm;
+
+class TestValuesTable : public QObject
+{
+    Q_OBJECT
+
+    /// The group row titled "Capability…", or nullptr.
+    static const QTreeWidgetItem *capabilityGroup(const ValuesTable &table)
+    {
+        const QTreeWidget *tree = &table;
+        for (int i = 0; i < tree->topLevelItemCount(); ++i) {
+            if (tree->topLevelItem(i)->text(0).startsWith(QLatin1String("Capability")))
+                return tree->topLevelItem(i);
+        }
+        return nullptr;
+    }
+
+private slots:
+    void nearSingularCapability()
+    {
+        const MechanismPtr m = test::make(FiveBarDesign{});
+        ValuesTable table;
+        table.setMechanism(m);
+        // both legs 200 mm long: stretched at C = (50, √(200² − 50²)); 10⁻¹¹ mm below it
+        const auto near = m->solveInverse(test::pair(50.0, 193.64916731037));
+        QVERIFY(near.ok());
+        Singularity kindClass;
+        test::evaluated(*m, *near, &kindClass);
+        QCOMPARE(kindClass.type, SingularityType::None);
+        table.setPose(*near);
+        const QTreeWidgetItem *group = capabilityGroup(table);
+        QVERIFY(group);
+        QCOMPARE(group->text(0), QStringLiteral("Capability: as at a singular pose"));
+        QVERIFY(table.valueText(QStringLiteral("capability")).contains(QLatin1String("inverse singularity")));
+        QVERIFY(table.valueText(QStringLiteral("force_worst")).contains(QStringLiteral("∞")));
+        QVERIFY(table.valueText(QStringLiteral("stiffness_worst")).contains(QStringLiteral("∞")));
+        QVERIFY(!table.valueText(QStringLiteral("force_best")).contains(QLatin1Char('e')));
+
+        // 0.02 mm above the direct singularity at C = (50, √(80² − 70²)), where B, C and D are in
+        // line: the kind's margin is 3·10⁻⁴, the platform holds no force and its error is ∞
+        const auto nearDirect = m->solveInverse(test::pair(50.0, 38.75));
+        QVERIFY(nearDirect.ok());
+        test::evaluated(*m, *nearDirect, &kindClass);
+        QCOMPARE(kindClass.type, SingularityType::None);
+        table.setPose(*nearDirect);
+        QCOMPARE(capabilityGroup(table)->text(0), QStringLiteral("Capability: as at a singular pose"));
+        QVERIFY(table.valueText(QStringLiteral("capability")).contains(QLatin1String("direct singularity")));
+        QVERIFY(table.valueText(QStringLiteral("resolution_worst")).contains(QStringLiteral("∞")));
+        QVERIFY(table.valueText(QStringLiteral("force_worst")).startsWith(QLatin1Char('0')));
+
+        const auto regular = m->solveInverse(test::pair(50.0, 150.0));
+        QVERIFY(regular.ok());
+        table.setPose(*regular);
+        QCOMPARE(capabilityGroup(table)->text(0), QStringLiteral("Capability"));
+        QVERIFY(table.valueText(QStringLiteral("capability")).isEmpty());
+        QVERIFY(!table.valueText(QStringLiteral("force_worst")).contains(QStringLiteral("∞")));
+    }
+};
+
+QTEST_MAIN(TestValuesTable)
+#include "tst_valuestable.moc"
