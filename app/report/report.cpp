@@ -157,10 +157,15 @@ CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose
     report.values.assign(static_cast<std::size_t>(report.layout->size), std::nan(""));
     report.kindType = type;
     report.type = capability::evaluate(mechanism, actuators, pose, type, report.values);
-    report.hasPolygons = actuators.count >= 2 && actuators.outputs >= 2 && !actuators.rotaryOutput;
+    report.hasPolygons = hasCapabilityPolygons(actuators);
     if (report.hasPolygons)
         report.polygons = capability::polygonsAt(mechanism, actuators, pose, type);
     return report;
+}
+
+bool hasCapabilityPolygons(const capability::Actuators &actuators)
+{
+    return actuators.count >= 2 && actuators.outputs >= 2 && !actuators.rotaryOutput;
 }
 
 void writeCapabilityJson(JsonWriter &json, const CapabilityReport &capability)

@@ -44,8 +44,8 @@ void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<con
 struct CapabilityReport {
     const ReportLayout *layout = nullptr;
     std::vector<double> values;
-    /// The exact velocity and force polygons (eval only; a sweep's rows leave them out), and
-    /// whether the mechanism has them: a platform point moved by two or more actuators.
+    /// The exact velocity and force polygons, and whether the mechanism has them
+    /// (hasCapabilityPolygons()).
     capability::Shapes polygons;
     bool hasPolygons = false;
     /// The class the values are settled for (capability::deliveryClass()) and the kind's own.
@@ -54,6 +54,9 @@ struct CapabilityReport {
 };
 /// Evaluates the capability group of `pose`, whose class (Mechanism::evaluate()) is `type`.
 CapabilityReport evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type);
+/// Whether these actuators have velocity and force polygons: a platform point moved by two or
+/// more of them.
+bool hasCapabilityPolygons(const capability::Actuators &actuators);
 /// "capability": its values in display units (null where not finite), then, where the report
 /// has them, "velocity_polygon" and "force_polygon" (vertices [x, y] in mm/s and N, counter-
 /// clockwise; null where unbounded or undefined), then "undefined" and "infinite", the names

@@ -60,21 +60,28 @@ SweepRowFormatter::SweepRowFormatter(const Mechanism &mechanism, bool withParame
     m_lastText.resize(m_columns.size());
 }
 
-void SweepRowFormatter::evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type,
-    std::span<double> values) const
+std::optional<capability::Actuators> SweepRowFormatter::actuatorsOf(const Mechanism &mechanism) const
 {
     if (!m_capabilityLayout)
-        return;
+        return std::nullopt;
+    if (!m_withParameters)
+        return m_actuators;
+    capability::Actuators actuators = capability::actuatorsOf(mechanism);
+    if (capability::layoutFor(actuators) != m_capabilityLayout)
+        return std::nullopt; // a parameter step that changes the actuators: the columns stay empty
+    return actuators;
+}
+
+SingularityType SweepRowFormatter::evaluateCapability(const Mechanism &mechanism, const Pose &pose,
+    SingularityType type, std::span<double> values) const
+{
+    if (!m_capabilityLayout)
+        return type;
     const std::span<double> mine = values.subspan(static_cast<std::size_t>(m_layout.size));
-    if (!m_withParameters) {
-        capability::evaluate(mechanism, m_actuators, pose, type, mine);
-        return;
-    }
-    const capability::Actuators actuators = capability::actuatorsOf(mechanism);
-    if (capability::layoutFor(actuators) == m_capabilityLayout)
-        capability::evaluate(mechanism, actuators, pose, type, mine);
-    else
-        std::fill(mine.begin(), mine.end(), std::nan(""));
+    if (const std::optional<capability::Actuators> actuators = actuatorsOf(mechanism))
+        return capability::evaluate(mechanism, *actuators, pose, type, mine);
+    std::fill(mine.begin(), mine.end(), std::nan(""));
+    return type;
 }
 
 void SweepRowFormatter::csvHeader(std::string &out) const
@@ -187,7 +194,7 @@ void SweepRowFormatter::jsonRow(
     std::string &out, std::int64_t index, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
 {
     const Singularity singularity = mechanism.evaluate(pose, values);
-    evaluateCapability(mechanism, pose, singularity.type, values);
+    const SingularityType delivered = evaluateCapability(mechanism, pose, singularity.type, values);
     if (index > 0)
         out += ",\n";
     JsonWriter json(out, JsonWriter::Style::Compact);
@@ -196,11 +203,19 @@ void SweepRowFormatter::jsonRow(
         writeParametersJson(json, mechanism, true);
     writeReportJson(json, m_layout, values, singularity);
     if (m_capabilityLayout) {
-        CapabilityReport capability; // a sweep's rows carry no polygons
-        capability.layout = m_capabilityLayout;
+        // the group as eval writes it, polygons included (a row without actuators has none)
+        CapabilityReport group;
+        group.layout = m_capabilityLayout;
+        group.type = delivered;
+        group.kindType = singularity.type;
         const auto mine = values.subspan(static_cast<std::size_t>(m_layout.size));
-        capability.values.assign(mine.begin(), mine.end());
-        writeCapabilityJson(json, capability);
+        group.values.assign(mine.begin(), mine.end());
+        if (const std::optional<capability::Actuators> actuators = actuatorsOf(mechanism)) {
+            group.hasPolygons = hasCapabilityPolygons(*actuators);
+            if (group.hasPolygons)
+                group.polygons = capability::polygonsAt(mechanism, *actuators, pose, singularity.type);
+        }
+        writeCapabilityJson(json, group);
     }
     json.endObject();
 }

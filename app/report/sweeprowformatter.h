@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -58,8 +59,11 @@ public:
 
 private:
     int capabilitySize() const { return m_capabilityLayout ? m_capabilityLayout->size : 0; }
-    /// The capability values of `pose` after the mechanism's in `values`.
-    void evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type,
+    /// The actuators of `mechanism` when its capability group has the formatter's layout.
+    std::optional<capability::Actuators> actuatorsOf(const Mechanism &mechanism) const;
+    /// The capability values of `pose` after the mechanism's in `values`; returns the class
+    /// they are settled for (capability::deliveryClass()).
+    SingularityType evaluateCapability(const Mechanism &mechanism, const Pose &pose, SingularityType type,
         std::span<double> values) const;
 
     struct Column {

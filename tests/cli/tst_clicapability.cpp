@@ -200,6 +200,19 @@ private slots:
         QCOMPARE(rows.size(), 3);
         for (const QJsonValue &row : rows)
             QVERIFY(row.toObject().value(QLatin1String("capability")).toObject().value(QLatin1String("force_worst")).isDouble());
+        // a sweep's rows carry the polygons and the class as eval's group does, up to the
+        // stretched legs of the five-bar, where the force polygon is the whole plane
+        const QJsonArray fivebar = pkmJson(args({"sweep", "fivebar-example", "--var", "y", "--from", "150", "--to",
+                                                 "193.64916731037", "--steps", "3", "--json"}))
+                                       .value(QLatin1String("rows")).toArray();
+        QCOMPARE(fivebar.size(), 3);
+        const QJsonObject first = fivebar[0].toObject().value(QLatin1String("capability")).toObject();
+        QCOMPARE(first, pkmJson(args({"eval", "fivebar-example", "--json"})).value(QLatin1String("capability")).toObject());
+        QVERIFY(first.value(QLatin1String("force_polygon")).toArray().size() >= 3);
+        const QJsonObject last = fivebar[2].toObject().value(QLatin1String("capability")).toObject();
+        QCOMPARE(last.value(QLatin1String("singular")).toString(), QStringLiteral("inverse"));
+        QVERIFY(last.value(QLatin1String("force_polygon")).isNull());
+        QVERIFY(last.value(QLatin1String("infinite")).toArray().contains(QStringLiteral("force_polygon")));
     }
 };
 
