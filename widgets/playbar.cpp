@@ -10,6 +10,7 @@
 #include <QSignalBlocker>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pkm {
@@ -77,10 +78,17 @@ void PlayBar::setMechanism(const MechanismPtr &mechanism)
     m_variable->setCurrentIndex(chosen);
     const PlaySettings kept = settings();
     describeVariable();
-    if (!sameKind)
+    // A design edit keeps the range the teacher chose, cut to what the new design can move
+    // through. Where almost nothing of it is left (another preset of the kind, a 1 m study
+    // after the 170 mm prototype) the bar starts afresh: the whole range and its speed, not a
+    // range of one point.
+    const Interval now = sameKind ? mechanism->variableRange(chosen) : Interval{};
+    const double lo = std::max(std::min(kept.from, kept.to), now.min);
+    const double hi = std::min(std::max(kept.from, kept.to), now.max);
+    if (!sameKind || !(hi - lo > 0.01 * (now.max - now.min)))
         resetRange();
     else
-        setRange(kept.from, kept.to); // clamped to the new design's range by the spin boxes
+        setRange(kept.from < kept.to ? lo : hi, kept.from < kept.to ? hi : lo);
 }
 
 PlaySettings PlayBar::settings() const

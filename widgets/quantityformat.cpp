@@ -63,6 +63,11 @@ QString formatQuantity(double coreValue, const Unit &unit, int decimals, const Q
     // a hair's breadth from its dead centre is 10¹² N·m/rad stiff) in powers of ten, four
     // digits: "1.680·10¹²", never a row of thirteen digits.
     QString text = std::abs(display) >= 1e8 ? powerOfTen(display, plain) : plain.toString(display, 'f', decimals);
+    // Read, not typed: the typographic minus ("−180.0°", as the drawings and the equations
+    // print it), where the locale offers only the hyphen. Fields and spin boxes keep the hyphen
+    // a keyboard gives.
+    if (text.startsWith(QLatin1Char('-')))
+        text.replace(0, 1, QChar(0x2212));
     const QString symbol = unitText(unit);
     if (symbol.isEmpty())
         return text;

@@ -1,6 +1,7 @@
 #pragma once
 /// How the GUI shows a number with its unit: locale-formatted, degrees glued to the number
-/// ("60.0°"), other units after a space ("231.40 mm"), and never "nan" or "inf".
+/// ("60.0°"), other units after a space ("231.40 mm"), negatives with the minus sign
+/// ("−180.0°", not a hyphen), and never "nan" or "inf".
 
 #include "units.h"
 

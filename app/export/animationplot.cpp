@@ -94,7 +94,7 @@ QString readout(const AnimationPlot &plot, double value)
     else if (!std::isfinite(value))
         shown = QCoreApplication::translate("pkm::AnimationPlot", "— (undefined at this singular pose)");
     else
-        shown = formatQuantity(value, entry.unit, entry.decimals).replace(QLatin1Char('-'), QChar(0x2212));
+        shown = formatQuantity(value, entry.unit, entry.decimals);
     return QStringLiteral("%1 = %2").arg(toQString(text::label(entry.symbol)), shown);
 }
 

@@ -204,6 +204,33 @@ private slots:
         QCOMPARE(w.playBar()->variableBox()->count(), int(w.document()->mechanism()->variableInfo().size()));
     }
 
+    /// Another design of the same kind: the chosen range where it still fits, cut to the new
+    /// design where it overlaps, the whole range (and its speed) where nothing of it is left;
+    /// never a range of one point (the 1 m study after the 170 mm prototype once offered
+    /// "from 622.30 mm to 622.30 mm").
+    void aNewDesignKeepsOnlyARangeThatStillFits()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        PlayBar *bar = w.playBar();
+        bar->setVariable(0); // d, mm
+        bar->setRange(130.0, 200.0);
+        QVERIFY(w.document()->setParameter(QStringLiteral("a"), 175.0).ok());
+        QCOMPARE(bar->settings().from, 130.0); // an edit keeps the teacher's range
+        QCOMPARE(bar->settings().to, 200.0);
+        QVERIFY(w.document()->setParameter(QStringLiteral("a"), 150.0).ok());
+        const Interval edited = w.document()->mechanism()->variableRange(0);
+        QCOMPARE(bar->settings().from, 130.0);
+        QVERIFY(qAbs(bar->settings().to - std::min(200.0, edited.max)) < 0.01);
+
+        QVERIFY(w.openDesign(QStringLiteral("pjoint-study-k04")));
+        const Interval range = w.document()->mechanism()->variableRange(0);
+        const PlaySettings fresh = bar->settings();
+        QVERIFY2(qAbs(fresh.from - range.min) < 0.01 && qAbs(fresh.to - range.max) < 0.01,
+                 qPrintable(QStringLiteral("%1 … %2 mm").arg(fresh.from).arg(fresh.to)));
+        QVERIFY(qAbs(fresh.speed - (range.max - range.min) / 5.0) < 0.01);
+    }
+
     void bookmarksStepWithPageKeys()
     {
         open(QStringLiteral("pjoint-prototype"));

@@ -7,6 +7,7 @@
 #include <QTest>
 
 #include <limits>
+#include <numbers>
 
 using namespace pkm;
 
@@ -21,6 +22,9 @@ private slots:
         QCOMPARE(formatQuantity(1044.0307, units::millimetre, 2, c), QStringLiteral("1044.03 mm"));
         QCOMPARE(formatQuantity(-1e-14, units::millimetre, 2, c), QStringLiteral("0.00 mm")); // never "-0.00"
         QCOMPARE(formatQuantity(99999999.0, units::none, 1, c), QStringLiteral("99999999.0"));
+        // a slider's limit is read, not typed: the minus sign, never a hyphen, in every language
+        QCOMPARE(formatQuantity(-std::numbers::pi, units::angle, 1, c), QStringLiteral("−180.0°"));
+        QCOMPARE(formatQuantity(-4.96184, units::none, 4, QLocale(QLocale::Russian)), QStringLiteral("−4,9618"));
     }
 
     /// Close to a singular pose a quantity grows without bound: from 10⁸ up it reads in powers
@@ -30,7 +34,7 @@ private slots:
     {
         const QLocale c = QLocale::c();
         QCOMPARE(formatQuantity(1680358456697.0, units::none, 1, c), QStringLiteral("1.680·10¹²"));
-        QCOMPARE(formatQuantity(-286313799.9, units::none, 1, c), QStringLiteral("-2.863·10⁸"));
+        QCOMPARE(formatQuantity(-286313799.9, units::none, 1, c), QStringLiteral("−2.863·10⁸"));
         QCOMPARE(formatQuantity(9.99999e9, units::none, 1, c), QStringLiteral("1.000·10¹⁰")); // rounds up a power
         QCOMPARE(formatQuantity(1e8, units::millimetre, 2, c), QStringLiteral("1.000·10⁸ mm"));
         QCOMPARE(formatQuantity(std::numeric_limits<double>::infinity(), units::none, 1, c), QStringLiteral("∞"));
