@@ -4271,7 +4271,7 @@ Please verify the correct file name was given.</source>
     <name>pkm::AnimationPlot</name>
     <message>
         <source>%1 against %2</source>
-        <translation>%1 в зависимости от %2</translation>
+        <translation>%1 (по оси абсцисс: %2)</translation>
     </message>
     <message>
         <source>— (undefined at this singular pose)</source>
@@ -6256,7 +6256,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>%1 against %2</source>
-        <translation>%1 в зависимости от %2</translation>
+        <translation>%1 (по оси абсцисс: %2)</translation>
     </message>
 </context>
 <context>

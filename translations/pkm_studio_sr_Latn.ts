@@ -4271,7 +4271,7 @@ Proverite da li je ime datoteke tačno.</translation>
     <name>pkm::AnimationPlot</name>
     <message>
         <source>%1 against %2</source>
-        <translation>%1 u zavisnosti od %2</translation>
+        <translation>%1 (na apscisi: %2)</translation>
     </message>
     <message>
         <source>— (undefined at this singular pose)</source>
@@ -6256,7 +6256,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>%1 against %2</source>
-        <translation>%1 u zavisnosti od %2</translation>
+        <translation>%1 (na apscisi: %2)</translation>
     </message>
 </context>
 <context>

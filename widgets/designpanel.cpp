@@ -12,6 +12,7 @@
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -247,6 +248,10 @@ void DesignPanel::describe(const Row &row)
     if (row.edit->styleSheet().isEmpty()) // an invalid field's tooltip says why
         row.edit->setToolTip(help);
     row.unit->setText(unit);
+    // The units line up at the width of "mm/step", and a longer one in the language chosen
+    // ("mm/корак") is shown whole.
+    row.unit->setMinimumWidth(std::max(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")),
+                                       row.unit->fontMetrics().horizontalAdvance(unit)));
     // A symbol is the same in every language, unless it is a word ("form"), which core marks.
     row.label->setText(
         QStringLiteral("<b>%1</b>&nbsp; %2").arg(coreLabel(info.symbol).toHtmlEscaped(), label.toHtmlEscaped()));

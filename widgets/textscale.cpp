@@ -2,6 +2,7 @@
 
 #include <qcustomplot.h>
 
+#include <QApplication>
 #include <QSet>
 #include <QWidget>
 
@@ -56,6 +57,14 @@ void rescalePlot(QCustomPlot *plot, double ratio)
     plot->replot(QCustomPlot::rpQueuedReplot);
 }
 } // namespace
+
+void applyBaseFont()
+{
+    QFont font = QApplication::font();
+    if (font.pointSizeF() < 10.5)
+        font.setPointSizeF(10.5);
+    QApplication::setFont(font);
+}
 
 double factor()
 {

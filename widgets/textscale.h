@@ -10,6 +10,11 @@ namespace pkm::textscale {
 inline constexpr double minimum = 1.0;
 inline constexpr double maximum = 2.5;
 
+/// The application's font at 100 %: the desktop's, but at least 10.5 pt, a size larger than
+/// the usual default that reads from the back row. PKM Studio and the tests that check what
+/// fits a projector both start from it.
+void applyBaseFont();
+
 /// The factor now, 1 unless the user chose another text size.
 double factor();
 /// Sets the factor (clamped to [minimum, maximum]) for fonts made from now on; returns it.

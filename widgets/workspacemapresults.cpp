@@ -305,6 +305,9 @@ void WorkspaceMapView::updateLegend()
     const int columns = count > 1 && 2 * widest + legend->columnSpacing() <= available ? 2 : 1;
     legend->setWrap(columns);
     legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true); // also re-flows after items came or went
+    // The columns follow the plot's width (on every resize): the two of a wide screen must not
+    // keep the plot from narrowing on a 1024-pixel one.
+    legend->setMinimumSize(QSize(40, 0));
 }
 
 void WorkspaceMapView::retranslate()

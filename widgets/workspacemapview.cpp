@@ -112,8 +112,12 @@ WorkspaceMapView::WorkspaceMapView(QWidget *parent)
     m_quantityBox->addItem(QString(), int(MapQuantity::Condition));
     m_quantityLabel->setBuddy(m_quantityBox);
     controls->addWidget(m_quantityLabel);
-    controls->addWidget(m_quantityBox);
-    controls->addStretch(1);
+    // The longest quantity's name must not make the map panel too wide for a 1024-pixel
+    // screen: the box takes the row's width, and wider screens show every name whole.
+    m_quantityBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_quantityBox->setMinimumContentsLength(14);
+    m_quantityBox->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    controls->addWidget(m_quantityBox, 1);
     layout->addLayout(controls);
     layout->addWidget(m_stack, 1);
     connect(m_quantityBox, &QComboBox::activated, this,

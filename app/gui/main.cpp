@@ -4,6 +4,7 @@
 #include "document/language.h"
 #include "gui/mainwindow.h"
 #include "linkageview.h"
+#include "textscale.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -48,11 +49,7 @@ int main(int argc, char *argv[])
     QApplication::setApplicationDisplayName(QStringLiteral("PKM Studio"));
     QApplication::setApplicationVersion(QStringLiteral(PKM_VERSION));
     QApplication::setDesktopFileName(QStringLiteral("org.pkmstudio.PKMStudio"));
-    // A classroom projects this: a size larger than the desktop default reads from the back row.
-    QFont font = QApplication::font();
-    if (font.pointSizeF() < 10.5)
-        font.setPointSizeF(10.5);
-    QApplication::setFont(font);
+    pkm::textscale::applyBaseFont(); // a classroom projects this
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Design, analyse and teach parallel-kinematic mechanisms."));

@@ -23,6 +23,7 @@
 #include <QLabel>
 #include <QLayout>
 #include <QMenu>
+#include <QSizeGrip>
 #include <QStatusBar>
 #include <QWhatsThis>
 
@@ -173,7 +174,10 @@ void MainWindow::fitStatusMessage()
     m_poseLabel->setVisible(readOuts);
     m_singularityLabel->setVisible(readOuts);
 
-    const int room = std::max(1, bar->width() - statusMessageMargins - statusTextIndent);
+    // The size grip (a window that is neither maximized nor full screen) takes its part too.
+    const QSizeGrip *grip = bar->findChild<QSizeGrip *>();
+    const int gripWidth = grip && grip->isVisible() ? grip->width() + bar->layout()->spacing() : 0;
+    const int room = std::max(1, bar->width() - statusMessageMargins - statusTextIndent - gripWidth);
     const int maxHeight = statusMessageLines * metrics.lineSpacing();
     QString shown = message;
     const auto height = [&](const QString &text) {

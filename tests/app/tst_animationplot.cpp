@@ -118,6 +118,23 @@ private slots:
         QCOMPARE(plot->xLabel, QStringLiteral("θ (°)"));
     }
 
+    /// The title joins two labels in the nominative: Russian and Serbian say which is on the
+    /// abscissa rather than put a nominative after "от"/"од" ("… в зависимости от угол …").
+    void titleIsGrammaticalInEveryLanguage()
+    {
+        const Design design = designfile::load(QStringLiteral("pjoint-prototype")).value();
+        const Mechanism &m = *design.mechanism;
+        for (const QString &code : {QStringLiteral("ru"), QStringLiteral("sr"), QStringLiteral("sr_Latn")}) {
+            QVERIFY(language::apply(code));
+            const auto plot = animationPlot(m, design.pose, thetaSweep(m), "d");
+            QVERIFY(plot.ok());
+            for (const char *preposition : {" от ", " од ", " od "})
+                QVERIFY2(!plot->title.contains(QString::fromUtf8(preposition)), qPrintable(plot->title));
+            QVERIFY2(plot->title.contains(QLatin1Char('(')), qPrintable(plot->title));
+        }
+        language::apply(QStringLiteral("en"));
+    }
+
     void unknownQuantityIsNamed()
     {
         const Design design = designfile::load(QStringLiteral("pjoint-prototype")).value();

@@ -258,7 +258,8 @@ private slots:
         QCOMPARE(tabs->currentIndex(), 2);
         QCOMPARE(shownOn(2), QList<QCustomPlot *> {plots[5]});
         // alone, it has the page's whole width (the three shared it before)
-        QTRY_VERIFY(plots[5]->width() >= tabs->currentWidget()->width() - 20);
+        QTRY_VERIFY2(plots[5]->width() >= tabs->currentWidget()->width() - 20,
+                     qPrintable(QStringLiteral("%1 of %2 px").arg(plots[5]->width()).arg(tabs->currentWidget()->width())));
         emit menu->aboutToShow();
         QVERIFY(menu->actions().at(5)->isChecked());
 

@@ -47,7 +47,9 @@ private slots:
     {
         QDockWidget *tolerances = dock("toleranceDock");
         QVERIFY(tolerances);
-        QVERIFY(m_window->tabifiedDockWidgets(dock("valuesDock")).contains(tolerances));
+        // behind the Design, with the mobility: the values share their place with the equations
+        QVERIFY(m_window->tabifiedDockWidgets(dock("designDock")).contains(tolerances));
+        QVERIFY(m_window->tabifiedDockWidgets(dock("valuesDock")).contains(dock("equationsDock")));
         QVERIFY(panel());
     }
 

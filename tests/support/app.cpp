@@ -2,6 +2,7 @@
 
 #include "gui/mainwindow.h"
 #include "registry.h"
+#include "textscale.h"
 
 #include <QApplication>
 #include <QMenu>
@@ -95,6 +96,7 @@ MainWindow *freshMainWindow(const QSize &size)
 {
     QStandardPaths::setTestModeEnabled(true);
     QSettings().clear();
+    textscale::applyBaseFont(); // the font PKM Studio starts with: what fits is measured in it
     auto *window = new MainWindow;
     window->resize(size);
     window->show();

@@ -41,11 +41,13 @@ PlanarParallelPanel::PlanarParallelPanel(Document *document, QWidget *parent)
     m_remove->setObjectName(QStringLiteral("removeLegButton"));
     grid->addWidget(m_platformLabel, 0, 0);
     grid->addWidget(m_platform, 0, 1);
+    // Below the legs, not beside the platform: a column of its own would widen the panel
+    // past what a 1024-pixel screen leaves it.
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_add);
     buttons->addWidget(m_remove);
     buttons->addStretch(1);
-    grid->addLayout(buttons, 0, 2);
+    grid->addLayout(buttons, 4, 0, 1, 4);
     for (int i = 0; i < 3; ++i) {
         const std::size_t k = std::size_t(i);
         m_legLabels[k] = new QLabel(m_box);
