@@ -169,7 +169,7 @@ bool MainWindow::maybeSave()
 void MainWindow::offerRecovery()
 {
     for (const DesignSession::Recovery &recovery : DesignSession::pendingRecoveries()) {
-        const QString name = recovery.originalPath.isEmpty() ? recovery.title : recovery.originalPath;
+        const QString name = recovery.originalPath.isEmpty() ? designfile::presetText(recovery.title) : recovery.originalPath;
         const auto answer =
             m_question(tr("Recover Design"),
                        tr("PKM Studio closed unexpectedly while “%1” had unsaved changes (autosaved %2). "

@@ -3,6 +3,7 @@
 #include "designpanel.h"
 #include "document/designsession.h"
 #include "document/document.h"
+#include "document/language.h"
 #include "gui/mainwindow.h"
 
 #include <QAction>
@@ -220,12 +221,16 @@ private slots:
         const QString orphan = QDir(DesignSession::autosaveDirectory()).filePath(QStringLiteral("orphan.pkm.json"));
         QVERIFY(designfile::save(*designfile::load(QStringLiteral("moma-3a")), orphan).ok());
         QCOMPARE(DesignSession::pendingRecoveries().size(), 1);
+        // the prompt names an unsaved preset in the language chosen, as the Design dock does
+        QVERIFY(language::apply(QStringLiteral("ru")));
         MainWindow window;
         auto answers = std::make_shared<Answers>();
         answers->answer = QMessageBox::No;
         answerWith(window, answers);
         window.offerRecovery();
+        language::apply(QStringLiteral("en"));
         QCOMPARE(answers->asked, 1);
+        QVERIFY2(answers->lastText.contains(QStringLiteral("MOMA, конфигурация 3a")), qPrintable(answers->lastText));
         QCOMPARE(window.document()->mechanism()->kind(), std::string_view("pjoint"));
         QVERIFY(!QFile::exists(orphan));
     }
