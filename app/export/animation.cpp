@@ -80,6 +80,35 @@ Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose 
     return poses;
 }
 
+Interval animationRange(const Mechanism &mechanism, const Pose &start, int variable)
+{
+    const Interval range = mechanism.variableRange(variable);
+    const double here = std::clamp(mechanism.variableValue(start, variable), range.min, range.max);
+    // Small steps, each solved from the last: the solver refuses a step that changes a mode or
+    // crosses a singularity, and the range ends one step before the first refused.
+    constexpr int steps = 400;
+    const double step = (range.max - range.min) / steps;
+    if (!(step > 0))
+        return range;
+    const auto reach = [&](double direction, double limit) {
+        Pose near = start;
+        double reached = here, previous = here;
+        for (int i = 1; i <= steps; ++i) {
+            const double value = direction > 0 ? std::min(limit, here + i * step) : std::max(limit, here - i * step);
+            auto solved = mechanism.solveWith(near, variable, value);
+            if (!solved)
+                return previous; // a step short of the first pose refused
+            near = *solved;
+            previous = reached;
+            reached = value;
+            if (value == limit)
+                return value;
+        }
+        return reached;
+    };
+    return {reach(-1.0, range.min), reach(1.0, range.max)};
+}
+
 int animationFrameCount(int poses, bool bounce)
 {
     return bounce && poses > 2 ? 2 * poses - 2 : poses;

@@ -44,6 +44,12 @@ inline constexpr double maxAnimationPixels = 1e9;
 Result<std::vector<Pose>> animationPoses(const Mechanism &mechanism, const Pose &start,
                                          const AnimationSettings &settings);
 
+/// The part of variable `variable`'s range that the mechanism sweeps from `start` without
+/// leaving its modes or meeting a singular pose (core units): what an animation offers by
+/// default. A five-bar's crank may turn from −180° to 180° on paper, yet its leg stretches on
+/// the way; this range stops a step short of that, as Play does.
+Interval animationRange(const Mechanism &mechanism, const Pose &start, int variable);
+
 /// How many frames `poses` poses make: forth and back without repeating the turning points.
 int animationFrameCount(int poses, bool bounce);
 

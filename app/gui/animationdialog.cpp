@@ -25,9 +25,12 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSaveFile>
+#include <QSettings>
 #include <QSpinBox>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <future>
 
 namespace pkm {
@@ -232,9 +235,41 @@ void AnimationDialog::selectVariable(int variable)
         box->setRange(lo, hi);
     }
     showRangeUnit();
-    m_from->setValue(lo);
-    m_to->setValue(hi);
+    // What the mechanism sweeps from its pose, inwards to the decimals shown: the default
+    // export then runs to its end (a five-bar's whole −180…180° stopped at a stretched leg).
+    Interval offered = m_start ? animationRange(m_mechanism, *m_start, variable) : range;
+    const double scale = std::pow(10.0, info.decimals);
+    m_from->setValue(std::ceil(info.unit.toDisplay(offered.min) * scale - 1e-9) / scale);
+    m_to->setValue(std::floor(info.unit.toDisplay(offered.max) * scale + 1e-9) / scale);
     fillBeside();
+}
+
+void AnimationDialog::setStart(const Pose &pose)
+{
+    m_start = pose;
+    selectVariable(m_variable->currentIndex());
+}
+
+void AnimationDialog::restoreChoices()
+{
+    const QSettings settings;
+    m_format->setCurrentIndex(std::clamp(settings.value(QStringLiteral("animation/format"), 0).toInt(), 0, m_format->count() - 1));
+    m_frames->setValue(settings.value(QStringLiteral("animation/frames"), m_frames->value()).toInt());
+    m_frameTime->setValue(settings.value(QStringLiteral("animation/frameMilliseconds"), m_frameTime->value()).toInt());
+    m_bounce->setChecked(settings.value(QStringLiteral("animation/bounce"), m_bounce->isChecked()).toBool());
+    const int size = m_size->findData(settings.value(QStringLiteral("animation/size")).toSize());
+    if (size >= 0)
+        m_size->setCurrentIndex(size);
+}
+
+void AnimationDialog::rememberChoices() const
+{
+    QSettings settings;
+    settings.setValue(QStringLiteral("animation/format"), m_format->currentIndex());
+    settings.setValue(QStringLiteral("animation/frames"), m_frames->value());
+    settings.setValue(QStringLiteral("animation/frameMilliseconds"), m_frameTime->value());
+    settings.setValue(QStringLiteral("animation/bounce"), m_bounce->isChecked());
+    settings.setValue(QStringLiteral("animation/size"), m_size->currentData().toSize());
 }
 
 AnimationSettings AnimationDialog::settings() const

@@ -8,6 +8,7 @@
 #include <QDialog>
 
 #include <functional>
+#include <optional>
 
 class QCheckBox;
 class QComboBox;
@@ -42,6 +43,13 @@ public:
     /// The chosen format's file extension: "gif", "mp4" or "webm".
     QString fileExtension() const;
 
+    /// The pose the animation starts from: the range offered is then what the mechanism sweeps
+    /// from it (animationRange), not the variable's whole range.
+    void setStart(const Pose &pose);
+    /// The format, frames, frame time, size and forth-and-back of the last export, kept
+    /// between runs (the range belongs to the design and is offered afresh).
+    void restoreChoices();
+    void rememberChoices() const;
     /// Offers the plot on screen, titled `title`, beside the view (none when empty).
     void setShownPlot(const QString &title);
     QComboBox *besideBox() const { return m_beside; }
@@ -67,6 +75,7 @@ private:
     void fillBeside();
 
     const Mechanism &m_mechanism;
+    std::optional<Pose> m_start;
     QFormLayout *m_form = nullptr;
     QDialogButtonBox *m_buttons = nullptr;
     QComboBox *m_format = nullptr;

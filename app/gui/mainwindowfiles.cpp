@@ -114,11 +114,14 @@ bool MainWindow::saveFileAs()
 void MainWindow::exportAnimationDialog()
 {
     AnimationDialog dialog(*m_document->mechanism(), 0, this);
+    dialog.restoreChoices();
+    dialog.setStart(m_document->pose());
     QCustomPlot *shown = m_currentPanel ? plotfocus::active(m_currentPanel) : nullptr;
     if (shown)
         dialog.setShownPlot(plotfocus::title(shown));
     if (dialog.exec() != QDialog::Accepted)
         return;
+    dialog.rememberChoices();
     const QString base = m_session->filePath().isEmpty() ? QFileInfo(m_document->design().id).fileName()
                                                          : QFileInfo(m_session->filePath()).completeBaseName();
     const QString path = chooseAnimationPath(this, base, dialog.fileExtension());

@@ -6,13 +6,18 @@
 #include "cli/drawingcommands.h"
 #include "document/document.h"
 #include "export/gifwriter.h"
+#include "document/designfile.h"
+#include "gui/animationdialog.h"
 #include "gui/mainwindow.h"
 #include "registry.h"
 
 #include <QBuffer>
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
 #include <QImageReader>
+#include <QSettings>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -192,6 +197,53 @@ private slots:
                  qPrintable(message));
         settings.frames = 1;
         QVERIFY(!animationPoses(*mechanism, mechanism->homePose(), settings).ok());
+    }
+
+    /// A five-bar's crank may turn −180…180° on paper, yet its leg stretches on the way: the
+    /// range offered stops short of that, and an export over it runs to its end, in both
+    /// directions. The export dialog offers it, and keeps the choices of the last export.
+    void offeredRangeRunsToItsEnd()
+    {
+        const Design design = designfile::load(QStringLiteral("fivebar-example")).value();
+        const Mechanism &m = *design.mechanism;
+        AnimationSettings settings;
+        settings.variable = m.variableIndex("theta1");
+        const Interval whole = m.variableRange(settings.variable);
+        settings.from = whole.min;
+        settings.to = whole.max;
+        QVERIFY(!animationPoses(m, design.pose, settings).ok()); // frame 43 once
+        const Interval offered = animationRange(m, design.pose, settings.variable);
+        const double here = m.variableValue(design.pose, settings.variable);
+        QVERIFY2(offered.min <= here && here <= offered.max && offered.max - offered.min > 0.5
+                     && offered.max - offered.min < whole.max - whole.min,
+                 qPrintable(QStringLiteral("%1 … %2 rad").arg(offered.min).arg(offered.max)));
+        for (bool forward : {true, false}) {
+            settings.from = forward ? offered.min : offered.max;
+            settings.to = forward ? offered.max : offered.min;
+            auto poses = animationPoses(m, design.pose, settings);
+            QVERIFY2(poses.ok(), poses.ok() ? "" : poses.failure().message.c_str());
+        }
+        // a range that is whole stays whole: the П-joint's θ over ±60°
+        const MechanismPtr pjoint = prototype();
+        const int theta = pjoint->variableIndex("theta");
+        const Interval full = animationRange(*pjoint, pjoint->homePose(), theta);
+        QCOMPARE(full.min, pjoint->variableRange(theta).min);
+        QCOMPARE(full.max, pjoint->variableRange(theta).max);
+
+        QSettings().clear();
+        AnimationDialog dialog(m, settings.variable);
+        dialog.setStart(design.pose);
+        const AnimationSettings chosen = dialog.settings();
+        QVERIFY(chosen.from >= offered.min - 1e-9 && chosen.to <= offered.max + 1e-9);
+        QVERIFY(animationPoses(m, design.pose, chosen).ok());
+        dialog.framesBox()->setValue(90);
+        dialog.formatBox()->setCurrentIndex(1);
+        dialog.rememberChoices();
+        AnimationDialog again(m, 0);
+        again.restoreChoices();
+        QCOMPARE(again.framesBox()->value(), 90);
+        QCOMPARE(again.formatBox()->currentIndex(), 1);
+        QSettings().clear();
     }
 
     void commandLineWritesAGif()
