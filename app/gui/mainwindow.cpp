@@ -424,24 +424,6 @@ void MainWindow::createUndoActions()
     m_editMenu->insertActions(m_editMenu->actions().value(0, nullptr), {m_undoAction, m_redoAction});
 }
 
-void MainWindow::fillPresetsMenu()
-{
-    m_presetsMenu->clear();
-    QString lastKind;
-    for (const PresetInfo &preset : designfile::presets()) {
-        if (!lastKind.isEmpty() && preset.kind != lastKind)
-            m_presetsMenu->addSeparator();
-        lastKind = preset.kind;
-        QAction *action = m_presetsMenu->addAction(designfile::presetText(preset.title), this,
-                                                   [this, id = preset.id] { openFromMenu(id); });
-        action->setData(preset.id);
-        action->setObjectName(QStringLiteral("preset_") + preset.id);
-        // the description as the file gives it: loading every preset (solving its pose, a
-        // 3-DOF design's home search) cost a start and every change of language 100–200 ms
-        action->setToolTip(designfile::presetText(preset.description));
-    }
-}
-
 void MainWindow::setLanguage(const QString &code)
 {
     if (code == language::current())

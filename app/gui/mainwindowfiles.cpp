@@ -1,5 +1,5 @@
-// The main window's files: opening, saving and recovering designs, the recent files, the
-// window layout kept between sessions, and the exports — the animation, the DXF drawing, the
+// The main window's files: the Presets menu, opening, saving and recovering designs, the recent
+// files, the window layout kept between sessions, and the exports — the animation, the DXF drawing, the
 // parameter sheet and the picture of a view.
 
 #include "gui/mainwindow.h"
@@ -20,6 +20,7 @@
 #include "modebar.h"
 #include "pictureexport.h"
 #include "quantityformat.h"
+#include "registry.h"
 #include "export/sheet.h"
 #include "valuestable.h"
 #include "variablepanel.h"
@@ -41,6 +42,8 @@
 #include <QFileInfo>
 #include <QFileDialog>
 #include <QLabel>
+#include <QMap>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSaveFile>
@@ -109,6 +112,39 @@ bool MainWindow::saveFileAs()
     }
     showStatus(tr("Saved %1").arg(path));
     return true;
+}
+
+void MainWindow::fillPresetsMenu()
+{
+    // clear() leaves the submenus behind (hidden, in the old language): they go as well
+    qDeleteAll(m_presetsMenu->findChildren<QMenu *>(QString(), Qt::FindDirectChildrenOnly));
+    m_presetsMenu->clear();
+    // A kind with several presets is a submenu named by the kind: one flat list of eighteen
+    // was taller than a 720-pixel projector at a large text size, and Qt cut its titles.
+    const QList<PresetInfo> presets = designfile::presets();
+    QMap<QString, int> perKind;
+    for (const PresetInfo &preset : presets)
+        ++perKind[preset.kind];
+    QString lastKind;
+    QMenu *menu = m_presetsMenu;
+    for (const PresetInfo &preset : presets) {
+        if (preset.kind != lastKind) {
+            menu = m_presetsMenu;
+            if (perKind.value(preset.kind) > 1) {
+                const MechanismKind *kind = findMechanismKind(preset.kind.toStdString());
+                menu = m_presetsMenu->addMenu(kind ? coreLabel(kind->title) : preset.kind);
+                menu->setObjectName(QStringLiteral("presets_") + preset.kind);
+            }
+        }
+        lastKind = preset.kind;
+        QAction *action = menu->addAction(designfile::presetText(preset.title), this,
+                                          [this, id = preset.id] { openFromMenu(id); });
+        action->setData(preset.id);
+        action->setObjectName(QStringLiteral("preset_") + preset.id);
+        // the description as the file gives it: loading every preset (solving its pose, a
+        // 3-DOF design's home search) cost a start and every change of language 100–200 ms
+        action->setToolTip(designfile::presetText(preset.description));
+    }
 }
 
 void MainWindow::exportAnimationDialog()

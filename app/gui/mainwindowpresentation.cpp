@@ -34,6 +34,8 @@ namespace pkm {
 
 namespace {
 constexpr int textSizes[] = {100, 125, 150, 175, 200, 250};
+/// From this text size on, a page shows one plot at a time (applyPresentationPlots).
+constexpr double onePlotTextScale = 1.75;
 /// Settings keys: the normal window's text size and presentation mode's.
 QString textSizeKey(bool presentation)
 {
@@ -100,7 +102,8 @@ void MainWindow::fillPresentationPlotMenu(bool entries)
     m_presentationPlotMenu->menuAction()->setEnabled(plots.size() > 1);
     if (!entries || plots.size() < 2)
         return; // the titles as the menu opens, in the language of that moment
-    QCustomPlot *shown = m_presenting ? plotfocus::shownAlone(m_currentPanel) : m_presentationPlot.data();
+    QCustomPlot *shown = m_presenting || textscale::factor() >= onePlotTextScale ? plotfocus::shownAlone(m_currentPanel)
+                                                                                 : m_presentationPlot.data();
     auto *group = new QActionGroup(m_presentationPlotMenu);
     for (int i = 0; i < plots.size(); ++i) {
         QCustomPlot *plot = plots[i];
@@ -118,11 +121,15 @@ void MainWindow::fillPresentationPlotMenu(bool entries)
 
 void MainWindow::applyPresentationPlots()
 {
+    // From 175 % text, plots that share a page squeeze their axes to nothing (three side by
+    // side at 250 % on a 1280×720 screen): one plot a page then, as in presentation mode, and
+    // View ▸ Presentation Plot chooses which.
+    const bool alone = m_presenting || textscale::factor() >= onePlotTextScale;
     for (int i = 0; i < m_plots->count(); ++i) {
         QWidget *panel = m_plots->widget(i);
         if (auto *kindPanel = qobject_cast<KindPanel *>(panel))
             kindPanel->setPresenting(m_presenting && panel == m_currentPanel);
-        if (m_presenting && panel == m_currentPanel)
+        if (alone && panel == m_currentPanel)
             plotfocus::showOnePerPage(panel, m_presentationPlot);
         else
             plotfocus::showAll(panel);
@@ -145,6 +152,8 @@ void MainWindow::setTextScale(double factor)
     applySceneStyle();
     for (QAction *action : m_textSizeMenu->actions())
         action->setChecked(action->data().toInt() == qRound(now * 100));
+    if (m_presentationPlotMenu && (old >= onePlotTextScale) != (now >= onePlotTextScale))
+        applyPresentationPlots(); // (not yet while the menus are made: the first design does it)
 }
 
 void MainWindow::applySceneStyle()

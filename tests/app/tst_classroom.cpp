@@ -5,6 +5,7 @@
 
 #include "document/document.h"
 #include "document/language.h"
+#include "kinds/kindpanel.h"
 #include "linkageview.h"
 #include "playbar.h"
 #include "plotfocus.h"
@@ -419,11 +420,23 @@ private slots:
         QCOMPARE_LT(std::abs(plot->legend->item(0)->font().pointSizeF() - 2 * legendItem), 0.01);
         QCOMPARE_LT(std::abs(w.linkageView()->sceneStyle().fontPixels - 2 * label), 0.01);
         QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - 2 * app), 0.01);
+        // At this size a page shows one plot, as in presentation mode: three side by side
+        // squeezed their axes to nothing. All three are back at 100 %.
+        const auto shownOnPage = [&] {
+            const QList<QCustomPlot *> plots = plotfocus::plots(w.currentPanel()); // figs. 8–10 first
+            int shown = 0;
+            for (QCustomPlot *other : plots)
+                shown += other->parentWidget() == plots.first()->parentWidget() && !other->isHidden();
+            return shown;
+        };
+        QCOMPARE(shownOnPage(), 1);
+        QVERIFY(!w.isPresenting());
         // Remembered, and back to normal with 100 %.
         QCOMPARE(QSettings().value(QStringLiteral("view/textSize")).toInt(), 200);
         w.findChild<QAction *>(QStringLiteral("textSize_100"))->trigger();
         QCOMPARE_LT(std::abs(plot->xAxis->tickLabelFont().pointSizeF() - tick), 0.01);
         QCOMPARE_LT(std::abs(textscale::factor() - 1.0), 1e-12);
+        QCOMPARE(shownOnPage(), 3);
     }
 };
 
