@@ -4847,10 +4847,6 @@ Please verify the correct file name was given.</source>
         <translation>Конструкция</translation>
     </message>
     <message>
-        <source>Values at this pose</source>
-        <translation>Значения</translation>
-    </message>
-    <message>
         <source>Mobility</source>
         <translation>Подвижность</translation>
     </message>
@@ -5239,10 +5235,6 @@ Please verify the correct file name was given.</source>
         <translation>В этой конструкции не заданы пределы приводов, поэтому фигур скорости и силы нет.</translation>
     </message>
     <message>
-        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values at this pose”; there is no platform point to draw shapes at.</source>
-        <translation>Выход этого механизма — один угол: его скорость, момент и жёсткость — в «Значениях»; точки платформы, где рисовать фигуры, нет.</translation>
-    </message>
-    <message>
         <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
         <translation>Фигуры скорости и силы нельзя масштабировать для этой конструкции: её исходная поза особая.</translation>
     </message>
@@ -5265,6 +5257,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Presentation P&amp;lot</source>
         <translation>Гра&amp;фик презентации</translation>
+    </message>
+    <message>
+        <source>Values</source>
+        <translation>Значения</translation>
+    </message>
+    <message>
+        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values”; there is no platform point to draw shapes at.</source>
+        <translation>Выход этого механизма — один угол: его скорость, момент и жёсткость — в «Значениях»; точки платформы, где рисовать фигуры, нет.</translation>
     </message>
 </context>
 <context>

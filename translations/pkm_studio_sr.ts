@@ -4847,10 +4847,6 @@ Please verify the correct file name was given.</source>
         <translation>Конструкција</translation>
     </message>
     <message>
-        <source>Values at this pose</source>
-        <translation>Вредности</translation>
-    </message>
-    <message>
         <source>Mobility</source>
         <translation>Покретљивост</translation>
     </message>
@@ -5239,10 +5235,6 @@ Please verify the correct file name was given.</source>
         <translation>Ова конструкција не задаје границе актуатора, па нема облика брзине и силе за цртање.</translation>
     </message>
     <message>
-        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values at this pose”; there is no platform point to draw shapes at.</source>
-        <translation>Излаз овог механизма је један угао: његова брзина, момент и крутост су у „Вредностима”; нема тачке платформе на којој би се цртали облици.</translation>
-    </message>
-    <message>
         <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
         <translation>Облици брзине и силе не могу се сразмерити за ову конструкцију: њен почетни положај је сингуларан.</translation>
     </message>
@@ -5265,6 +5257,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Presentation P&amp;lot</source>
         <translation>Гра&amp;фикон презентације</translation>
+    </message>
+    <message>
+        <source>Values</source>
+        <translation>Вредности</translation>
+    </message>
+    <message>
+        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values”; there is no platform point to draw shapes at.</source>
+        <translation>Излаз овог механизма је један угао: његова брзина, момент и крутост су у „Вредностима”; нема тачке платформе на којој би се цртали облици.</translation>
     </message>
 </context>
 <context>

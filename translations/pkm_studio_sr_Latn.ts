@@ -4847,10 +4847,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Konstrukcija</translation>
     </message>
     <message>
-        <source>Values at this pose</source>
-        <translation>Vrednosti</translation>
-    </message>
-    <message>
         <source>Mobility</source>
         <translation>Pokretljivost</translation>
     </message>
@@ -5239,10 +5235,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Ova konstrukcija ne zadaje granice aktuatora, pa nema oblika brzine i sile za crtanje.</translation>
     </message>
     <message>
-        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values at this pose”; there is no platform point to draw shapes at.</source>
-        <translation>Izlaz ovog mehanizma je jedan ugao: njegova brzina, moment i krutost su u „Vrednostima”; nema tačke platforme na kojoj bi se crtali oblici.</translation>
-    </message>
-    <message>
         <source>The velocity and force shapes cannot be scaled for this design: its home pose is singular.</source>
         <translation>Oblici brzine i sile ne mogu se srazmeriti za ovu konstrukciju: njen početni položaj je singularan.</translation>
     </message>
@@ -5265,6 +5257,14 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Presentation P&amp;lot</source>
         <translation>Gra&amp;fikon prezentacije</translation>
+    </message>
+    <message>
+        <source>Values</source>
+        <translation>Vrednosti</translation>
+    </message>
+    <message>
+        <source>The output of this mechanism is one angle: its speed, torque and stiffness are in “Values”; there is no platform point to draw shapes at.</source>
+        <translation>Izlaz ovog mehanizma je jedan ugao: njegova brzina, moment i krutost su u „Vrednostima”; nema tačke platforme na kojoj bi se crtali oblici.</translation>
     </message>
 </context>
 <context>

@@ -220,14 +220,14 @@ void MainWindow::createDocks()
 
     m_values = new ValuesTable(this);
     m_values->setMinimumWidth(270);
-    auto *valuesDock = m_valuesDock = new QDockWidget(tr("Values at this pose"), this);
+    auto *valuesDock = m_valuesDock = new QDockWidget(tr("Values"), this);
     valuesDock->setObjectName(QStringLiteral("valuesDock"));
     valuesDock->setWidget(m_values);
     addDockWidget(Qt::LeftDockWidgetArea, valuesDock);
     splitDockWidget(designDock, valuesDock, Qt::Vertical);
     // Mobility, the equations and the tolerances are tabs behind the Design and the values,
-    // so they take no room until asked for: two tabs a group, whose names fit the 340 px the
-    // docks have on a 1280×720 projector in every language (four in one group were cut).
+    // so they take no room until asked for; split between the two groups, their names fit the
+    // 340 px the docks have on a 1280×720 projector in every language (four in one were cut).
     m_mobility = new MobilityPanel(this);
     m_mobility->setMinimumWidth(270);
     auto *mobilityDock = m_mobilityDock = new QDockWidget(tr("Mobility"), this);
@@ -247,7 +247,7 @@ void MainWindow::createDocks()
     toleranceDock->setObjectName(QStringLiteral("toleranceDock"));
     toleranceDock->setWidget(new TolerancePanel(m_document, toleranceDock));
     addDockWidget(Qt::LeftDockWidgetArea, toleranceDock);
-    tabifyDockWidget(mobilityDock, toleranceDock);
+    tabifyDockWidget(equationsDock, toleranceDock);
     // The Design and the values in front; a tab raised before the window is shown does not
     // stick. A restored layout keeps the tabs it had.
     QTimer::singleShot(0, this, [this, designDock, valuesDock] {
@@ -464,7 +464,7 @@ void MainWindow::retranslate()
     if (m_toolBar)
         m_toolBar->setWindowTitle(tr("Main Toolbar"));
     m_designDock->setWindowTitle(tr("Design"));
-    m_valuesDock->setWindowTitle(tr("Values at this pose"));
+    m_valuesDock->setWindowTitle(tr("Values"));
     m_mobilityDock->setWindowTitle(tr("Mobility"));
     m_equationsDock->setWindowTitle(tr("Equations"));
     m_toleranceDock->setWindowTitle(tr("Tolerances"));

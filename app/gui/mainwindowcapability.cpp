@@ -64,8 +64,8 @@ QString MainWindow::capabilityShapesUnavailable() const
     if (m_actuators.count == 0)
         return tr("This design states no actuator limits, so there are no velocity and force shapes to draw.");
     if (m_actuators.rotaryOutput || m_actuators.outputs < 2)
-        return tr("The output of this mechanism is one angle: its speed, torque and stiffness are in “Values at this "
-                  "pose”; there is no platform point to draw shapes at.");
+        return tr("The output of this mechanism is one angle: its speed, torque and stiffness are in “Values”; "
+                  "there is no platform point to draw shapes at.");
     return tr("The velocity and force shapes cannot be scaled for this design: its home pose is singular.");
 }
 

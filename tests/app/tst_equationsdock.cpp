@@ -1,4 +1,4 @@
-// The Equations dock in the main window (issue 18): a tab beside "Values at this pose" and
+// The Equations dock in the main window (issue 18): a tab beside "Values" and
 // Mobility, listed in the View menu; raised, it shows the open preset's equations, each result
 // reading as the values table reads it, and follows the pose and the design.
 //

@@ -1,4 +1,4 @@
-// The Mobility dock in the main window (issue 6): a tab behind "Values at this pose", listed
+// The Mobility dock in the main window (issue 6): a tab behind "Design", listed
 // in the View menu, idle while hidden; raised, it shows the current preset's formulas and rank
 // and follows pose and design changes.
 //

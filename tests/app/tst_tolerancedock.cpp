@@ -1,4 +1,4 @@
-// The Tolerances dock in the main window (issue 19, part 5): a tab beside "Values at this pose",
+// The Tolerances dock in the main window (issue 19, part 5): a tab beside "Values",
 // listed in the View menu; tolerances edited through the document (undoable, saved with the
 // design), the first order live at the pose, the Monte Carlo and the worst-case map off the GUI
 // thread, shown as a histogram and a colour map.
@@ -47,9 +47,10 @@ private slots:
     {
         QDockWidget *tolerances = dock("toleranceDock");
         QVERIFY(tolerances);
-        // behind the Design, with the mobility: the values share their place with the equations
-        QVERIFY(m_window->tabifiedDockWidgets(dock("designDock")).contains(tolerances));
+        // behind the values with the equations; the Design shares its place with the mobility
+        QVERIFY(m_window->tabifiedDockWidgets(dock("valuesDock")).contains(tolerances));
         QVERIFY(m_window->tabifiedDockWidgets(dock("valuesDock")).contains(dock("equationsDock")));
+        QVERIFY(m_window->tabifiedDockWidgets(dock("designDock")).contains(dock("mobilityDock")));
         QVERIFY(panel());
     }
 
