@@ -346,8 +346,13 @@ void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, 
               : AnimationDialog::tr("Drawing %n frame(s)…", nullptr, settings.frames),
         [mechanism = std::move(mechanism), pose, settings, path, video](const std::atomic<bool> &cancel,
                                                                         const TaskProgress &progress) -> TaskFailure {
-            return video ? writeVideo(*mechanism, pose, settings, path, cancel, progress)
-                         : writeGif(*mechanism, pose, settings, path, cancel);
+            TaskFailure failure = video ? writeVideo(*mechanism, pose, settings, path, cancel, progress)
+                                        : writeGif(*mechanism, pose, settings, path, cancel);
+            // Here as well as below: the frames are freed by now, in this thread; on a loaded
+            // machine the trim below could run before they were, and their pages stayed with
+            // the pool's idle thread for its 30 s.
+            malloc_trim(0);
+            return failure;
         },
         [path, done](const TaskFailure &failure, bool cancelled) {
             // The frames were drawn and encoded in a worker thread's malloc arena; glibc keeps
