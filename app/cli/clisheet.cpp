@@ -29,7 +29,9 @@ public:
         if (!m_applied && code == QLatin1String("en")) {
             // English is the source language: without its catalogue only the plural forms of
             // counts are missing. Numbers with '.' whatever the system's locale.
-            QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+            QLocale english(QLocale::English, QLocale::UnitedStates);
+            english.setNumberOptions(QLocale::OmitGroupSeparator);
+            QLocale::setDefault(english);
             text::install({});
             m_applied = true;
         }

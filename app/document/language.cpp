@@ -125,12 +125,16 @@ bool apply(const QString &code)
     state.qt = std::move(qt);
     state.code = code;
 
-    QLocale::setDefault(language->locale);
+    // No group separators anywhere: "a = 1000 mm" in a plot's subtitle as in the values panel
+    // and the fields ("1,000" reads as one in Russian and Serbian, where ',' is the decimal point).
+    QLocale locale = language->locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    QLocale::setDefault(locale);
     // Widgets keep the locale they were made with: the GUI's hook gives the windows open now
     // the new one (their children inherit it), so spin boxes and fields read and write numbers
     // the new way.
     if (localeHook())
-        localeHook()(language->locale);
+        localeHook()(locale);
     text::Hooks hooks;
     hooks.translate = translateHook;
     hooks.decimalPoint = language->locale.decimalPoint().toStdString();

@@ -8,6 +8,7 @@
 #include "document/language.h"
 #include "gui/mainwindow.h"
 #include "modebar.h"
+#include "kinds/pjoint/pjointcurves.h"
 #include "kinds/pjoint/pjointplots.h"
 #include "export/sheet.h"
 #include "kinds/kindmodule.h"
@@ -210,6 +211,19 @@ private slots:
         language::remember(QStringLiteral("klingon")); // not a language: ignored
         QCOMPARE(language::preferred(), QStringLiteral("sr_Latn"));
         QSettings().remove(QStringLiteral("language"));
+    }
+
+    // Numbers never group their thousands: "d = 1,077.0 mm" in a tracer and "a = 1,000 mm" in
+    // a subtitle read as two numbers where ',' is the decimal point, and nothing else groups.
+    void numbersHaveNoGroupSeparator()
+    {
+        const std::pair<const char *, const char *> expected[] = {
+            {"en", "d = 1077.0 mm"}, {"ru", "d = 1077,0 мм"}, {"sr", "d = 1077,0 mm"}, {"sr_Latn", "d = 1077,0 mm"}};
+        for (const auto &[code, tracer] : expected) {
+            QVERIFY2(language::apply(QString::fromLatin1(code)), code);
+            QCOMPARE(QLocale().toString(1000.0, 'g', 6).size(), 4);
+            QCOMPARE(pjointcurves::valueText(PJointPlots::DiagonalPlot, 1077.04), QString::fromUtf8(tracer));
+        }
     }
 
     // The Language menu switches every widget at once and remembers the choice.
