@@ -143,6 +143,18 @@ SingularityType evaluate(const Actuators &actuators, const Matrix &jq, const Mat
 SingularityType evaluate(const Mechanism &mechanism, const Actuators &actuators, const Pose &pose,
                          SingularityType type, std::span<double> values);
 
+/// Settles the kind's own report `values` (Mechanism::evaluate(), `layout`) for `delivered`,
+/// the class evaluate() above gave, where it is not the kind's `kindType`: a hair from a
+/// singularity J and det J then read ∞ or 0 as the capability group does, not the rigid
+/// model's −2.2·10⁹ rad²/mm² (the five-bar 10⁻¹¹ mm below its stretched legs). One rule for
+/// every report of a pose: the values panel, eval, sweep rows. Does not allocate.
+inline void settleNearSingular(const ReportLayout &layout, std::span<double> values, SingularityType delivered,
+                               SingularityType kindType)
+{
+    if (delivered != kindType)
+        settleSingularValues(layout, values, delivered);
+}
+
 /// A sentence on why the values of a pose of class `type` are 0 or ∞ where the kind's own class
 /// of the pose is `kindType` (untranslated, "core" context); nullptr where they agree.
 const char *nearSingularReason(SingularityType type, SingularityType kindType);

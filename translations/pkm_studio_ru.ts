@@ -6444,6 +6444,18 @@ Please verify the correct file name was given.</source>
         <source>Capability: as at a singular pose</source>
         <translation>Возможности: как в особом положении</translation>
     </message>
+    <message>
+        <source>near inverse</source>
+        <translation>вблизи обратного</translation>
+    </message>
+    <message>
+        <source>near direct</source>
+        <translation>вблизи прямого</translation>
+    </message>
+    <message>
+        <source>near combined</source>
+        <translation>вблизи комбинированного</translation>
+    </message>
 </context>
 <context>
     <name>pkm::VariablePanel</name>

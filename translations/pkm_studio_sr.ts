@@ -6444,6 +6444,18 @@ Please verify the correct file name was given.</source>
         <source>Capability: as at a singular pose</source>
         <translation>Могућности: као у сингуларном положају</translation>
     </message>
+    <message>
+        <source>near inverse</source>
+        <translation>близу инверзног</translation>
+    </message>
+    <message>
+        <source>near direct</source>
+        <translation>близу директног</translation>
+    </message>
+    <message>
+        <source>near combined</source>
+        <translation>близу комбинованог</translation>
+    </message>
 </context>
 <context>
     <name>pkm::VariablePanel</name>

@@ -6444,6 +6444,18 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>Capability: as at a singular pose</source>
         <translation>Mogućnosti: kao u singularnom položaju</translation>
     </message>
+    <message>
+        <source>near inverse</source>
+        <translation>blizu inverznog</translation>
+    </message>
+    <message>
+        <source>near direct</source>
+        <translation>blizu direktnog</translation>
+    </message>
+    <message>
+        <source>near combined</source>
+        <translation>blizu kombinovanog</translation>
+    </message>
 </context>
 <context>
     <name>pkm::VariablePanel</name>

@@ -33,6 +33,16 @@ QString singularityText(SingularityType type)
     }
     return {};
 }
+
+/// The class a hair from a singular pose, where the values are shown as at it.
+QString nearSingularityText(SingularityType type)
+{
+    switch (type) {
+    case SingularityType::Inverse: return ValuesTable::tr("near inverse");
+    case SingularityType::Direct: return ValuesTable::tr("near direct");
+    default: return ValuesTable::tr("near combined");
+    }
+}
 } // namespace
 
 ValuesTable::ValuesTable(QWidget *parent)
@@ -166,28 +176,33 @@ void ValuesTable::setPose(const Pose &pose)
         if (entry.rows * entry.cols > 1)
             item->setToolTip(1, text); // the column may cut a matrix
     };
+    // near a singular pose J and the capability are shown as at it (capability::settleNearSingular())
+    SingularityType settled = singularity.type;
+    if (m_capabilityLayout) {
+        settled = capability::evaluate(*m_mechanism, m_actuators, pose, singularity.type, m_capabilityValues);
+        capability::settleNearSingular(layout, m_values, settled, singularity.type);
+    }
     for (std::size_t i = 0; i < layout.entries.size(); ++i)
         show(m_items[i], layout.entries[i], m_values);
+    const char *reason = capability::nearSingularReason(settled, singularity.type);
     if (m_capabilityLayout) {
-        const SingularityType type =
-            capability::evaluate(*m_mechanism, m_actuators, pose, singularity.type, m_capabilityValues);
         for (std::size_t i = 0; i < m_capabilityLayout->entries.size(); ++i)
             show(m_capabilityItems[i], m_capabilityLayout->entries[i], m_capabilityValues);
-        // near a singular pose the group's 0 and ∞ say so, and why, where the class does not
-        const char *reason = capability::nearSingularReason(type, singularity.type);
+        // the group's 0 and ∞ say so, and why, where the class does not
         m_capabilityGroup->setText(0, reason ? tr("Capability: as at a singular pose") : tr("Capability"));
         m_capabilityGroup->setToolTip(0, reason ? coreLabel(reason) : QString());
     }
-    QString text = singularityText(singularity.type);
+    QString text = reason ? nearSingularityText(settled) : singularityText(singularity.type);
     if (singularity.type == SingularityType::None)
         text = tr("%1 (margin %2)").arg(text, QLocale().toString(singularity.margin, 'f', 3));
     m_singularity->setText(1, text);
+    m_singularity->setToolTip(1, reason ? coreLabel(reason) : QString());
     widest = std::max(widest, text.size());
     if (widest > m_widestValue) {
         m_widestValue = widest;
         fitColumns();
     }
-    m_singularity->setForeground(1, singularity.type == SingularityType::None ? palette().text().color()
+    m_singularity->setForeground(1, settled == SingularityType::None ? palette().text().color()
                                                                             : QColor(0xb3, 0x26, 0x1e));
 }
 

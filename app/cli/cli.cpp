@@ -104,6 +104,7 @@ std::string evalText(const PreparedDesign &prepared, bool allModes, bool equatio
     }
     std::vector<std::string> undefined;
     const CapabilityReport capability = evaluateCapability(mechanism, prepared.pose, singularity.type);
+    capability::settleNearSingular(layout, mainValues, capability.type, singularity.type);
     // a group of the mechanism's layout, or (nullopt) the capability group from its own layout
     const auto addGroup = [&](std::optional<ReportGroup> group, const char *title) {
         const ReportLayout *from = group ? &layout : capability.layout;
@@ -145,7 +146,7 @@ std::string evalText(const PreparedDesign &prepared, bool allModes, bool equatio
     addGroup(ReportGroup::Derived, "Derived");
     addGroup(std::nullopt, "Capability");
     if (const char *reason = capability::nearSingularReason(capability.type, capability.kindType))
-        table.text(std::string("capability as at a singular pose, ") + reason);
+        table.text(std::string("Jacobian and capability as at a singular pose, ") + reason);
     table.heading("Singularity");
     table.cells({"type", std::string(singularityName(singularity.type)), "", "singularity class"});
     table.cells({"margin", fixedText(singularity.margin, 4), "", "distance from the nearest singularity, 0 at it"});
@@ -247,13 +248,15 @@ std::string evalJson(const Mechanism &mechanism, const Pose &pose, bool allModes
     const ReportLayout &layout = mechanism.reportLayout();
     std::vector<double> values(static_cast<std::size_t>(layout.size));
     const Singularity singularity = mechanism.evaluate(pose, values);
+    const CapabilityReport capability = evaluateCapability(mechanism, pose, singularity.type);
+    capability::settleNearSingular(layout, values, capability.type, singularity.type);
     std::string out;
     JsonWriter json(out, JsonWriter::Style::Pretty);
     json.beginObject();
     json.key("mechanism").string(mechanism.kind());
     writeParametersJson(json, mechanism, false);
-    writeReportJson(json, layout, values, singularity, mechanism.reportText(pose));
-    writeCapabilityJson(json, evaluateCapability(mechanism, pose, singularity.type));
+    writeReportJson(json, layout, values, singularity, mechanism.reportText(pose), capability.type);
+    writeCapabilityJson(json, capability);
     writeMobilityJson(json, mechanism, pose);
     if (allModes) {
         json.key("assembly_modes");

@@ -114,7 +114,7 @@ void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inli
 }
 
 void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<const double> values,
-    const Singularity &singularity, const std::vector<ReportText> &text)
+    const Singularity &singularity, const std::vector<ReportText> &text, std::optional<SingularityType> settled)
 {
     for (ReportGroup group : groupsBeforeSingularity)
         writeGroupJson(json, layout, group, values, text);
@@ -138,7 +138,10 @@ void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<con
     }
     json.endArray();
     json.key("reason");
-    if (const char *reason = singularityReason(singularity.type))
+    const char *reason = singularityReason(singularity.type);
+    if (settled && *settled != singularity.type)
+        reason = capability::nearSingularReason(*settled, singularity.type);
+    if (reason)
         json.string(reason);
     else
         json.null();

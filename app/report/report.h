@@ -9,6 +9,7 @@
 #include "report/texttable.h"
 
 #include <array>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -36,8 +37,11 @@ void writeParametersJson(JsonWriter &json, const Mechanism &mechanism, bool inli
 /// "pose", "jacobian", "singularity", "derived" into the open object. Quantities that are not
 /// finite at this pose are null and listed in singularity.undefined, so a script learns why.
 /// `text` adds the words of the report (the O-X glide's "mode": "X") to their groups.
+/// `settled`: the class the values are settled for (capability::settleNearSingular()); where
+/// it is not the pose's own, singularity.reason says why (near a singular pose).
 void writeReportJson(JsonWriter &json, const ReportLayout &layout, std::span<const double> values,
-    const Singularity &singularity, const std::vector<ReportText> &text = {});
+    const Singularity &singularity, const std::vector<ReportText> &text = {},
+    std::optional<SingularityType> settled = std::nullopt);
 
 /// What the actuators deliver at a pose (core/capability.h): the layout of the "capability"
 /// group (nullptr when the mechanism declares no actuators) and its values.

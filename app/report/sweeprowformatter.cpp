@@ -101,7 +101,8 @@ std::size_t SweepRowFormatter::csvRowBound() const
 char *SweepRowFormatter::csvRow(char *out, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
 {
     const Singularity singularity = mechanism.evaluate(pose, values);
-    evaluateCapability(mechanism, pose, singularity.type, values);
+    capability::settleNearSingular(
+        m_layout, values, evaluateCapability(mechanism, pose, singularity.type, values), singularity.type);
     if (!m_parameters.empty()) {
         const ParameterSet parameters = mechanism.parameters();
         for (const ParameterInfo *info : m_parameters) {
@@ -167,7 +168,8 @@ void SweepRowFormatter::numberRow(
     double *row, std::size_t stride, const Mechanism &mechanism, const Pose &pose, std::span<double> values) const
 {
     const Singularity singularity = mechanism.evaluate(pose, values);
-    evaluateCapability(mechanism, pose, singularity.type, values);
+    capability::settleNearSingular(
+        m_layout, values, evaluateCapability(mechanism, pose, singularity.type, values), singularity.type);
     const double nan = std::nan("");
     if (!m_parameters.empty()) {
         const ParameterSet parameters = mechanism.parameters();
@@ -195,13 +197,14 @@ void SweepRowFormatter::jsonRow(
 {
     const Singularity singularity = mechanism.evaluate(pose, values);
     const SingularityType delivered = evaluateCapability(mechanism, pose, singularity.type, values);
+    capability::settleNearSingular(m_layout, values, delivered, singularity.type);
     if (index > 0)
         out += ",\n";
     JsonWriter json(out, JsonWriter::Style::Compact);
     json.beginObject();
     if (!m_parameters.empty())
         writeParametersJson(json, mechanism, true);
-    writeReportJson(json, m_layout, values, singularity);
+    writeReportJson(json, m_layout, values, singularity, {}, delivered);
     if (m_capabilityLayout) {
         // the group as eval writes it, polygons included (a row without actuators has none)
         CapabilityReport group;

@@ -170,6 +170,16 @@ private slots:
             QVERIFY2(capability.value(QLatin1String("infinite")).toArray().contains(QLatin1String(name)), name);
         }
         QCOMPARE(capability.value(QLatin1String("speed_worst")).toDouble(), 0.0);
+        // J and det J follow the same rule (−2.2·10⁹ rad²/mm² before): null, listed as ∞, and why
+        const QJsonObject singularity = near.value(QLatin1String("singularity")).toObject();
+        const QJsonObject jacobian = near.value(QLatin1String("jacobian")).toObject();
+        for (const char *name : {"J", "det_J", "cond"})
+            QVERIFY2(singularity.value(QLatin1String("infinite")).toArray().contains(QLatin1String(name)), name);
+        QVERIFY(jacobian.value(QLatin1String("det_J")).isNull());
+        QVERIFY(jacobian.value(QLatin1String("cond")).isNull());
+        QVERIFY(jacobian.value(QLatin1String("J")).toArray()[0].toArray()[0].isNull());
+        QCOMPARE(jacobian.value(QLatin1String("det_Jq")).toDouble(), 0.0);
+        QVERIFY(singularity.value(QLatin1String("reason")).toString().contains(QLatin1String("near an inverse")));
         const Run text = runPkm(args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=193.64916731037"}));
         QVERIFY(QString::fromUtf8(text.out).contains(QLatin1String("capability as at a singular pose, near an inverse")));
         // a regular pose: its own class and no reason
@@ -178,6 +188,10 @@ private slots:
         QCOMPARE(regular.value(QLatin1String("singular")).toString(), QStringLiteral("none"));
         QVERIFY(regular.value(QLatin1String("reason")).isNull());
         QVERIFY(regular.value(QLatin1String("force_worst")).toDouble() > 20.0);
+        const QJsonObject regularPose = pkmJson(args({"eval", "fivebar-example", "--set", "x=50", "--set", "y=150", "--json"}));
+        QVERIFY(std::isfinite(regularPose.value(QLatin1String("jacobian")).toObject().value(QLatin1String("det_J")).toDouble(
+            std::nan(""))));
+        QVERIFY(regularPose.value(QLatin1String("singularity")).toObject().value(QLatin1String("reason")).isNull());
     }
 
     void sweepHasTheColumns()

@@ -49,6 +49,10 @@ private slots:
         QVERIFY(table.valueText(QStringLiteral("force_worst")).contains(QStringLiteral("∞")));
         QVERIFY(table.valueText(QStringLiteral("stiffness_worst")).contains(QStringLiteral("∞")));
         QVERIFY(!table.valueText(QStringLiteral("force_best")).contains(QLatin1Char('e')));
+        // J and det J too: ∞ as at the singularity, not the rigid model's −2.2·10⁹ rad²/mm²
+        QVERIFY(table.valueText(QStringLiteral("det_J")).startsWith(QStringLiteral("∞")));
+        QVERIFY(table.valueText(QStringLiteral("J")).startsWith(QStringLiteral("∞")));
+        QVERIFY(table.valueText(QStringLiteral("singularity")).startsWith(QLatin1String("near inverse")));
 
         // 0.02 mm above the direct singularity at C = (50, √(80² − 70²)), where B, C and D are in
         // line: the kind's margin is 3·10⁻⁴, the platform holds no force and its error is ∞
@@ -61,6 +65,8 @@ private slots:
         QVERIFY(table.valueText(QStringLiteral("capability")).contains(QLatin1String("direct singularity")));
         QVERIFY(table.valueText(QStringLiteral("resolution_worst")).contains(QStringLiteral("∞")));
         QVERIFY(table.valueText(QStringLiteral("force_worst")).startsWith(QLatin1Char('0')));
+        QVERIFY(table.valueText(QStringLiteral("cond")).startsWith(QStringLiteral("∞")));
+        QVERIFY(table.valueText(QStringLiteral("singularity")).startsWith(QLatin1String("near direct")));
 
         const auto regular = m->solveInverse(test::pair(50.0, 150.0));
         QVERIFY(regular.ok());
@@ -68,6 +74,8 @@ private slots:
         QCOMPARE(capabilityGroup(table)->text(0), QStringLiteral("Capability"));
         QVERIFY(table.valueText(QStringLiteral("capability")).isEmpty());
         QVERIFY(!table.valueText(QStringLiteral("force_worst")).contains(QStringLiteral("∞")));
+        QVERIFY(!table.valueText(QStringLiteral("det_J")).contains(QStringLiteral("∞")));
+        QVERIFY(table.valueText(QStringLiteral("singularity")).startsWith(QLatin1String("none")));
     }
 };
 
