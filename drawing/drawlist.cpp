@@ -4,7 +4,9 @@
 
 #include <QRectF>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace pkm::drawing {
@@ -29,20 +31,29 @@ std::pair<QPointF, QPointF> arcArrow(const Arc &arc)
 
 namespace {
 
+/// A box that can hold a single point: QRectF::united() drops a rectangle of no size, so the
+/// corners of a text without a knock-out box (reach 0) would not count.
+struct Extent {
+    double left = std::numeric_limits<double>::infinity(), top = left;
+    double right = -std::numeric_limits<double>::infinity(), bottom = right;
+};
+
 /// Grows `box` by the points and the half width `reach` around them.
-void extend(QRectF &box, const QPointF &p, double reach = 0.0)
+void extend(Extent &box, const QPointF &p, double reach = 0.0)
 {
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
         return;
-    const QRectF around(p.x() - reach, p.y() - reach, 2.0 * reach, 2.0 * reach);
-    box = box.isNull() ? around : box.united(around);
+    box.left = std::min(box.left, p.x() - reach);
+    box.top = std::min(box.top, p.y() - reach);
+    box.right = std::max(box.right, p.x() + reach);
+    box.bottom = std::max(box.bottom, p.y() + reach);
 }
 
 } // namespace
 
 QRectF bounds(const DrawList &list, bool cad)
 {
-    QRectF box;
+    Extent box;
     for (const Primitive &item : list.items) {
         if (cad ? !shownInCad(item.medium) : !shownOnScreen(item.medium))
             continue;
@@ -83,7 +94,7 @@ QRectF bounds(const DrawList &list, bool cad)
             },
             item.shape);
     }
-    return box;
+    return box.left <= box.right ? QRectF(QPointF(box.left, box.top), QPointF(box.right, box.bottom)) : QRectF();
 }
 
 } // namespace pkm::drawing

@@ -121,6 +121,56 @@ void ScenePainter::paintKnockout(QPainter &painter, const QRectF &box, const Sce
     painter.restore();
 }
 
+double ScenePainter::scaleBarHeight(const SceneStyle &style, const QPaintDevice *device)
+{
+    const QFontMetricsF metrics(detail::labelFont(style.fontPixels * style.pixelSize, false),
+                                const_cast<QPaintDevice *>(device));
+    return (16.0 + 8.0 + 2.0 + 6.0) * style.pixelSize + metrics.height();
+}
+
+ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::AlignedBox3d &extent, const QRectF &room,
+    const QRectF &labelRoom, double margin, const SceneStyle &style)
+{
+    const double gap = 4.0 * style.pixelSize;
+    const QRectF inner = labelRoom.adjusted(gap, gap, -gap, -gap);
+    // Less room on the side a label overhangs, a few times: the fit centres the drawing, so
+    // where the other side limits the scale, less room moves it by only half the overhang.
+    QRectF fitted = room;
+    ViewMapping mapping = ViewMapping::fit(extent, fitted, margin);
+    for (int pass = 0; pass < 4; ++pass) {
+        double left = 0.0, top = 0.0, right = 0.0, bottom = 0.0;
+        for (const drawing::Primitive &item : drawing::layoutScene(scene, mapping, style).items) {
+            const auto *text = std::get_if<drawing::Text>(&item.shape);
+            if (!text || !drawing::shownOnScreen(item.medium))
+                continue;
+            drawing::Text sized = *text; // its own size where it has no knock-out box
+            if (sized.box.isEmpty()) {
+                const QFontMetricsF metrics(sized.font);
+                sized.box = QSizeF(metrics.horizontalAdvance(sized.text), metrics.height());
+            }
+            drawing::DrawList one;
+            one.add(sized, item.layer, item.medium);
+            const QRectF box = drawing::bounds(one, false);
+            // a label more than its own size past the edge is a far point's (an instant centre
+            // that Fit leaves out); nearer, it is the drawing's, cut or pushed out by the edge
+            const QRectF near = labelRoom.adjusted(-box.width(), -2.0 * box.height(), box.width(), 2.0 * box.height());
+            if (!box.intersects(near) || inner.contains(box))
+                continue;
+            left = std::max(left, inner.left() - box.left());
+            top = std::max(top, inner.top() - box.top());
+            right = std::max(right, box.right() - inner.right());
+            bottom = std::max(bottom, box.bottom() - inner.bottom());
+        }
+        const QRectF less = fitted.adjusted(left, top, -right, -bottom);
+        // at most half the room: a label wider than the view is cut whatever the scale
+        if (left + right + top + bottom < 0.5 || less.width() < 0.5 * room.width() || less.height() < 0.5 * room.height())
+            break;
+        fitted = less;
+        mapping = ViewMapping::fit(extent, fitted, margin);
+    }
+    return mapping;
+}
+
 void ScenePainter::paintScaleBar(
     QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style)
 {

@@ -41,6 +41,15 @@ public:
     /// The translucent rounded box in the background colour that keeps text readable over
     /// the drawing (under the scale bar, a caption).
     static void paintKnockout(QPainter &painter, const QRectF &box, const SceneStyle &style);
+    /// How much of the bottom of an area the scale bar takes: its margin, tick, text and
+    /// knock-out (paintScaleBar()), device units of `device` (null: the screen's).
+    static double scaleBarHeight(const SceneStyle &style, const QPaintDevice *device);
+    /// ViewMapping::fit() of `extent` into `room`, fitted again in less room where a label of
+    /// the drawing, which keeps its size in pixels, is cut by the edge of `labelRoom` (the
+    /// view less what the scale bar covers): a narrow view then shows "B · 2a" whole instead
+    /// of its first letters. Labels wholly outside (a far instantaneous centre's) do not count.
+    static ViewMapping fitWithLabels(const Scene &scene, const Eigen::AlignedBox3d &extent, const QRectF &room,
+        const QRectF &labelRoom, double margin, const SceneStyle &style);
     /// A scale bar ("50 mm") in the bottom-right corner of `area`.
     static void paintScaleBar(
         QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style);

@@ -177,6 +177,17 @@ ViewMapping LinkageView::fittedMapping(const Scene &scene, const QRectF &target,
     return ViewMapping::fit(scene.extent, belowLegend(target, scene, style), fitMargin * style.pixelSize);
 }
 
+ViewMapping LinkageView::screenMapping(
+    const Scene &scene, const Eigen::AlignedBox3d &extent, const QRectF &area, const SceneStyle &style)
+{
+    // above the scale bar (the fit's margin covers part of it), and with every label whole
+    QRectF room = belowLegend(area, scene, style), labelRoom = room;
+    const double bar = std::min(ScenePainter::scaleBarHeight(style, nullptr), 0.25 * room.height());
+    room.setBottom(room.bottom() - std::max(0.0, bar - fitMargin * style.pixelSize));
+    labelRoom.setBottom(labelRoom.bottom() - bar);
+    return ScenePainter::fitWithLabels(scene, extent, room, labelRoom, fitMargin * style.pixelSize, style);
+}
+
 void LinkageView::renderScene(QPainter &painter, const QRectF &target, const Scene &scene, const SceneStyle &style)
 {
     SceneStyle exported = style;
@@ -212,7 +223,7 @@ void LinkageView::fitToView()
             }
         }
     }
-    m_mapping = ViewMapping::fit(extent, belowLegend(QRectF(rect()), m_scene, m_style), fitMargin * m_style.pixelSize);
+    m_mapping = screenMapping(m_scene, extent, QRectF(rect()), m_style);
     m_userMoved = false;
     update();
 }

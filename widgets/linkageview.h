@@ -77,6 +77,12 @@ public:
     static void renderScene(QPainter &painter, const QRectF &target, const Scene &scene, const SceneStyle &style);
     /// The mapping renderScene() uses for `target`.
     static ViewMapping fittedMapping(const Scene &scene, const QRectF &target, const SceneStyle &style);
+    /// The mapping Fit gives the view on the screen: `extent` (the scene's and its ghosts')
+    /// above the scale bar and below the legend, with every label whole where the area allows
+    /// (ScenePainter::fitWithLabels()). Pictures and animation frames keep fittedMapping(), so
+    /// that a frame's labels never change its scale.
+    static ViewMapping screenMapping(
+        const Scene &scene, const Eigen::AlignedBox3d &extent, const QRectF &area, const SceneStyle &style);
 
     int paintCount() const { return m_paintCount; }
     double lastPaintMilliseconds() const { return m_lastPaintMilliseconds; }

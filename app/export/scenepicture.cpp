@@ -34,8 +34,7 @@ std::string valueWithUnit(double value, int decimals, std::string_view unit)
 /// bar's margin, tick, text and knock-out (ScenePainter::paintScaleBar), device units.
 double bottomBand(const QPaintDevice *device, const SceneStyle &style)
 {
-    const QFontMetricsF metrics(captionFont(style), device);
-    return (16.0 + 8.0 + 2.0 + 6.0) * style.pixelSize + metrics.height();
+    return ScenePainter::scaleBarHeight(style, device);
 }
 
 } // namespace

@@ -395,8 +395,8 @@ void TestLinkageView::resizeRefitsUntilUserMoves()
     view.resize(1200, 900);
     QTRY_COMPARE(view.size(), QSize(1200, 900));
     QVERIFY(view.mapping().scale > small);
-    QVERIFY(
-        sameMapping(view.mapping(), LinkageView::fittedMapping(view.scene(), QRectF(view.rect()), view.sceneStyle())));
+    QVERIFY(sameMapping(view.mapping(),
+        LinkageView::screenMapping(view.scene(), view.scene().extent, QRectF(view.rect()), view.sceneStyle())));
 
     view.zoomOut();
     const double zoomed = view.mapping().scale;
