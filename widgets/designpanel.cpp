@@ -254,7 +254,7 @@ void DesignPanel::describe(const Row &row)
                                        row.unit->fontMetrics().horizontalAdvance(unit)));
     // A symbol is the same in every language, unless it is a word ("form"), which core marks.
     row.label->setText(
-        QStringLiteral("<b>%1</b>&nbsp; %2").arg(coreLabel(info.symbol).toHtmlEscaped(), label.toHtmlEscaped()));
+        QStringLiteral("<b>%1</b>&nbsp; %2").arg(symbolHtml(coreLabel(info.symbol)), label.toHtmlEscaped()));
     row.label->setToolTip(help);
 }
 

@@ -127,10 +127,10 @@ void EquationsPanel::refresh()
         const QString &result = m_results[qsizetype(i)];
         html += QStringLiteral("<p style=\"margin-top:10px; margin-bottom:2px\"><b>%1</b> "
                                "<span style=\"color:%2; font-size:small\">— %3</span></p>")
-                    .arg(toQString(equation.title).toHtmlEscaped(), QLatin1String(quietColour),
+                    .arg(symbolHtml(toQString(equation.title)), QLatin1String(quietColour),
                          toQString(equation.source).toHtmlEscaped());
         html += QStringLiteral("<p style=\"margin-left:12px; margin-top:0px; margin-bottom:0px; font-size:large\">%1</p>")
-                    .arg(formulaHtml(toQString(equation.symbolic)));
+                    .arg(symbolHtml(formulaText(toQString(equation.symbolic))));
         // the result the values panel shows, in bold, so that the eye finds it across both panels
         const qsizetype cut = line.size() - result.size();
         html += QStringLiteral("<p style=\"margin-left:24px; margin-top:0px; margin-bottom:2px; font-size:large\">%1<b>%2</b></p>")
@@ -139,7 +139,7 @@ void EquationsPanel::refresh()
         blocks += 3;
         if (!equation.note.empty()) {
             html += QStringLiteral("<p style=\"margin-left:12px; margin-top:0px; color:%1\">%2</p>")
-                        .arg(QLatin1String(noteColour), toQString(equation.note).toHtmlEscaped());
+                        .arg(QLatin1String(noteColour), symbolHtml(toQString(equation.note)));
             ++blocks;
         }
     }

@@ -1,6 +1,7 @@
 #include "plotstyle.h"
 
 #include "plotfont.h"
+#include "quantityformat.h"
 
 #include <QFontMetrics>
 
@@ -125,7 +126,7 @@ const char *fullTextProperty = "pkmFullText"; ///< the text before it was broken
 
 void setFittedText(QCPTextElement *element, const QString &text)
 {
-    element->setProperty(fullTextProperty, text);
+    element->setProperty(fullTextProperty, symbolPlain(text)); // "T = J·Fₘₐₓ"
     fitText(element);
 }
 

@@ -76,4 +76,62 @@ QString formatQuantity(double coreValue, const Unit &unit, int decimals, const Q
     return text + QLatin1Char(' ') + symbol;
 }
 
+namespace {
+/// The length of the subscript that starts at `from` (after a '_'): letters and digits, up to
+/// one that already is a subscript (U+2080…U+209C: "₁").
+qsizetype subscriptLength(const QString &text, qsizetype from)
+{
+    qsizetype end = from;
+    while (end < text.size() && text[end].isLetterOrNumber() && !(text[end].unicode() >= 0x2080 && text[end].unicode() <= 0x209C))
+        ++end;
+    return end - from;
+}
+
+/// The Unicode subscript of `c`, or a null QChar where there is none (no subscript b, c, d,
+/// f, g, q, w, y, z and no capitals).
+QChar subscriptOf(QChar c)
+{
+    static const QString from = QStringLiteral("0123456789aehijklmnoprstuvxβγρφχ");
+    static const QString to = QStringLiteral("₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓᵦᵧᵨᵩᵪ");
+    const qsizetype at = from.indexOf(c);
+    return at < 0 ? QChar() : to[at];
+}
+} // namespace
+
+QString symbolHtml(const QString &text)
+{
+    QString html;
+    qsizetype done = 0;
+    for (qsizetype at = text.indexOf(QLatin1Char('_')); at >= 0; at = text.indexOf(QLatin1Char('_'), at + 1)) {
+        const qsizetype length = subscriptLength(text, at + 1);
+        if (length == 0 || at == 0 || text[at - 1].isSpace())
+            continue; // a lone '_' is text
+        html += text.mid(done, at - done).toHtmlEscaped() + QStringLiteral("<sub>")
+            + text.mid(at + 1, length).toHtmlEscaped() + QStringLiteral("</sub>");
+        done = at + 1 + length;
+        at = done - 1;
+    }
+    return html + text.mid(done).toHtmlEscaped();
+}
+
+QString symbolPlain(const QString &text)
+{
+    QString plain;
+    qsizetype done = 0;
+    for (qsizetype at = text.indexOf(QLatin1Char('_')); at >= 0; at = text.indexOf(QLatin1Char('_'), at + 1)) {
+        const qsizetype length = subscriptLength(text, at + 1);
+        QString lowered;
+        for (qsizetype i = at + 1; i < at + 1 + length && lowered.size() == i - at - 1; ++i) {
+            if (const QChar sub = subscriptOf(text[i]); !sub.isNull())
+                lowered += sub;
+        }
+        if (at == 0 || text[at - 1].isSpace() || length == 0 || lowered.size() != length)
+            continue;
+        plain += text.mid(done, at - done) + lowered;
+        done = at + 1 + length;
+        at = done - 1;
+    }
+    return plain + text.mid(done);
+}
+
 } // namespace pkm

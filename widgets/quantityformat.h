@@ -20,6 +20,15 @@ QString unitText(const Unit &unit);
 /// ReportEntry::label, ReportText::label and ::text, ModeAlternative::label, SingularCurve::label,
 /// MechanismKind::title), marked there with QT_TRANSLATE_NOOP("core", …), in the current language.
 QString coreLabel(std::string_view label);
+/// The program's symbols write a subscript after '_' ("F_max", "det J_q", "x_AB", "T_max₁"):
+/// the one display rule for them. symbolHtml() escapes `text` and lowers each subscript,
+/// "F<sub>max</sub>", for rich text (labels, the values panel, the equations); a run of letters
+/// and digits after '_' is the subscript, up to a character that already is one ("₁").
+QString symbolHtml(const QString &text);
+/// For plain text (plot titles, legends): each subscript in Unicode subscript letters where
+/// every one of them has such a letter ("F_max" → "Fₘₐₓ"); left with its '_' where not
+/// ("J_q", "x_AB"), so that a symbol is never half lowered.
+QString symbolPlain(const QString &text);
 /// `coreValue` in core units; shown in the unit's display units.
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale = QLocale());
 

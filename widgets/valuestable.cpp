@@ -2,9 +2,14 @@
 
 #include "quantityformat.h"
 
+#include <QAbstractTextDocumentLayout>
+#include <QApplication>
 #include <QEvent>
 #include <QHeaderView>
+#include <QPainter>
 #include <QResizeEvent>
+#include <QStyledItemDelegate>
+#include <QTextDocument>
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +48,42 @@ QString nearSingularityText(SingularityType type)
     default: return ValuesTable::tr("near combined");
     }
 }
+
+/// Draws a symbol with its subscripts lowered (symbolHtml()): "J_q" as J with a small q. The
+/// item keeps the notation, so the tooltips, valueText() and a copy read "J_q".
+class SymbolDelegate : public QStyledItemDelegate
+{
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+
+    void paint(QPainter *painter, const QStyleOptionViewItem &option, const QModelIndex &index) const override
+    {
+        QStyleOptionViewItem item = option;
+        initStyleOption(&item, index);
+        if (!item.text.contains(QLatin1Char('_'))) {
+            QStyledItemDelegate::paint(painter, option, index);
+            return;
+        }
+        QTextDocument document;
+        document.setDefaultFont(item.font);
+        document.setDocumentMargin(0);
+        document.setHtml(symbolHtml(item.text));
+        item.text.clear(); // the style draws the background; the document the text
+        const QWidget *widget = item.widget;
+        QStyle *style = widget ? widget->style() : QApplication::style();
+        style->drawControl(QStyle::CE_ItemViewItem, &item, painter, widget);
+        // the margin the style leaves before a plain text (QCommonStyle's item text margin)
+        const int margin = style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, widget) + 1;
+        const QRect room = style->subElementRect(QStyle::SE_ItemViewItemText, &item, widget).adjusted(margin, 0, -margin, 0);
+        painter->save();
+        painter->setClipRect(room);
+        painter->translate(room.left(), room.top() + 0.5 * (room.height() - document.size().height()));
+        QAbstractTextDocumentLayout::PaintContext context;
+        context.palette.setColor(QPalette::Text, item.palette.color(QPalette::Text));
+        document.documentLayout()->draw(painter, context);
+        painter->restore();
+    }
+};
 } // namespace
 
 ValuesTable::ValuesTable(QWidget *parent)
@@ -51,6 +92,7 @@ ValuesTable::ValuesTable(QWidget *parent)
     setColumnCount(3);
     setHeaderLabels({tr("Quantity"), tr("Value"), tr("Meaning")});
     setRootIsDecorated(false);
+    setItemDelegateForColumn(0, new SymbolDelegate(this));
     setUniformRowHeights(true);
     setSelectionMode(QAbstractItemView::NoSelection);
     setFocusPolicy(Qt::NoFocus);

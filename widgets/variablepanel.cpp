@@ -106,7 +106,7 @@ void VariablePanel::describe(int i)
     const QString symbol = toQString(info.symbol);
     const QString label = coreLabel(info.label);
     const QString role = info.actuated ? (m_compact ? tr("input") : tr("input, actuated")) : tr("output");
-    row.name->setText(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>").arg(symbol.toHtmlEscaped(), role));
+    row.name->setText(QStringLiteral("<b>%1</b> <span style='color:#555'>(%2)</span>").arg(symbolHtml(symbol), role));
     // compact: one line that the slider makes room for, never a second line the rows lack
     row.name->setWordWrap(!m_compact);
     row.name->setToolTip(label);

@@ -142,6 +142,7 @@ QStringList englishWords(const QStringList &texts)
     QStringList found;
     for (const QString &t : texts) {
         QString plain = t;
+        plain.replace(QStringLiteral("<sub>"), QStringLiteral("_")); // "F<sub>max</sub>": a symbol's index
         plain.remove(QRegularExpression(QStringLiteral("<[^>]*>"))); // markup is not text
         plain.remove(parameterKey()); // a key of files and the CLI, the same in every language
         for (auto it = word.globalMatch(plain); it.hasNext();) {

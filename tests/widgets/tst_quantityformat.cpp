@@ -42,6 +42,24 @@ private slots:
         // the locale's decimal sign, as everywhere else
         QCOMPARE(formatQuantity(1.5e9, units::none, 1, QLocale(QLocale::Russian)), QStringLiteral("1,500·10⁹"));
     }
+
+    // One display rule for the notation's subscripts: lowered in rich text, Unicode subscript
+    // letters in plain text only where each letter has one, never half.
+    void subscripts()
+    {
+        QCOMPARE(symbolHtml(QStringLiteral("F_max")), QStringLiteral("F<sub>max</sub>"));
+        QCOMPARE(symbolHtml(QStringLiteral("det J_q")), QStringLiteral("det J<sub>q</sub>"));
+        QCOMPARE(symbolHtml(QStringLiteral("T_max₁")), QStringLiteral("T<sub>max</sub>₁"));
+        QCOMPARE(symbolHtml(QStringLiteral("|Δx_L|")), QStringLiteral("|Δx<sub>L</sub>|"));
+        QCOMPARE(symbolHtml(QStringLiteral("J_p = diag(2p_i − 2B_i)")),
+                 QStringLiteral("J<sub>p</sub> = diag(2p<sub>i</sub> − 2B<sub>i</sub>)"));
+        QCOMPARE(symbolHtml(QStringLiteral("a<b & _x")), QStringLiteral("a&lt;b &amp; _x")); // escaped; a lone '_' stays
+        QCOMPARE(symbolHtml(QStringLiteral("one side")), QStringLiteral("one side"));
+        QCOMPARE(symbolPlain(QStringLiteral("T = J·F_max, (13)")), QStringLiteral("T = J·Fₘₐₓ, (13)"));
+        QCOMPARE(symbolPlain(QStringLiteral("ḋ = J·θ̇; ḋ_max")), QStringLiteral("ḋ = J·θ̇; ḋₘₐₓ"));
+        QCOMPARE(symbolPlain(QStringLiteral("det J_q, x_AB")), QStringLiteral("det J_q, x_AB"));
+        QCOMPARE(symbolPlain(QStringLiteral("m_inv and v_max₁")), QStringLiteral("mᵢₙᵥ and vₘₐₓ₁"));
+    }
 };
 
 QTEST_MAIN(TestQuantityFormat)
