@@ -433,7 +433,9 @@ Result<CommandMap> computeCommandMap(const PreparedDesign &prepared, const Invoc
         map.summary = summariseMap(**workspace, quantity, squareGrid((*workspace)->workspaceBounds(), resolution));
     }
     map.grid = map.summary.grid;
-    computed.box = map.values.empty() ? map.summary.reachableBox : reachableBounds(map.grid, map.values);
+    // a planar workspace's map gives the box with its summary; the others are scanned
+    const bool boxed = map.values.empty() || !map.summary.reachableBox.isEmpty() || map.summary.reachableCells == 0;
+    computed.box = boxed ? map.summary.reachableBox : reachableBounds(map.grid, map.values);
     if (quantity == MapQuantity::OrientationRange) {
         // the core maps radians; the command line gives angles in degrees, as everywhere
         for (float &value : map.values)

@@ -6,8 +6,11 @@
 
 #include "report/numberformat.h"
 
+#include <sys/mman.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 
 namespace pkm::report {
@@ -24,6 +27,26 @@ bool reachable(float value)
 {
     return reachableCell(value);
 }
+
+/// `buffer` as `count` zeros, its pages 2 MB huge pages where the kernel allows them
+/// (madvise; transparent huge pages in "madvise" mode, Debian's default): a 3000² map is 36 MB,
+/// and on a virtual machine its 9000 faults of 4 KB pages cost more than the map itself
+/// (170 ms against 7 ms for the Python module's call).
+void zeroedCells(std::vector<float> &buffer, std::size_t count)
+{
+    if (buffer.capacity() < count) {
+        std::vector<float>().swap(buffer);
+        buffer.reserve(count); // allocated, not yet touched
+#ifdef MADV_HUGEPAGE
+        constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
+        const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(buffer.data()) + huge - 1) & ~(huge - 1);
+        const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(buffer.data() + count) & ~(huge - 1);
+        if (end > begin)
+            madvise(reinterpret_cast<void *>(begin), end - begin, MADV_HUGEPAGE); // a hint: failure is harmless
+#endif
+    }
+    buffer.assign(count, 0.0f);
+}
 } // namespace
 
 /// The map of `workspace` over squareGrid(its bounds, resolution); `values` is reused.
@@ -31,9 +54,9 @@ MapSummary computeInto(const PlanarWorkspace &workspace, MapQuantity quantity, i
     std::vector<float> &values, std::vector<float> *margins)
 {
     const MapGrid grid = squareGrid(workspace.workspaceBounds(), resolution);
-    values.assign(grid.cells(), 0.0f);
+    zeroedCells(values, grid.cells());
     if (margins)
-        margins->assign(grid.cells(), 0.0f);
+        zeroedCells(*margins, grid.cells());
     return computeMap(workspace, quantity, grid, values, margins ? std::span<float>(*margins) : std::span<float>());
 }
 
