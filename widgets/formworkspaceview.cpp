@@ -90,7 +90,7 @@ FormWorkspaceView::FormWorkspaceView(QWidget *parent)
         axis->setTickLabelFont(fontOf(font(), tickPoints));
         axis->setLabelFont(fontOf(font(), labelPoints));
         axis->grid()->setPen(QPen(QColor(0, 0, 0, 30), 1.0));
-        axis->setTicker(QSharedPointer<MinusTicker>::create());
+        axis->setTicker(QSharedPointer<MinusTicker>::create(axis));
     }
     for (QCPAxis *axis : {plot->xAxis2, plot->yAxis2}) {
         axis->setVisible(true);

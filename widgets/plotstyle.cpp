@@ -195,6 +195,17 @@ void forgetLegendNames(QCustomPlot *plot)
         plot->plottable(j)->setProperty(fullNameProperty, QVariant());
 }
 
+void setLegendShown(QCustomPlot *plot, bool shown)
+{
+    QCPLayoutGrid *grid = plot->plotLayout();
+    const bool inRow = grid->hasElement(2, 0) && grid->element(2, 0) == plot->legend;
+    plot->legend->setVisible(shown);
+    if (shown && !inRow && !grid->hasElement(2, 0))
+        grid->addElement(2, 0, plot->legend);
+    else if (!shown && inRow)
+        grid->take(plot->legend);
+}
+
 int layOutLegend(QCustomPlot *plot)
 {
     QCPLegend *legend = plot->legend;

@@ -54,6 +54,9 @@ void wrapLegendNames(QCustomPlot *plot);
 /// Lays the legend out in as many columns as the plot's width holds, balanced over the rows
 /// (filled column by column); returns its height in pixels (0 without entries).
 int layOutLegend(QCustomPlot *plot);
+/// Shows or hides the legend in its row under the subtitle; a hidden one leaves the row, so
+/// that the axes take its room (QCustomPlot keeps an invisible element's minimum size).
+void setLegendShown(QCustomPlot *plot, bool shown);
 /// Forgets the kept names, after the plottables were given new ones (a new language).
 void forgetLegendNames(QCustomPlot *plot);
 

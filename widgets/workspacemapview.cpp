@@ -197,7 +197,7 @@ WorkspaceMapView::WorkspaceMapView(QWidget *parent)
         axis->grid()->setVisible(false);
     }
     for (QCPAxis *axis : {plot->xAxis, plot->yAxis})
-        axis->setTicker(QSharedPointer<MinusTicker>::create());
+        axis->setTicker(QSharedPointer<MinusTicker>::create(axis));
     m_colorScale->setBarWidth(16);
     m_colorScale->setRangeDrag(false);
     m_colorScale->setRangeZoom(false);

@@ -393,16 +393,14 @@ private slots:
         QTest::keyClick(view, Qt::Key_Home);
         QRectF room(view->rect());
         room.setBottom(room.bottom() - ScenePainter::scaleBarHeight(view->sceneStyle(), view));
-        const drawing::DrawList list = drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle());
         int texts = 0;
-        for (const drawing::Primitive &item : list.items) {
+        for (const drawing::Primitive &item : drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle()).items) {
             const auto *text = std::get_if<drawing::Text>(&item.shape);
             if (!text || !drawing::shownOnScreen(item.medium))
                 continue;
             const QFontMetricsF metrics(text->font);
-            const QSizeF size(metrics.horizontalAdvance(text->text), metrics.height());
             drawing::Text sized = *text;
-            sized.box = sized.box.isEmpty() ? size : sized.box;
+            sized.box = sized.box.isEmpty() ? QSizeF(metrics.horizontalAdvance(text->text), metrics.height()) : sized.box;
             drawing::DrawList one;
             one.add(sized, item.layer, item.medium);
             const QRectF box = drawing::bounds(one, false);
@@ -410,9 +408,8 @@ private slots:
             if (!box.intersects(near))
                 continue; // a point far out (the four-bar's instant centre) that Fit leaves out
             ++texts;
-            QVERIFY2(room.contains(box), qPrintable(QStringLiteral("'%1' at (%2, %3)–(%4, %5) in %6 × %7")
-                                                         .arg(text->text).arg(box.left()).arg(box.top()).arg(box.right())
-                                                         .arg(box.bottom()).arg(room.width()).arg(room.height())));
+            QVERIFY2(room.contains(box), qPrintable(QStringLiteral("'%1' at y %2–%3 in %4 × %5").arg(text->text)
+                .arg(box.top()).arg(box.bottom()).arg(room.width()).arg(room.height())));
         }
         QCOMPARE_GT(texts, 0);
     }
@@ -477,6 +474,24 @@ private slots:
         QCOMPARE_LT(std::abs(plot->xAxis->tickLabelFont().pointSizeF() - tick), 0.01);
         QCOMPARE_LT(std::abs(textscale::factor() - 1.0), 1e-12);
         QCOMPARE(shownOnPage(), 3);
+    }
+
+    /// Figs. 15 and 16 share a row above fig. 17 at 1280×720: their axes keep room (a legend
+    /// each left them a 30–60 px strip), as fig. 17 names the same curve and bands.
+    void actuatorPlotsKeepTheirAxes()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(!w.isPresenting() && w.openDesign(QStringLiteral("pjoint-prototype")));
+        QTabWidget *tabs = nullptr; // the П-joint's Geometry, Jacobian and Actuator tabs
+        for (QTabWidget *candidate : w.findChildren<QTabWidget *>())
+            tabs = candidate->count() == 3 && candidate->tabText(2) == QLatin1String("Actuator") ? candidate : tabs;
+        QVERIFY(tabs);
+        tabs->setCurrentIndex(2);
+        const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
+        for (int i : {5, 6})
+            QTRY_VERIFY2(plots[i]->axisRect()->height() >= 100, qPrintable(QString::number(plots[i]->axisRect()->height())));
+        QVERIFY(plots[7]->legend->visible()); // fig. 17 names them
+        tabs->setCurrentIndex(0);
     }
 };
 

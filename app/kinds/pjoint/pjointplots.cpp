@@ -442,6 +442,11 @@ void PJointPlots::fitToWidth(int index)
             plotstyle::layOutLegend(plot);
         }
     }
+    // Figs. 15 and 16 share a row above fig. 17 (1280×720): where their legends leave the axes
+    // a strip, they show none, since fig. 17 below, as wide as both, names the same curve and
+    // bands. Its row then takes no room.
+    if (index == ResolutionPlot || index == SpeedPlot)
+        plotstyle::setLegendShown(plot, !tooTall());
 }
 
 void PJointPlots::retranslate()
