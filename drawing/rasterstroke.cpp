@@ -70,6 +70,9 @@ std::vector<Run> runsOf(const QPolygonF &points, bool closed, const QVector<qrea
 /// pixel: a traced curve (an ellipse of 96 sides) then needs no join at all.
 bool nearlyStraight(const QPointF &a, const QPointF &v, const QPointF &b, double half)
 {
+    // a side of no length (a dash that ends on a corner) has no direction: nothing to join
+    if (!(length(v - a) > 1e-9) || !(length(b - v) > 1e-9))
+        return true;
     const QPointF d1 = (v - a) / length(v - a), d2 = (b - v) / length(b - v);
     return d1.x() * d2.x() + d1.y() * d2.y() > 0.0 && half * std::abs(cross(d1, d2)) < 0.2;
 }
@@ -80,7 +83,8 @@ QPolygonF joinPolygon(const QPointF &a, const QPointF &v, const QPointF &b, doub
 {
     const QPointF d1 = (v - a) / length(v - a), d2 = (b - v) / length(b - v);
     const double turn = cross(d1, d2);
-    if (std::abs(turn) < 1e-9)
+    // NaN-safe: a polygon with a NaN corner sends Qt's rasterizer into an endless loop
+    if (!(std::abs(turn) >= 1e-9))
         return {};
     // the outside of a left turn is on the right
     const double side = turn > 0.0 ? -1.0 : 1.0;
@@ -148,7 +152,7 @@ void strokeOnRaster(QPainter &painter, const QPolygonF &input, bool closed, cons
         const int n = int(p.size());
         for (int k = 0; k < (run.loop ? n : n - 1); ++k) {
             QPointF a = p[k], b = p[(k + 1) % n];
-            if (!run.loop && pen.cap == Qt::SquareCap) {
+            if (!run.loop && pen.cap == Qt::SquareCap && length(b - a) > 1e-9) {
                 // a square cap reaches half the width past the end
                 const QPointF u = (b - a) / length(b - a);
                 if (k == 0)

@@ -186,6 +186,25 @@ private slots:
         }
         QCOMPARE(byUs, byQt);
     }
+
+    /// A dash that ends exactly on a corner leaves a side of no length in its run: no join
+    /// there. Its direction was NaN, and a join polygon with a NaN corner sent Qt's rasterizer
+    /// into an endless loop (the GUI hung dragging MOMA with the velocity shapes shown).
+    void dashEndingOnACorner()
+    {
+        for (const Qt::PenJoinStyle join : {Qt::BevelJoin, Qt::MiterJoin, Qt::RoundJoin}) {
+            const Pen pen{QColor(Qt::black), 2.0, Qt::FlatCap, Dash::Dashed, join};
+            for (double side : {20.0, 32.0, 40.0, 60.0}) { // the pattern is 12 px on, 8 off
+                const QPolygonF square{{50, 50}, {50 + side, 50}, {50 + side, 50 + side}, {50, 50 + side}};
+                QImage image = blank();
+                QPainter painter(&image);
+                painter.setRenderHint(QPainter::Antialiasing);
+                strokeOnRaster(painter, square, true, pen);
+                painter.end();
+                QVERIFY(image.pixelColor(56, 50) != image.pixelColor(5, 5)); // the first dash is drawn
+            }
+        }
+    }
 };
 
 QTEST_MAIN(TestRasterStroke)
