@@ -7058,7 +7058,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
-        <translation>Механизм 3-RP̲R Инноченти и Паренти-Кастелли, исследованный Зейном, Венгером и Шаблой (статья о переходах между режимами сборки 3-RP̲R без особых положений, журнал «Теория механизмов и машин», 2008): шарниры основания A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), стороны платформы B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. При длинах штанг 14.98, 15.38 и 12 его прямая кинематика имеет шесть вещественных решений.</translation>
+        <translation>Механизм 3-RP̲R Инноченти и Паренти-Кастелли, исследованный Зейном, Венгером и Шаблой (статья о переходах между режимами сборки 3-RP̲R без особых положений, журнал «Теория механизмов и машин», 2008): шарниры основания A₁ = (0; 0), A₂ = (15,91; 0), A₃ = (0; 10), стороны платформы B₁B₂ = 17,04, B₂B₃ = 16,54, B₃B₁ = 20,84. При длинах штанг 14,98; 15,38 и 12 его прямая кинематика имеет шесть вещественных решений.</translation>
     </message>
     <message>
         <source>Planar parallel: a symmetric 3-R̲RR</source>

@@ -7058,7 +7058,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
-        <translation>Механизам 3-RP̲R Иноћентија и Паренти-Кастелија, који су проучавали Зеин, Венгер и Шабла (чланак о прелазима између склопних режима 3-RP̲R без сингуларитета, часопис „Теорија механизама и машина”, 2008): зглобови основе A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), странице платформе B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. При дужинама шипки 14.98, 15.38 и 12 његова директна кинематика има шест реалних решења.</translation>
+        <translation>Механизам 3-RP̲R Иноћентија и Паренти-Кастелија, који су проучавали Зеин, Венгер и Шабла (чланак о прелазима између склопних режима 3-RP̲R без сингуларитета, часопис „Теорија механизама и машина”, 2008): зглобови основе A₁ = (0; 0), A₂ = (15,91; 0), A₃ = (0; 10), странице платформе B₁B₂ = 17,04, B₂B₃ = 16,54, B₃B₁ = 20,84. При дужинама шипки 14,98; 15,38 и 12 његова директна кинематика има шест реалних решења.</translation>
     </message>
     <message>
         <source>Planar parallel: a symmetric 3-R̲RR</source>

@@ -7058,7 +7058,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
-        <translation>Mehanizam 3-RP̲R Inoćentija i Parenti-Kastelija, koji su proučavali Zein, Venger i Šabla (članak o prelazima između sklopnih režima 3-RP̲R bez singulariteta, časopis „Teorija mehanizama i mašina”, 2008): zglobovi osnove A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), stranice platforme B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. Pri dužinama šipki 14.98, 15.38 i 12 njegova direktna kinematika ima šest realnih rešenja.</translation>
+        <translation>Mehanizam 3-RP̲R Inoćentija i Parenti-Kastelija, koji su proučavali Zein, Venger i Šabla (članak o prelazima između sklopnih režima 3-RP̲R bez singulariteta, časopis „Teorija mehanizama i mašina”, 2008): zglobovi osnove A₁ = (0; 0), A₂ = (15,91; 0), A₃ = (0; 10), stranice platforme B₁B₂ = 17,04, B₂B₃ = 16,54, B₃B₁ = 20,84. Pri dužinama šipki 14,98; 15,38 i 12 njegova direktna kinematika ima šest realnih rešenja.</translation>
     </message>
     <message>
         <source>Planar parallel: a symmetric 3-R̲RR</source>

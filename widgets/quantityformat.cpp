@@ -62,7 +62,11 @@ QString formatQuantity(double coreValue, const Unit &unit, int decimals, const Q
     // A huge value (close to a singular pose, where a quantity grows without bound: a four-bar
     // a hair's breadth from its dead centre is 10¹² N·m/rad stiff) in powers of ten, four
     // digits: "1.680·10¹²", never a row of thirteen digits.
-    QString text = std::abs(display) >= 1e8 ? powerOfTen(display, plain) : plain.toString(display, 'f', decimals);
+    // A fine-grained quantity that is zero (det J at a direct singularity) reads "0", not
+    // "0.00000000": a row of zeros suggests a tiny value where there is none.
+    const bool bareZero = display == 0.0 && decimals > 3;
+    QString text = std::abs(display) >= 1e8 ? powerOfTen(display, plain)
+                                            : plain.toString(display, 'f', bareZero ? 0 : decimals);
     // Read, not typed: the typographic minus ("−180.0°", as the drawings and the equations
     // print it), where the locale offers only the hyphen. Fields and spin boxes keep the hyphen
     // a keyboard gives.

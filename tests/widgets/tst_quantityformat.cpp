@@ -25,6 +25,12 @@ private slots:
         // a slider's limit is read, not typed: the minus sign, never a hyphen, in every language
         QCOMPARE(formatQuantity(-std::numbers::pi, units::angle, 1, c), QStringLiteral("−180.0°"));
         QCOMPARE(formatQuantity(-4.96184, units::none, 4, QLocale(QLocale::Russian)), QStringLiteral("−4,9618"));
+        // det J at a direct singularity: zero, not a row of zeros that reads as a tiny value;
+        // a pose's 0.00 mm keeps its two decimals, as its neighbours in the panel have them
+        QCOMPARE(formatQuantity(0.0, units::none, 8, c), QStringLiteral("0"));
+        QCOMPARE(formatQuantity(-3e-12, units::none, 8, c), QStringLiteral("0"));
+        QCOMPARE(formatQuantity(2e-8, units::none, 8, c), QStringLiteral("0.00000002"));
+        QCOMPARE(formatQuantity(0.0, units::millimetre, 2, c), QStringLiteral("0.00 mm"));
     }
 
     /// Close to a singular pose a quantity grows without bound: from 10⁸ up it reads in powers

@@ -103,7 +103,7 @@ Scene PlanarParallel::scene(const Pose &pose) const
         return int(s.joints.size()) - 1;
     };
     // joint 0: the platform's reference point, the handle
-    const int reference = joint(X.head<2>(), n == 2 && m_design.platform == PlatformType::Point ? "P" : "O_P",
+    const int reference = joint(X.head<2>(), n == 2 && m_design.platform == PlatformType::Point ? "P" : "Oₚ",
                                 m_design.platform == PlatformType::Point ? JointKind::Revolute : JointKind::Point);
     std::array<int, 3> ends{};
     std::array<int, 3> bases{};
