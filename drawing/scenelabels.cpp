@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
 namespace pkm {
 
 using namespace detail;
+
 
 // -- quads -------------------------------------------------------------------------------
 
@@ -88,12 +91,12 @@ void SceneLabels::addRay(int joint, const QPointF &towards, double reach)
 
 void SceneLabels::addObstacle(const QPointF &a, const QPointF &b, double halfWidth)
 {
-    m_obstacles.push_back(segmentQuad(a, b, halfWidth));
+    m_obstacles.push_back({segmentQuad(a, b, halfWidth), a, b, halfWidth, true});
 }
 
 void SceneLabels::addObstacle(const Quad &quad)
 {
-    m_obstacles.push_back(quad);
+    m_obstacles.push_back({quad, {}, {}, 0.0, false});
 }
 
 void SceneLabels::addMemberLabel(const PendingMemberLabel &label)
@@ -119,7 +122,7 @@ void SceneLabels::addFreeLabel(const PendingFreeLabel &label)
 void SceneLabels::place(const SceneLabel &label)
 {
     m_labels.push_back(label);
-    m_obstacles.push_back(boxQuad(label.centre, textSize(label.text, label.joint), label.rotationDegrees));
+    m_labelBoxes.push_back(boxQuad(label.centre, textSize(label.text, label.joint), label.rotationDegrees));
 }
 
 void SceneLabels::dropDimensionedActuatorLabels()
@@ -156,240 +159,131 @@ QSizeF SceneLabels::textSize(const QString &text, bool joint) const
     return {metrics.horizontalAdvance(text) + 8.0 * m_px, metrics.height() + 2.0 * m_px};
 }
 
+/// How long a stretch of the line from `a` to `b`, `2 × halfWidth` wide, lies in the
+/// rectangle `box` (corners in order round it).
+double detail::coveredLength(const Quad &box, const QPointF &a, const QPointF &b, double halfWidth)
+{
+    const QPointF e1 = box[1] - box[0], e2 = box[3] - box[0];
+    const double w = length(e1), h = length(e2);
+    if (w <= 0.0 || h <= 0.0)
+        return 0.0;
+    const QPointF u = e1 / w, v = e2 / h;
+    // Liang–Barsky in the box's own frame, the box grown by the line's half width.
+    const QPointF p(dot(a - box[0], u), dot(a - box[0], v)), d(dot(b - a, u), dot(b - a, v));
+    double t0 = 0.0, t1 = 1.0;
+    const auto clip = [&t0, &t1](double q, double r) { // keeps the part where q·t ≤ r
+        if (q == 0.0)
+            return r >= 0.0;
+        const double t = r / q;
+        if (q < 0.0)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
+        return t0 <= t1;
+    };
+    const bool inside = clip(-d.x(), p.x() + halfWidth) && clip(d.x(), w + halfWidth - p.x())
+        && clip(-d.y(), p.y() + halfWidth) && clip(d.y(), h + halfWidth - p.y());
+    return inside ? (t1 - t0) * length(b - a) : 0.0;
+}
+
+double SceneLabels::collisions(const Quad &box, double enough, double perLine) const
+{
+    // A label over another label hides text, over a pivot a joint; over a line it interrupts
+    // the line, the more the more of it it hides (a label across a bar costs less than one
+    // along it, one over a hatch line less than one over a bar).
+    double cost = 0.0;
+    for (const Quad &q : m_labelBoxes) {
+        if (overlap(box, q) && (cost += coversALabel) >= enough)
+            return cost;
+    }
+    for (const Quad &q : m_pivots) {
+        if (overlap(box, q) && (cost += 3.0 * perLine) >= enough)
+            return cost;
+    }
+    for (const Obstacle &o : m_obstacles) {
+        if (!overlap(box, o.quad))
+            continue;
+        // the area hidden: a bar counts for more than a thin line
+        const double hidden = o.line ? coveredLength(box, o.a, o.b, o.halfWidth) * std::max(2.0 * o.halfWidth, 2.0 * m_px) : 0.0;
+        if ((cost += perLine * (0.5 + hidden / (80.0 * m_px * m_px))) >= enough)
+            return cost;
+    }
+    return cost;
+}
+
+double SceneLabels::thinLinesOnly(const Quad &box) const
+{
+    double cost = collisions(box, coversALabel, 0.0); // labels only
+    for (const Quad &q : m_pivots)
+        cost += overlap(box, q) ? coversALabel : 0.0;
+    for (const Obstacle &o : m_obstacles) {
+        if (cost < coversALabel && overlap(box, o.quad))
+            // bars are 4.5 px wide each side of their axis, dimension lines 3.5, the ground 2.25
+            cost += !o.line || o.halfWidth < 4.0 * m_px ? 1.0 : coversALabel;
+    }
+    return cost;
+}
+
 bool SceneLabels::isFree(const Quad &box) const
 {
-    return std::none_of(m_obstacles.begin(), m_obstacles.end(), [&](const Quad &q) { return overlap(box, q); });
+    const auto covers = [&box](const Quad &q) { return overlap(box, q); };
+    return std::none_of(m_labelBoxes.begin(), m_labelBoxes.end(), covers)
+        && std::none_of(m_pivots.begin(), m_pivots.end(), covers)
+        && std::none_of(m_obstacles.begin(), m_obstacles.end(), [&box](const Obstacle &o) { return overlap(box, o.quad); });
 }
 
-void SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates)
+bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates, double leaveOutAt,
+    std::size_t near, double nearEnough)
 {
     const QSizeF size = textSize(label.text, label.joint) + QSizeF(4.0 * m_px, 4.0 * m_px); // keep a gap
-    bool first = true;
-    QPointF fallback;
-    for (const QPointF &centre : candidates) {
-        if (first) {
-            fallback = centre;
-            first = false;
-        }
-        if (isFree(boxQuad(centre, size, label.rotationDegrees))) {
-            label.centre = centre;
-            place(label);
-            return;
-        }
-    }
-    if (!first) {
-        label.centre = fallback;
-        place(label);
-    }
-}
-
-/// Half the drawn width (device) of the member joining two joints, `fraction` of the way.
-double SceneLabels::memberHalfWidth(int from, int to, double fraction) const
-{
-    double half = 0.0;
-    auto same = [from, to](int a, int b) { return (a == from && b == to) || (a == to && b == from); };
-    for (const SceneBar &bar : m_scene.bars) {
-        if (same(bar.from, bar.to))
-            half = std::max(half, 0.5 * m_px * (bar.kind == BarKind::Ground ? m_style.groundWidth : m_style.barWidth));
-    }
-    for (const SceneActuator &actuator : m_scene.actuators) {
-        if (!same(actuator.from, actuator.to))
-            continue;
-        const double distance = length(point(to) - point(from)) / m_mapping.scale;
-        const double along = actuator.from == from ? fraction * distance : (1.0 - fraction) * distance;
-        const double width = along < actuator.bodyLength
-            ? actuator.bodyWidth * m_mapping.scale
-            : std::max(actuator.rodDiameter * m_mapping.scale, m_style.minimumScrewWidth * m_px);
-        half = std::max(half, 0.5 * width);
-    }
-    return half;
-}
-
-void SceneLabels::placeAll()
-{
-    // Most constrained first: dimension text along members, angle labels near their arcs,
-    // bar names (which may slide along their bar), then joint names (anywhere around).
-    for (const PendingFreeLabel &pending : m_freeLabels)
-        placeFirstFree(pending.label, pending.candidates);
-    placeMemberLabels(true);
-    placeAngleLabels();
-    placeGuideLabels();
-    placeMemberLabels(false);
-    placeJointLabels();
-}
-
-void SceneLabels::placeMemberLabels(bool dimensions)
-{
-    if (m_points.empty())
-        return;
-    QPointF centroid;
-    int shown = 0;
-    for (int j = 0; j < int(m_points.size()); ++j) {
-        if (valid(j)) {
-            centroid += point(j);
-            ++shown;
-        }
-    }
-    if (shown > 0)
-        centroid /= double(shown);
-
-    std::vector<QPointF> candidates;
-    for (const PendingMemberLabel &pending : m_memberLabels) {
-        if (pending.preferReadingUp != dimensions || !valid(pending.from) || !valid(pending.to))
-            continue;
-        const QPointF p = point(pending.from), q = point(pending.to);
-        if (length(q - p) < 1e-6)
-            continue;
-        const QPointF u = unit(q - p), left = screenLeft(u);
-        const QSizeF size = textSize(pending.text);
-        // a dimension's text is dimension layer, a member's name text
-        SceneLabel label {{}, 0.0, pending.text, false, pending.colour,
-            pending.preferReadingUp ? drawing::Layer::Dimensions : drawing::Layer::Text, pending.cad};
-        double firstSide = 1.0;
-        if (pending.preferReadingUp) {
-            // Rotated with the member, above it as read.
-            label.rotationDegrees = readableRotation(u);
-            const QPointF up = deviceDirection((90.0 - label.rotationDegrees) * degree);
-            firstSide = dot(up, left) >= 0.0 ? 1.0 : -1.0;
-        } else {
-            // Bar names upright, on the outside of the mechanism.
-            firstSide = dot(left, 0.5 * (p + q) - centroid) >= 0.0 ? 1.0 : -1.0;
-        }
-        candidates.clear();
-        for (double side : {firstSide, -firstSide}) {
-            for (double fraction : {0.5, 0.42, 0.58, 0.34, 0.66, 0.26, 0.74}) {
-                const QPointF normal = side * left;
-                const double extent = pending.preferReadingUp ? 0.5 * size.height() : support(normal, size);
-                const double lift = memberHalfWidth(pending.from, pending.to, fraction) + 5.0 * m_px + extent;
-                candidates.push_back(p + fraction * (q - p) + lift * normal);
+    const auto boxAt = [&](std::size_t k) { return boxQuad(candidates[k], size, label.rotationDegrees); };
+    const std::size_t count = candidates.size();
+    near = std::min(near, count);
+    // The first free one of the first `near`; else the one of those that covers fewest thin
+    // lines (fewer than `nearEnough`) and nothing else; else the first free one after them;
+    // else the one that covers least, earlier ones (nearer to what the label names) first
+    // among equals. A free place is the rule: the costs are worked out only when there is none.
+    std::size_t chosen = count;
+    double best = 0.0;
+    for (std::size_t k = 0; k < near && chosen == count; ++k)
+        chosen = isFree(boxAt(k)) ? k : count;
+    if (chosen == count && near > 0) {
+        best = nearEnough;
+        for (std::size_t k = 0; k < near; ++k) {
+            const double thin = thinLinesOnly(boxAt(k));
+            if (thin < best) {
+                best = thin;
+                chosen = k;
             }
         }
-        placeFirstFree(label, candidates);
     }
-}
-
-void SceneLabels::placeAngleLabels()
-{
-    std::vector<QPointF> candidates;
-    for (const PendingAngleLabel &pending : m_angleLabels) {
-        const QPointF v = point(pending.vertex);
-        const QSizeF size = textSize(pending.text);
-        const double gap = 5.0 * m_px;
-        const double end = pending.start + pending.sweep;
-        const double turn = pending.sweep > 0.0 ? 1.0 : -1.0;
-        auto centreAt = [&](double a, double extra) {
-            const QPointF u = deviceDirection(a);
-            return v + (pending.radius + gap + extra + support(u, size)) * u;
-        };
-        // Outside the arc at mid-angle; when the arc is too narrow, step round past the end
-        // leg, then past the start leg; then farther out.
-        const double middle = pending.start + 0.5 * pending.sweep;
-        candidates.clear();
-        candidates.push_back(centreAt(middle, 0.0));
-        // Steps of 4°, or of 12 px along a large arc, so the label stays close to it.
-        const double angleStep = std::min(4.0 * degree, 12.0 * m_px / std::max(pending.radius, 1e-9));
-        auto stepRound = [&](int first, int last) {
-            for (int step = first; step <= last; ++step) {
-                const double delta = step * angleStep;
-                candidates.push_back(centreAt(end + turn * delta, 0.0));
-                candidates.push_back(centreAt(pending.start - turn * delta, 0.0));
-            }
-        };
-        stepRound(1, 5);
-        for (int step = 1; step <= 3; ++step)
-            candidates.push_back(centreAt(middle, step * 10.0 * m_px));
-        stepRound(6, 20);
-        for (int step = 4; step <= 8; ++step)
-            candidates.push_back(centreAt(middle, step * 10.0 * m_px));
-        placeFirstFree(
-            SceneLabel {{}, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}}, candidates);
-        const QPointF placed = m_labels.back().centre;
-        addRay(pending.vertex, placed - v, length(placed - v));
-    }
-}
-
-void SceneLabels::placeGuideLabels()
-{
-    std::vector<QPointF> candidates;
-    for (const PendingGuideLabel &pending : m_guideLabels) {
-        const QSizeF size = textSize(pending.text);
-        const QPointF axis = pending.end - pending.start;
-        const QPointF u = unit(axis);
-        const double gap = 6.0 * m_px;
-        candidates.clear();
-        // Beside the rail on the hatched side, which the mechanism keeps clear of, from the
-        // middle outwards; then on the other side; then past its ends; then farther out.
-        for (double extra : {0.0, 14.0 * m_px}) {
-            for (double side : {1.0, -1.0}) {
-                const QPointF normal = side * pending.outer;
-                const double lift = (side > 0.0 ? pending.outerReach : pending.innerReach) + gap + extra;
-                for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9})
-                    candidates.push_back(pending.start + fraction * axis + (lift + support(normal, size)) * normal);
+    for (std::size_t k = near; k < count && chosen == count; ++k)
+        chosen = isFree(boxAt(k)) ? k : count;
+    if (chosen == count) {
+        best = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < count; ++k) {
+            const double cost = collisions(boxAt(k), best);
+            if (cost < best) {
+                best = cost;
+                chosen = k;
             }
         }
-        for (const QPointF &tip : {pending.end, pending.start}) {
-            const QPointF out = tip == pending.end ? u : -u;
-            candidates.push_back(tip + (gap + 10.0 * m_px + support(out, size)) * out);
-        }
-        for (double extra = 30.0 * m_px; extra <= 120.0 * m_px; extra += 15.0 * m_px) {
-            for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9}) {
-                const QPointF normal = pending.outer;
-                candidates.push_back(
-                    pending.start + fraction * axis + (pending.outerReach + extra + support(normal, size)) * normal);
-            }
-        }
-        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}}, candidates);
     }
-}
-
-void SceneLabels::placeJointLabels()
-{
-    std::vector<QPointF> candidates;
-    for (std::size_t i = 0; i < m_points.size(); ++i) {
-        const std::string &name = m_scene.joints[i].label;
-        if (name.empty() || !valid(int(i)))
-            continue;
-        // Preferred: the middles of the angular gaps between what leaves the joint (members,
-        // ground, extension lines, arc labels), widest first; then all round, farther out.
-        std::vector<double> taken;
-        for (const Ray &ray : m_rays[i])
-            taken.push_back(sceneAngle(ray.direction));
-        std::sort(taken.begin(), taken.end());
-        std::vector<std::pair<double, double>> gaps; // (width, middle)
-        for (std::size_t k = 0; k < taken.size(); ++k) {
-            const double a = taken[k];
-            const double b = k + 1 < taken.size() ? taken[k + 1] : taken.front() + 2.0 * pi;
-            gaps.emplace_back(b - a, 0.5 * (a + b));
-        }
-        std::sort(gaps.begin(), gaps.end(), [](const auto &x, const auto &y) { return x.first > y.first; });
-        if (gaps.empty())
-            gaps.emplace_back(2.0 * pi, 45.0 * degree);
-
-        const QString text = QString::fromStdString(name);
-        const QSizeF size = textSize(text, true);
-        const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
-        auto centreAt = [&](double a, double extra) {
-            const QPointF u = deviceDirection(a);
-            return m_points[i] + (clear + extra + support(u, size)) * u;
-        };
-        candidates.clear();
-        for (const auto &[width, middle] : gaps) {
-            if (width > 25.0 * degree)
-                candidates.push_back(centreAt(middle, 0.0));
-        }
-        // The far rings clear a large neighbour such as a zoomed-in carriage.
-        for (double extra : {0.0, 8.0 * m_px, 16.0 * m_px, 26.0 * m_px, 40.0 * m_px, 60.0 * m_px, 90.0 * m_px}) {
-            for (int k = 0; k < 24; ++k)
-                candidates.push_back(centreAt(gaps.front().second + k * 15.0 * degree, extra));
-        }
-        placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}}, candidates);
-    }
+    if (chosen == count || best >= leaveOutAt)
+        return false;
+    label.centre = candidates[chosen];
+    place(label);
+    return best == 0.0;
 }
 
 // -- adding to the draw list --------------------------------------------------------------
 
 void SceneLabels::addTo(drawing::DrawList &list) const
 {
+    if (!m_leaders.empty()) {
+        drawing::Lines leaders {m_leaders, {m_style.angle, 1.0 * m_px, Qt::RoundCap}};
+        list.add(std::move(leaders), drawing::Layer::Dimensions);
+    }
     for (const SceneLabel &label : m_labels) {
         drawing::Text text {label.centre, label.rotationDegrees, label.text, label.joint ? m_jointFont : m_font,
             label.colour, textSize(label.text, label.joint), m_style.background, label.cad};

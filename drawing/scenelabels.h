@@ -1,9 +1,11 @@
 #pragma once
 /// Label layout of a scene's drawing: while the geometry is laid out, SceneLabels learns what
 /// each label must keep off (obstacles) and what leaves each joint (rays); once all of it is
-/// known it places the labels where they collide with nothing, and adds them last to the draw
-/// list, so no line crosses a label. Every medium then shows the labels where they were placed
-/// here. Internal to pkm_drawing.
+/// known it places the labels (scenelabelplaces.cpp) where they cover nothing or, in a crowded
+/// pose, least: never another label, a bar or a pivot before a thin line. An angle's label
+/// pushed away from its arc gets a leader to it; a bar's or an angle's name that could only
+/// cover another label is left out. The labels go last into the draw list, so no line crosses
+/// a label, and every medium shows them where they were placed here. Internal to pkm_drawing.
 
 #include "drawlist.h"
 #include "scene.h"
@@ -12,12 +14,15 @@
 #include <QColor>
 #include <QFont>
 #include <QFontMetricsF>
+#include <QLineF>
 #include <QPointF>
 #include <QSizeF>
 #include <QString>
 
 #include <array>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +41,13 @@ Quad segmentQuad(const QPointF &a, const QPointF &b, double halfWidth);
 Quad boxQuad(const QPointF &centre, const QSizeF &size, double rotationDegrees);
 /// Separating-axis test of two convex quads.
 bool overlap(const Quad &a, const Quad &b);
+/// How long a stretch of the line from `a` to `b`, `2 × halfWidth` wide, lies in the
+/// rectangle `box`.
+double coveredLength(const Quad &box, const QPointF &a, const QPointF &b, double halfWidth);
+
+/// What a label costs that covers another (SceneLabels::collisions()): more than all the
+/// lines it could hide.
+inline constexpr double coversALabel = 100.0;
 
 /// The application's font at `pixels` device units, so labels match the rest of the UI.
 QFont labelFont(double pixels, bool bold);
@@ -136,12 +148,27 @@ private:
             && std::isfinite(point(joint).y());
     }
     const QPointF &point(int joint) const { return m_points[std::size_t(joint)]; }
+    /// How much `box` would cover: 100 for each label, 3 × `perLine` for each pivot and
+    /// `perLine` × (½ + the area hidden / 80 px²) for each line; the sum stops once it reaches
+    /// `enough`.
+    double collisions(const detail::Quad &box, double enough, double perLine = 1.0) const;
+    /// Whether `box` covers nothing at all (quicker than collisions()).
     bool isFree(const detail::Quad &box) const;
-    /// Places `label` at the first free candidate centre, or the first one when none is free.
-    void placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates);
+    /// The number of thin lines (hatching, extension and dimension lines) and outlines `box`
+    /// covers; 100 or more when it covers a label, a pivot or a bar.
+    double thinLinesOnly(const detail::Quad &box) const;
+    /// Places `label` at the first free candidate centre or, when none is free, at the one
+    /// that covers least, unless that covers `leaveOutAt` or more (collisions()); true when it
+    /// is free. Of the first `near` candidates, the one that covers fewest thin lines
+    /// (thinLinesOnly(), fewer than `nearEnough`) is taken rather than a later free one.
+    bool placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates,
+        double leaveOutAt = std::numeric_limits<double>::infinity(), std::size_t near = 0, double nearEnough = 0.0);
     double memberHalfWidth(int from, int to, double fraction) const;
     void placeMemberLabels(bool dimensions);
     void placeAngleLabels();
+    /// A line from the arc of `pending` to the edge of its label (`size`) at `centre`; none
+    /// when the label is next to the arc.
+    std::optional<QLineF> leaderTo(const PendingAngleLabel &pending, const QPointF &centre, const QSizeF &size) const;
     void placeGuideLabels();
     void placeJointLabels();
 
@@ -155,7 +182,18 @@ private:
     QFontMetricsF m_metrics;
     QFontMetricsF m_jointMetrics;
     std::vector<std::vector<Ray>> m_rays; ///< per joint: what leaves it
-    std::vector<detail::Quad> m_obstacles; ///< what labels must not cover
+    /// Something drawn that labels should not cover: a line (its ends and half width known) or
+    /// an outline.
+    struct Obstacle {
+        detail::Quad quad;
+        QPointF a, b;
+        double halfWidth = 0.0;
+        bool line = false;
+    };
+    std::vector<Obstacle> m_obstacles;
+    std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
+    std::vector<detail::Quad> m_pivots; ///< the joints' pins
+    std::vector<QLineF> m_leaders; ///< from angle labels placed away to their arcs
     std::vector<PendingMemberLabel> m_memberLabels;
     std::vector<PendingAngleLabel> m_angleLabels;
     std::vector<PendingGuideLabel> m_guideLabels;

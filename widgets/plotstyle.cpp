@@ -99,14 +99,16 @@ void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y)
 {
     constexpr double gap = 12.0; // pixels between the marker and the label
     const QRect rect = plot->axisRect()->rect();
-    const QFontMetrics metrics(label->font());
-    const QStringList lines = label->text().split(QLatin1Char('\n'));
-    int textWidth = 0;
-    for (const QString &line : lines)
+    // Measured as the item draws it (the bounding rectangle of the laid-out text, which a
+    // bold face or a combining dot can make wider than the advance), so that the box is whole.
+    const QFontMetrics metrics(label->font(), plot);
+    const QRect text = metrics.boundingRect(0, 0, 0, 0, Qt::TextDontClip | label->textAlignment(), label->text());
+    int textWidth = text.width();
+    for (const QString &line : label->text().split(QLatin1Char('\n')))
         textWidth = std::max(textWidth, metrics.horizontalAdvance(line));
     const QMargins padding = label->padding();
-    const double width = textWidth + padding.left() + padding.right();
-    const double height = metrics.height() * lines.size() + padding.top() + padding.bottom();
+    const double width = textWidth + padding.left() + padding.right() + 1.0;
+    const double height = text.height() + padding.top() + padding.bottom() + 1.0;
     const QPointF marker(plot->xAxis->coordToPixel(x), plot->yAxis->coordToPixel(y));
     // beside the marker where there is more room, then inwards until it is whole
     const auto place = [](double at, double low, double high, double size) {
@@ -114,8 +116,15 @@ void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y)
         const double highest = std::max(low + 2.0, high - 2.0 - size);
         return std::clamp(before ? at - gap - size : at + gap, low + 2.0, highest);
     };
-    const double left = place(marker.x(), rect.left(), rect.right(), width);
-    const double top = place(marker.y(), rect.top(), rect.bottom(), height);
+    // Inside the axis rectangle where it fits; a box wider (or taller) than a narrow plot's
+    // axis rectangle goes over the tick labels rather than lose its end to the clip.
+    const QRect wide = plot->viewport();
+    const bool fitsAcross = width + 4.0 <= rect.width(), fitsDown = height + 4.0 <= rect.height();
+    label->setClipToAxisRect(fitsAcross && fitsDown);
+    const double left = fitsAcross ? place(marker.x(), rect.left(), rect.right(), width)
+                                   : place(marker.x(), wide.left(), wide.right(), width);
+    const double top = fitsDown ? place(marker.y(), rect.top(), rect.bottom(), height)
+                                : place(marker.y(), wide.top(), wide.bottom(), height);
     label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
     label->position->setCoords(left - marker.x(), top - marker.y());
 }

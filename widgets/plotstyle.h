@@ -34,6 +34,7 @@ Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer);
 /// Puts the cursor's label (its text set) beside the marker at (x, y), plot coordinates: on
 /// the side with more room, above or below as there is room, and moved inwards as far as it
 /// must to stay whole inside the axis rect — a narrow plot on a projector cut it off before.
+/// A box wider than the axis rect stays whole inside the plot, over its tick labels.
 void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y);
 
 /// Styles `plot` with fonts derived from `base` and adds a "bands" layer below the grid and the

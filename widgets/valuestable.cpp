@@ -5,6 +5,7 @@
 #include <QAbstractTextDocumentLayout>
 #include <QApplication>
 #include <QEvent>
+#include <QFontMetrics>
 #include <QHeaderView>
 #include <QPainter>
 #include <QResizeEvent>
@@ -16,6 +17,27 @@
 #include <optional>
 
 namespace pkm {
+
+QString symbolHtmlElided(const QString &text, const QFont &font, int width)
+{
+    QTextDocument document;
+    document.setDefaultFont(font);
+    document.setDocumentMargin(0);
+    document.setHtml(symbolHtml(text));
+    if (document.idealWidth() <= width)
+        return symbolHtml(text);
+    // Shorter plain text until the lowered one fits: the notation's '_' take room a lowered
+    // subscript does not, so the plain elision is a first guess from above.
+    const QFontMetrics metrics(font);
+    for (int room = width; room > 0; room -= std::max(1, metrics.averageCharWidth() / 2)) {
+        const QString shorter = symbolHtml(metrics.elidedText(text, Qt::ElideRight, room));
+        document.setHtml(shorter);
+        if (document.idealWidth() <= width)
+            return shorter;
+    }
+    return QString();
+}
+
 
 namespace {
 QString groupTitle(ReportGroup group)
@@ -49,8 +71,8 @@ QString nearSingularityText(SingularityType type)
     }
 }
 
-/// Draws a symbol with its subscripts lowered (symbolHtml()): "J_q" as J with a small q. The
-/// item keeps the notation, so the tooltips, valueText() and a copy read "J_q".
+/// Draws a symbol or a meaning with its subscripts lowered (symbolHtml()): "J_q" as J with a
+/// small q. The item keeps the notation, so the tooltips, valueText() and a copy read "J_q".
 class SymbolDelegate : public QStyledItemDelegate
 {
 public:
@@ -64,10 +86,7 @@ public:
             QStyledItemDelegate::paint(painter, option, index);
             return;
         }
-        QTextDocument document;
-        document.setDefaultFont(item.font);
-        document.setDocumentMargin(0);
-        document.setHtml(symbolHtml(item.text));
+        const QString text = item.text;
         item.text.clear(); // the style draws the background; the document the text
         const QWidget *widget = item.widget;
         QStyle *style = widget ? widget->style() : QApplication::style();
@@ -75,6 +94,11 @@ public:
         // the margin the style leaves before a plain text (QCommonStyle's item text margin)
         const int margin = style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, widget) + 1;
         const QRect room = style->subElementRect(QStyle::SE_ItemViewItemText, &item, widget).adjusted(margin, 0, -margin, 0);
+        QTextDocument document;
+        document.setDefaultFont(item.font);
+        document.setDocumentMargin(0);
+        // a meaning too long for its column ends in "…", as a plain one does
+        document.setHtml(symbolHtmlElided(text, item.font, room.width()));
         painter->save();
         painter->setClipRect(room);
         painter->translate(room.left(), room.top() + 0.5 * (room.height() - document.size().height()));
@@ -93,6 +117,7 @@ ValuesTable::ValuesTable(QWidget *parent)
     setHeaderLabels({tr("Quantity"), tr("Value"), tr("Meaning")});
     setRootIsDecorated(false);
     setItemDelegateForColumn(0, new SymbolDelegate(this));
+    setItemDelegateForColumn(2, new SymbolDelegate(this)); // "J_d = 2a·cos θ", lowered alike
     setUniformRowHeights(true);
     setSelectionMode(QAbstractItemView::NoSelection);
     setFocusPolicy(Qt::NoFocus);

@@ -5,9 +5,12 @@
 
 #include "kinds/fivebar/fivebar.h"
 #include "support/kinematics.h"
+#include "quantityformat.h"
 #include "valuestable.h"
 
+#include <QApplication>
 #include <QTest>
+#include <QTextDocument>
 #include <QTreeWidget>
 
 #include <cmath>
@@ -76,6 +79,26 @@ private slots:
         QVERIFY(!table.valueText(QStringLiteral("force_worst")).contains(QStringLiteral("∞")));
         QVERIFY(!table.valueText(QStringLiteral("det_J")).contains(QStringLiteral("∞")));
         QVERIFY(table.valueText(QStringLiteral("singularity")).startsWith(QLatin1String("none")));
+    }
+    /// The meaning column lowers subscripts as the symbol column does, and still ends a
+    /// meaning too long for it with "…" (it showed "J_d = 2a·cos θ" with its underscore).
+    void meaningsLowerSubscripts()
+    {
+        // a meaning too long for the values panel's column: lowered, and ended with "…" where
+        // it no longer fits (the column elided the plain "J_d = 2a·cos θ" before)
+        const QString meaning = QStringLiteral("J_d = 2a·cos θ, the derivative of d with respect to θ");
+        const QFont font = QApplication::font();
+        QCOMPARE(symbolHtmlElided(meaning, font, 10000), symbolHtml(meaning));
+        for (int width : {60, 120, 200}) {
+            const QString shown = symbolHtmlElided(meaning, font, width);
+            QVERIFY2(shown.startsWith(QStringLiteral("J<sub>d</sub>")) && shown.endsWith(QStringLiteral("…")),
+                qPrintable(shown));
+            QTextDocument document;
+            document.setDefaultFont(font);
+            document.setDocumentMargin(0);
+            document.setHtml(shown);
+            QCOMPARE_LE(document.idealWidth(), width);
+        }
     }
 };
 

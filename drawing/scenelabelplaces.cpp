@@ -1,0 +1,316 @@
+// Where each pending label goes, once all geometry is known (SceneLabels::placeAll()): the
+// candidate places of dimension text, angle labels (with a leader where one is pushed away from
+// its arc), guide, bar and joint names, most constrained first. What a place costs is in
+// scenelabels.cpp.
+#include "scenelabels.h"
+
+#include "scenegeometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+
+namespace pkm {
+
+using namespace detail;
+
+/// Half the drawn width (device) of the member joining two joints, `fraction` of the way.
+double SceneLabels::memberHalfWidth(int from, int to, double fraction) const
+{
+    double half = 0.0;
+    auto same = [from, to](int a, int b) { return (a == from && b == to) || (a == to && b == from); };
+    for (const SceneBar &bar : m_scene.bars) {
+        if (same(bar.from, bar.to))
+            half = std::max(half, 0.5 * m_px * (bar.kind == BarKind::Ground ? m_style.groundWidth : m_style.barWidth));
+    }
+    for (const SceneActuator &actuator : m_scene.actuators) {
+        if (!same(actuator.from, actuator.to))
+            continue;
+        const double distance = length(point(to) - point(from)) / m_mapping.scale;
+        const double along = actuator.from == from ? fraction * distance : (1.0 - fraction) * distance;
+        const double width = along < actuator.bodyLength
+            ? actuator.bodyWidth * m_mapping.scale
+            : std::max(actuator.rodDiameter * m_mapping.scale, m_style.minimumScrewWidth * m_px);
+        half = std::max(half, 0.5 * width);
+    }
+    return half;
+}
+
+void SceneLabels::placeAll()
+{
+    // Most constrained first: dimension text along members, angle labels near their arcs
+    // (or with a leader to them), bar names (which may slide along their bar), then joint
+    // names (anywhere around).
+    // A label over a joint's pivot hides the joint: worse than over a line, not as bad as
+    // over another label.
+    const double pivot = (m_style.pivotRadius + 1.0) * m_px;
+    for (int j = 0; j < int(m_points.size()); ++j) {
+        if (valid(j) && m_scene.joints[std::size_t(j)].kind != JointKind::Point)
+            m_pivots.push_back(boxQuad(point(j), QSizeF(2.0 * pivot, 2.0 * pivot), 0.0));
+    }
+    for (const PendingFreeLabel &pending : m_freeLabels)
+        placeFirstFree(pending.label, pending.candidates);
+    placeMemberLabels(true);
+    placeAngleLabels();
+    placeGuideLabels();
+    placeMemberLabels(false);
+    placeJointLabels();
+}
+
+void SceneLabels::placeMemberLabels(bool dimensions)
+{
+    if (m_points.empty())
+        return;
+    QPointF centroid;
+    int shown = 0;
+    for (int j = 0; j < int(m_points.size()); ++j) {
+        if (valid(j)) {
+            centroid += point(j);
+            ++shown;
+        }
+    }
+    if (shown > 0)
+        centroid /= double(shown);
+
+    std::vector<QPointF> candidates;
+    for (const PendingMemberLabel &pending : m_memberLabels) {
+        if (pending.preferReadingUp != dimensions || !valid(pending.from) || !valid(pending.to))
+            continue;
+        const QPointF p = point(pending.from), q = point(pending.to);
+        if (length(q - p) < 1e-6)
+            continue;
+        const QPointF u = unit(q - p), left = screenLeft(u);
+        const QSizeF size = textSize(pending.text);
+        // a dimension's text is dimension layer, a member's name text
+        SceneLabel label {{}, 0.0, pending.text, false, pending.colour,
+            pending.preferReadingUp ? drawing::Layer::Dimensions : drawing::Layer::Text, pending.cad};
+        double firstSide = 1.0;
+        if (pending.preferReadingUp) {
+            // Rotated with the member, above it as read.
+            label.rotationDegrees = readableRotation(u);
+            const QPointF up = deviceDirection((90.0 - label.rotationDegrees) * degree);
+            firstSide = dot(up, left) >= 0.0 ? 1.0 : -1.0;
+        } else {
+            // Bar names upright, on the outside of the mechanism.
+            firstSide = dot(left, 0.5 * (p + q) - centroid) >= 0.0 ? 1.0 : -1.0;
+        }
+        candidates.clear();
+        // Beside the member, then a step farther out where a neighbour's text stands there
+        // (the П-joint's coupler under the diagonal's dimension in a tight pose).
+        // A dimension's text stays near its member, which it would not name from farther out.
+        const std::vector<double> extras = pending.preferReadingUp ? std::vector<double> {0.0, 10.0}
+                                                                   : std::vector<double> {0.0, 10.0, 22.0, 36.0, 54.0};
+        for (double extra : extras) {
+            for (double side : {firstSide, -firstSide}) {
+                for (double fraction : {0.5, 0.42, 0.58, 0.34, 0.66, 0.26, 0.74}) {
+                    const QPointF normal = side * left;
+                    const double extent = pending.preferReadingUp ? 0.5 * size.height() : support(normal, size);
+                    const double lift = memberHalfWidth(pending.from, pending.to, fraction) + (5.0 + extra) * m_px + extent;
+                    candidates.push_back(p + fraction * (q - p) + lift * normal);
+                }
+            }
+        }
+        // A bar's name that would cover another label is left out: the bar is named by its
+        // dimension or its joints, and a pile of text names nothing.
+        placeFirstFree(label, candidates, dimensions ? std::numeric_limits<double>::infinity() : coversALabel);
+    }
+}
+
+void SceneLabels::placeAngleLabels()
+{
+    std::vector<QPointF> near, around;
+    for (const PendingAngleLabel &pending : m_angleLabels) {
+        const QPointF v = point(pending.vertex);
+        const QSizeF size = textSize(pending.text);
+        const double gap = 5.0 * m_px;
+        const double end = pending.start + pending.sweep;
+        const double turn = pending.sweep > 0.0 ? 1.0 : -1.0;
+        auto centreAt = [&](double a, double extra) {
+            const QPointF u = deviceDirection(a);
+            return v + (pending.radius + gap + extra + support(u, size)) * u;
+        };
+        // Outside the arc at mid-angle; when the arc is too narrow, step round past the end
+        // leg, then past the start leg, then a little farther out.
+        const double middle = pending.start + 0.5 * pending.sweep;
+        near.assign(1, centreAt(middle, 0.0));
+        // Steps of 4°, or of 12 px along a large arc, so the label stays close to it.
+        const double angleStep = std::min(4.0 * degree, 12.0 * m_px / std::max(pending.radius, 1e-9));
+        auto stepRound = [&](int first, int last) {
+            for (int step = first; step <= last; ++step) {
+                const double delta = step * angleStep;
+                near.push_back(centreAt(end + turn * delta, 0.0));
+                near.push_back(centreAt(pending.start - turn * delta, 0.0));
+            }
+        };
+        stepRound(1, 5);
+        for (int step = 1; step <= 3; ++step)
+            near.push_back(centreAt(middle, step * 10.0 * m_px));
+        stepRound(6, 20);
+        const QSizeF room = size + QSizeF(4.0 * m_px, 4.0 * m_px); // keep a gap
+        // The first near candidate that covers nothing. When none does, the one all round
+        // that costs least, a leader counting for its length and for what it crosses, near
+        // candidates first among equals. A leader that is long or crosses much of the drawing
+        // would tie the label to the wrong thing: such a place is not taken.
+        double best = std::numeric_limits<double>::infinity();
+        QPointF centre;
+        for (const QPointF &candidate : near) {
+            if (isFree(boxQuad(candidate, room, 0.0))) {
+                best = 0.0;
+                centre = candidate;
+                break;
+            }
+        }
+        for (std::size_t k = 0; best > 0.0 && k < near.size(); ++k) {
+            const double cost = collisions(boxQuad(near[k], room, 0.0), best);
+            if (cost < best) {
+                best = cost;
+                centre = near[k];
+            }
+        }
+        std::optional<QLineF> leader = leaderTo(pending, centre, size);
+        // Where none of those is free (a narrow angle inside a tight pose), all round the
+        // vertex ring by ring. A label away from its arc gets a leader to it, so that it still
+        // names its angle rather than the joint it lands near (μ at A, not at C).
+        around.clear();
+        if (best > 0.0) {
+            for (double extra : {15.0, 30.0, 45.0, 60.0, 80.0, 100.0, 130.0, 160.0}) {
+                for (int k = 0; k < 24; ++k) {
+                    const double turnBy = (k % 2 == 0 ? 1.0 : -1.0) * ((k + 1) / 2) * 15.0 * degree;
+                    around.push_back(centreAt(middle + turnBy, extra * m_px));
+                }
+            }
+        }
+        for (std::size_t k = 0; best > 0.0 && k < around.size(); ++k) {
+            const std::optional<QLineF> line = leaderTo(pending, around[k], size);
+            double cost = collisions(boxQuad(around[k], room, 0.0), best);
+            if (line && cost < best) {
+                // It starts a little off the arc, which it touches.
+                const QPointF start = line->p1() + 5.0 * m_px * unit(line->p2() - line->p1());
+                const double crossed = collisions(segmentQuad(start, line->p2(), 1.0 * m_px), 3.0);
+                if (crossed >= 3.0 || line->length() > 80.0 * m_px)
+                    continue;
+                cost += 0.5 + 0.02 * line->length() / m_px + 1.5 * crossed;
+            }
+            if (cost < best) {
+                best = cost;
+                centre = around[k];
+                leader = line;
+            }
+        }
+        // A label that would cover another one anywhere (a drawing too small for its text)
+        // is left out: the values panel states the angle, and a pile of text states nothing.
+        if (best >= coversALabel)
+            continue;
+        place(SceneLabel {centre, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}});
+        if (leader) {
+            m_leaders.push_back(*leader);
+            // not an obstacle: a joint's name may cover a little of a leader rather than move off
+            // its joint
+        }
+        addRay(pending.vertex, centre - v, length(centre - v));
+    }
+}
+
+std::optional<QLineF> SceneLabels::leaderTo(const PendingAngleLabel &pending, const QPointF &centre, const QSizeF &size) const
+{
+    // From the point of the arc nearest the label to the edge of the label's box.
+    const QPointF v = point(pending.vertex);
+    const double middle = pending.start + 0.5 * pending.sweep;
+    const double half = 0.5 * std::abs(pending.sweep);
+    const double along = std::clamp(std::remainder(sceneAngle(centre - v) - middle, 2.0 * pi), -half, half);
+    const QPointF onArc = v + pending.radius * deviceDirection(middle + along);
+    const QPointF d = onArc - centre;
+    const double t = std::min(std::abs(d.x()) > 1e-9 ? 0.5 * size.width() / std::abs(d.x()) : 1e300,
+        std::abs(d.y()) > 1e-9 ? 0.5 * size.height() / std::abs(d.y()) : 1e300);
+    if (t >= 1.0 || length(d) * (1.0 - t) < 8.0 * m_px)
+        return std::nullopt; // the label touches its arc, or nearly
+    return QLineF(onArc, centre + t * d);
+}
+
+void SceneLabels::placeGuideLabels()
+{
+    std::vector<QPointF> candidates;
+    for (const PendingGuideLabel &pending : m_guideLabels) {
+        const QSizeF size = textSize(pending.text);
+        const QPointF axis = pending.end - pending.start;
+        const QPointF u = unit(axis);
+        const double gap = 6.0 * m_px;
+        candidates.clear();
+        // Beside the rail on the hatched side, which the mechanism keeps clear of, from the
+        // middle outwards; then on the other side; then past its ends; then farther out.
+        for (double extra : {0.0, 14.0 * m_px}) {
+            for (double side : {1.0, -1.0}) {
+                const QPointF normal = side * pending.outer;
+                const double lift = (side > 0.0 ? pending.outerReach : pending.innerReach) + gap + extra;
+                for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9})
+                    candidates.push_back(pending.start + fraction * axis + (lift + support(normal, size)) * normal);
+            }
+        }
+        for (const QPointF &tip : {pending.end, pending.start}) {
+            const QPointF out = tip == pending.end ? u : -u;
+            candidates.push_back(tip + (gap + 10.0 * m_px + support(out, size)) * out);
+        }
+        for (double extra = 30.0 * m_px; extra <= 120.0 * m_px; extra += 15.0 * m_px) {
+            for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9}) {
+                const QPointF normal = pending.outer;
+                candidates.push_back(
+                    pending.start + fraction * axis + (pending.outerReach + extra + support(normal, size)) * normal);
+            }
+        }
+        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}}, candidates);
+    }
+}
+
+void SceneLabels::placeJointLabels()
+{
+    std::vector<QPointF> candidates;
+    for (std::size_t i = 0; i < m_points.size(); ++i) {
+        const std::string &name = m_scene.joints[i].label;
+        if (name.empty() || !valid(int(i)))
+            continue;
+        // Preferred: the middles of the angular gaps between what leaves the joint (members,
+        // ground, extension lines, arc labels), widest first; then all round, farther out.
+        std::vector<double> taken;
+        for (const Ray &ray : m_rays[i])
+            taken.push_back(sceneAngle(ray.direction));
+        std::sort(taken.begin(), taken.end());
+        std::vector<std::pair<double, double>> gaps; // (width, middle)
+        for (std::size_t k = 0; k < taken.size(); ++k) {
+            const double a = taken[k];
+            const double b = k + 1 < taken.size() ? taken[k + 1] : taken.front() + 2.0 * pi;
+            gaps.emplace_back(b - a, 0.5 * (a + b));
+        }
+        std::sort(gaps.begin(), gaps.end(), [](const auto &x, const auto &y) { return x.first > y.first; });
+        if (gaps.empty())
+            gaps.emplace_back(2.0 * pi, 45.0 * degree);
+
+        const QString text = QString::fromStdString(name);
+        const QSizeF size = textSize(text, true);
+        const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
+        auto centreAt = [&](double a, double extra) {
+            const QPointF u = deviceDirection(a);
+            return m_points[i] + (clear + extra + support(u, size)) * u;
+        };
+        candidates.clear();
+        for (const auto &[width, middle] : gaps) {
+            if (width > 25.0 * degree)
+                candidates.push_back(centreAt(middle, 0.0));
+        }
+        // The far rings clear a large neighbour such as a zoomed-in carriage. Before going
+        // there, a name next to its joint may cover a few thin lines, never a bar (in a
+        // crowded pose a "B" far from B names the wrong joint).
+        std::size_t near = 0;
+        for (double extra : {0.0, 8.0 * m_px, 16.0 * m_px, 26.0 * m_px, 40.0 * m_px, 60.0 * m_px, 90.0 * m_px}) {
+            for (int k = 0; k < 24; ++k)
+                candidates.push_back(centreAt(gaps.front().second + k * 15.0 * degree, extra));
+            if (extra == 8.0 * m_px)
+                near = candidates.size();
+        }
+        placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}}, candidates,
+            std::numeric_limits<double>::infinity(), near, 4.0);
+    }
+}
+
+} // namespace pkm

@@ -1,0 +1,83 @@
+// The pose cursor's value box on a plot (plotstyle::placeCursorLabel): whole wherever the
+// marker is, in a plot as narrow as the Actuator tab's figures on a 1280×720 projector, where
+// "Δθ = 0.0291 °/step" is wider than the axis rectangle and lost its end to the clip (a plot
+// 220 px wide fails without the fix).
+#include "plotstyle.h"
+
+#include <qcustomplot.h>
+
+#include <QApplication>
+#include <QTest>
+
+#include <memory>
+
+using namespace pkm;
+
+class TestPlotCursor : public QObject
+{
+    Q_OBJECT
+
+private:
+    /// A plot `width` px wide with a rising curve over θ −60…60°, its cursor showing `text`
+    /// at θ = `at`; the label's box and the plot's rectangle, in the plot's pixels.
+    static std::pair<QRectF, QRectF> placed(int width, const QString &text, double at, bool *clipped)
+    {
+        auto plot = std::make_unique<QCustomPlot>();
+        plot->resize(width, 240);
+        plot->show(); // a hidden plot keeps its first viewport
+        if (!QTest::qWaitForWindowExposed(plot.get()))
+            return {};
+        const plotstyle::Header header = plotstyle::apply(plot.get(), QApplication::font());
+        QCPGraph *graph = plot->addGraph();
+        QVector<double> x, y;
+        for (int i = 0; i <= 120; ++i) {
+            x << -60.0 + i;
+            y << 0.01 + 0.02 * (i / 120.0) * (i / 120.0);
+        }
+        graph->setData(x, y);
+        plot->xAxis->setRange(-60.0, 60.0);
+        plot->yAxis->setRange(0.01, 0.03);
+        const plotstyle::Cursor cursor = plotstyle::addCursor(plot.get(), QApplication::font(), header.cursorLayer);
+        const double value = 0.01 + 0.02 * ((at + 60.0) / 120.0) * ((at + 60.0) / 120.0);
+        cursor.marker->position->setCoords(at, value);
+        cursor.label->setText(text);
+        plot->replot(); // lays the plot out; the label is placed again then
+        plotstyle::placeCursorLabel(plot.get(), cursor.label, at, value);
+        plot->replot();
+        *clipped = cursor.label->clipToAxisRect();
+        const QRectF box(cursor.label->topLeft->pixelPosition(), cursor.label->bottomRight->pixelPosition());
+        const QRectF room = *clipped ? QRectF(plot->axisRect()->rect()) : QRectF(plot->viewport());
+        return {box, room};
+    }
+
+private slots:
+    void boxIsWhole_data()
+    {
+        QTest::addColumn<int>("width");
+        QTest::addColumn<double>("at");
+        for (int width : {220, 280, 420}) {
+            for (double at : {-60.0, -20.0, 0.0, 40.0, 60.0})
+                QTest::addRow("%d px, θ = %g°", width, at) << width << at;
+        }
+    }
+
+    void boxIsWhole()
+    {
+        QFETCH(int, width);
+        QFETCH(double, at);
+        const QString text = QStringLiteral("Δθ = 0.0291 °/step");
+        bool clipped = true;
+        const auto [box, room] = placed(width, text, at, &clipped);
+        QVERIFY2(room.adjusted(-0.5, -0.5, 0.5, 0.5).contains(box),
+            qPrintable(QStringLiteral("box %1…%2 × %3…%4 in %5…%6 × %7…%8 (%9)")
+                           .arg(box.left()).arg(box.right()).arg(box.top()).arg(box.bottom())
+                           .arg(room.left()).arg(room.right()).arg(room.top()).arg(room.bottom())
+                           .arg(clipped ? QStringLiteral("clipped to the axis rect") : QStringLiteral("unclipped"))));
+        // the box holds its text: nothing of it is drawn outside
+        const QFontMetrics metrics(QApplication::font());
+        QCOMPARE_GE(box.width(), 0.9 * metrics.horizontalAdvance(text));
+    }
+};
+
+QTEST_MAIN(TestPlotCursor)
+#include "tst_plotcursor.moc"
