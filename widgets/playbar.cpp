@@ -136,8 +136,18 @@ void PlayBar::setPlaying(bool playing)
 {
     m_playing = playing;
     m_play->setChecked(playing);
-    // The symbols say it in every language; the word helps a first-time user.
-    m_play->setText(playing ? QStringLiteral("❚❚ ") + tr("Pause") : QStringLiteral("▶ ") + tr("Play"));
+    // The symbols say it in every language; the word helps a first-time user. The button
+    // keeps the width of the longer of its two texts, so that the bar does not shift as it
+    // turns from Play to Pause under the teacher's pointer.
+    const QString play = QStringLiteral("▶ ") + tr("Play"), pause = QStringLiteral("❚❚ ") + tr("Pause");
+    m_play->setMinimumWidth(0);
+    int width = 0;
+    for (const QString &text : {play, pause}) {
+        m_play->setText(text);
+        width = std::max(width, m_play->sizeHint().width());
+    }
+    m_play->setMinimumWidth(width);
+    m_play->setText(playing ? pause : play);
 }
 
 void PlayBar::describeVariable()
@@ -195,6 +205,8 @@ void PlayBar::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange)
         retranslate();
+    else if (event->type() == QEvent::FontChange) // the text size of presentation mode
+        setPlaying(m_playing);
     QWidget::changeEvent(event);
 }
 

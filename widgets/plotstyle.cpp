@@ -135,7 +135,12 @@ const char *fullTextProperty = "pkmFullText"; ///< the text before it was broken
 
 void setFittedText(QCPTextElement *element, const QString &text)
 {
-    element->setProperty(fullTextProperty, symbolPlain(text)); // "T = J·Fₘₐₓ"
+    // θ̇ has no precomposed letter: the combining dot after θ was drawn apart from it, at the
+    // start of the line above, in the figures' subtitles. dθ/dt says the same, as the speed
+    // plot's axis does; ḋ is one letter and stays.
+    QString plain = symbolPlain(text); // "T = J·Fₘₐₓ"
+    plain.replace(QStringLiteral("θ\u0307"), QStringLiteral("dθ/dt"));
+    element->setProperty(fullTextProperty, plain);
     fitText(element);
 }
 

@@ -44,6 +44,7 @@ Header apply(QCustomPlot *plot, const QFont &base);
 /// Sets the text of a title or subtitle, broken into lines where it is wider than its plot —
 /// after "; " if that is enough, else between words — so that no end is cut off in a narrow
 /// plot or a longer language. fitText() breaks it again for a new width (on a resize).
+/// Subscripts as symbolPlain() writes them; θ̇ as dθ/dt (a combining dot is drawn apart).
 void setFittedText(QCPTextElement *element, const QString &text);
 void fitText(QCPTextElement *element);
 /// `text` broken into lines no wider than `width` pixels in `font` (after "; " if that is

@@ -204,6 +204,26 @@ private slots:
         QCOMPARE(w.playBar()->variableBox()->count(), int(w.document()->mechanism()->variableInfo().size()));
     }
 
+    /// The Play button keeps its width as it turns into Pause, in every language, so that the
+    /// bar does not shift under the pointer (it widened by the longer word).
+    void playButtonKeepsItsWidth()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        QToolButton *button = w.playBar()->playButton();
+        w.setPlaying(false);
+        QCoreApplication::processEvents();
+        const int playing = button->width();
+        w.setPlaying(true);
+        QCoreApplication::processEvents();
+        QCOMPARE(button->width(), playing);
+        QVERIFY(button->text().contains(QStringLiteral("❚❚")));
+        w.setPlaying(false);
+        QCoreApplication::processEvents();
+        QCOMPARE(button->width(), playing);
+        QCOMPARE_GE(button->width(), button->sizeHint().width());
+    }
+
     /// Another design of the same kind: the chosen range where it still fits, cut to the new
     /// design where it overlaps, the whole range (and its speed) where nothing of it is left;
     /// never a range of one point (the 1 m study after the 170 mm prototype once offered

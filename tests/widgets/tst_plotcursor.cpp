@@ -1,4 +1,4 @@
-// The pose cursor's value box on a plot (plotstyle::placeCursorLabel): whole wherever the
+// Plot texts: the pose cursor's value box on a plot (plotstyle::placeCursorLabel): whole wherever the
 // marker is, in a plot as narrow as the Actuator tab's figures on a 1280×720 projector, where
 // "Δθ = 0.0291 °/step" is wider than the axis rectangle and lost its end to the clip (a plot
 // 220 px wide fails without the fix).
@@ -76,6 +76,19 @@ private slots:
         // the box holds its text: nothing of it is drawn outside
         const QFontMetrics metrics(QApplication::font());
         QCOMPARE_GE(box.width(), 0.9 * metrics.horizontalAdvance(text));
+    }
+
+    /// A figure's subtitle with θ̇ (fig. 12: "θ̇ = J⁻¹·ḋ") drew the combining dot apart from
+    /// its θ, at the start of the title's line above; plot texts write dθ/dt instead.
+    void noCombiningDotInPlotTexts()
+    {
+        QCustomPlot plot;
+        plot.resize(400, 200);
+        auto *subtitle = new QCPTextElement(&plot, QString());
+        plotstyle::setFittedText(subtitle, QStringLiteral("θ̇ = J⁻¹·ḋ; ḋ_max = 50 mm/s"));
+        QCOMPARE(subtitle->text(), QStringLiteral("dθ/dt = J⁻¹·ḋ; ḋₘₐₓ = 50 mm/s"));
+        QVERIFY(!subtitle->text().contains(QChar(0x0307)));
+        delete subtitle;
     }
 };
 
