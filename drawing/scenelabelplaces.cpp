@@ -43,13 +43,6 @@ void SceneLabels::placeAll()
     // Most constrained first: dimension text along members, angle labels near their arcs
     // (or with a leader to them), bar names (which may slide along their bar), then joint
     // names (anywhere around).
-    // A label over a joint's pivot hides the joint: worse than over a line, not as bad as
-    // over another label.
-    const double pivot = (m_style.pivotRadius + 1.0) * m_px;
-    for (int j = 0; j < int(m_points.size()); ++j) {
-        if (valid(j) && m_scene.joints[std::size_t(j)].kind != JointKind::Point)
-            m_pivots.push_back(boxQuad(point(j), QSizeF(2.0 * pivot, 2.0 * pivot), 0.0));
-    }
     for (const PendingFreeLabel &pending : m_freeLabels)
         placeFirstFree(pending.label, pending.candidates);
     placeMemberLabels(true);

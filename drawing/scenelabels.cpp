@@ -183,21 +183,19 @@ double detail::coveredLength(const Quad &box, const QPointF &a, const QPointF &b
     };
     const bool inside = clip(-d.x(), p.x() + halfWidth) && clip(d.x(), w + halfWidth - p.x())
         && clip(-d.y(), p.y() + halfWidth) && clip(d.y(), h + halfWidth - p.y());
-    return inside ? (t1 - t0) * length(b - a) : 0.0;
+    // A point with a width (a pin's ring, which the layout adds as a line of no length) hides
+    // its whole disc: as long a stretch as it is wide.
+    return inside ? std::max((t1 - t0) * length(b - a), length(b - a) > 0.0 ? 0.0 : 2.0 * halfWidth) : 0.0;
 }
 
 double SceneLabels::collisions(const Quad &box, double enough, double perLine) const
 {
-    // A label over another label hides text, over a pivot a joint; over a line it interrupts
+    // A label over another label hides text, over a pin's ring a joint; over a line it interrupts
     // the line, the more the more of it it hides (a label across a bar costs less than one
     // along it, one over a hatch line less than one over a bar).
     double cost = 0.0;
     for (const Quad &q : m_labelBoxes) {
         if (overlap(box, q) && (cost += coversALabel) >= enough)
-            return cost;
-    }
-    for (const Quad &q : m_pivots) {
-        if (overlap(box, q) && (cost += 3.0 * perLine) >= enough)
             return cost;
     }
     for (const Obstacle &o : m_obstacles) {
@@ -214,8 +212,6 @@ double SceneLabels::collisions(const Quad &box, double enough, double perLine) c
 double SceneLabels::thinLinesOnly(const Quad &box) const
 {
     double cost = collisions(box, coversALabel, 0.0); // labels only
-    for (const Quad &q : m_pivots)
-        cost += overlap(box, q) ? coversALabel : 0.0;
     for (const Obstacle &o : m_obstacles) {
         if (cost < coversALabel && overlap(box, o.quad))
             // bars are 4.5 px wide each side of their axis, dimension lines 3.5, the ground 2.25
@@ -228,7 +224,6 @@ bool SceneLabels::isFree(const Quad &box) const
 {
     const auto covers = [&box](const Quad &q) { return overlap(box, q); };
     return std::none_of(m_labelBoxes.begin(), m_labelBoxes.end(), covers)
-        && std::none_of(m_pivots.begin(), m_pivots.end(), covers)
         && std::none_of(m_obstacles.begin(), m_obstacles.end(), [&box](const Obstacle &o) { return overlap(box, o.quad); });
 }
 

@@ -42,7 +42,7 @@ Quad boxQuad(const QPointF &centre, const QSizeF &size, double rotationDegrees);
 /// Separating-axis test of two convex quads.
 bool overlap(const Quad &a, const Quad &b);
 /// How long a stretch of the line from `a` to `b`, `2 × halfWidth` wide, lies in the
-/// rectangle `box`.
+/// rectangle `box`; a point with a width (a pin's ring) as long as it is wide.
 double coveredLength(const Quad &box, const QPointF &a, const QPointF &b, double halfWidth);
 
 /// What a label costs that covers another (SceneLabels::collisions()): more than all the
@@ -148,7 +148,7 @@ private:
             && std::isfinite(point(joint).y());
     }
     const QPointF &point(int joint) const { return m_points[std::size_t(joint)]; }
-    /// How much `box` would cover: 100 for each label, 3 × `perLine` for each pivot and
+    /// How much `box` would cover: 100 for each label and
     /// `perLine` × (½ + the area hidden / 80 px²) for each line; the sum stops once it reaches
     /// `enough`.
     double collisions(const detail::Quad &box, double enough, double perLine = 1.0) const;
@@ -192,7 +192,6 @@ private:
     };
     std::vector<Obstacle> m_obstacles;
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
-    std::vector<detail::Quad> m_pivots; ///< the joints' pins
     std::vector<QLineF> m_leaders; ///< from angle labels placed away to their arcs
     std::vector<PendingMemberLabel> m_memberLabels;
     std::vector<PendingAngleLabel> m_angleLabels;
