@@ -1,6 +1,7 @@
 #include "playbar.h"
 
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -25,7 +26,7 @@ PlayBar::PlayBar(QWidget *parent)
     m_play->setCheckable(true);
     m_play->setToolButtonStyle(Qt::ToolButtonTextOnly);
     connect(m_play, &QToolButton::clicked, this, [this](bool checked) { emit playRequested(checked); });
-    m_variable = new QComboBox(this);
+    m_variable = new SymbolComboBox(this);
     m_variable->setObjectName(QStringLiteral("playVariable"));
     m_variable->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     connect(m_variable, &QComboBox::currentIndexChanged, this, [this] {

@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pkm {
@@ -136,6 +137,38 @@ QString symbolPlain(const QString &text)
         at = done - 1;
     }
     return plain + text.mid(done);
+}
+
+QString symbolHtmlKnown(const QString &text, const QStringList &symbols)
+{
+    QStringList known;
+    for (const QString &symbol : symbols) {
+        if (symbol.contains(QLatin1Char('_')) && !known.contains(symbol))
+            known << symbol;
+    }
+    // the longest first, so that "det J_q" is one symbol and not "det" and "J_q"
+    std::sort(known.begin(), known.end(), [](const QString &a, const QString &b) { return a.size() > b.size(); });
+    const auto inWord = [&text](qsizetype at) {
+        return at >= 0 && at < text.size() && (text[at].isLetterOrNumber() || text[at] == QLatin1Char('_'));
+    };
+    const auto escaped = [](const QString &plain) {
+        return plain.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
+    };
+    QString html;
+    qsizetype done = 0;
+    for (qsizetype at = 0; at < text.size(); ++at) {
+        if (inWord(at - 1))
+            continue;
+        for (const QString &symbol : std::as_const(known)) {
+            if (QStringView(text).mid(at).startsWith(symbol) && !inWord(at + symbol.size())) {
+                html += escaped(text.mid(done, at - done)) + symbolHtml(symbol);
+                done = at + symbol.size();
+                at = done - 1;
+                break;
+            }
+        }
+    }
+    return html + escaped(text.mid(done));
 }
 
 } // namespace pkm

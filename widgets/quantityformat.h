@@ -7,6 +7,7 @@
 
 #include <QLocale>
 #include <QString>
+#include <QStringList>
 
 #include <string_view>
 
@@ -29,6 +30,10 @@ QString symbolHtml(const QString &text);
 /// every one of them has such a letter ("F_max" → "Fₘₐₓ"); left with its '_' where not
 /// ("J_q", "x_AB"), so that a symbol is never half lowered.
 QString symbolPlain(const QString &text);
+/// symbolHtml() for a sentence that may hold other words with '_' (a file called
+/// "my_design.pkm"): escapes `text` and lowers only the whole words that are one of `symbols`
+/// ("x_AB" in "x_CD − x_AB = s"), and turns line breaks into <br>.
+QString symbolHtmlKnown(const QString &text, const QStringList &symbols);
 /// `coreValue` in core units; shown in the unit's display units.
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale = QLocale());
 

@@ -1,43 +1,18 @@
 #include "valuestable.h"
 
 #include "quantityformat.h"
+#include "symboltext.h"
 
-#include <QAbstractTextDocumentLayout>
-#include <QApplication>
 #include <QEvent>
 #include <QFontMetrics>
 #include <QHeaderView>
-#include <QPainter>
 #include <QResizeEvent>
-#include <QStyledItemDelegate>
-#include <QTextDocument>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
 namespace pkm {
-
-QString symbolHtmlElided(const QString &text, const QFont &font, int width)
-{
-    QTextDocument document;
-    document.setDefaultFont(font);
-    document.setDocumentMargin(0);
-    document.setHtml(symbolHtml(text));
-    if (document.idealWidth() <= width)
-        return symbolHtml(text);
-    // Shorter plain text until the lowered one fits: the notation's '_' take room a lowered
-    // subscript does not, so the plain elision is a first guess from above.
-    const QFontMetrics metrics(font);
-    for (int room = width; room > 0; room -= std::max(1, metrics.averageCharWidth() / 2)) {
-        const QString shorter = symbolHtml(metrics.elidedText(text, Qt::ElideRight, room));
-        document.setHtml(shorter);
-        if (document.idealWidth() <= width)
-            return shorter;
-    }
-    return QString();
-}
-
 
 namespace {
 QString groupTitle(ReportGroup group)
@@ -71,43 +46,6 @@ QString nearSingularityText(SingularityType type)
     }
 }
 
-/// Draws a symbol or a meaning with its subscripts lowered (symbolHtml()): "J_q" as J with a
-/// small q. The item keeps the notation, so the tooltips, valueText() and a copy read "J_q".
-class SymbolDelegate : public QStyledItemDelegate
-{
-public:
-    using QStyledItemDelegate::QStyledItemDelegate;
-
-    void paint(QPainter *painter, const QStyleOptionViewItem &option, const QModelIndex &index) const override
-    {
-        QStyleOptionViewItem item = option;
-        initStyleOption(&item, index);
-        if (!item.text.contains(QLatin1Char('_'))) {
-            QStyledItemDelegate::paint(painter, option, index);
-            return;
-        }
-        const QString text = item.text;
-        item.text.clear(); // the style draws the background; the document the text
-        const QWidget *widget = item.widget;
-        QStyle *style = widget ? widget->style() : QApplication::style();
-        style->drawControl(QStyle::CE_ItemViewItem, &item, painter, widget);
-        // the margin the style leaves before a plain text (QCommonStyle's item text margin)
-        const int margin = style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, widget) + 1;
-        const QRect room = style->subElementRect(QStyle::SE_ItemViewItemText, &item, widget).adjusted(margin, 0, -margin, 0);
-        QTextDocument document;
-        document.setDefaultFont(item.font);
-        document.setDocumentMargin(0);
-        // a meaning too long for its column ends in "…", as a plain one does
-        document.setHtml(symbolHtmlElided(text, item.font, room.width()));
-        painter->save();
-        painter->setClipRect(room);
-        painter->translate(room.left(), room.top() + 0.5 * (room.height() - document.size().height()));
-        QAbstractTextDocumentLayout::PaintContext context;
-        context.palette.setColor(QPalette::Text, item.palette.color(QPalette::Text));
-        document.documentLayout()->draw(painter, context);
-        painter->restore();
-    }
-};
 } // namespace
 
 ValuesTable::ValuesTable(QWidget *parent)

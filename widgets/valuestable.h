@@ -13,10 +13,6 @@
 
 namespace pkm {
 
-/// symbolHtml() of `text`, ended with "…" where its laid-out width in `font` is more than
-/// `width` pixels, as a plain text is elided in a narrow column.
-QString symbolHtmlElided(const QString &text, const QFont &font, int width);
-
 class ValuesTable : public QTreeWidget
 {
     Q_OBJECT

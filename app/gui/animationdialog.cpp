@@ -7,6 +7,7 @@
 #include "gui/backgroundtask.h"
 #include "kinds/kindpanel.h"
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <qcustomplot.h>
 
@@ -61,7 +62,7 @@ AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidg
         m_format->addItem(QString(), extension);
     addRow(m_format);
 
-    m_variable = new QComboBox(this);
+    m_variable = new SymbolComboBox(this);
     const auto &variables = mechanism.variableInfo();
     for (std::size_t i = 0; i < variables.size(); ++i)
         m_variable->addItem(QString());
@@ -91,7 +92,7 @@ AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidg
     m_bounce->setChecked(true);
     form->addRow(QString(), m_bounce);
 
-    m_beside = new QComboBox(this);
+    m_beside = new SymbolComboBox(this);
     m_beside->setObjectName(QStringLiteral("besideBox"));
     m_beside->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     addRow(m_beside);

@@ -129,6 +129,7 @@ MainWindow::MainWindow(QWidget *parent)
     createActions();
 
     m_poseLabel = new QLabel(this);
+    m_poseLabel->setTextFormat(Qt::RichText); // for the lowered symbols (onPoseChanged)
     m_singularityLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_poseLabel);
     statusBar()->addPermanentWidget(m_singularityLabel);

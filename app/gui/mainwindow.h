@@ -188,6 +188,9 @@ private:
     void updateBookmarksMenu();
     /// "θ = 30.0°   d = 183.1 mm": the pose as the status bar shows it.
     QString poseSummary() const;
+    /// The symbols a message about the current mechanism may name ("x_AB", "θ_min", "det J_q"):
+    /// its variables, parameters and reported quantities, which the status bar lowers.
+    QStringList shownSymbols() const;
     void fillPresetsMenu();
     void retranslate();
     void createDocks();

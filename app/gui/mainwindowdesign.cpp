@@ -170,7 +170,9 @@ void MainWindow::onPoseChanged()
     if (m_currentPanel)
         m_currentPanel->setPose(pose);
 
-    m_poseLabel->setText(poseSummary());
+    // the symbols lowered, as the sliders write them; the read-out's wide gaps kept
+    m_poseLabel->setText(symbolHtmlKnown(poseSummary(), shownSymbols())
+                             .replace(QStringLiteral("   "), QStringLiteral("&nbsp;&nbsp; ")));
 
     updateModes();
     // A pose that arrives is a success: an error about an earlier move (a drag, a map click or a

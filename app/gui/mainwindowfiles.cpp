@@ -334,7 +334,7 @@ void MainWindow::exportDrawing()
     const Design &design = m_document->design();
     const QString title = design.title.isEmpty() ? toQString(m_document->mechanism()->kind()) : design.title;
     dxf::DrawingOptions options;
-    options.caption = (title + QStringLiteral(" — ") + m_poseLabel->text().simplified()).toStdString();
+    options.caption = (title + QStringLiteral(" — ") + poseSummary().simplified()).toStdString();
     const dxf::Drawing drawing = dxf::sceneDrawing(m_document->mechanism()->scene(m_document->pose()), options);
     QSaveFile file(path); // the file is replaced only once it is complete
     const auto size = static_cast<qint64>(drawing.dxf.size());

@@ -4,6 +4,7 @@
 #include "gui/mainwindow.h"
 
 #include "designpanel.h"
+#include "document/document.h"
 #include "equationspanel.h"
 #include "gui/guidewindow.h"
 #include "kinds/kindpanel.h"
@@ -14,6 +15,7 @@
 #include "mobilitypanel.h"
 #include "modebar.h"
 #include "playbar.h"
+#include "quantityformat.h"
 #include "valuestable.h"
 #include "variablepanel.h"
 #include "workspacemapview.h"
@@ -25,9 +27,11 @@
 #include <QMenu>
 #include <QSizeGrip>
 #include <QStatusBar>
+#include <QTextDocument>
 #include <QWhatsThis>
 
 #include <algorithm>
+#include <cmath>
 
 namespace pkm {
 
@@ -138,7 +142,8 @@ void MainWindow::watchStatusBar()
     m_statusText = new QLabel(this);
     m_statusText->setObjectName(QStringLiteral("statusText"));
     m_statusText->setWordWrap(true);
-    m_statusText->setTextFormat(Qt::PlainText);
+    // rich text only to lower the mechanism's symbols (statusHtml); the rest is escaped
+    m_statusText->setTextFormat(Qt::RichText);
     m_statusText->setContentsMargins(statusTextIndent, 0, 0, 0);
     // its size is set from the message (fitStatusMessage): a word-wrapped label's own minimum
     // is its text at the narrowest width, as tall as the screen
@@ -180,8 +185,14 @@ void MainWindow::fitStatusMessage()
     const int room = std::max(1, bar->width() - statusMessageMargins - statusTextIndent - gripWidth);
     const int maxHeight = statusMessageLines * metrics.lineSpacing();
     QString shown = message;
+    const QStringList symbols = shownSymbols();
+    QTextDocument document; // measured as the label lays it out: subscripts may widen a line
+    document.setDefaultFont(font);
+    document.setDocumentMargin(0);
+    document.setTextWidth(room);
     const auto height = [&](const QString &text) {
-        return metrics.boundingRect(QRect(0, 0, room, 100000), Qt::TextWordWrap, text).height();
+        document.setHtml(symbolHtmlKnown(text, symbols));
+        return int(std::ceil(document.size().height()));
     };
     if (height(shown) > maxHeight) {
         // cut to three lines' worth and step back until the wrapped text fits (word breaks
@@ -192,8 +203,21 @@ void MainWindow::fitStatusMessage()
             shown = metrics.elidedText(message, Qt::ElideRight, width);
         } while (width > room && height(shown) > maxHeight);
     }
-    m_statusText->setText(shown);
+    m_statusText->setText(symbolHtmlKnown(shown, symbols));
     m_statusText->setFixedHeight(std::max(metrics.lineSpacing(), message.isEmpty() ? 0 : height(shown)));
+}
+
+QStringList MainWindow::shownSymbols() const
+{
+    const Mechanism &mechanism = *m_document->mechanism();
+    QStringList symbols;
+    for (const VariableInfo &info : mechanism.variableInfo())
+        symbols << toQString(info.symbol);
+    for (const ParameterInfo &info : mechanism.parameterInfo())
+        symbols << toQString(info.symbol);
+    for (const ReportEntry &entry : mechanism.reportLayout().entries)
+        symbols << toQString(entry.symbol);
+    return symbols;
 }
 
 } // namespace pkm

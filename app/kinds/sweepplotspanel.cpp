@@ -3,6 +3,7 @@
 #include "plotfont.h"
 #include "plotstyle.h"
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <qcustomplot.h>
 
@@ -38,7 +39,7 @@ std::vector<const ReportEntry *> plottable(const Mechanism &mechanism)
 
 SweepPlotsPanel::SweepPlotsPanel(QWidget *parent)
     : KindPanel(parent)
-    , m_quantity(new QComboBox(this))
+    , m_quantity(new SymbolComboBox(this))
     , m_plot(new QCustomPlot(this))
 {
     auto *layout = new QVBoxLayout(this);

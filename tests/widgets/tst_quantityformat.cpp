@@ -66,6 +66,20 @@ private slots:
         QCOMPARE(symbolPlain(QStringLiteral("det J_q, x_AB")), QStringLiteral("det J_q, x_AB"));
         QCOMPARE(symbolPlain(QStringLiteral("m_inv and v_max₁")), QStringLiteral("mᵢₙᵥ and vₘₐₓ₁"));
     }
+
+    // A sentence lowers only the symbols it is given, as whole words, the longest first.
+    void knownSymbols()
+    {
+        const QStringList symbols {QStringLiteral("x_AB"), QStringLiteral("J_q"), QStringLiteral("det J_q"),
+                                   QStringLiteral("θ"), QStringLiteral("θ_min")};
+        QCOMPARE(symbolHtmlKnown(QStringLiteral("x_CD − x_AB = s, saved to my_x_AB.pkm"), symbols),
+                 QStringLiteral("x_CD − x<sub>AB</sub> = s, saved to my_x_AB.pkm"));
+        QCOMPARE(symbolHtmlKnown(QStringLiteral("det J_q = 0 & J_q < 1"), symbols),
+                 QStringLiteral("det J<sub>q</sub> = 0 &amp; J<sub>q</sub> &lt; 1"));
+        QCOMPARE(symbolHtmlKnown(QStringLiteral("θ_min > θ_minimum\nnext"), symbols),
+                 QStringLiteral("θ<sub>min</sub> &gt; θ_minimum<br>next"));
+        QCOMPARE(symbolHtmlKnown(QStringLiteral("x_AB"), {}), QStringLiteral("x_AB"));
+    }
 };
 
 QTEST_MAIN(TestQuantityFormat)

@@ -6,6 +6,7 @@
 #include "kinds/fivebar/fivebar.h"
 #include "support/kinematics.h"
 #include "quantityformat.h"
+#include "symboltext.h"
 #include "valuestable.h"
 
 #include <QApplication>

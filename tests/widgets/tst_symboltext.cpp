@@ -1,0 +1,84 @@
+// The combo boxes that offer symbols (Play's variable, the sweep plot's quantity, the video's
+// variable and plot) draw them lowered, as the values panel and the equations do: a projected
+// "x_AB" reads as x with a small AB, in the field and in the list.
+
+#include "symboltext.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QImage>
+#include <QListView>
+#include <QStandardItemModel>
+#include <QTest>
+
+using namespace pkm;
+
+namespace {
+/// What `combo` shows, as a person sees it.
+QImage shot(QComboBox &combo)
+{
+    combo.resize(220, combo.sizeHint().height());
+    return combo.grab().toImage().convertToFormat(QImage::Format_RGB32);
+}
+
+/// The columns in which `image` has ink darker than its middle grey, left to right.
+int inkColumns(const QImage &image)
+{
+    int columns = 0;
+    for (int x = 0; x < image.width(); ++x) {
+        for (int y = 0; y < image.height(); ++y) {
+            if (qGray(image.pixel(x, y)) < 96) {
+                ++columns;
+                break;
+            }
+        }
+    }
+    return columns;
+}
+} // namespace
+
+class TestSymbolText : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void fieldIsLowered()
+    {
+        // a symbol: drawn apart from the plain combo box, and the field keeps the notation
+        SymbolComboBox lowered;
+        QComboBox plain;
+        for (QComboBox *combo : {static_cast<QComboBox *>(&lowered), &plain})
+            combo->addItems({QStringLiteral("x_AB — rod joint A, B"), QStringLiteral("θ — input angle")});
+        QCOMPARE(lowered.currentText(), QStringLiteral("x_AB — rod joint A, B"));
+        const QImage withSymbol = shot(lowered);
+        QVERIFY(withSymbol != shot(plain));
+        // the '_' is gone and the subscript is smaller: the lowered text is narrower
+        QCOMPARE_LT(inkColumns(withSymbol), inkColumns(shot(plain)));
+        QCOMPARE_GT(inkColumns(withSymbol), inkColumns(shot(plain)) / 2); // and still there, whole
+
+        // a text without '_' is the style's own drawing, pixel for pixel
+        lowered.setCurrentIndex(1);
+        plain.setCurrentIndex(1);
+        QCOMPARE(shot(lowered), shot(plain));
+    }
+
+    void listIsLowered()
+    {
+        SymbolComboBox combo;
+        combo.addItems({QStringLiteral("x_AB"), QStringLiteral("x_CD")});
+        QVERIFY(dynamic_cast<SymbolDelegate *>(combo.itemDelegate()));
+        QVERIFY(dynamic_cast<SymbolDelegate *>(combo.view()->itemDelegate()));
+    }
+
+    void elidedStaysLowered()
+    {
+        // a narrow field ends the text in "…" and keeps the lowered symbol before it
+        const QFont font = QApplication::font();
+        const QString text = QStringLiteral("x_AB against θ — the rod joint of the upper pair");
+        const QString shown = symbolHtmlElided(text, font, 120);
+        QVERIFY2(shown.startsWith(QStringLiteral("x<sub>AB</sub>")) && shown.endsWith(QChar(0x2026)), qPrintable(shown));
+    }
+};
+
+QTEST_MAIN(TestSymbolText)
+#include "tst_symboltext.moc"

@@ -1,0 +1,105 @@
+#include "symboltext.h"
+
+#include "quantityformat.h"
+
+#include <QAbstractItemView>
+#include <QAbstractTextDocumentLayout>
+#include <QApplication>
+#include <QFontMetrics>
+#include <QPainter>
+#include <QStylePainter>
+#include <QTextDocument>
+
+#include <algorithm>
+
+namespace pkm {
+
+QString symbolHtmlElided(const QString &text, const QFont &font, int width)
+{
+    QTextDocument document;
+    document.setDefaultFont(font);
+    document.setDocumentMargin(0);
+    document.setHtml(symbolHtml(text));
+    if (document.idealWidth() <= width)
+        return symbolHtml(text);
+    // Shorter plain text until the lowered one fits: the notation's '_' take room a lowered
+    // subscript does not, so the plain elision is a first guess from above.
+    const QFontMetrics metrics(font);
+    for (int room = width; room > 0; room -= std::max(1, metrics.averageCharWidth() / 2)) {
+        const QString shorter = symbolHtml(metrics.elidedText(text, Qt::ElideRight, room));
+        document.setHtml(shorter);
+        if (document.idealWidth() <= width)
+            return shorter;
+    }
+    return QString();
+}
+
+void drawSymbolText(QPainter *painter, const QRect &room, const QString &text, const QFont &font, const QColor &colour)
+{
+    QTextDocument document;
+    document.setDefaultFont(font);
+    document.setDocumentMargin(0);
+    // a text too long for its room ends in "…", as a plain one does
+    document.setHtml(symbolHtmlElided(text, font, room.width()));
+    painter->save();
+    painter->setClipRect(room);
+    painter->translate(room.left(), room.top() + 0.5 * (room.height() - document.size().height()));
+    QAbstractTextDocumentLayout::PaintContext context;
+    context.palette.setColor(QPalette::Text, colour);
+    document.documentLayout()->draw(painter, context);
+    painter->restore();
+}
+
+void SymbolDelegate::paint(QPainter *painter, const QStyleOptionViewItem &option, const QModelIndex &index) const
+{
+    QStyleOptionViewItem item = option;
+    initStyleOption(&item, index);
+    if (!item.text.contains(QLatin1Char('_'))) {
+        QStyledItemDelegate::paint(painter, option, index);
+        return;
+    }
+    const QString text = item.text;
+    item.text.clear(); // the style draws the background, a selection and the icon; the document the text
+    const QWidget *widget = item.widget;
+    QStyle *style = widget ? widget->style() : QApplication::style();
+    style->drawControl(QStyle::CE_ItemViewItem, &item, painter, widget);
+    // the margin the style leaves before a plain text (QCommonStyle's item text margin)
+    const int margin = style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, widget) + 1;
+    const QRect room = style->subElementRect(QStyle::SE_ItemViewItemText, &item, widget).adjusted(margin, 0, -margin, 0);
+    const bool selected = item.state & QStyle::State_Selected;
+    drawSymbolText(painter, room, text, item.font,
+                   item.palette.color(selected ? QPalette::HighlightedText : QPalette::Text));
+}
+
+SymbolComboBox::SymbolComboBox(QWidget *parent)
+    : QComboBox(parent)
+{
+    // the list's entries alike; the delegate's rows are as tall as the style's menu rows
+    setItemDelegate(new SymbolDelegate(this));
+}
+
+void SymbolComboBox::paintEvent(QPaintEvent *event)
+{
+    QStyleOptionComboBox option;
+    initStyleOption(&option);
+    if (!option.currentText.contains(QLatin1Char('_')) || isEditable()) {
+        QComboBox::paintEvent(event);
+        return;
+    }
+    // QComboBox::paintEvent() without its text: the frame, the arrow and an icon, then the
+    // lowered text where the style would put the plain one.
+    QStylePainter painter(this);
+    painter.setPen(palette().color(QPalette::Text));
+    painter.drawComplexControl(QStyle::CC_ComboBox, option);
+    const QString text = option.currentText;
+    option.currentText.clear();
+    painter.drawControl(QStyle::CE_ComboBoxLabel, option);
+    QRect room = style()->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, this);
+    if (!option.currentIcon.isNull())
+        room.setLeft(room.left() + option.iconSize.width() + 4);
+    room.adjust(1, 0, -1, 0); // QCommonStyle's CE_ComboBoxLabel leaves a pixel each side
+    const QColor colour = palette().color(isEnabled() ? QPalette::Active : QPalette::Disabled, QPalette::ButtonText);
+    drawSymbolText(&painter, room, text, font(), colour);
+}
+
+} // namespace pkm

@@ -1,0 +1,42 @@
+#pragma once
+/// Symbols with their subscripts lowered (symbolHtml()) where Qt would draw a plain text:
+/// an item view's cells and a combo box's field and list. The items keep the notation ("x_AB"),
+/// so tooltips, copies and tests read what the program writes; only the drawing differs.
+
+#include <QComboBox>
+#include <QStyledItemDelegate>
+
+class QPainter;
+
+namespace pkm {
+
+/// symbolHtml() of `text`, ended with "…" where its laid-out width in `font` is more than
+/// `width` pixels, as a plain text is elided in a narrow column.
+QString symbolHtmlElided(const QString &text, const QFont &font, int width);
+
+/// Draws `text` with its subscripts lowered, elided to `room`'s width and centred in its height.
+void drawSymbolText(QPainter *painter, const QRect &room, const QString &text, const QFont &font, const QColor &colour);
+
+/// An item delegate that draws a symbol or a meaning with its subscripts lowered: "J_q" as J
+/// with a small q. A text without '_' is drawn by the style as usual.
+class SymbolDelegate : public QStyledItemDelegate
+{
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+    void paint(QPainter *painter, const QStyleOptionViewItem &option, const QModelIndex &index) const override;
+};
+
+/// A combo box whose entries are symbols or start with one ("x_AB — rod joint C, D"): the field
+/// and the list show them lowered, as the values panel and the equations do.
+class SymbolComboBox : public QComboBox
+{
+    Q_OBJECT
+
+public:
+    explicit SymbolComboBox(QWidget *parent = nullptr);
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+};
+
+} // namespace pkm
