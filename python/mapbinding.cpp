@@ -47,7 +47,7 @@ cli::Invocation invocationOf(const std::string &command, const std::optional<std
 
 /// A float buffer of the grid as a 2-D array (rows from the bottom up, columns from the left)
 /// that shares the memory; `owner` keeps it alive.
-py::array gridArray(const MapGrid &grid, const std::vector<float> &values, const py::object &owner)
+py::array gridArray(const MapGrid &grid, const MapCells &values, const py::object &owner)
 {
     const auto columns = static_cast<py::ssize_t>(grid.columns);
     const auto rows = static_cast<py::ssize_t>(grid.rows);

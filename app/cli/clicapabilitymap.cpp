@@ -94,7 +94,7 @@ Result<std::vector<capability::Requirement>> parseRequirements(const Mechanism &
 
 MapSummary computeCapabilityInto(const Mechanism &mechanism, const Pose &pose, MapQuantity quantity,
                                  std::span<const capability::Requirement> requirements, int resolution,
-                                 std::vector<float> &values, std::vector<float> &margins,
+                                 MapCells &values, MapCells &margins,
                                  capability::SpecificationSummary *specification)
 {
     const PlanarWorkspace *workspace = mechanism.planarWorkspace();

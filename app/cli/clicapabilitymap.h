@@ -44,7 +44,7 @@ Result<std::vector<capability::Requirement>> parseRequirements(const Mechanism &
 /// output) and `margins` filled.
 MapSummary computeCapabilityInto(const Mechanism &mechanism, const Pose &pose, MapQuantity quantity,
                                  std::span<const capability::Requirement> requirements, int resolution,
-                                 std::vector<float> &values, std::vector<float> &margins,
+                                 MapCells &values, MapCells &margins,
                                  capability::SpecificationSummary *specification = nullptr);
 
 /// The display unit of a capability map ("N"), empty for the specification and the others.

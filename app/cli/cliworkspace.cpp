@@ -364,7 +364,7 @@ Result<CommandWorkspace> computeCommandWorkspace(const PreparedDesign &prepared,
         return *empty;
     box = reachableBounds(map.grid, map.values);
     modes = modeParameters(mechanism);
-    std::vector<float> buffer;
+    MapCells buffer;
     areas = modeAreas(mechanism, modes, map.summary, resolution, buffer);
     if (!modes.empty())
         united = modeRegions(mechanism, modes, resolution);

@@ -30,8 +30,8 @@ void addGridRows(report::TextTable &table, const MapGrid &grid, int resolution, 
 struct ComputedMap {
     MapGrid grid;
     MapSummary summary;
-    std::vector<float> values;
-    std::vector<float> margins;
+    MapCells values;
+    MapCells margins;
 };
 
 /// Up to 6 significant digits, locale-free ("∞", "undefined"): min and max in the text output.

@@ -25,7 +25,7 @@ namespace {
 struct Used {
     std::vector<double> min, max; ///< core units, per variable
 };
-Used usedInputs(const Mechanism &mechanism, const Pose &pose, const MapGrid &grid, const std::vector<float> &values,
+Used usedInputs(const Mechanism &mechanism, const Pose &pose, const MapGrid &grid, std::span<const float> values,
     std::size_t samples)
 {
     const int inputs = mechanism.inputCount();
@@ -100,13 +100,13 @@ double exactModeArea(const Mechanism &mechanism, const std::vector<const Paramet
 
 void addPlanar(const Mechanism &mechanism, const PlanarWorkspace &workspace, const Pose &pose, Parts &parts)
 {
-    std::vector<float> values, margins;
+    MapCells values, margins;
     const MapSummary summary
         = report::computeInto(workspace, MapQuantity::Determinant, workspaceGrid, values, &margins);
     const MapGrid &grid = summary.grid;
     const Eigen::AlignedBox2d box = report::reachableBounds(grid, values);
     const std::vector<const ParameterInfo *> modes = report::modeParameters(mechanism);
-    std::vector<float> buffer;
+    MapCells buffer;
     const std::vector<report::ModeArea> areas = report::modeAreas(mechanism, modes, summary, workspaceGrid, buffer);
     const report::ModeRegions united = modes.empty() ? report::ModeRegions {} : report::modeRegions(mechanism, modes, workspaceGrid);
     const auto named = report::namedModeAreas(modes, areas);

@@ -28,14 +28,15 @@ bool reachable(float value)
     return reachableCell(value);
 }
 
-/// `buffer` as `count` zeros, its pages 2 MB huge pages where the kernel allows them
-/// (madvise; transparent huge pages in "madvise" mode, Debian's default): a 3000² map is 36 MB,
-/// and on a virtual machine its 9000 faults of 4 KB pages cost more than the map itself
-/// (170 ms against 7 ms for the Python module's call).
-void zeroedCells(std::vector<float> &buffer, std::size_t count)
+/// `buffer` resized to `count` cells, not zeroed (computeMap() writes every one; the
+/// threads that compute the rows also fault their pages in), its pages 2 MB huge pages where
+/// the kernel allows them (madvise; transparent huge pages in "madvise" mode, Debian's
+/// default): a 3000² map is 36 MB, and on a virtual machine its 9000 faults of 4 KB pages cost
+/// more than the map itself (170 ms against 7 ms for the Python module's call).
+void sizedCells(MapCells &buffer, std::size_t count)
 {
     if (buffer.capacity() < count) {
-        std::vector<float>().swap(buffer);
+        MapCells().swap(buffer);
         buffer.reserve(count); // allocated, not yet touched
 #ifdef MADV_HUGEPAGE
         constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
@@ -45,18 +46,18 @@ void zeroedCells(std::vector<float> &buffer, std::size_t count)
             madvise(reinterpret_cast<void *>(begin), end - begin, MADV_HUGEPAGE); // a hint: failure is harmless
 #endif
     }
-    buffer.assign(count, 0.0f);
+    buffer.resize(count);
 }
 } // namespace
 
 /// The map of `workspace` over squareGrid(its bounds, resolution); `values` is reused.
 MapSummary computeInto(const PlanarWorkspace &workspace, MapQuantity quantity, int resolution,
-    std::vector<float> &values, std::vector<float> *margins)
+    MapCells &values, MapCells *margins)
 {
     const MapGrid grid = squareGrid(workspace.workspaceBounds(), resolution);
-    zeroedCells(values, grid.cells());
+    sizedCells(values, grid.cells());
     if (margins)
-        zeroedCells(*margins, grid.cells());
+        sizedCells(*margins, grid.cells());
     return computeMap(workspace, quantity, grid, values, margins ? std::span<float>(*margins) : std::span<float>());
 }
 
@@ -137,7 +138,7 @@ std::string modeText(const std::vector<const ParameterInfo *> &modes, const Para
 /// Every combination of the mode parameters, the first varying slowest, −1 before +1; the
 /// current one is `current` (its area is not computed again).
 std::vector<ModeArea> modeAreas(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes,
-    const MapSummary &current, int resolution, std::vector<float> &buffer)
+    const MapSummary &current, int resolution, MapCells &buffer)
 {
     std::vector<ModeArea> areas;
     if (modes.empty())

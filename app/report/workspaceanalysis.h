@@ -21,7 +21,7 @@ using pkm::reachableCell; // the core's (planarworkspace.h), under the name the 
 /// The map of `workspace` over squareGrid(its bounds, resolution) into `values` (and
 /// `margins`, if not null), resized to the grid.
 MapSummary computeInto(const PlanarWorkspace &workspace, MapQuantity quantity, int resolution,
-    std::vector<float> &values, std::vector<float> *margins);
+    MapCells &values, MapCells *margins);
 /// The box of the reachable cells (their edges, mm); empty when no cell is reachable.
 Eigen::AlignedBox2d reachableBounds(const MapGrid &grid, std::span<const float> values);
 
@@ -46,7 +46,7 @@ struct ModeArea {
 /// Every combination of the mode parameters, the first varying slowest, −1 before +1; the
 /// current one is `current` (its area is not computed again).
 std::vector<ModeArea> modeAreas(const Mechanism &mechanism, const std::vector<const ParameterInfo *> &modes,
-    const MapSummary &current, int resolution, std::vector<float> &buffer);
+    const MapSummary &current, int resolution, MapCells &buffer);
 
 /// The workspaces of every mode combination on one grid over all of them: the union is the
 /// region the mechanism reaches when it may change mode (the O-X glide's O and X), and the

@@ -10,7 +10,10 @@
 
 #include <QTest>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 using namespace pkm;
 using namespace pkm::test;
@@ -205,6 +208,43 @@ private slots:
             QVERIFY(std::abs(legs.detMargins[i] - built.detMargins[i]) < 1e-6);
         }
         QVERIFY2(reached > 5000, qPrintable(QString::number(reached)));
+    }
+
+    /// Every cell and margin of a map is written: the buffers a map is computed into are
+    /// not zeroed first (MapCells), so a cell left out would show what the memory held. Each
+    /// kind with a planar workspace, in each quantity it offers, on buffers of a marker.
+    void everyCellWritten_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<ParameterSet>("design");
+        for (const MechanismKind &kind : mechanismKinds())
+            QTest::newRow(std::string(kind.id).c_str()) << QString::fromUtf8(kind.id.data(), qsizetype(kind.id.size())) << ParameterSet();
+        QTest::newRow("RRR + PRR") << QStringLiteral("planar-parallel") << pkm::test::legdesigns::crankAndSlider();
+        QTest::newRow("5R П-joints") << QStringLiteral("planar-parallel") << fiveRPjoint();
+    }
+    void everyCellWritten()
+    {
+        QFETCH(QString, kind);
+        QFETCH(ParameterSet, design);
+        const MechanismPtr mechanism = makeKind(kind.toStdString(), design);
+        QVERIFY(mechanism);
+        const PlanarWorkspace *workspace = mechanism->planarWorkspace();
+        if (!workspace)
+            QSKIP("no planar workspace");
+        const MapGrid grid = squareGrid(workspace->workspaceBounds(), 173);
+        const std::uint32_t marker = 0x7fc0dead; // a NaN no computation gives
+        for (MapQuantity quantity : {MapQuantity::Determinant, MapQuantity::Condition, MapQuantity::OrientationRange}) {
+            if (!workspace->offers(quantity))
+                continue;
+            MapCells values(grid.cells()), margins(grid.cells());
+            std::fill(values.begin(), values.end(), std::bit_cast<float>(marker));
+            std::fill(margins.begin(), margins.end(), std::bit_cast<float>(marker));
+            computeMap(*workspace, quantity, grid, values, margins);
+            for (std::size_t i = 0; i < grid.cells(); ++i) {
+                QVERIFY2(std::bit_cast<std::uint32_t>(values[i]) != marker, qPrintable(QString("value of cell %1").arg(i)));
+                QVERIFY2(std::bit_cast<std::uint32_t>(margins[i]) != marker, qPrintable(QString("margin of cell %1").arg(i)));
+            }
+        }
     }
 
     /// A row cut anywhere gives the same cells: the blocks of the row and the cells solved
