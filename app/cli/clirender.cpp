@@ -11,6 +11,7 @@
 #include "renderer3d.h"
 #include "report/texttable.h"
 #include "scenepainter.h"
+#include "text.h"
 
 #include <QBuffer>
 #include <QByteArray>
@@ -282,6 +283,28 @@ int rerunUnderXvfb(const XvfbRerun &rerun, const QString &noGl, std::FILE *out, 
     return CliNoSolution;
 }
 
+/// The drawings' minus sign while a picture is drawn: the typographic one (U+2212), as the
+/// application's drawings print it ("γ₁ = −5°"), not the hyphen that the command line's text
+/// and JSON keep for scripts. What was installed comes back at the end: runCli() also runs
+/// inside other programs (the tests).
+class TypographicMinus
+{
+public:
+    TypographicMinus()
+        : m_previous(text::installed())
+    {
+        text::Hooks hooks = m_previous;
+        hooks.minusSign = "\u2212";
+        text::install(std::move(hooks));
+    }
+    ~TypographicMinus() { text::install(m_previous); }
+    TypographicMinus(const TypographicMinus &) = delete;
+    TypographicMinus &operator=(const TypographicMinus &) = delete;
+
+private:
+    text::Hooks m_previous;
+};
+
 } // namespace
 
 // -- pictures ------------------------------------------------------------------------------
@@ -365,6 +388,7 @@ int runRenderCommand(const PreparedDesign &prepared, const Invocation &invocatio
         return is3d ? CliNoSolution : CliOutputError;
     }
 
+    const TypographicMinus minus; // in the scene's labels and the caption
     const std::string &path = *invocation.output;
     const std::string extension = fileExtension(path);
     if (extension == "gif" || extension == "mp4" || extension == "webm")

@@ -151,7 +151,8 @@ QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const Animat
         painter.setPen(QColor(0xc8, 0xcf, 0xd9));
         painter.drawLine(scene.topRight(), scene.bottomRight());
     }
-    pictures::paintScenePicture(painter, QRectF(scene), mechanism.scene(pose), style, caption);
+    pictures::paintScenePicture(painter, QRectF(scene), mechanism.scene(pose), style, caption,
+                                pictures::PictureFit::MotionRange);
     painter.end();
     return image;
 }

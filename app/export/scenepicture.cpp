@@ -98,17 +98,25 @@ void paintCaption(
     painter.restore();
 }
 
-void paintScenePicture(
-    QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &sceneStyle, const QString &caption)
+ViewMapping pictureMapping(const QRectF &area, const Scene &scene, const SceneStyle &style, PictureFit fit,
+    const QPaintDevice *device)
+{
+    if (fit == PictureFit::LabelsWhole)
+        return LinkageView::screenMapping(scene, scene.extent, area, style); // above the same scale bar
+    // The scale bar's margin overlaps the fit's own margin.
+    QRectF fitted = area;
+    const double band = std::max(0.0, bottomBand(device, style) - 16.0 * style.pixelSize);
+    fitted.setBottom(area.bottom() - std::min(band, 0.25 * area.height()));
+    return LinkageView::fittedMapping(scene, fitted, style);
+}
+
+void paintScenePicture(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &sceneStyle,
+    const QString &caption, PictureFit fit)
 {
     SceneStyle style = sceneStyle;
     style.showHandles = false; // rings are an affordance of the screen, not of a picture
     const double px = style.pixelSize;
-    // The scale bar's margin overlaps the fit's own margin.
-    QRectF fitted = area;
-    const double band = std::max(0.0, bottomBand(painter.device(), style) - 16.0 * px);
-    fitted.setBottom(area.bottom() - std::min(band, 0.25 * area.height()));
-    const ViewMapping mapping = LinkageView::fittedMapping(scene, fitted, style);
+    const ViewMapping mapping = pictureMapping(area, scene, style, fit, painter.device());
 
     painter.save();
     painter.setClipRect(area, Qt::IntersectClip);

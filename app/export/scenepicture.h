@@ -8,12 +8,14 @@
 #include <QFont>
 #include <QString>
 
+class QPaintDevice;
 class QPainter;
 class QRectF;
 
 namespace pkm {
 struct Scene;
 struct SceneStyle;
+struct ViewMapping;
 } // namespace pkm
 
 namespace pkm::pictures {
@@ -22,10 +24,19 @@ namespace pkm::pictures {
 /// variable in display units and the pose's words; the pose alone when `name` is empty.
 QString poseCaption(const Mechanism &mechanism, const Pose &pose, const QString &name);
 
+/// How a picture fits its scene: a still as Fit on the screen, smaller where a label would be
+/// cut at the edge (MOMA's γ₁ beside its guide); an animation's frame to the motion range
+/// alone, so that every frame has the same scale whatever its labels.
+enum class PictureFit { LabelsWhole, MotionRange };
+
+/// The mapping paintScenePicture() draws `scene` with into `area` on `device`.
+ViewMapping pictureMapping(const QRectF &area, const Scene &scene, const SceneStyle &style, PictureFit fit,
+    const QPaintDevice *device);
+
 /// Draws the 2D picture into `area` of any paint device: background and grid, the scene fitted
 /// above a band for the scale bar and the caption (none when empty), no handle rings.
-void paintScenePicture(
-    QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style, const QString &caption);
+void paintScenePicture(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style,
+    const QString &caption, PictureFit fit = PictureFit::LabelsWhole);
 
 /// Draws `caption` at the bottom-left of `area` on a light knock-out, elided so that it keeps
 /// clear of the scale bar's corner (`rightReserve` device units from the right edge).

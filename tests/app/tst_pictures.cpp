@@ -8,7 +8,9 @@
 #include "export/scenepicture.h"
 #include "document/designsession.h"
 #include "document/document.h"
+#include "drawlist.h"
 #include "linkageview.h"
+#include "scenelayout.h"
 #include "pictureexport.h"
 #include "gui/viewpicture.h"
 #include "workspacemapview.h"
@@ -222,6 +224,46 @@ private slots:
         closer.stop();
         QVERIFY2(message.contains(QStringLiteral("linkage.svg")), qPrintable(message));
         QVERIFY(!QFileInfo::exists(missing));
+    }
+
+    /// A still picture's labels are whole: the drawing is fitted smaller where a label would
+    /// be cut at the edge (MOMA's γ₁ and γ₂ beside the guides, the O-X glide's "B · 2a"), as Fit
+    /// does on the screen; an animation's frames keep the motion range's scale.
+    void stillPicturesKeepLabelsWhole()
+    {
+        int cutByMotionRange = 0;
+        for (const char *preset : {"moma-3a", "oxglide-prototype", "fivebar-example", "pjoint-prototype", "fourbar-example"}) {
+            QVERIFY(m_window->openDesign(QString::fromLatin1(preset)));
+            const Scene scene = m_window->document()->mechanism()->scene(m_window->document()->pose());
+            SceneStyle style;
+            style.showHandles = false;
+            for (const QSize size : {QSize(372, 500), QSize(640, 480)}) {
+                QImage image(size, QImage::Format_RGB32);
+                const QRectF area(image.rect());
+                for (const auto fit : {pictures::PictureFit::LabelsWhole, pictures::PictureFit::MotionRange}) {
+                    const ViewMapping mapping = pictures::pictureMapping(area, scene, style, fit, &image);
+                    QStringList cut;
+                    for (const drawing::Primitive &item : drawing::layoutScene(scene, mapping, style).items) {
+                        const auto *text = std::get_if<drawing::Text>(&item.shape);
+                        if (!text || !drawing::shownOnScreen(item.medium))
+                            continue;
+                        drawing::DrawList one;
+                        one.add(*text, item.layer, item.medium);
+                        // half in, half out; a far point's label (an instant centre) is wholly out
+                        const QRectF box = drawing::bounds(one, false);
+                        if (box.intersects(area) && !area.contains(box))
+                            cut << text->text;
+                    }
+                    if (fit == pictures::PictureFit::MotionRange) {
+                        cutByMotionRange += int(cut.size());
+                        continue;
+                    }
+                    QVERIFY2(cut.isEmpty(), qPrintable(QStringLiteral("%1 at %2×%3: %4 cut")
+                        .arg(QLatin1String(preset)).arg(size.width()).arg(size.height()).arg(cut.join(QStringLiteral(", ")))));
+                }
+            }
+        }
+        QCOMPARE_GT(cutByMotionRange, 0); // the motion range alone cuts some: the check sees it
     }
 
     void viewPictures()
