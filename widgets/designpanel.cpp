@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QKeySequence>
 #include <QLineEdit>
+#include <QTextDocument>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
@@ -131,6 +132,17 @@ void DesignPanel::setNote(const QString &title, const QString &note)
     m_noteText = note;
     m_noteExpanded = false;
     showNote();
+    fitNote();
+}
+
+QString DesignPanel::firstSentence() const
+{
+    // The first full stop that ends a sentence: one followed by a capital letter, so that
+    // abbreviations before a number ("fig. 3a", "рис. 3a", "сл. 3a", "табл. 1") do not split.
+    qsizetype end = m_noteText.indexOf(QStringLiteral(". "));
+    while (end > 0 && (end + 2 >= m_noteText.size() || !m_noteText.at(end + 2).isUpper()))
+        end = m_noteText.indexOf(QStringLiteral(". "), end + 2);
+    return end > 0 && end + 2 < m_noteText.size() ? m_noteText.left(end + 1) : m_noteText;
 }
 
 void DesignPanel::showNote()
@@ -141,26 +153,20 @@ void DesignPanel::showNote()
         return;
     }
     // The first sentence says what the design is (and whether it is interpreted); the rest
-    // opens on request, so the fields stay in sight.
-    // The first full stop that ends a sentence: one followed by a capital letter, so that
-    // abbreviations before a number ("fig. 3a", "рис. 3a", "сл. 3a", "табл. 1") do not split.
-    qsizetype end = m_noteText.indexOf(QStringLiteral(". "));
-    while (end > 0 && (end + 2 >= m_noteText.size() || !m_noteText.at(end + 2).isUpper()))
-        end = m_noteText.indexOf(QStringLiteral(". "), end + 2);
-    const bool longer = end > 0 && end + 2 < m_noteText.size();
-    QString text = m_noteExpanded || !longer ? m_noteText : m_noteText.left(end + 1);
-    text = text.toHtmlEscaped();
-    if (longer) {
-        text += QStringLiteral(" <a href=\"#toggle\">%1</a>").arg(m_noteExpanded ? tr("less") : tr("more…"));
-    }
-    m_note->setText(QStringLiteral("<b>%1</b><br>%2").arg(m_noteTitle.toHtmlEscaped(), text));
+    // opens on request, so the fields stay in sight. On a short panel the title alone.
+    const QString first = firstSentence();
+    const bool longer = first.size() < m_noteText.size() || m_noteCompact;
+    const QString link = QStringLiteral("<a href=\"#toggle\">%1</a>").arg(m_noteExpanded ? tr("less") : tr("more…"));
+    QString text;
+    if (m_noteExpanded || !longer)
+        text = QStringLiteral("<br>") + m_noteText.toHtmlEscaped();
+    else if (!m_noteCompact)
+        text = QStringLiteral("<br>") + first.toHtmlEscaped();
+    if (longer)
+        text += QLatin1Char(' ') + link;
+    m_note->setText(QStringLiteral("<b>%1</b>%2").arg(m_noteTitle.toHtmlEscaped(), text));
     m_note->setToolTip(m_noteText);
     m_note->show();
-}
-
-QString DesignPanel::note() const
-{
-    return m_noteText;
 }
 
 void DesignPanel::setMechanism(const MechanismPtr &mechanism)
@@ -268,6 +274,7 @@ void DesignPanel::changeEvent(QEvent *event)
 void DesignPanel::retranslate()
 {
     showNote();
+    fitNote();
     if (!m_mechanism)
         return;
     for (auto it = m_boxes.cbegin(); it != m_boxes.cend(); ++it)
@@ -417,8 +424,44 @@ void DesignPanel::step(const QString &name, int steps)
     }
 }
 
+bool DesignPanel::event(QEvent *event)
+{
+    if (event->type() == QEvent::ParentChange) {
+        if (m_viewport) // in a scroll area, the viewport shows the panel
+            m_viewport->removeEventFilter(this);
+        m_viewport = parentWidget();
+        if (m_viewport)
+            m_viewport->installEventFilter(this);
+    }
+    return QWidget::event(event);
+}
+
+void DesignPanel::fitNote()
+{
+    // At 720 lines the panel has some 220 px, and a first sentence of six lines (the Russian
+    // П-joint's) would hide the fields: past 40 % of the panel in sight, the title alone.
+    bool compact = false;
+    if (m_viewport && !m_noteText.isEmpty()) {
+        QTextDocument document;
+        document.setDefaultFont(m_note->font());
+        const int frame = 2 * (m_note->frameWidth() + 5) + layout()->contentsMargins().left() + layout()->contentsMargins().right();
+        document.setTextWidth(std::max(40, m_viewport->width() - frame));
+        document.setHtml(QStringLiteral("<b>%1</b><br>%2").arg(m_noteTitle.toHtmlEscaped(), firstSentence().toHtmlEscaped()));
+        compact = document.size().height() > 0.4 * m_viewport->height();
+    }
+    if (compact != m_noteCompact) {
+        m_noteCompact = compact;
+        showNote();
+    }
+}
+
 bool DesignPanel::eventFilter(QObject *watched, QEvent *event)
 {
+    if (watched == m_viewport) {
+        if (event->type() == QEvent::Resize)
+            fitNote();
+        return QWidget::eventFilter(watched, event);
+    }
     auto *edit = qobject_cast<QLineEdit *>(watched);
     if (!edit)
         return QWidget::eventFilter(watched, event);

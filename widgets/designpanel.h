@@ -30,7 +30,7 @@ public:
     /// A note about the design shown above the fields (a preset's description: where its
     /// numbers come from, what is interpreted); empty hides it.
     void setNote(const QString &title, const QString &note);
-    QString note() const;
+    QString note() const { return m_noteText; }
     /// Marks a field invalid with the reason; the field keeps the text the user typed.
     void markInvalid(const QString &name, const QString &message);
 
@@ -42,6 +42,7 @@ signals:
     void parameterEdited(const QString &name, double displayValue, bool continuous);
 
 protected:
+    bool event(QEvent *event) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
     void changeEvent(QEvent *event) override;
 
@@ -70,6 +71,10 @@ private:
     void showApplicable();
     void setMark(QLineEdit *field, bool invalid);
     void showNote();
+    /// The note's first sentence (all of it when it has one sentence).
+    QString firstSentence() const;
+    /// The title alone where the first sentence would take much of the panel in sight.
+    void fitNote();
 
     MechanismPtr m_mechanism;
     QVBoxLayout *m_groups = nullptr;
@@ -87,6 +92,8 @@ private:
     QString m_noteTitle;
     QString m_noteText;
     bool m_noteExpanded = false;
+    bool m_noteCompact = false;
+    QWidget *m_viewport = nullptr; ///< what shows the panel (a scroll area's viewport)
     QLabel *m_warnings = nullptr;
 };
 

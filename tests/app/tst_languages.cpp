@@ -312,11 +312,13 @@ private slots:
         QFETCH(QString, code);
         QVERIFY(language::apply(code));
         MainWindow window;
+        window.resize(1920, 1080);
         window.show();
         QVERIFY(window.openDesign(QStringLiteral("moma-3a")));
         auto *note = window.designPanel()->findChild<QLabel *>(QStringLiteral("designNote"));
         QVERIFY(note);
         QVERIFY(note->isVisibleTo(&window));
+        QTRY_VERIFY(window.designPanel()->parentWidget()->height() > 300); // laid out
         QString shown = note->text();
         shown.remove(QRegularExpression(QStringLiteral("<[^>]*>")));
         // the first sentence names the figure, both reference points and both turns
@@ -324,6 +326,20 @@ private slots:
             QVERIFY2(shown.contains(QString::fromUtf8(part)), qPrintable(code + QStringLiteral(": ") + shown));
         // and only the first: the rest opens on request
         QVERIFY2(!shown.contains(QStringLiteral("195")), qPrintable(shown));
+
+        // on a projector's 1280×720 the first field is in sight whole, below a shorter note
+        window.resize(1280, 720);
+        QWidget *viewport = window.designPanel()->parentWidget();
+        QTRY_COMPARE(window.size(), QSize(1280, 720));
+        QLineEdit *first = nullptr;
+        for (QLineEdit *field : window.designPanel()->findChildren<QLineEdit *>()) {
+            if (field->isVisibleTo(&window) && (!first || field->mapTo(viewport, QPoint()).y() < first->mapTo(viewport, QPoint()).y()))
+                first = field;
+        }
+        QVERIFY(first);
+        QTRY_VERIFY2(viewport->rect().contains(QRect(first->mapTo(viewport, QPoint()), first->size())), qPrintable(code));
+        emit note->linkActivated(QStringLiteral("#toggle")); // "more…" opens all of it
+        QVERIFY2(note->text().contains(QStringLiteral("195")), qPrintable(note->text()));
     }
 
     // Core's sentences come in the language too, with its numbers.
