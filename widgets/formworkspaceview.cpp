@@ -66,7 +66,7 @@ FormWorkspaceView::FormWorkspaceView(QWidget *parent)
     QCPAxisRect *axisRect = plot->axisRect();
     grid->take(axisRect);
     grid->simplify();
-    m_title = new QCPTextElement(plot, QString(), fontOf(font(), titlePoints, true));
+    m_title = plotstyle::newTextElement(plot, fontOf(font(), titlePoints, true));
     grid->addElement(0, 0, m_title);
     axisRect->insetLayout()->take(plot->legend);
     grid->addElement(1, 0, plot->legend);

@@ -3,11 +3,54 @@
 #include "plotfont.h"
 #include "quantityformat.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QFontMetrics>
+#include <QTextDocument>
 
 #include <algorithm>
 
 namespace pkm::plotstyle {
+
+namespace {
+/// QCPTextElement, with a text that holds '_' drawn as rich text: "T_M" as T with a lowered M.
+/// Its size is the plain text's, a little wider than the lowered one, so nothing is cut.
+class SymbolTextElement : public QCPTextElement
+{
+public:
+    using QCPTextElement::QCPTextElement;
+
+protected:
+    void draw(QCPPainter *painter) override
+    {
+        if (!mText.contains(QLatin1Char('_'))) {
+            QCPTextElement::draw(painter);
+            return;
+        }
+        painter->setFont(mainFont());
+        mTextBoundingRect = painter->boundingRect(mRect, mTextFlags, mText); // for a click, as the base keeps it
+        const QString align = (mTextFlags & Qt::AlignLeft) ? QStringLiteral("left")
+            : (mTextFlags & Qt::AlignRight)               ? QStringLiteral("right")
+                                                          : QStringLiteral("center");
+        QTextDocument document;
+        document.setDefaultFont(mainFont());
+        document.setDocumentMargin(0);
+        document.setTextWidth(mRect.width());
+        document.setHtml(QStringLiteral("<div align=\"%1\">%2</div>")
+                             .arg(align, symbolHtml(mText).replace(QLatin1Char('\n'), QStringLiteral("<br>"))));
+        painter->save();
+        painter->translate(mRect.left(), mRect.top() + 0.5 * (mRect.height() - document.size().height()));
+        QAbstractTextDocumentLayout::PaintContext context;
+        context.palette.setColor(QPalette::Text, mainTextColor());
+        document.documentLayout()->draw(painter, context);
+        painter->restore();
+    }
+};
+} // namespace
+
+QCPTextElement *newTextElement(QCustomPlot *plot, const QFont &font)
+{
+    return new SymbolTextElement(plot, QString(), font);
+}
 
 Header apply(QCustomPlot *plot, const QFont &base)
 {
@@ -24,8 +67,8 @@ Header apply(QCustomPlot *plot, const QFont &base)
     QCPLayoutGrid *grid = plot->plotLayout();
     for (int row = 0; row < 3; ++row)
         grid->insertRow(0);
-    header.title = new QCPTextElement(plot, QString(), fontOf(base, titlePoints, true));
-    header.subtitle = new QCPTextElement(plot, QString(), fontOf(base, subtitlePoints));
+    header.title = newTextElement(plot, fontOf(base, titlePoints, true));
+    header.subtitle = newTextElement(plot, fontOf(base, subtitlePoints));
     header.subtitle->setTextColor(QColor(0x505050));
     grid->addElement(0, 0, header.title);
     grid->addElement(1, 0, header.subtitle);

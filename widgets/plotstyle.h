@@ -37,6 +37,11 @@ Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer);
 /// A box wider than the axis rect stays whole inside the plot, over its tick labels.
 void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y);
 
+/// A title or subtitle element of `plot` in `font` that lowers the subscripts symbolPlain()
+/// cannot write in Unicode ("T_M", "x_AB", "det J_q"), as the panels do; its text keeps the
+/// notation.
+QCPTextElement *newTextElement(QCustomPlot *plot, const QFont &font);
+
 /// Styles `plot` with fonts derived from `base` and adds a "bands" layer below the grid and the
 /// buffered "cursor" layer; the legend is visible, in the row under the subtitle.
 Header apply(QCustomPlot *plot, const QFont &base);

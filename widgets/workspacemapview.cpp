@@ -7,6 +7,7 @@
 
 #include "plotfont.h"
 #include "plotfit.h"
+#include "plotstyle.h"
 #include "plotticker.h"
 #include "quantityformat.h"
 
@@ -153,7 +154,7 @@ WorkspaceMapView::WorkspaceMapView(QWidget *parent)
     QCPAxisRect *axisRect = plot->axisRect();
     grid->take(axisRect);
     grid->simplify();
-    m_title = new QCPTextElement(plot, QString(), fontOf(font(), titlePoints, true));
+    m_title = plotstyle::newTextElement(plot, fontOf(font(), titlePoints, true));
     grid->addElement(0, 0, m_title);
     axisRect->insetLayout()->take(plot->legend);
     grid->addElement(1, 0, plot->legend);

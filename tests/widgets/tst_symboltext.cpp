@@ -2,6 +2,7 @@
 // variable and plot) draw them lowered, as the values panel and the equations do: a projected
 // "x_AB" reads as x with a small AB, in the field and in the list.
 
+#include "plotstyle.h"
 #include "symboltext.h"
 
 #include <QApplication>
@@ -68,6 +69,27 @@ private slots:
         combo.addItems({QStringLiteral("x_AB"), QStringLiteral("x_CD")});
         QVERIFY(dynamic_cast<SymbolDelegate *>(combo.itemDelegate()));
         QVERIFY(dynamic_cast<SymbolDelegate *>(combo.view()->itemDelegate()));
+    }
+
+    void plotTitlesAreLowered()
+    {
+        // a plot's title: "T_M" lowered as in the panels, a text without '_' as QCustomPlot draws it
+        const auto picture = [](bool lowered, const QString &text) {
+            QCustomPlot plot;
+            plot.resize(320, 120);
+            plot.plotLayout()->clear();
+            const QFont font = QApplication::font();
+            QCPTextElement *title = lowered ? plotstyle::newTextElement(&plot, font) : new QCPTextElement(&plot, QString(), font);
+            title->setText(text);
+            plot.plotLayout()->addElement(0, 0, title);
+            plot.replot();
+            return plot.toPixmap(320, 120).toImage();
+        };
+        const QString symbol = QStringLiteral("motor torque T_M = 0.131 N·m");
+        QVERIFY(picture(true, symbol) != picture(false, symbol));
+        QCOMPARE_LT(inkColumns(picture(true, symbol)), inkColumns(picture(false, symbol))); // no '_'
+        const QString plain = QStringLiteral("output torque T = J·F");
+        QCOMPARE(picture(true, plain), picture(false, plain));
     }
 
     void elidedStaysLowered()
