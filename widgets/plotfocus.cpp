@@ -2,6 +2,7 @@
 
 #include <qcustomplot.h>
 
+#include <QGridLayout>
 #include <QStackedWidget>
 #include <QTabWidget>
 
@@ -48,6 +49,33 @@ QList<QTabWidget *> tabWidgets(const QWidget *root)
     return found;
 }
 
+const char *stretchProperty = "pkmColumnStretch"; ///< a grid's column stretches while one plot is alone
+
+/// A page laid out in a grid shares its columns by stretch (the П-joint's halves): while
+/// `alone` is the one plot shown, its columns take the stretch and the others none, or an
+/// empty column keeps its share; with `alone` null, the stretches the page had come back.
+void stretchFor(QWidget *page, QCustomPlot *alone)
+{
+    auto *grid = qobject_cast<QGridLayout *>(page->layout());
+    if (!grid)
+        return;
+    QVariantList kept = grid->property(stretchProperty).toList();
+    if (kept.isEmpty()) {
+        if (!alone)
+            return;
+        for (int c = 0; c < grid->columnCount(); ++c)
+            kept.append(grid->columnStretch(c));
+        grid->setProperty(stretchProperty, kept);
+    }
+    int row = 0, column = 0, rows = 1, columns = 1;
+    if (alone && grid->indexOf(alone) >= 0)
+        grid->getItemPosition(grid->indexOf(alone), &row, &column, &rows, &columns);
+    for (int c = 0; c < int(kept.size()) && c < grid->columnCount(); ++c)
+        grid->setColumnStretch(c, !alone ? kept[c].toInt() : c >= column && c < column + columns ? 1 : 0);
+    if (!alone)
+        grid->setProperty(stretchProperty, QVariant());
+}
+
 } // namespace
 
 QList<QCustomPlot *> plots(const QWidget *root)
@@ -84,6 +112,7 @@ void showOnePerPage(QWidget *root, QCustomPlot *chosen)
                 if (plot != shown)
                     plot->hide();
             }
+            stretchFor(tabs->widget(i), shown);
             if (hasChosen)
                 bringToFront(chosen);
         }
@@ -100,6 +129,10 @@ void showAll(QWidget *root)
 {
     for (QCustomPlot *plot : plots(root))
         plot->show();
+    for (QTabWidget *tabs : tabWidgets(root)) {
+        for (int i = 0; i < tabs->count(); ++i)
+            stretchFor(tabs->widget(i), nullptr);
+    }
 }
 
 QCustomPlot *shownAlone(const QWidget *root)

@@ -247,6 +247,11 @@ void MainWindow::setPresentationMode(bool on)
         if (m_presenting) {
             const int width = m_splitter->width();
             m_splitter->setSizes({width * 11 / 20, width * 9 / 20});
+        } else {
+            // the docks' sizes again at the window's own size: restored while the window was
+            // still full screen, they were shared out anew as it shrank
+            restoreState(m_stateBeforePresentation);
+            m_splitter->restoreState(m_splitterBeforePresentation);
         }
         m_view->fitToView();
     });

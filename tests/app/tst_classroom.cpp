@@ -219,79 +219,6 @@ private slots:
         QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - before), 0.01);
     }
 
-    /// Presentation mode shows one plot per page, filling it: three plots side by side at 150 %
-    /// text on a 1280×720 projector overlapped and could not be read. View ▸ Presentation Plot
-    /// chooses which, its tab comes to the front, and every plot is back after presenting.
-    void presentationShowsOnePlotAtATime()
-    {
-        language::apply(QStringLiteral("en"));
-        MainWindow &w = *m_window;
-        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
-        QTabWidget *tabs = nullptr; // the П-joint's Geometry, Jacobian and Actuator tabs
-        for (QTabWidget *candidate : w.findChildren<QTabWidget *>()) {
-            if (candidate->count() == 3 && candidate->tabText(0) == QLatin1String("Geometry"))
-                tabs = candidate;
-        }
-        QVERIFY(tabs);
-        const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
-        QCOMPARE(plots.size(), 8); // figs. 8–12 and 15–17
-        const auto shownOn = [&](int page) {
-            QList<QCustomPlot *> shown;
-            for (QCustomPlot *plot : plots) {
-                if (plot->parentWidget() == tabs->widget(page) && !plot->isHidden())
-                    shown.append(plot);
-            }
-            return shown;
-        };
-        QCOMPARE(shownOn(0).size(), 3);
-        tabs->setCurrentIndex(2); // the Actuator page in front: fig. 15 alone fills it (not two-thirds)
-        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
-        QVERIFY(w.isPresenting());
-        for (int page = 0; page < tabs->count(); ++page)
-            QCOMPARE(shownOn(page).size(), 1);
-        QTRY_VERIFY2(plots[5]->width() >= tabs->widget(2)->width() - 20, qPrintable(QString::number(plots[5]->width())));
-        QCOMPARE(shownOn(0).first(), plots[0]);
-
-        // The menu lists every plot by its title; fig. 15 (the Actuator tab) is chosen.
-        tabs->setCurrentIndex(0);
-        auto *menu = w.findChild<QMenu *>(QStringLiteral("presentationPlotMenu"));
-        QVERIFY(menu && menu->menuAction()->isEnabled());
-        emit menu->aboutToShow();
-        QCOMPARE(menu->actions().size(), plots.size());
-        QVERIFY(menu->actions().at(0)->isChecked());
-        QVERIFY(menu->actions().at(5)->text().startsWith(QLatin1String("Fig. 15")));
-        menu->actions().at(5)->trigger();
-        QCOMPARE(tabs->currentIndex(), 2);
-        QCOMPARE(shownOn(2), QList<QCustomPlot *> {plots[5]});
-        // alone, it has the page's whole width (the three shared it before)
-        QTRY_VERIFY2(plots[5]->width() >= tabs->currentWidget()->width() - 20,
-                     qPrintable(QStringLiteral("%1 of %2 px").arg(plots[5]->width()).arg(tabs->currentWidget()->width())));
-        emit menu->aboutToShow();
-        QVERIFY(menu->actions().at(5)->isChecked());
-
-        // Another kind while presenting: its pages show one plot each too.
-        QVERIFY(w.openDesign(QStringLiteral("fourbar-example")));
-        auto *fourbarTabs = w.findChild<QTabWidget *>(QStringLiteral("fourbarPlotTabs"));
-        QVERIFY(fourbarTabs);
-        for (int page = 0; page < fourbarTabs->count(); ++page) {
-            int shown = 0;
-            for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
-                shown += plot->parentWidget() == fourbarTabs->widget(page) && !plot->isHidden();
-            QCOMPARE(shown, 1);
-        }
-        // and the lengths, Grashof's class and the γ gauge above them step aside
-        auto *grashof = w.findChild<QLabel *>(QStringLiteral("grashofLabel"));
-        QVERIFY(grashof && grashof->parentWidget()->isHidden());
-        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
-        QTest::keyClick(&w, Qt::Key_Escape);
-        QVERIFY(!w.isPresenting());
-        for (QCustomPlot *plot : plots)
-            QVERIFY(!plot->isHidden());
-        for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
-            QVERIFY(!plot->isHidden());
-        QVERIFY(!grashof->parentWidget()->isHidden());
-    }
-
     /// Presentation mode on a projector's 1280×720 screen and 150 % text, in all four
     /// languages: no label or button is cut, no wrapped label is shorter than its lines (the
     /// sliders' "q₁ (input, actuated)" lost its second line under a 3-DOF design's six rows),
@@ -475,24 +402,6 @@ private slots:
         QCOMPARE_LT(std::abs(plot->xAxis->tickLabelFont().pointSizeF() - tick), 0.01);
         QCOMPARE_LT(std::abs(textscale::factor() - 1.0), 1e-12);
         QCOMPARE(shownOnPage(), 3);
-    }
-
-    /// Figs. 15 and 16 share a row above fig. 17 at 1280×720: their axes keep room (a legend
-    /// each left them a 30–60 px strip), as fig. 17 names the same curve and bands.
-    void actuatorPlotsKeepTheirAxes()
-    {
-        MainWindow &w = *m_window;
-        QVERIFY(!w.isPresenting() && w.openDesign(QStringLiteral("pjoint-prototype")));
-        QTabWidget *tabs = nullptr; // the П-joint's Geometry, Jacobian and Actuator tabs
-        for (QTabWidget *candidate : w.findChildren<QTabWidget *>())
-            tabs = candidate->count() == 3 && candidate->tabText(2) == QLatin1String("Actuator") ? candidate : tabs;
-        QVERIFY(tabs);
-        tabs->setCurrentIndex(2);
-        const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
-        for (int i : {5, 6})
-            QTRY_VERIFY2(plots[i]->axisRect()->height() >= 100, qPrintable(QString::number(plots[i]->axisRect()->height())));
-        QVERIFY(plots[7]->legend->visible()); // fig. 17 names them
-        tabs->setCurrentIndex(0);
     }
 };
 

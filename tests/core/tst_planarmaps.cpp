@@ -217,8 +217,11 @@ private slots:
     {
         QTest::addColumn<QString>("kind");
         QTest::addColumn<ParameterSet>("design");
-        for (const MechanismKind &kind : mechanismKinds())
-            QTest::newRow(std::string(kind.id).c_str()) << QString::fromUtf8(kind.id.data(), qsizetype(kind.id.size())) << ParameterSet();
+        for (const MechanismKind &kind : mechanismKinds()) {
+            const MechanismPtr made = makeKind(kind.id);
+            if (made && made->planarWorkspace()) // the П-joint and the four-bar have none
+                QTest::newRow(std::string(kind.id).c_str()) << QString::fromUtf8(kind.id.data(), qsizetype(kind.id.size())) << ParameterSet();
+        }
         QTest::newRow("RRR + PRR") << QStringLiteral("planar-parallel") << pkm::test::legdesigns::crankAndSlider();
         QTest::newRow("5R П-joints") << QStringLiteral("planar-parallel") << fiveRPjoint();
     }
@@ -229,8 +232,7 @@ private slots:
         const MechanismPtr mechanism = makeKind(kind.toStdString(), design);
         QVERIFY(mechanism);
         const PlanarWorkspace *workspace = mechanism->planarWorkspace();
-        if (!workspace)
-            QSKIP("no planar workspace");
+        QVERIFY(workspace);
         const MapGrid grid = squareGrid(workspace->workspaceBounds(), 173);
         const std::uint32_t marker = 0x7fc0dead; // a NaN no computation gives
         for (MapQuantity quantity : {MapQuantity::Determinant, MapQuantity::Condition, MapQuantity::OrientationRange}) {

@@ -144,14 +144,21 @@ PJointPlots::PJointPlots(QWidget *parent)
     geometry->addWidget(m_panels[PassiveAnglePlot].plot, 0, 1);
     geometry->addWidget(m_panels[TransmissionAnglePlot].plot, 1, 1);
     auto *jacobian = new QHBoxLayout(pages[int(Tab::Jacobian)]);
-    jacobian->addWidget(m_panels[JacobianPlot].plot);
-    jacobian->addWidget(m_panels[InverseJacobianPlot].plot);
+    jacobian->addWidget(m_panels[JacobianPlot].plot, 1);
+    jacobian->addWidget(m_panels[InverseJacobianPlot].plot, 1);
     // Actuator: figs 15 and 16 side by side, fig. 17 below across the width, so that each keeps
     // a readable θ axis when the plot area is only about 800 px wide (1920 px screen).
     auto *actuator = new QGridLayout(pages[int(Tab::Actuator)]);
     actuator->addWidget(m_panels[ResolutionPlot].plot, 0, 0);
     actuator->addWidget(m_panels[SpeedPlot].plot, 0, 1);
     actuator->addWidget(m_panels[TorquePlot].plot, 1, 0, 1, 2);
+    // Columns shared by stretch, not by the plots' size hints: those follow the legends'
+    // wrapping, and after presentation mode's larger text fig. 9 was left a 70 px strip. Figs.
+    // 9 and 10 stack, so their column is the wider; figs. 15 and 16 share theirs evenly.
+    geometry->setColumnStretch(0, 2);
+    geometry->setColumnStretch(1, 3);
+    actuator->setColumnStretch(0, 1);
+    actuator->setColumnStretch(1, 1);
     for (QLayout *l : std::initializer_list<QLayout *> {geometry, jacobian, actuator}) {
         l->setContentsMargins(4, 4, 4, 4);
         l->setSpacing(6);

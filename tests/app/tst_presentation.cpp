@@ -1,0 +1,166 @@
+// Presentation mode and the pages of plots: one plot alone fills its page, whichever tab was
+// in front, and leaving presentation mode gives the window back as it was — the docks at
+// their sizes and every plot at its share of the page (fig. 9 was once left a 70 px strip).
+#include "gui/mainwindow.h"
+
+#include "document/language.h"
+#include "plotfocus.h"
+#include "support/app.h"
+
+#include <qcustomplot.h>
+
+#include <QAction>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenu>
+#include <QTabWidget>
+#include <QTest>
+
+using namespace pkm;
+using namespace pkm::test;
+
+class TestPresentation : public QObject
+{
+    Q_OBJECT
+
+private:
+    MainWindow *m_window = nullptr;
+
+    /// The П-joint's Geometry, Jacobian and Actuator tabs.
+    QTabWidget *pjointTabs() const
+    {
+        for (QTabWidget *candidate : m_window->findChildren<QTabWidget *>()) {
+            if (candidate->count() == 3 && candidate->tabText(2) == QLatin1String("Actuator"))
+                return candidate;
+        }
+        return nullptr;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        m_window = freshMainWindow(QSize(1280, 720));
+        QVERIFY(m_window);
+        language::apply(QStringLiteral("en"));
+    }
+    void cleanupTestCase() { delete m_window; }
+
+    /// Presentation mode shows one plot per page, filling it: three plots side by side at 150 %
+    /// text on a 1280×720 projector overlapped and could not be read. View ▸ Presentation Plot
+    /// chooses which, its tab comes to the front, and every plot is back after presenting.
+    void presentationShowsOnePlotAtATime()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
+        QTabWidget *tabs = pjointTabs();
+        QVERIFY(tabs);
+        const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
+        QCOMPARE(plots.size(), 8); // figs. 8–12 and 15–17
+        const auto shownOn = [&](int page) {
+            QList<QCustomPlot *> shown;
+            for (QCustomPlot *plot : plots) {
+                if (plot->parentWidget() == tabs->widget(page) && !plot->isHidden())
+                    shown.append(plot);
+            }
+            return shown;
+        };
+        QCOMPARE(shownOn(0).size(), 3);
+        tabs->setCurrentIndex(2); // the Actuator page in front: fig. 15 alone fills it (not two-thirds)
+        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
+        QVERIFY(w.isPresenting());
+        for (int page = 0; page < tabs->count(); ++page)
+            QCOMPARE(shownOn(page).size(), 1);
+        QTRY_VERIFY2(plots[5]->width() >= tabs->widget(2)->width() - 20, qPrintable(QString::number(plots[5]->width())));
+        QCOMPARE(shownOn(0).first(), plots[0]);
+
+        // The menu lists every plot by its title; fig. 15 (the Actuator tab) is chosen.
+        tabs->setCurrentIndex(0);
+        auto *menu = w.findChild<QMenu *>(QStringLiteral("presentationPlotMenu"));
+        QVERIFY(menu && menu->menuAction()->isEnabled());
+        emit menu->aboutToShow();
+        QCOMPARE(menu->actions().size(), plots.size());
+        QVERIFY(menu->actions().at(0)->isChecked());
+        QVERIFY(menu->actions().at(5)->text().startsWith(QLatin1String("Fig. 15")));
+        menu->actions().at(5)->trigger();
+        QCOMPARE(tabs->currentIndex(), 2);
+        QCOMPARE(shownOn(2), QList<QCustomPlot *> {plots[5]});
+        // alone, it has the page's whole width (the three shared it before)
+        QTRY_VERIFY2(plots[5]->width() >= tabs->currentWidget()->width() - 20,
+                     qPrintable(QStringLiteral("%1 of %2 px").arg(plots[5]->width()).arg(tabs->currentWidget()->width())));
+        emit menu->aboutToShow();
+        QVERIFY(menu->actions().at(5)->isChecked());
+
+        // Another kind while presenting: its pages show one plot each too.
+        QVERIFY(w.openDesign(QStringLiteral("fourbar-example")));
+        auto *fourbarTabs = w.findChild<QTabWidget *>(QStringLiteral("fourbarPlotTabs"));
+        QVERIFY(fourbarTabs);
+        for (int page = 0; page < fourbarTabs->count(); ++page) {
+            int shown = 0;
+            for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
+                shown += plot->parentWidget() == fourbarTabs->widget(page) && !plot->isHidden();
+            QCOMPARE(shown, 1);
+        }
+        // and the lengths, Grashof's class and the γ gauge above them step aside
+        auto *grashof = w.findChild<QLabel *>(QStringLiteral("grashofLabel"));
+        QVERIFY(grashof && grashof->parentWidget()->isHidden());
+        QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        for (QCustomPlot *plot : plots)
+            QVERIFY(!plot->isHidden());
+        for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
+            QVERIFY(!plot->isHidden());
+        QVERIFY(!grashof->parentWidget()->isHidden());
+    }
+
+    /// Figs. 15 and 16 share a row above fig. 17 at 1280×720: their axes keep room (a legend
+    /// each left them a 30–60 px strip), as fig. 17 names the same curve and bands.
+    void actuatorPlotsKeepTheirAxes()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(!w.isPresenting() && w.openDesign(QStringLiteral("pjoint-prototype")));
+        QTabWidget *tabs = pjointTabs();
+        QVERIFY(tabs);
+        tabs->setCurrentIndex(2);
+        const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
+        for (int i : {5, 6})
+            QTRY_VERIFY2(plots[i]->axisRect()->height() >= 100, qPrintable(QString::number(plots[i]->axisRect()->height())));
+        QVERIFY(plots[7]->legend->visible()); // fig. 17 names them
+        tabs->setCurrentIndex(0);
+    }
+
+    /// Leaving presentation mode gives the window back: each plot of the Geometry page at its
+    /// share (the page's grid shares its columns by stretch, not by the legends' size hints,
+    /// which presentation mode's larger text changed) and the docks at their sizes (restored
+    /// once the window is back to its own size, not while it was still full screen).
+    void leavingGivesTheWindowBack()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(!w.isPresenting() && w.openDesign(QStringLiteral("pjoint-prototype")));
+        QTabWidget *tabs = pjointTabs();
+        QVERIFY(tabs);
+        tabs->setCurrentIndex(0);
+        const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
+        auto *design = w.findChild<QDockWidget *>(QStringLiteral("designDock"));
+        QVERIFY(design);
+        QTest::qWait(200);
+        const QList<int> widths {plots[0]->width(), plots[1]->width(), plots[2]->width()};
+        const int page = tabs->widget(0)->width(), designHeight = design->height();
+        QCOMPARE_GT(widths[1], page / 3); // figs. 9 and 10 stack in the wider column
+
+        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
+        QVERIFY(w.isPresenting());
+        QTest::qWait(200);
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        tabs->setCurrentIndex(0); // presentation mode brought the page of its plot to the front
+        for (int i = 0; i < 3; ++i)
+            QTRY_VERIFY2(std::abs(plots[i]->width() - widths[i]) <= 4,
+                         qPrintable(QStringLiteral("fig. %1: %2 px, before %3 px").arg(8 + i).arg(plots[i]->width()).arg(widths[i])));
+        QTRY_VERIFY2(std::abs(design->height() - designHeight) <= 8,
+                     qPrintable(QStringLiteral("the Design dock %1 px high, before %2 px").arg(design->height()).arg(designHeight)));
+    }
+};
+
+QTEST_MAIN(TestPresentation)
+#include "tst_presentation.moc"
