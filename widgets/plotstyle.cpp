@@ -101,6 +101,20 @@ Header apply(QCustomPlot *plot, const QFont &base)
         axis->setTickLabels(false);
     }
     plot->xAxis->setSubTicks(false);
+    // QCustomPlot leaves out a tick label that the widget's edge would cut: in presentation
+    // mode's larger text the θ axis lost its 90° (fig. 8) and the four-bar's its 360°. The axis
+    // rect keeps half the last label's width free at its right (known after a first replot).
+    QObject::connect(plot, &QCustomPlot::beforeReplot, plot, [plot] {
+        const QVector<QString> labels = plot->xAxis->tickVectorLabels();
+        if (labels.isEmpty())
+            return;
+        const int half = QFontMetrics(plot->xAxis->tickLabelFont()).horizontalAdvance(labels.last()) / 2 + 2;
+        QMargins margins = plot->axisRect()->minimumMargins();
+        if (margins.right() != half) {
+            margins.setRight(half);
+            plot->axisRect()->setMinimumMargins(margins);
+        }
+    });
     return header;
 }
 

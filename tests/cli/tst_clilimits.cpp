@@ -155,6 +155,15 @@ private slots:
         QVERIFY(run.exitCode != 0);
         QVERIFY2(run.err.contains(shown), run.err.constData());
     }
+
+    /// A point out of reach is given to the hundredth, as the fields give it, and the length it
+    /// is out of is named by its symbol, as the panels write it (l₁, not the file's name l1).
+    void unreachablePointInSymbols()
+    {
+        const Run run = runPkm(args({"eval", "moma-3a", "--set", "x=83"}));
+        QVERIFY(run.exitCode != 0);
+        QVERIFY2(run.err.contains("(83, -261.5) mm") && run.err.contains("l\u2081 = 195 mm"), run.err.constData());
+    }
 };
 
 QTEST_MAIN(TestCliLimits)

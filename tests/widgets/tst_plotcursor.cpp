@@ -90,6 +90,33 @@ private slots:
         QVERIFY(!subtitle->text().contains(QChar(0x0307)));
         delete subtitle;
     }
+
+    /// The last tick label of the x axis is drawn whole: QCustomPlot leaves out a label the
+    /// widget's edge would cut, and with large text the θ axis lost its 90°.
+    void lastTickLabelHasRoom()
+    {
+        QCustomPlot plot;
+        plot.resize(360, 240);
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        plotstyle::apply(&plot, QApplication::font());
+        plotstyle::setLegendShown(&plot, false); // an empty legend would narrow its column
+        QFont large = plot.xAxis->tickLabelFont();
+        large.setPointSizeF(large.pointSizeF() * 2.5); // presentation mode's largest text
+        plot.xAxis->setTickLabelFont(large);
+        auto ticker = QSharedPointer<QCPAxisTickerFixed>::create(); // every 30°, as the П-joint's θ
+        ticker->setTickStep(30.0);
+        plot.xAxis->setTicker(ticker);
+        plot.xAxis->setRange(-90.0, 90.0);
+        plot.replot(); // the labels are known after a first layout
+        plot.replot();
+        const QString last = plot.xAxis->tickVectorLabels().last();
+        const double half = 0.5 * QFontMetrics(plot.xAxis->tickLabelFont()).horizontalAdvance(last);
+        QCOMPARE(plot.xAxis->tickVector().last(), 90.0);
+        QVERIFY2(plot.axisRect()->rect().right() + half <= plot.viewport().right(),
+                 qPrintable(QStringLiteral("“%1” needs %2 px right of the axis, has %3")
+                                .arg(last).arg(half).arg(plot.viewport().right() - plot.axisRect()->rect().right())));
+    }
 };
 
 QTEST_MAIN(TestPlotCursor)

@@ -24,7 +24,8 @@ using fivebar::solverTolerance;
 
 std::string pointText(const Eigen::Vector2d &p)
 {
-    return text::format(text::translate("core", "(%1, %2) mm"), {text::number(p.x(), 3), text::number(p.y(), 3)});
+    // to the hundredth, as the fields and the values panel give a position
+    return text::format(text::translate("core", "(%1, %2) mm"), {text::number(p.x(), 2), text::number(p.y(), 2)});
 }
 
 /// "B left of A→C": where `point` lies from the directed `line`, for a sentence.

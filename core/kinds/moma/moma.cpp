@@ -17,6 +17,7 @@ namespace {
 constexpr double pi = std::numbers::pi;
 using moma::cross;
 using moma::legName;
+using moma::legSubscript;
 
 Eigen::Vector2d normal(const Eigen::Vector2d &a)
 {
@@ -360,7 +361,7 @@ std::string Moma::oneSideViolation(const Eigen::Vector2d &platform, const std::a
         if (inner != 0 && c * inner < -1e-9 * m_design.length[leg]) {
             return text::format(
                 text::translate("core", "link S%1 would lie on the outer side of guide %2 (the one-side constraint is on)"),
-                {legName(leg), legName(leg)});
+                {legSubscript(leg), legName(leg)});
         }
     }
     return {};
@@ -440,7 +441,8 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
     std::array<Eigen::Vector2d, 2> z;
     // made only for a message: a solve that succeeds (every drag step, every map cell) formats nothing
     const auto where = [&] {
-        return text::format(text::translate("core", "(%1, %2) mm"), {text::number(platform.x()), text::number(platform.y())});
+        // to the hundredth, as the fields and the values panel give a position
+        return text::format(text::translate("core", "(%1, %2) mm"), {text::number(platform.x(), 2), text::number(platform.y(), 2)});
     };
     for (int leg = 0; leg < 2; ++leg) {
         const double D = moma::discriminant(d, leg, platform); // (9)
@@ -449,7 +451,7 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
             return Failure{FailureKind::Unreachable, "x",
                            text::format(text::translate("core", "The platform cannot reach %1: it lies more than "
                                                                 "l%2 = %3 mm from guide %4."),
-                                        {where(), legName(leg), text::number(l), legName(leg)})};
+                                        {where(), legSubscript(leg), text::number(l), legName(leg)})};
         }
         p[leg] = moma::projection(d, leg, platform) + d.branch[leg] * std::sqrt(std::max(0.0, D)); // (7)
         // √D of a D that is zero up to rounding is ~1e-8·l: allow for it at the stroke ends
@@ -458,7 +460,7 @@ Result<Pose> Moma::inverse(const Eigen::Vector2d &platform) const
             return Failure{FailureKind::OutOfRange, joinText({"p", legName(leg)}),
                            text::format(text::translate("core", "The platform cannot reach %1: slider %2 would have to "
                                                                 "be at p%3 = %4 mm, outside its stroke [%5, %6] mm."),
-                                        {where(), legName(leg), legName(leg),
+                                        {where(), legName(leg), legSubscript(leg),
                                          text::numberOutside(p[leg], d.strokeMin, d.strokeMax),
                                          text::number(d.strokeMin), text::number(d.strokeMax)})};
         }

@@ -14,6 +14,12 @@ inline std::string legName(int leg)
     return leg == 0 ? "1" : "2";
 }
 
+/// The leg's number as a symbol's subscript: "₁" in "l₁", "p₁", "S₁", as the panels write them.
+inline std::string legSubscript(int leg)
+{
+    return leg == 0 ? "₁" : "₂";
+}
+
 inline double cross(const Eigen::Vector2d &u, const Eigen::Vector2d &v)
 {
     return u.x() * v.y() - u.y() * v.x();
