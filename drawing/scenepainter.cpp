@@ -207,7 +207,7 @@ void ScenePainter::paintScaleBar(
 }
 
 ScenePainter::MessageLayout ScenePainter::messageLayout(const QRectF &area, const QString &message,
-    const SceneStyle &style, QPaintDevice *device)
+    const SceneStyle &style, QPaintDevice *device, const QRectF &drawing)
 {
     const double px = style.pixelSize;
     MessageLayout layout;
@@ -232,16 +232,42 @@ ScenePainter::MessageLayout ScenePainter::messageLayout(const QRectF &area, cons
     const QSizeF size(std::ceil(text.width()) + 2.0 * pad, std::ceil(text.height()) + 2.0 * pad);
     // never above the view's top: a message taller than the view starts at its top
     layout.box = QRectF(area.left() + margin, std::max(area.top(), bottom - size.height()), size.width(), size.height());
+    // A mechanism low in a short view (a five-bar at a singular pose, its view squeezed by the
+    // mode buttons) would lose its lower joints under the box: at the top, where it covers less.
+    if (drawing.isValid()) {
+        const QRectF top(layout.box.left(), area.top() + margin, size.width(), size.height());
+        const auto covered = [&drawing](const QRectF &box) {
+            const QRectF both = box.intersected(drawing);
+            return both.isValid() ? both.width() * both.height() : 0.0;
+        };
+        if (top.bottom() <= area.bottom() && covered(top) < covered(layout.box))
+            layout.box = top;
+    }
     layout.text = layout.box.adjusted(pad, pad, -pad, -pad);
     return layout;
 }
 
-void ScenePainter::paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style)
+QRectF ScenePainter::jointBounds(const Scene &scene, const ViewMapping &mapping, const SceneStyle &style)
+{
+    QRectF bounds;
+    for (const SceneJoint &joint : scene.joints) {
+        if (joint.kind == JointKind::Point || !joint.position.allFinite())
+            continue; // a point of interest (an instant centre) may lie far out
+        const QPointF at = mapping.toDevice(joint.position);
+        const QRectF point(at, QSizeF(0.001, 0.001)); // a rect of no size is null: united() skips it
+        bounds = bounds.isValid() ? bounds.united(point) : point;
+    }
+    const double grow = (style.pivotRadius + style.fontPixels) * style.pixelSize;
+    return bounds.isValid() ? bounds.adjusted(-grow, -grow, grow, grow) : QRectF();
+}
+
+void ScenePainter::paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style,
+    const QRectF &drawing)
 {
     if (message.isEmpty())
         return;
     const double px = style.pixelSize;
-    const MessageLayout layout = messageLayout(area, message, style, painter.device());
+    const MessageLayout layout = messageLayout(area, message, style, painter.device(), drawing);
 
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);

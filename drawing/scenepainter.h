@@ -62,7 +62,12 @@ public:
     static double legendHeight(const QRectF &area, const Scene &scene, const SceneStyle &style, QPaintDevice *device);
     /// A message in a rounded box at the bottom-left of `area`, wrapped onto as many lines as it
     /// needs (never cut); nothing when empty.
-    static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style);
+    /// Where the joints of `scene` are drawn, with their rings and a label's height round them.
+    static QRectF jointBounds(const Scene &scene, const ViewMapping &mapping, const SceneStyle &style);
+    /// `drawing`, where the mechanism is drawn (device), is kept clear where the message can go
+    /// at the top of `area` instead of the bottom and covers less of it there.
+    static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style,
+        const QRectF &drawing = QRectF());
     /// Where paintMessage() puts `message` on `device`: the box, the rectangle of the text
     /// inside it, and the font and flags it is drawn with.
     struct MessageLayout {
@@ -72,7 +77,7 @@ public:
         int flags = 0;
     };
     static MessageLayout messageLayout(const QRectF &area, const QString &message, const SceneStyle &style,
-        QPaintDevice *device);
+        QPaintDevice *device, const QRectF &drawing = QRectF());
 
     /// Grid spacing in mm: the smallest 1/2/5×10ⁿ with spacing × scale ≥ minimumDevice.
     static double niceStep(double minimumDevice, double scale);

@@ -269,7 +269,9 @@ void LinkageView::paintEvent(QPaintEvent *)
     ScenePainter::paintScaleBar(painter, area, m_mapping, m_style);
     if (m_hasScene)
         ScenePainter::paintLegend(painter, area, m_scene, m_style);
-    ScenePainter::paintMessage(painter, area, shownMessage(), m_style);
+    const double legend = m_hasScene ? ScenePainter::legendHeight(area, m_scene, m_style, this) : 0.0;
+    ScenePainter::paintMessage(painter, area.adjusted(0.0, legend, 0.0, 0.0), shownMessage(), m_style, // below the legend
+                               m_hasScene ? ScenePainter::jointBounds(m_scene, m_mapping, m_style) : QRectF());
     painter.end();
     ++m_paintCount;
     m_lastPaintMilliseconds = double(timer.nsecsElapsed()) * 1e-6;

@@ -321,6 +321,21 @@ private slots:
         QTRY_VERIFY2(bar->height() <= 2 * QFontMetrics(bar->font()).lineSpacing() + 8, qPrintable(QString::number(bar->height())));
     }
 
+    void messageKeepsTheMechanismInSight()
+    {
+        // a mechanism low in the view (a five-bar in a view the mode buttons squeeze): the
+        // message goes to the top; one high in the view leaves it at the bottom, as ever
+        const QRectF area(0, 0, 370, 260);
+        const QString message = QStringLiteral("Singular pose (direct): the mechanism cannot be driven here.");
+        const SceneStyle style;
+        const auto low = ScenePainter::messageLayout(area, message, style, nullptr, QRectF(100, 120, 160, 120));
+        const auto high = ScenePainter::messageLayout(area, message, style, nullptr, QRectF(100, 10, 160, 120));
+        const auto none = ScenePainter::messageLayout(area, message, style, nullptr);
+        QCOMPARE_LT(low.box.bottom(), 120.0);
+        QCOMPARE(high.box, none.box);
+        QCOMPARE_GT(none.box.top(), 130.0);
+    }
+
     void statusLowersOnlySymbols()
     {
         // "x_AB" in a message reads as the drawings and the values panel write it, with a
