@@ -36,6 +36,17 @@ private:
         return nullptr;
     }
 
+    /// The П-joint prototype open (not presenting) with the page `page` of its plots in front.
+    QTabWidget *pjointPage(int page) const
+    {
+        if (m_window->isPresenting() || !m_window->openDesign(QStringLiteral("pjoint-prototype")))
+            return nullptr;
+        QTabWidget *tabs = pjointTabs();
+        if (tabs)
+            tabs->setCurrentIndex(page);
+        return tabs;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -117,11 +128,8 @@ private slots:
     /// each left them a 30–60 px strip), as fig. 17 names the same curve and bands.
     void actuatorPlotsKeepTheirAxes()
     {
-        MainWindow &w = *m_window;
-        QVERIFY(!w.isPresenting() && w.openDesign(QStringLiteral("pjoint-prototype")));
-        QTabWidget *tabs = pjointTabs();
+        QTabWidget *tabs = pjointPage(2);
         QVERIFY(tabs);
-        tabs->setCurrentIndex(2);
         const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
         for (int i : {5, 6})
             QTRY_VERIFY2(plots[i]->axisRect()->height() >= 100, qPrintable(QString::number(plots[i]->axisRect()->height())));
@@ -136,10 +144,8 @@ private slots:
     void leavingGivesTheWindowBack()
     {
         MainWindow &w = *m_window;
-        QVERIFY(!w.isPresenting() && w.openDesign(QStringLiteral("pjoint-prototype")));
-        QTabWidget *tabs = pjointTabs();
+        QTabWidget *tabs = pjointPage(0);
         QVERIFY(tabs);
-        tabs->setCurrentIndex(0);
         const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
         auto *design = w.findChild<QDockWidget *>(QStringLiteral("designDock"));
         QVERIFY(design);
