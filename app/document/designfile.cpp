@@ -1,6 +1,7 @@
 #include "document/designfile.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 
 #include "quantityformat.h"
@@ -304,6 +305,26 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
     if (!solved)
         return solved;
     Pose pose = *solved;
+    // The pose at the file's own outputs, if its inputs are the file's to the digits written,
+    // with the file's inputs as written (the recomputed ones may not be: q = 40 came back as
+    // 40.0000000000003, and every save moved it on). It is as true to the file as the pose
+    // solved from the inputs: where the outputs drift by more than round-off (θ = 0 of a
+    // П-joint comes back as 1e-12), and at a direct singularity, where the inputs hold more
+    // than one pose (a platform whose points coincide turns freely: any φ holds its inputs).
+    const auto filePose = [&]() -> std::optional<Pose> {
+        auto exact = mechanism.solveInverse(saved.outputs, &pose);
+        if (!exact || exact->inputs.size() != pose.inputs.size())
+            return std::nullopt;
+        for (int i = 0; i < inputs; ++i) {
+            const double file = saved.inputs[i];
+            if (std::abs(exact->inputs[i] - file) > writtenDigitsTolerance * std::max(1.0, std::abs(file)))
+                return std::nullopt;
+        }
+        Pose kept = *exact;
+        for (int i = 0; i < inputs; ++i)
+            kept.inputs[i] = saved.inputs[i];
+        return kept;
+    };
     bool keptOutputs = true;
     for (const auto &[name, display] : values) {
         const int index = mechanism.variableIndex(name.toStdString());
@@ -312,6 +333,8 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
         const VariableInfo &info = variables[index];
         const double fromInputs = info.unit.toDisplay(mechanism.variableValue(*solved, index));
         if (std::abs(fromInputs - display) > savedPoseTolerance * std::max(1.0, std::abs(display))) {
+            if (auto kept = filePose())
+                return *kept;
             return Failure{FailureKind::InvalidParameter, info.name,
                            QCoreApplication::translate("pkm::designfile",
                                                        "the pose's %1 = %2 %4 does not agree with its inputs, which "
@@ -328,26 +351,8 @@ Result<Pose> solveSavedPose(const Mechanism &mechanism, const Pose &home, const 
     }
     if (keptOutputs)
         return pose;
-    // The inputs were written to 15 digits, and the outputs they give drift from the file's by
-    // more than round-off where the pose amplifies it (θ = 0 of a П-joint comes back as 1e-12):
-    // the pose at the file's own outputs, if its inputs are the file's to the digits written,
-    // is as true to the file, and saving it again writes the same file.
-    if (auto exact = mechanism.solveInverse(saved.outputs, &pose)) {
-        bool same = exact->inputs.size() == pose.inputs.size();
-        for (int i = 0; same && i < inputs; ++i) {
-            const double file = saved.inputs[i];
-            same = std::abs(exact->inputs[i] - file) <= writtenDigitsTolerance * std::max(1.0, std::abs(file));
-        }
-        if (same) {
-            // ...and with the file's inputs as written: they agree to those digits, and the
-            // recomputed ones may not (q = 40 came back as 40.0000000000003, and every save
-            // moved it on).
-            Pose kept = *exact;
-            for (int i = 0; i < inputs; ++i)
-                kept.inputs[i] = saved.inputs[i];
-            return kept;
-        }
-    }
+    if (auto kept = filePose())
+        return *kept;
     return pose;
 }
 

@@ -86,6 +86,23 @@ private slots:
         QCOMPARE(designfile::serialize(*again), saved);
     }
 
+    /// Found by fuzzing: a free platform whose three legs hold the same platform point (the
+    /// leg library's defaults, B₁ = B₂ = B₃) turns freely at any pose (a direct singularity):
+    /// its inputs hold every φ, and the φ solved from them was not the one saved, so the saved
+    /// file did not read back. The file's own pose holds its inputs and is kept.
+    void savedPoseOfAFreelyTurningPlatformReadsBack()
+    {
+        const QByteArray file = R"({"format": "pkm-studio-design", "version": 1, "mechanism": "planar-parallel",
+  "parameters": {"platform": "free", "theta3_min": -180, "theta3_max": 180, "working3": 1, "assembly": 1},
+  "pose": {"x": 50, "y": 150}})";
+        auto design = designfile::parse(file, QStringLiteral("fuzzed.pkm.json"));
+        QVERIFY2(design.ok(), design ? "" : design.failure().message.c_str());
+        const QByteArray saved = designfile::serialize(*design);
+        auto again = designfile::parse(saved, QStringLiteral("saved"));
+        QVERIFY2(again.ok(), again ? "" : again.failure().message.c_str());
+        QCOMPARE(designfile::serialize(*again), saved);
+    }
+
     /// Found by fuzzing: a 3-RRR/RPR platform whose home pose amplifies round-off. The outputs
     /// solved from the written inputs drift, so the reader solves the inputs from the written
     /// outputs — and those came back as q1 = 40.0000000000003, so the second save differed from
