@@ -142,7 +142,7 @@ void MainWindow::watchStatusBar()
     m_statusText = new QLabel(this);
     m_statusText->setObjectName(QStringLiteral("statusText"));
     m_statusText->setWordWrap(true);
-    // rich text only to lower the mechanism's symbols (statusHtml); the rest is escaped
+    // rich text only to lower the mechanism's symbols (symbolHtmlKnown); the rest is escaped
     m_statusText->setTextFormat(Qt::RichText);
     m_statusText->setContentsMargins(statusTextIndent, 0, 0, 0);
     // its size is set from the message (fitStatusMessage): a word-wrapped label's own minimum

@@ -177,10 +177,6 @@ void PJointPlots::createPanel(int index)
     p.plot = plot;
     plot->installEventFilter(this);
     plot->setMinimumSize(180, 170);
-    // Expanding: where a page shows one plot alone (presentation mode), a grid gives the spare
-    // width to the expanding items only; with the default policy the hidden neighbour's empty
-    // column kept a share, and fig. 15 stayed at two-thirds of the page.
-    plot->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     // Layers, bottom to top: background, bands, grid, family, main (this design), axes,
     // legend, overlay, cursor (plotstyle.h).
     const plotstyle::Header header = plotstyle::apply(plot, font());
