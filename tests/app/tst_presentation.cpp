@@ -10,7 +10,6 @@
 #include <qcustomplot.h>
 
 #include <QAction>
-#include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
 #include <QTabWidget>
@@ -137,21 +136,20 @@ private slots:
         tabs->setCurrentIndex(0);
     }
 
-    /// Leaving presentation mode gives the window back: each plot of the Geometry page at its
-    /// share (the page's grid shares its columns by stretch, not by the legends' size hints,
-    /// which presentation mode's larger text changed) and the docks at their sizes (restored
-    /// once the window is back to its own size, not while it was still full screen).
+    /// Leaving presentation mode gives each plot of the Geometry page its share back: the
+    /// page's grid shares its columns by stretch, not by the legends' size hints, which
+    /// presentation mode's larger text changed. (The docks, restored again once the window is
+    /// back to its own size, cannot be seen to move here: on this test screen full screen is
+    /// the window's own size. A screenshot under Xvfb shows them.)
     void leavingGivesTheWindowBack()
     {
         MainWindow &w = *m_window;
         QTabWidget *tabs = pjointPage(0);
         QVERIFY(tabs);
         const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
-        auto *design = w.findChild<QDockWidget *>(QStringLiteral("designDock"));
-        QVERIFY(design);
         QTest::qWait(200);
         const QList<int> widths {plots[0]->width(), plots[1]->width(), plots[2]->width()};
-        const int page = tabs->widget(0)->width(), designHeight = design->height();
+        const int page = tabs->widget(0)->width();
         QCOMPARE_GT(widths[1], page / 3); // figs. 9 and 10 stack in the wider column
 
         w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
@@ -163,8 +161,6 @@ private slots:
         for (int i = 0; i < 3; ++i)
             QTRY_VERIFY2(std::abs(plots[i]->width() - widths[i]) <= 4,
                          qPrintable(QStringLiteral("fig. %1: %2 px, before %3 px").arg(8 + i).arg(plots[i]->width()).arg(widths[i])));
-        QTRY_VERIFY2(std::abs(design->height() - designHeight) <= 8,
-                     qPrintable(QStringLiteral("the Design dock %1 px high, before %2 px").arg(design->height()).arg(designHeight)));
     }
 };
 
