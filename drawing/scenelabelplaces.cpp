@@ -38,6 +38,21 @@ double SceneLabels::memberHalfWidth(int from, int to, double fraction) const
     return half;
 }
 
+bool SceneLabels::nearerAnotherBar(const QPointF &centre, int from, int to) const
+{
+    const auto distance = [&centre](const QPointF &a, const QPointF &b) {
+        const QPointF d = b - a;
+        const double squared = dot(d, d);
+        const double t = squared > 0.0 ? std::clamp(dot(centre - a, d) / squared, 0.0, 1.0) : 0.0;
+        return length(centre - (a + t * d));
+    };
+    const double own = distance(point(from), point(to));
+    return std::any_of(m_scene.bars.begin(), m_scene.bars.end(), [&](const SceneBar &bar) {
+        const bool same = (bar.from == from && bar.to == to) || (bar.from == to && bar.to == from);
+        return !same && valid(bar.from) && valid(bar.to) && distance(point(bar.from), point(bar.to)) < own;
+    });
+}
+
 void SceneLabels::placeAll()
 {
     // Most constrained first: dimension text along members, angle labels near their arcs
@@ -68,6 +83,7 @@ void SceneLabels::placeMemberLabels(bool dimensions)
         centroid /= double(shown);
 
     std::vector<QPointF> candidates;
+    std::vector<std::optional<QPointF>> anchors; // where a candidate's leader starts, if it needs one
     for (const PendingMemberLabel &pending : m_memberLabels) {
         if (pending.preferReadingUp != dimensions || !valid(pending.from) || !valid(pending.to))
             continue;
@@ -90,24 +106,46 @@ void SceneLabels::placeMemberLabels(bool dimensions)
             firstSide = dot(left, 0.5 * (p + q) - centroid) >= 0.0 ? 1.0 : -1.0;
         }
         candidates.clear();
+        anchors.clear();
         // Beside the member, then a step farther out where a neighbour's text stands there
         // (the П-joint's coupler under the diagonal's dimension in a tight pose).
         // A dimension's text stays near its member, which it would not name from farther out.
         const std::vector<double> extras = pending.preferReadingUp ? std::vector<double> {0.0, 10.0}
                                                                    : std::vector<double> {0.0, 10.0, 22.0, 36.0, 54.0};
+        std::size_t near = 0;
         for (double extra : extras) {
             for (double side : {firstSide, -firstSide}) {
+                if (extra == 0.0 && side != firstSide)
+                    near = candidates.size();
                 for (double fraction : {0.5, 0.42, 0.58, 0.34, 0.66, 0.26, 0.74}) {
                     const QPointF normal = side * left;
                     const double extent = pending.preferReadingUp ? 0.5 * size.height() : support(normal, size);
-                    const double lift = memberHalfWidth(pending.from, pending.to, fraction) + (5.0 + extra) * m_px + extent;
-                    candidates.push_back(p + fraction * (q - p) + lift * normal);
+                    const double edge = memberHalfWidth(pending.from, pending.to, fraction) + 1.0 * m_px;
+                    const QPointF onMember = p + fraction * (q - p);
+                    const QPointF centre = onMember + (edge + (4.0 + extra) * m_px + extent) * normal;
+                    // a name nearer another bar than its own would name that one (MOMA's S₁
+                    // between both links)
+                    if (!dimensions && nearerAnotherBar(centre, pending.from, pending.to))
+                        continue;
+                    candidates.push_back(centre);
+                    // a step out, a name could be read as another bar's or the space's between
+                    // bars (the five-bar's AE inside the loop): a leader ties it to its own
+                    anchors.push_back(extra > 0.0 ? std::optional<QPointF>(onMember + edge * normal) : std::nullopt);
                 }
             }
         }
+        const auto leaderFor = [&](std::size_t k) -> std::optional<Leader> {
+            if (!anchors[k])
+                return std::nullopt;
+            const std::optional<QLineF> line = leaderToBox(*anchors[k], candidates[k], size, 8.0 * m_px);
+            return line ? std::optional<Leader>(Leader {*line, p, q}) : std::nullopt;
+        };
         // A bar's name that would cover another label is left out: the bar is named by its
         // dimension or its joints, and a pile of text names nothing.
-        placeFirstFree(label, candidates, dimensions ? std::numeric_limits<double>::infinity() : coversALabel);
+        // A name next to its bar on the outside may cover one thin line (a guide's axis, an
+        // angle's reference) rather than go inside, where between two bars it names either.
+        placeFirstFree(label, candidates, dimensions ? std::numeric_limits<double>::infinity() : coversALabel,
+            dimensions ? 0 : near, 2.0, dimensions ? LeaderFor {} : LeaderFor {leaderFor});
     }
 }
 
@@ -301,8 +339,19 @@ void SceneLabels::placeJointLabels()
             if (extra == 8.0 * m_px)
                 near = candidates.size();
         }
+        // A name pushed out past the near rings gets a leader from its joint's ring, so a "D"
+        // among other joints still names D (the five-bar's small view, with its handles).
+        const QPointF joint = m_points[i];
+        const double ring = (m_style.pivotRadius + 1.0) * m_px;
+        const auto leaderFor = [&](std::size_t k) -> std::optional<Leader> {
+            if (k < near)
+                return std::nullopt;
+            const QPointF start = joint + ring * unit(candidates[k] - joint);
+            const std::optional<QLineF> line = leaderToBox(start, candidates[k], size, clear - ring + 12.0 * m_px);
+            return line ? std::optional<Leader>(Leader {*line, joint, joint}) : std::nullopt;
+        };
         placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}}, candidates,
-            std::numeric_limits<double>::infinity(), near, 4.0);
+            std::numeric_limits<double>::infinity(), near, 4.0, leaderFor);
     }
 }
 

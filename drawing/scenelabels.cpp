@@ -227,17 +227,57 @@ bool SceneLabels::isFree(const Quad &box) const
         && std::none_of(m_obstacles.begin(), m_obstacles.end(), [&box](const Obstacle &o) { return overlap(box, o.quad); });
 }
 
+std::optional<QLineF> SceneLabels::leaderToBox(const QPointF &anchor, const QPointF &centre, const QSizeF &size, double slack)
+{
+    const QPointF d = anchor - centre;
+    const double t = std::min(std::abs(d.x()) > 1e-9 ? 0.5 * size.width() / std::abs(d.x()) : 1e300,
+        std::abs(d.y()) > 1e-9 ? 0.5 * size.height() / std::abs(d.y()) : 1e300);
+    if (t >= 1.0 || length(d) * (1.0 - t) < slack)
+        return std::nullopt;
+    return QLineF(anchor, centre + t * d);
+}
+
+bool SceneLabels::leaderIsClear(const Leader &leader) const
+{
+    const Quad line = segmentQuad(leader.line.p1(), leader.line.p2(), 0.5 * m_px);
+    const QPointF &from = leader.from, &to = leader.to;
+    const auto endsAt = [](const QPointF &p, const QPointF &q) { return length(p - q) < 1.0; };
+    for (const Quad &q : m_labelBoxes) {
+        if (overlap(line, q))
+            return false;
+    }
+    for (const Obstacle &o : m_obstacles) {
+        // a bar is 4.5 px wide each side of its axis and a pivot's ring about as wide; the
+        // hatching, extension and dimension lines are thinner, and a leader may cross them
+        const bool matters = !o.line || o.halfWidth >= 4.0 * m_px;
+        if (!matters || (o.line && (endsAt(o.a, from) || endsAt(o.b, from) || endsAt(o.a, to) || endsAt(o.b, to))))
+            continue;
+        if (overlap(line, o.quad))
+            return false;
+    }
+    return true;
+}
+
 bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates, double leaveOutAt,
-    std::size_t near, double nearEnough)
+    std::size_t near, double nearEnough, const LeaderFor &leaderFor)
 {
     const QSizeF size = textSize(label.text, label.joint) + QSizeF(4.0 * m_px, 4.0 * m_px); // keep a gap
     const auto boxAt = [&](std::size_t k) { return boxQuad(candidates[k], size, label.rotationDegrees); };
+    const auto leaderAt = [&](std::size_t k) { return leaderFor ? leaderFor(k) : std::nullopt; };
+    // Free, and where it needs a leader, one that crosses nothing a reader would follow instead.
+    const auto clear = [&](std::size_t k) {
+        if (!isFree(boxAt(k)))
+            return false;
+        const std::optional<Leader> leader = leaderAt(k);
+        return !leader || leaderIsClear(*leader);
+    };
     const std::size_t count = candidates.size();
     near = std::min(near, count);
     // The first free one of the first `near`; else the one of those that covers fewest thin
-    // lines (fewer than `nearEnough`) and nothing else; else the first free one after them;
-    // else the one that covers least, earlier ones (nearer to what the label names) first
-    // among equals. A free place is the rule: the costs are worked out only when there is none.
+    // lines (fewer than `nearEnough`) and nothing else; else the first free one after them
+    // (with a clear leader where it needs one, if there is such a place); else the one that
+    // covers least, earlier ones (nearer to what the label names) first among equals. A free
+    // place is the rule: the costs are worked out only when there is none.
     std::size_t chosen = count;
     double best = 0.0;
     for (std::size_t k = 0; k < near && chosen == count; ++k)
@@ -253,6 +293,8 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
         }
     }
     for (std::size_t k = near; k < count && chosen == count; ++k)
+        chosen = clear(k) ? k : count;
+    for (std::size_t k = near; leaderFor && k < count && chosen == count; ++k)
         chosen = isFree(boxAt(k)) ? k : count;
     if (chosen == count) {
         best = std::numeric_limits<double>::infinity();
@@ -266,8 +308,15 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
     }
     if (chosen == count || best >= leaveOutAt)
         return false;
+    // A name that may be left out (a bar's) is, where its leader would have to cross what it
+    // does not name: the ground under the five-bar's crank angle label.
+    const std::optional<Leader> leader = leaderAt(chosen);
+    if (leader && std::isfinite(leaveOutAt) && !leaderIsClear(*leader))
+        return false;
     label.centre = candidates[chosen];
     place(label);
+    if (leader)
+        m_nameLeaders.emplace_back(leader->line, label.colour);
     return best == 0.0;
 }
 
@@ -278,6 +327,12 @@ void SceneLabels::addTo(drawing::DrawList &list) const
     if (!m_leaders.empty()) {
         drawing::Lines leaders {m_leaders, {m_style.angle, 1.0 * m_px, Qt::RoundCap}};
         list.add(std::move(leaders), drawing::Layer::Dimensions);
+    }
+    for (const auto &[line, colour] : m_nameLeaders) {
+        // fainter than the name: it shows where the name belongs and draws no eye from the drawing
+        QColor faint = colour;
+        faint.setAlphaF(0.6f * faint.alphaF());
+        list.add(drawing::Lines {{line}, {faint, 1.0 * m_px, Qt::RoundCap}}, drawing::Layer::Text);
     }
     for (const SceneLabel &label : m_labels) {
         drawing::Text text {label.centre, label.rotationDegrees, label.text, label.joint ? m_jointFont : m_font,

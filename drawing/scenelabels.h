@@ -21,9 +21,11 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 class QPaintDevice;
@@ -161,10 +163,28 @@ private:
     /// that covers least, unless that covers `leaveOutAt` or more (collisions()); true when it
     /// is free. Of the first `near` candidates, the one that covers fewest thin lines
     /// (thinLinesOnly(), fewer than `nearEnough`) is taken rather than a later free one.
+    /// `leaderFor` gives the leader a label at a candidate would need to what it names (none
+    /// where it is next to it): a free place whose leader crosses a bar, a pivot or a label
+    /// is passed over while another free one is left, and the leader is drawn with the label.
+    /// The lines that end at `from` or `to` (the named joint, the named bar's ends) may touch it.
+    struct Leader {
+        QLineF line;
+        QPointF from, to;
+    };
+    using LeaderFor = std::function<std::optional<Leader>(std::size_t candidate)>;
     bool placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates,
-        double leaveOutAt = std::numeric_limits<double>::infinity(), std::size_t near = 0, double nearEnough = 0.0);
+        double leaveOutAt = std::numeric_limits<double>::infinity(), std::size_t near = 0, double nearEnough = 0.0,
+        const LeaderFor &leaderFor = {});
+    /// A leader from `anchor` to the edge of a `size` box about `centre`; none when the box is
+    /// within `slack` of the anchor.
+    static std::optional<QLineF> leaderToBox(const QPointF &anchor, const QPointF &centre, const QSizeF &size, double slack);
+    /// Whether `leader` crosses nothing that matters: no label, no outline and no bar or pivot
+    /// (thin lines may cross it), apart from the lines that end at `from` or `to`.
+    bool leaderIsClear(const Leader &leader) const;
     double memberHalfWidth(int from, int to, double fraction) const;
     void placeMemberLabels(bool dimensions);
+    /// Whether a bar other than the member from `from` to `to` passes nearer `centre`.
+    bool nearerAnotherBar(const QPointF &centre, int from, int to) const;
     void placeAngleLabels();
     /// A line from the arc of `pending` to the edge of its label (`size`) at `centre`; none
     /// when the label is next to the arc.
@@ -193,6 +213,8 @@ private:
     std::vector<Obstacle> m_obstacles;
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
     std::vector<QLineF> m_leaders; ///< from angle labels placed away to their arcs
+    /// from joint and bar names placed away to their joint or bar, in the name's colour
+    std::vector<std::pair<QLineF, QColor>> m_nameLeaders;
     std::vector<PendingMemberLabel> m_memberLabels;
     std::vector<PendingAngleLabel> m_angleLabels;
     std::vector<PendingGuideLabel> m_guideLabels;

@@ -2,6 +2,9 @@
 // its home pose and across the range of each joint variable, no label covers another one, and
 // an angle's label that had to move away from its arc is joined to it by a leader. A teacher
 // found the П-joint's "μ = 21.8°" over the end of "d = 183.1 mm" and of "a = 170 mm" at θ = 0.
+// A joint's or a bar's name pushed away from what it names is joined to it by a leader, and a
+// bar's name is nearer its own bar than any other: the five-bar's "E" stood 90 px under its
+// joint, and MOMA's S₁ and S₂ stood one over the other between both links.
 #include "gui/mainwindow.h"
 
 #include "document/document.h"
@@ -13,6 +16,8 @@
 #include <QTest>
 #include <QTransform>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 using namespace pkm;
@@ -40,6 +45,23 @@ std::vector<drawing::Text> textsOf(const drawing::DrawList &list)
             texts.push_back(*text);
     }
     return texts;
+}
+
+/// The distance from `point` to the rectangle `box` (0 inside it).
+double distanceTo(const QRectF &box, const QPointF &point)
+{
+    const double dx = std::max({box.left() - point.x(), 0.0, point.x() - box.right()});
+    const double dy = std::max({box.top() - point.y(), 0.0, point.y() - box.bottom()});
+    return std::hypot(dx, dy);
+}
+
+/// The distance from `point` to the segment from `a` to `b`.
+double distanceTo(const QPointF &a, const QPointF &b, const QPointF &point)
+{
+    const QPointF d = b - a;
+    const double squared = QPointF::dotProduct(d, d);
+    const double t = squared > 0.0 ? std::clamp(QPointF::dotProduct(point - a, d) / squared, 0.0, 1.0) : 0.0;
+    return QLineF(point, a + t * d).length();
 }
 
 /// "'A' covers 'B'" for each pair of labels that overlap by more than a pixel's sliver.
@@ -109,6 +131,81 @@ private slots:
         }
         QVERIFY2(covered.isEmpty(), qPrintable(QStringLiteral("%1 overlaps in %2 poses:\n").arg(covered.size()).arg(poses)
             + covered.join(QLatin1Char('\n'))));
+    }
+
+    void namesStayWithWhatTheyName_data() { addEveryPresetRows(); }
+
+    /// At 1280×720 after Fit, each joint's name is next to its joint or has a leader from the
+    /// joint's ring to its edge; each bar's name is nearer its bar than any other bar, and one
+    /// set off from its bar has a leader too.
+    void namesStayWithWhatTheyName()
+    {
+        PKM_FETCH_PRESET(preset);
+        QVERIFY(m_window->openDesign(preset));
+        LinkageView *view = m_window->linkageView();
+        QTest::keyClick(view, Qt::Key_Home);
+        const Scene &scene = view->scene();
+        const SceneStyle &style = view->sceneStyle();
+        const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), style);
+        std::vector<QLineF> leaders;
+        for (const drawing::Primitive &item : list.items) {
+            const auto *lines = std::get_if<drawing::Lines>(&item.shape);
+            if (lines && item.layer == drawing::Layer::Text)
+                leaders.insert(leaders.end(), lines->lines.begin(), lines->lines.end());
+        }
+        const auto device = [&](int joint) {
+            return view->mapping().toDevice(Eigen::Vector2d(scene.joints[std::size_t(joint)].position.head<2>()));
+        };
+        const auto joinedBy = [&](const QRectF &box, const auto &fromWhat) {
+            return std::any_of(leaders.begin(), leaders.end(), [&](const QLineF &leader) {
+                return fromWhat(leader.p1()) && distanceTo(box.adjusted(-1.5, -1.5, 1.5, 1.5), leader.p2()) == 0.0;
+            });
+        };
+        const double px = style.pixelSize;
+        QStringList astray;
+        int names = 0;
+        for (const drawing::Text &text : textsOf(list)) {
+            const QRectF box = boxOf(text).boundingRect();
+            for (int j = 0; j < int(scene.joints.size()); ++j) {
+                if (!text.font.bold() || QString::fromStdString(scene.joints[std::size_t(j)].label) != text.text)
+                    continue;
+                ++names;
+                const QPointF at = device(j);
+                const double ring = (style.pivotRadius + 2.0) * px;
+                const bool next = distanceTo(box, at) <= (style.pivotRadius + 24.0) * px;
+                if (!next && !joinedBy(box, [&](const QPointF &p) { return QLineF(p, at).length() <= ring; }))
+                    astray << QStringLiteral("joint %1: %2 px from it, no leader").arg(text.text).arg(distanceTo(box, at));
+            }
+            // the bar it names: of those so named (the O-X glide's two links l), the nearest
+            const SceneBar *bar = nullptr;
+            double own = 1e300;
+            for (const SceneBar &candidate : scene.bars) {
+                const double there = distanceTo(device(candidate.from), device(candidate.to), box.center());
+                if (!text.font.bold() && text.rotationDegrees == 0.0 && QString::fromStdString(candidate.label) == text.text
+                    && there < own) {
+                    bar = &candidate;
+                    own = there;
+                }
+            }
+            if (!bar)
+                continue;
+            ++names;
+            const QPointF a = device(bar->from), b = device(bar->to);
+            for (const SceneBar &other : scene.bars) {
+                const double there = distanceTo(device(other.from), device(other.to), box.center());
+                if (other.label != bar->label && there < own)
+                    astray << QStringLiteral("bar %1: nearer %2 (%3 px) than its own (%4 px)")
+                                  .arg(text.text, QString::fromStdString(other.label)).arg(there).arg(own);
+            }
+            // the gap between the bar's axis and the name's box: a bar's half width and a few px
+            double gap = 1e300;
+            for (int k = 0; k <= 64; ++k)
+                gap = std::min(gap, distanceTo(box, a + (b - a) * (k / 64.0)));
+            if (gap > 16.0 * px && !joinedBy(box, [&](const QPointF &p) { return distanceTo(a, b, p) <= 8.0 * px; }))
+                astray << QStringLiteral("bar %1: %2 px from it, no leader").arg(text.text).arg(gap);
+        }
+        QCOMPARE_GT(names, 0);
+        QVERIFY2(astray.isEmpty(), qPrintable(astray.join(QLatin1Char('\n'))));
     }
 
     /// The П-joint at θ = 0: μ is measured at A between the diagonal and the crank, a narrow
