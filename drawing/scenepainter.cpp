@@ -9,12 +9,14 @@
 #include <QFont>
 #include <QFontMetricsF>
 #include <QLocale>
+#include <QMarginsF>
 #include <QPainter>
 #include <QPen>
 #include <QPolygonF>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 // The scene itself is laid out once (scenelayout.h) and rendered by paintDrawList(); this
@@ -133,11 +135,8 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
 {
     const double gap = 4.0 * style.pixelSize;
     const QRectF inner = labelRoom.adjusted(gap, gap, -gap, -gap);
-    // Less room on the side a label overhangs, a few times: the fit centres the drawing, so
-    // where the other side limits the scale, less room moves it by only half the overhang.
-    QRectF fitted = room;
-    ViewMapping mapping = ViewMapping::fit(extent, fitted, margin);
-    for (int pass = 0; pass < 4; ++pass) {
+    // How far the labels of the drawing at `mapping` reach past the inner room on each side.
+    const auto overhangs = [&](const ViewMapping &mapping) {
         double left = 0.0, top = 0.0, right = 0.0, bottom = 0.0;
         for (const drawing::Primitive &item : drawing::layoutScene(scene, mapping, style).items) {
             const auto *text = std::get_if<drawing::Text>(&item.shape);
@@ -161,14 +160,48 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
             right = std::max(right, box.right() - inner.right());
             bottom = std::max(bottom, box.bottom() - inner.bottom());
         }
-        const QRectF less = fitted.adjusted(left, top, -right, -bottom);
-        // at most half the room: a label wider than the view is cut whatever the scale
-        if (left + right + top + bottom < 0.5 || less.width() < 0.5 * room.width() || less.height() < 0.5 * room.height())
+        return QMarginsF(left, top, right, bottom);
+    };
+    const auto total = [](const QMarginsF &m) { return m.left() + m.top() + m.right() + m.bottom(); };
+    // Less room on the side a label overhangs, a few times: the fit centres the drawing, so
+    // where the other side limits the scale, less room moves it by only half the overhang.
+    QRectF fitted = room;
+    ViewMapping mapping = ViewMapping::fit(extent, fitted, margin);
+    ViewMapping best = mapping;
+    double leastOverhang = std::numeric_limits<double>::infinity();
+    for (int pass = 0; pass < 8; ++pass) {
+        const QMarginsF over = overhangs(mapping);
+        if (total(over) < leastOverhang) {
+            leastOverhang = total(over);
+            best = mapping;
+        }
+        const QRectF less = fitted.marginsRemoved(over);
+        // at most 60 % less room: a label wider than the view is cut whatever the scale
+        if (total(over) < 0.5 || less.width() < 0.4 * room.width() || less.height() < 0.4 * room.height())
             break;
         fitted = less;
         mapping = ViewMapping::fit(extent, fitted, margin);
     }
-    return mapping;
+    // A label may jump to another side at another scale (a joint's name in a crowded pose), so
+    // that taking room from one side after another never ends: then less and less of the whole
+    // room, moved away from the side a label overhangs, and of the scales tried the one that
+    // cuts least.
+    for (double factor = 0.95; leastOverhang >= 0.5 && factor > 0.45; factor -= 0.05) {
+        const QSizeF size = room.size() * factor;
+        QRectF smaller(room.center() - QPointF(0.5 * size.width(), 0.5 * size.height()), size);
+        for (int move = 0; move < 2 && leastOverhang >= 0.5; ++move) {
+            mapping = ViewMapping::fit(extent, smaller, margin);
+            const QMarginsF over = overhangs(mapping);
+            if (total(over) < leastOverhang) {
+                leastOverhang = total(over);
+                best = mapping;
+            }
+            const QPointF by(std::clamp(over.left() - over.right(), room.left() - smaller.left(), room.right() - smaller.right()),
+                std::clamp(over.top() - over.bottom(), room.top() - smaller.top(), room.bottom() - smaller.bottom()));
+            smaller.translate(by);
+        }
+    }
+    return best;
 }
 
 void ScenePainter::paintScaleBar(
