@@ -5590,6 +5590,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>→ %1:</source>
+        <extracomment>groups of mode buttons named by numbers: &quot;→ assembly mode:&quot; [1] [2] …, &quot;→ other working mode, leg:&quot; [1] [2]</extracomment>
         <translation>→ %1:</translation>
     </message>
     <message>
@@ -5599,6 +5600,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Switch to %1. The mechanism stays in its mode until you click here or on its ghost in the view.</source>
         <translation>Пребаци: %1. Механизам остаје у тренутном моду док не кликнете овде или на његов провидни обрис у приказу.</translation>
+    </message>
+    <message>
+        <source>→ %1, %2:</source>
+        <translation>→ %1, %2:</translation>
     </message>
 </context>
 <context>

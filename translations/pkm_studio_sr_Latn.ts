@@ -5590,6 +5590,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>→ %1:</source>
+        <extracomment>groups of mode buttons named by numbers: &quot;→ assembly mode:&quot; [1] [2] …, &quot;→ other working mode, leg:&quot; [1] [2]</extracomment>
         <translation>→ %1:</translation>
     </message>
     <message>
@@ -5599,6 +5600,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Switch to %1. The mechanism stays in its mode until you click here or on its ghost in the view.</source>
         <translation>Prebaci: %1. Mehanizam ostaje u trenutnom modu dok ne kliknete ovde ili na njegov providni obris u prikazu.</translation>
+    </message>
+    <message>
+        <source>→ %1, %2:</source>
+        <translation>→ %1, %2:</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,8 @@
 #include <QToolButton>
 #include <QRegularExpression>
 
+#include <optional>
+
 namespace pkm {
 
 namespace {
@@ -18,16 +20,36 @@ QString brief(const QString &label)
     return label.section(QStringLiteral(" ("), 0, 0);
 }
 
-/// "assembly mode" and "3" of "assembly mode 3": modes told apart by a number only.
-bool numbered(const QString &label, QString *prefix = nullptr, QString *number = nullptr)
+/// A mode told apart from its neighbours by a number only: "assembly mode 3" (a 3-RP̲R's six
+/// assembly modes) or "leg 2: other working mode" (one per leg). Modes with the same `key`
+/// share one caption, and their buttons show the numbers.
+struct Numbered {
+    QString key;
+    QString prefix; ///< "assembly mode"; "leg"
+    QString what;   ///< empty; "other working mode"
+    QString number;
+};
+
+std::optional<Numbered> numbered(const QString &label)
 {
-    static const QRegularExpression pattern(QStringLiteral("^(.*\\S)\\s+(\\d+)$"));
-    const QRegularExpressionMatch match = pattern.match(brief(label));
-    if (prefix)
-        *prefix = match.captured(1);
-    if (number)
-        *number = match.captured(2);
-    return match.hasMatch();
+    static const QRegularExpression trailing(QStringLiteral("^(.*\\S)\\s+(\\d+)$"));
+    static const QRegularExpression leading(QStringLiteral("^(\\S+)\\s+(\\d+):\\s+(.*\\S)$"));
+    const QString text = brief(label);
+    if (const QRegularExpressionMatch match = trailing.match(text); match.hasMatch())
+        return Numbered {match.captured(1), match.captured(1), {}, match.captured(2)};
+    if (const QRegularExpressionMatch match = leading.match(text); match.hasMatch())
+        return Numbered {match.captured(1) + QLatin1Char('|') + match.captured(3), match.captured(1), match.captured(3),
+            match.captured(2)};
+    return std::nullopt;
+}
+
+/// Whether the labels at `i` and `j` are numbered modes of one group.
+bool sameGroup(const QStringList &labels, qsizetype i, qsizetype j)
+{
+    if (j < 0 || j >= labels.size())
+        return false;
+    const std::optional<Numbered> a = numbered(labels[i]), b = numbered(labels[j]);
+    return a && b && a->key == b->key;
 }
 } // namespace
 
@@ -67,14 +89,12 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
         m_groupLabels.clear();
         m_groupOf.clear();
         for (int i = 0; i < labels.size(); ++i) {
-            // Modes that differ only by a number (a 3-RP̲R's six assembly modes) share one
-            // caption, "→ assembly mode:", and their buttons show the numbers: one short row
-            // instead of two long ones, which a projector at a large text size needs.
-            QString prefix, next;
-            const bool inGroup = numbered(labels[i], &prefix)
-                && ((i > 0 && numbered(labels[i - 1], &next) && next == prefix)
-                    || (i + 1 < labels.size() && numbered(labels[i + 1], &next) && next == prefix));
-            const bool opens = inGroup && (m_groupOf.isEmpty() || m_groupOf.last() < 0 || !numbered(labels[i - 1], &next) || next != prefix);
+            // Modes that differ only by a number (a 3-RP̲R's six assembly modes, a leg's working
+            // mode) share one caption, "→ assembly mode:", and their buttons show the numbers:
+            // one short row instead of several long ones, which a projector at a large text
+            // size and the five-bar's view at 1280×720 need.
+            const bool inGroup = sameGroup(labels, i, i - 1) || sameGroup(labels, i, i + 1);
+            const bool opens = inGroup && !sameGroup(labels, i, i - 1);
             if (opens) {
                 auto *caption = new QLabel(this);
                 caption->setTextFormat(Qt::PlainText);
@@ -100,10 +120,12 @@ void ModeBar::retranslate()
     for (int i = 0; i < m_buttonList.size(); ++i) {
         // the short form on the button ("other assembly mode"), the whole label in the tooltip;
         // in a group, the number on the button and the rest on the group's caption
-        QString prefix, number;
-        if (m_groupOf[i] >= 0 && numbered(m_labels[i], &prefix, &number)) {
-            m_groupLabels[m_groupOf[i]]->setText(tr("→ %1:").arg(prefix));
-            m_buttonList[i]->setText(number);
+        const std::optional<Numbered> mode = m_groupOf[i] >= 0 ? numbered(m_labels[i]) : std::nullopt;
+        if (mode) {
+            //: groups of mode buttons named by numbers: "→ assembly mode:" [1] [2] …, "→ other working mode, leg:" [1] [2]
+            m_groupLabels[m_groupOf[i]]->setText(
+                mode->what.isEmpty() ? tr("→ %1:").arg(mode->prefix) : tr("→ %1, %2:").arg(mode->what, mode->prefix));
+            m_buttonList[i]->setText(mode->number);
         } else {
             m_buttonList[i]->setText(tr("→ %1").arg(brief(m_labels[i])));
         }
