@@ -437,6 +437,15 @@ private slots:
             lastTop = where.top();
         }
         QVERIFY(rows >= 2);
+        // the legs' working modes share one caption in Russian, their buttons the leg numbers
+        QCOMPARE(bar->button(1)->text(), QStringLiteral("1"));
+        QCOMPARE(bar->button(2)->text(), QStringLiteral("2"));
+        QCOMPARE(bar->button(1)->mapTo(bar, QPoint()).y(), bar->button(2)->mapTo(bar, QPoint()).y());
+        const QList<QLabel *> captions = bar->findChildren<QLabel *>();
+        QVERIFY(std::any_of(captions.begin(), captions.end(), [](const QLabel *label) {
+            return label->text() == QStringLiteral("→ другой рабочий режим, ветвь:");
+        }));
+        QVERIFY(bar->button(1)->toolTip().contains(QStringLiteral("ветвь 1")));
         QVERIFY2(window.valuesTable()->width() >= englishDock - 2,
                  qPrintable(QStringLiteral("%1 < %2").arg(window.valuesTable()->width()).arg(englishDock)));
         ValuesTable *table = window.valuesTable();
