@@ -1,6 +1,7 @@
 #include "designpanel.h"
 
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <QEvent>
 #include <QGridLayout>
@@ -34,7 +35,8 @@ QString groupTitle(ParameterGroup group)
 }
 
 /// A parameter's value as its field shows it: enough decimals to show the stored value,
-/// trailing zeros dropped, in the locale's form.
+/// trailing zeros dropped, in the locale's form, a negative one with the typographic minus
+/// (parseNumber() reads it back, and a typed "-" too).
 QString valueText(const ParameterInfo &info, const ParameterSet &values)
 {
     const double display = info.unit.toDisplay(values.at(info.name));
@@ -46,7 +48,7 @@ QString valueText(const ParameterInfo &info, const ParameterSet &values)
         if (text.endsWith(point))
             text.chop(1);
     }
-    return text;
+    return typographicMinus(text);
 }
 
 const ParameterInfo *parameterNamed(const MechanismPtr &mechanism, const QString &name)

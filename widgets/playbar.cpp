@@ -34,7 +34,7 @@ PlayBar::PlayBar(QWidget *parent)
         resetRange();
     });
     const auto spinBox = [this](const char *name) {
-        auto *box = new QDoubleSpinBox(this);
+        auto *box = new NumberSpinBox(this);
         box->setObjectName(QLatin1String(name));
         box->setKeyboardTracking(false);
         box->setAlignment(Qt::AlignRight);

@@ -102,4 +102,42 @@ void SymbolComboBox::paintEvent(QPaintEvent *event)
     drawSymbolText(&painter, room, text, font(), colour);
 }
 
+// -- numbers with a typographic minus ------------------------------------------------------
+
+QString typographicMinus(QString text)
+{
+    return text.replace(QLatin1Char('-'), QChar(0x2212));
+}
+
+QString plainMinus(QString text)
+{
+    return text.replace(QChar(0x2212), QLatin1Char('-'));
+}
+
+QString NumberSpinBox::textFromValue(double value) const
+{
+    return typographicMinus(QDoubleSpinBox::textFromValue(value));
+}
+
+double NumberSpinBox::valueFromText(const QString &text) const
+{
+    return QDoubleSpinBox::valueFromText(plainMinus(text));
+}
+
+QValidator::State NumberSpinBox::validate(QString &input, int &pos) const
+{
+    // Qt's validator reads only "-"; one character for another keeps the cursor where it is.
+    QString plain = plainMinus(input);
+    const QValidator::State state = QDoubleSpinBox::validate(plain, pos);
+    input = typographicMinus(plain);
+    return state;
+}
+
+void NumberSpinBox::fixup(QString &input) const
+{
+    QString plain = plainMinus(input);
+    QDoubleSpinBox::fixup(plain);
+    input = typographicMinus(plain);
+}
+
 } // namespace pkm

@@ -1,9 +1,11 @@
 #pragma once
 /// Symbols with their subscripts lowered (symbolHtml()) where Qt would draw a plain text:
 /// an item view's cells and a combo box's field and list. The items keep the notation ("x_AB"),
-/// so tooltips, copies and tests read what the program writes; only the drawing differs.
+/// so tooltips, copies and tests read what the program writes; only the drawing differs. A
+/// number field shows a negative number with the typographic minus, as every panel does.
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QStyledItemDelegate>
 
 class QPainter;
@@ -38,5 +40,22 @@ public:
 protected:
     void paintEvent(QPaintEvent *event) override;
 };
+
+/// A spin box that shows "−261.50 mm" as the panels and plots do, and takes a typed "-" or "−".
+class NumberSpinBox : public QDoubleSpinBox
+{
+public:
+    using QDoubleSpinBox::QDoubleSpinBox;
+
+    QString textFromValue(double value) const override;
+    double valueFromText(const QString &text) const override;
+    QValidator::State validate(QString &input, int &pos) const override;
+    void fixup(QString &input) const override;
+};
+
+/// `text` with each hyphen-minus turned into the typographic minus "−" (U+2212).
+QString typographicMinus(QString text);
+/// `text` with each typographic minus turned into the hyphen-minus that number parsing reads.
+QString plainMinus(QString text);
 
 } // namespace pkm

@@ -1,6 +1,7 @@
 #include "variablepanel.h"
 
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -65,7 +66,7 @@ void VariablePanel::rebuild()
         row.slider->setObjectName(QStringLiteral("slider_") + toQString(info.name));
         row.slider->setRange(0, sliderSteps);
         row.slider->setMinimumWidth(60);
-        row.spinBox = new QDoubleSpinBox(this);
+        row.spinBox = new NumberSpinBox(this);
         row.spinBox->setObjectName(QStringLiteral("spin_") + toQString(info.name));
         row.spinBox->setDecimals(info.decimals);
         row.spinBox->setKeyboardTracking(false);

@@ -68,8 +68,8 @@ AnimationDialog::AnimationDialog(const Mechanism &mechanism, int variable, QWidg
         m_variable->addItem(QString());
     addRow(m_variable);
 
-    m_from = new QDoubleSpinBox(this);
-    m_to = new QDoubleSpinBox(this);
+    m_from = new NumberSpinBox(this);
+    m_to = new NumberSpinBox(this);
     addRow(m_from);
     addRow(m_to);
 

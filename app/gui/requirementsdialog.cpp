@@ -1,6 +1,7 @@
 #include "gui/requirementsdialog.h"
 
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
@@ -72,7 +73,7 @@ RequirementsDialog::RequirementsDialog(const Mechanism &mechanism, const Pose &p
                                   this);
         row.check->setObjectName(QString::fromLatin1(spec.name));
         row.check->setToolTip(coreLabel(entry->label));
-        row.value = new QDoubleSpinBox(this);
+        row.value = new NumberSpinBox(this);
         row.value->setObjectName(QString::fromLatin1(spec.name) + QStringLiteral("Value"));
         row.value->setDecimals(std::max(1, entry->decimals));
         row.value->setRange(0.0, 1e9);

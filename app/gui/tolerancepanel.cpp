@@ -3,6 +3,7 @@
 #include "document/document.h"
 #include "gui/backgroundtask.h"
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <qcustomplot.h>
 
@@ -157,7 +158,7 @@ void TolerancePanel::rebuildRows()
             name->setToolTip(coreLabel(info.label));
             name->setFlags(Qt::ItemIsEnabled);
             m_table->setItem(row, ColumnParameter, name);
-            auto *spin = new QDoubleSpinBox(m_table);
+            auto *spin = new NumberSpinBox(m_table);
             spin->setPrefix(QStringLiteral("±"));
             spin->setDecimals(info.decimals + 2);
             spin->setRange(0.0, 1e4);

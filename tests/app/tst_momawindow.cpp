@@ -3,6 +3,7 @@
 // the map, switch modes only by clicking — and the CLI gives the same numbers.
 #include "gui/mainwindow.h"
 
+#include "designpanel.h"
 #include "document/document.h"
 #include "linkageview.h"
 #include "modebar.h"
@@ -18,6 +19,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QJsonObject>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStatusBar>
@@ -167,6 +169,20 @@ private slots:
         std::vector<float> values(grid.cells());
         const MapSummary expected = computeMap(*workspace, MapQuantity::Determinant, grid, values);
         QCOMPARE(map()->summary().reachableCells, expected.reachableCells);
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(parameter(*m_window, "gamma1"), 5 * deg);
+        // a negative turn shows with the typographic minus, as in the values panel; a typed
+        // "-" is read
+        QLineEdit *field = m_window->designPanel()->field(QStringLiteral("gamma1"));
+        QVERIFY(m_window->document()->setParameter(QStringLiteral("gamma1"), -6.0).ok());
+        QCOMPARE(field->text(), QStringLiteral("\u22126"));
+        field->setFocus();
+        field->selectAll();
+        QTest::keyClicks(field, QStringLiteral("-7"));
+        QTest::keyClick(field, Qt::Key_Return);
+        QCOMPARE(parameter(*m_window, "gamma1"), -7 * deg);
+        QCOMPARE(field->text(), QStringLiteral("\u22127"));
+        m_window->document()->undoStack()->undo();
         m_window->document()->undoStack()->undo();
         QCOMPARE(parameter(*m_window, "gamma1"), 5 * deg);
     }

@@ -1,6 +1,8 @@
 // The combo boxes that offer symbols (Play's variable, the sweep plot's quantity, the video's
 // variable and plot) draw them lowered, as the values panel and the equations do: a projected
-// "x_AB" reads as x with a small AB, in the field and in the list.
+// "x_AB" reads as x with a small AB, in the field and in the list. Number fields show a
+// negative number with the typographic minus, as the panels beside them do, and take a typed
+// "-" or "−".
 
 #include "plotstyle.h"
 #include "symboltext.h"
@@ -8,6 +10,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QImage>
+#include <QKeyEvent>
 #include <QListView>
 #include <QStandardItemModel>
 #include <QTest>
@@ -99,6 +102,39 @@ private slots:
         const QString text = QStringLiteral("x_AB against θ — the rod joint of the upper pair");
         const QString shown = symbolHtmlElided(text, font, 120);
         QVERIFY2(shown.startsWith(QStringLiteral("x<sub>AB</sub>")) && shown.endsWith(QChar(0x2026)), qPrintable(shown));
+    }
+
+    /// MOMA's y = −261.50 mm: the field showed "-261.50 mm" under a range that reads
+    /// "−359.5 mm".
+    void spinBoxShowsTypographicMinus()
+    {
+        NumberSpinBox box;
+        box.setRange(-400.0, 400.0);
+        box.setDecimals(2);
+        box.setSuffix(QStringLiteral(" mm"));
+        box.setValue(-261.5);
+        QCOMPARE(box.text(), QStringLiteral("\u2212261.50 mm"));
+        QVERIFY(!box.text().contains(QLatin1Char('-')));
+        box.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&box));
+        // typed with the keyboard's "-", or pasted with "−": both are read, and shown with "−"
+        for (const QString &typed : {QStringLiteral("-12.5"), QStringLiteral("\u221237.25")}) {
+            box.selectAll();
+            for (const QChar c : typed) { // QTest::keyClicks() types ASCII only
+                QKeyEvent press(QEvent::KeyPress, Qt::Key_unknown, Qt::NoModifier, QString(c));
+                QApplication::sendEvent(&box, &press);
+            }
+            QTest::keyClick(&box, Qt::Key_Return);
+            QCOMPARE(box.value(), -plainMinus(typed).mid(1).toDouble());
+            QVERIFY2(box.text().startsWith(QChar(0x2212)), qPrintable(box.text()));
+        }
+        // the arrows step through zero and back
+        box.setValue(0.5);
+        box.setSingleStep(1.0);
+        box.stepDown();
+        QCOMPARE(box.text(), QStringLiteral("\u22120.50 mm"));
+        box.stepUp();
+        QCOMPARE(box.value(), 0.5);
     }
 };
 

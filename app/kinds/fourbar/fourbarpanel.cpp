@@ -10,6 +10,7 @@
 #include "kinds/fourbar/fourbarplots.h"
 #include "plotfont.h"
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -77,10 +78,10 @@ bool isPoor(double gammaDegrees)
 }
 
 /// A spin box that tells a step (arrows, wheel: merged into one undo step) from a typed value.
-class LengthSpinBox : public QDoubleSpinBox
+class LengthSpinBox : public NumberSpinBox
 {
 public:
-    using QDoubleSpinBox::QDoubleSpinBox;
+    using NumberSpinBox::NumberSpinBox;
     bool stepping() const { return m_stepping; }
     void stepBy(int steps) override
     {
