@@ -94,7 +94,7 @@ void SceneLabels::placeMemberLabels(bool dimensions)
         const QSizeF size = textSize(pending.text);
         // a dimension's text is dimension layer, a member's name text
         SceneLabel label {{}, 0.0, pending.text, false, pending.colour,
-            pending.preferReadingUp ? drawing::Layer::Dimensions : drawing::Layer::Text, pending.cad};
+            pending.preferReadingUp ? drawing::Layer::Dimensions : drawing::Layer::Text, pending.cad, {}};
         double firstSide = 1.0;
         if (pending.preferReadingUp) {
             // Rotated with the member, above it as read.
@@ -140,13 +140,59 @@ void SceneLabels::placeMemberLabels(bool dimensions)
             const std::optional<QLineF> line = leaderToBox(*anchors[k], candidates[k], size, 8.0 * m_px);
             return line ? std::optional<Leader>(Leader {*line, p, q}) : std::nullopt;
         };
+        if (dimensions) {
+            placeDimensionText(pending, label, candidates);
+            continue;
+        }
         // A bar's name that would cover another label is left out: the bar is named by its
         // dimension or its joints, and a pile of text names nothing.
         // A name next to its bar on the outside may cover one thin line (a guide's axis, an
         // angle's reference) rather than go inside, where between two bars it names either.
-        placeFirstFree(label, candidates, dimensions ? std::numeric_limits<double>::infinity() : coversALabel,
-            dimensions ? 0 : near, 2.0, dimensions ? LeaderFor {} : LeaderFor {leaderFor});
+        placeFirstFree(label, candidates, coversALabel, near, 2.0, leaderFor);
     }
+}
+
+void SceneLabels::placeDimensionText(const PendingMemberLabel &pending, const SceneLabel &label, const std::vector<QPointF> &beside)
+{
+    // Beside its member, along it, where it covers nothing or a thin line or two.
+    const std::size_t before = m_labels.size();
+    placeFirstFree(label, beside, 1.0, beside.size(), 3.0);
+    if (m_labels.size() > before)
+        return;
+    // Else upright and out of the crowd, with a leader to its member: the П-joint's
+    // "d = 183.1 mm" between the bars of a small parallelogram covered one of them.
+    const QPointF p = point(pending.from), q = point(pending.to);
+    const QPointF left = screenLeft(unit(q - p));
+    const QSizeF size = textSize(pending.text);
+    std::vector<QPointF> candidates;
+    std::vector<QPointF> anchors;
+    for (double extra : {12.0, 24.0, 38.0, 54.0, 74.0}) {
+        for (double side : {1.0, -1.0}) {
+            for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7}) {
+                const QPointF normal = side * left;
+                const double edge = memberHalfWidth(pending.from, pending.to, fraction) + 1.0 * m_px;
+                const QPointF onMember = p + fraction * (q - p);
+                candidates.push_back(onMember + (edge + extra * m_px + support(normal, size)) * normal);
+                anchors.push_back(onMember + edge * normal);
+            }
+        }
+    }
+    const auto leaderFor = [&](std::size_t k) -> std::optional<Leader> {
+        const std::optional<QLineF> line = leaderToBox(anchors[k], candidates[k], size, 4.0 * m_px);
+        return line ? std::optional<Leader>(Leader {*line, p, q, true}) : std::nullopt;
+    };
+    SceneLabel upright = label;
+    upright.rotationDegrees = 0.0;
+    placeFirstFree(upright, candidates, 0.5, 0, 0.0, leaderFor);
+    if (m_labels.size() > before) {
+        // a CAD drawing keeps the text on its dimension line, where it reads as that dimension's
+        m_labels.back().cadPlace = std::make_pair(beside.front(), label.rotationDegrees);
+        if (!m_nameLeaders.empty())
+            m_nameLeaders.back().screenOnly = true;
+        return;
+    }
+    // Where neither is free, beside the member where it covers least.
+    placeFirstFree(label, beside);
 }
 
 void SceneLabels::placeAngleLabels()
@@ -234,7 +280,7 @@ void SceneLabels::placeAngleLabels()
         // is left out: the values panel states the angle, and a pile of text states nothing.
         if (best >= coversALabel)
             continue;
-        place(SceneLabel {centre, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}});
+        place(SceneLabel {centre, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}, {}});
         if (leader) {
             m_leaders.push_back(*leader);
             // not an obstacle: a joint's name may cover a little of a leader rather than move off
@@ -290,7 +336,7 @@ void SceneLabels::placeGuideLabels()
                     pending.start + fraction * axis + (pending.outerReach + extra + support(normal, size)) * normal);
             }
         }
-        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}}, candidates);
+        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}, {}}, candidates);
     }
 }
 
@@ -350,7 +396,7 @@ void SceneLabels::placeJointLabels()
             const std::optional<QLineF> line = leaderToBox(start, candidates[k], size, clear - ring + 12.0 * m_px);
             return line ? std::optional<Leader>(Leader {*line, joint, joint}) : std::nullopt;
         };
-        placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}}, candidates,
+        placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}, {}}, candidates,
             std::numeric_limits<double>::infinity(), near, 4.0, leaderFor);
     }
 }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace pkm {
@@ -241,7 +242,8 @@ bool SceneLabels::leaderIsClear(const Leader &leader) const
 {
     const Quad line = segmentQuad(leader.line.p1(), leader.line.p2(), 0.5 * m_px);
     const QPointF &from = leader.from, &to = leader.to;
-    const auto endsAt = [](const QPointF &p, const QPointF &q) { return length(p - q) < 1.0; };
+    const auto at = [](const QPointF &p, const QPointF &q) { return length(p - q) < 1.0; };
+    const bool joint = at(from, to);
     for (const Quad &q : m_labelBoxes) {
         if (overlap(line, q))
             return false;
@@ -249,8 +251,10 @@ bool SceneLabels::leaderIsClear(const Leader &leader) const
     for (const Obstacle &o : m_obstacles) {
         // a bar is 4.5 px wide each side of its axis and a pivot's ring about as wide; the
         // hatching, extension and dimension lines are thinner, and a leader may cross them
-        const bool matters = !o.line || o.halfWidth >= 4.0 * m_px;
-        if (!matters || (o.line && (endsAt(o.a, from) || endsAt(o.b, from) || endsAt(o.a, to) || endsAt(o.b, to))))
+        const bool matters = !o.line || (o.halfWidth >= 4.0 * m_px && !(leader.acrossBars && length(o.b - o.a) > 0.0));
+        const bool named = o.line
+            && (joint ? at(o.a, from) || at(o.b, from) : (at(o.a, from) && at(o.b, to)) || (at(o.a, to) && at(o.b, from)));
+        if (!matters || named)
             continue;
         if (overlap(line, o.quad))
             return false;
@@ -316,7 +320,7 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
     label.centre = candidates[chosen];
     place(label);
     if (leader)
-        m_nameLeaders.emplace_back(leader->line, label.colour);
+        m_nameLeaders.push_back({leader->line, label.colour, false});
     return best == 0.0;
 }
 
@@ -328,16 +332,22 @@ void SceneLabels::addTo(drawing::DrawList &list) const
         drawing::Lines leaders {m_leaders, {m_style.angle, 1.0 * m_px, Qt::RoundCap}};
         list.add(std::move(leaders), drawing::Layer::Dimensions);
     }
-    for (const auto &[line, colour] : m_nameLeaders) {
+    for (const NameLeader &leader : m_nameLeaders) {
         // fainter than the name: it shows where the name belongs and draws no eye from the drawing
-        QColor faint = colour;
+        QColor faint = leader.colour;
         faint.setAlphaF(0.6f * faint.alphaF());
-        list.add(drawing::Lines {{line}, {faint, 1.0 * m_px, Qt::RoundCap}}, drawing::Layer::Text);
+        list.add(drawing::Lines {{leader.line}, {faint, 1.0 * m_px, Qt::RoundCap}}, drawing::Layer::Text,
+            leader.screenOnly ? drawing::Medium::Screen : drawing::Medium::All);
     }
     for (const SceneLabel &label : m_labels) {
         drawing::Text text {label.centre, label.rotationDegrees, label.text, label.joint ? m_jointFont : m_font,
             label.colour, textSize(label.text, label.joint), m_style.background, label.cad};
-        list.add(std::move(text), label.layer);
+        if (label.cadPlace) {
+            drawing::Text onLine = text;
+            std::tie(onLine.centre, onLine.rotationDegrees) = *label.cadPlace;
+            list.add(std::move(onLine), label.layer, drawing::Medium::Cad);
+        }
+        list.add(std::move(text), label.layer, label.cadPlace ? drawing::Medium::Screen : drawing::Medium::All);
     }
 }
 

@@ -65,6 +65,9 @@ struct SceneLabel {
     QColor colour;
     drawing::Layer layer = drawing::Layer::Text;
     std::string cad; ///< what a CAD drawing writes instead (drawing::Text::cad)
+    /// Where a CAD drawing writes it when that is not where the screen shows it: a dimension's
+    /// text on its dimension line, which the screen moved off its member with a leader.
+    std::optional<std::pair<QPointF, double>> cadPlace;
 };
 
 /// Labels placed once all geometry is known, so they can avoid it.
@@ -166,10 +169,13 @@ private:
     /// `leaderFor` gives the leader a label at a candidate would need to what it names (none
     /// where it is next to it): a free place whose leader crosses a bar, a pivot or a label
     /// is passed over while another free one is left, and the leader is drawn with the label.
-    /// The lines that end at `from` or `to` (the named joint, the named bar's ends) may touch it.
+    /// What a leader may cross: the lines that end at the joint it names (`from` = `to`), or
+    /// the bar it names (from `from` to `to`); a dimension's leader may cross bars too, as a
+    /// callout on a drawing does.
     struct Leader {
         QLineF line;
         QPointF from, to;
+        bool acrossBars = false;
     };
     using LeaderFor = std::function<std::optional<Leader>(std::size_t candidate)>;
     bool placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates,
@@ -179,10 +185,13 @@ private:
     /// within `slack` of the anchor.
     static std::optional<QLineF> leaderToBox(const QPointF &anchor, const QPointF &centre, const QSizeF &size, double slack);
     /// Whether `leader` crosses nothing that matters: no label, no outline and no bar or pivot
-    /// (thin lines may cross it), apart from the lines that end at `from` or `to`.
+    /// (thin lines may cross it), apart from what it names.
     bool leaderIsClear(const Leader &leader) const;
     double memberHalfWidth(int from, int to, double fraction) const;
     void placeMemberLabels(bool dimensions);
+    /// A dimension's text along its member (`beside`: the candidate centres there) or, where
+    /// that covers a bar, upright away from it with a leader.
+    void placeDimensionText(const PendingMemberLabel &pending, const SceneLabel &label, const std::vector<QPointF> &beside);
     /// Whether a bar other than the member from `from` to `to` passes nearer `centre`.
     bool nearerAnotherBar(const QPointF &centre, int from, int to) const;
     void placeAngleLabels();
@@ -213,8 +222,14 @@ private:
     std::vector<Obstacle> m_obstacles;
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
     std::vector<QLineF> m_leaders; ///< from angle labels placed away to their arcs
-    /// from joint and bar names placed away to their joint or bar, in the name's colour
-    std::vector<std::pair<QLineF, QColor>> m_nameLeaders;
+    /// from joint and bar names placed away to their joint or bar, in the name's colour; on
+    /// screen only where the CAD text stays on its member
+    struct NameLeader {
+        QLineF line;
+        QColor colour;
+        bool screenOnly = false;
+    };
+    std::vector<NameLeader> m_nameLeaders;
     std::vector<PendingMemberLabel> m_memberLabels;
     std::vector<PendingAngleLabel> m_angleLabels;
     std::vector<PendingGuideLabel> m_guideLabels;

@@ -208,6 +208,57 @@ private slots:
         QVERIFY2(astray.isEmpty(), qPrintable(astray.join(QLatin1Char('\n'))));
     }
 
+    /// The П-joint in its small view at θ = 0: "d = 183.1 mm" along the diagonal lay over bar
+    /// OC, the parallelogram being narrower than the text. It now stands upright outside with
+    /// a leader to the diagonal, and covers neither crank; a CAD drawing keeps it on its line.
+    void diagonalTextCoversNoBar()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));
+        LinkageView *view = m_window->linkageView();
+        QTest::keyClick(view, Qt::Key_Home);
+        const Scene &scene = view->scene();
+        const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), view->sceneStyle());
+        const auto device = [&](int joint) {
+            return view->mapping().toDevice(Eigen::Vector2d(scene.joints[std::size_t(joint)].position.head<2>()));
+        };
+        const QPointF O = device(0), B = device(1), A = device(2), C = device(3);
+        const std::vector<drawing::Text> texts = textsOf(list);
+        const auto d = std::find_if(texts.begin(), texts.end(), [](const drawing::Text &t) { return t.text.startsWith(u"d = "); });
+        QVERIFY(d != texts.end());
+        const QPolygonF box = boxOf(*d);
+        const double half = 0.5 * view->sceneStyle().barWidth * view->sceneStyle().pixelSize;
+        for (const auto &[from, to] : {std::pair {O, C}, std::pair {B, A}}) {
+            const QPointF across = QLineF(from, to).normalVector().unitVector().p2() - from;
+            for (int k = 0; k <= 32; ++k) {
+                for (double side : {-half, 0.0, half}) { // the bar's axis and its edges
+                    const QPointF at = from + (to - from) * (k / 32.0) + side * across;
+                    QVERIFY2(!box.containsPoint(at, Qt::OddEvenFill),
+                        qPrintable(QStringLiteral("'%1' covers a crank at (%2, %3)").arg(d->text).arg(at.x()).arg(at.y())));
+                }
+            }
+        }
+        if (d->rotationDegrees == 0.0) { // moved off the diagonal: a leader joins them
+            const QRectF edge = box.boundingRect().adjusted(-1.5, -1.5, 1.5, 1.5);
+            bool joined = false;
+            for (const drawing::Primitive &item : list.items) {
+                const auto *lines = std::get_if<drawing::Lines>(&item.shape);
+                for (std::size_t k = 0; lines && k < lines->lines.size(); ++k) {
+                    const QLineF &line = lines->lines[k];
+                    joined = joined || (distanceTo(O, A, line.p1()) < 12.0 && edge.contains(line.p2()));
+                }
+            }
+            QVERIFY(joined);
+            // the CAD drawing writes it along the diagonal
+            int onLine = 0;
+            for (const drawing::Primitive &item : list.items) {
+                const auto *text = std::get_if<drawing::Text>(&item.shape);
+                if (text && item.medium == drawing::Medium::Cad && text->text == d->text && text->rotationDegrees != 0.0)
+                    ++onLine;
+            }
+            QCOMPARE(onLine, 1);
+        }
+    }
+
     /// The П-joint at θ = 0: μ is measured at A between the diagonal and the crank, a narrow
     /// angle inside the parallelogram that the diagonal's length fills. Its label goes where it
     /// covers no other, with a leader to its arc.
