@@ -152,20 +152,51 @@ Cursor addCursor(QCustomPlot *plot, const QFont &base, QCPLayer *layer)
     return cursor;
 }
 
+namespace {
+const char *cursorTextProperty = "pkmCursorText"; ///< the read-out on one line
+const char *brokenTextProperty = "pkmBrokenText"; ///< the same on two lines, as shown
+
+/// The size of `label`'s box with `text` in it, measured as the item draws it (the bounding
+/// rectangle of the laid-out text, which a bold face or a combining dot can make wider than
+/// the advance), so that the box is whole.
+QSizeF boxSize(const QCustomPlot *plot, const QCPItemText *label, const QString &text)
+{
+    const QFontMetrics metrics(label->font(), plot);
+    const QRect bounds = metrics.boundingRect(0, 0, 0, 0, Qt::TextDontClip | label->textAlignment(), text);
+    int textWidth = bounds.width();
+    for (const QString &line : text.split(QLatin1Char('\n')))
+        textWidth = std::max(textWidth, metrics.horizontalAdvance(line));
+    const QMargins padding = label->padding();
+    return {textWidth + padding.left() + padding.right() + 1.0, bounds.height() + padding.top() + padding.bottom() + 1.0};
+}
+} // namespace
+
 void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y)
 {
     constexpr double gap = 12.0; // pixels between the marker and the label
     const QRect rect = plot->axisRect()->rect();
-    // Measured as the item draws it (the bounding rectangle of the laid-out text, which a
-    // bold face or a combining dot can make wider than the advance), so that the box is whole.
-    const QFontMetrics metrics(label->font(), plot);
-    const QRect text = metrics.boundingRect(0, 0, 0, 0, Qt::TextDontClip | label->textAlignment(), label->text());
-    int textWidth = text.width();
-    for (const QString &line : label->text().split(QLatin1Char('\n')))
-        textWidth = std::max(textWidth, metrics.horizontalAdvance(line));
-    const QMargins padding = label->padding();
-    const double width = textWidth + padding.left() + padding.right() + 1.0;
-    const double height = text.height() + padding.top() + padding.bottom() + 1.0;
+    // A read-out wider than a narrow plot ("J⁻¹ = 0.0158 rad/mm" in fig. 12) takes two lines,
+    // the unit on the second, rather than cover the tick labels and the axis title.
+    QString full = label->text();
+    if (full == label->property(brokenTextProperty).toString())
+        full = label->property(cursorTextProperty).toString();
+    QString shown = full;
+    QSizeF size = boxSize(plot, label, full);
+    const qsizetype unitAt = full.lastIndexOf(QLatin1Char(' '));
+    if (size.width() + 4.0 > rect.width() && unitAt > 0 && !full.contains(QLatin1Char('\n'))) {
+        const QString broken = full.left(unitAt) + QLatin1Char('\n') + full.mid(unitAt + 1);
+        const QSizeF brokenSize = boxSize(plot, label, broken);
+        if (brokenSize.width() < size.width()) {
+            shown = broken;
+            size = brokenSize;
+        }
+    }
+    if (shown != label->text()) {
+        label->setProperty(cursorTextProperty, full);
+        label->setProperty(brokenTextProperty, shown);
+        label->setText(shown);
+    }
+    const double width = size.width(), height = size.height();
     const QPointF marker(plot->xAxis->coordToPixel(x), plot->yAxis->coordToPixel(y));
     // beside the marker where there is more room, then inwards until it is whole
     const auto place = [](double at, double low, double high, double size) {

@@ -1,7 +1,8 @@
 // Plot texts: the pose cursor's value box on a plot (plotstyle::placeCursorLabel): whole wherever the
 // marker is, in a plot as narrow as the Actuator tab's figures on a 1280×720 projector, where
 // "Δθ = 0.0291 °/step" is wider than the axis rectangle and lost its end to the clip (a plot
-// 220 px wide fails without the fix).
+// 220 px wide fails without the fix). There it takes two lines, the unit on the second, and
+// stays inside the axis rectangle rather than cover the tick labels and the axis title.
 #include "plotstyle.h"
 
 #include <qcustomplot.h>
@@ -20,7 +21,7 @@ class TestPlotCursor : public QObject
 private:
     /// A plot `width` px wide with a rising curve over θ −60…60°, its cursor showing `text`
     /// at θ = `at`; the label's box and the plot's rectangle, in the plot's pixels.
-    static std::pair<QRectF, QRectF> placed(int width, const QString &text, double at, bool *clipped)
+    static std::pair<QRectF, QRectF> placed(int width, const QString &text, double at, bool *clipped, QString *shown = nullptr)
     {
         auto plot = std::make_unique<QCustomPlot>();
         plot->resize(width, 240);
@@ -45,6 +46,8 @@ private:
         plotstyle::placeCursorLabel(plot.get(), cursor.label, at, value);
         plot->replot();
         *clipped = cursor.label->clipToAxisRect();
+        if (shown)
+            *shown = cursor.label->text();
         const QRectF box(cursor.label->topLeft->pixelPosition(), cursor.label->bottomRight->pixelPosition());
         const QRectF room = *clipped ? QRectF(plot->axisRect()->rect()) : QRectF(plot->viewport());
         return {box, room};
@@ -67,15 +70,24 @@ private slots:
         QFETCH(double, at);
         const QString text = QStringLiteral("Δθ = 0.0291 °/step");
         bool clipped = true;
-        const auto [box, room] = placed(width, text, at, &clipped);
+        QString shown;
+        const auto [box, room] = placed(width, text, at, &clipped, &shown);
         QVERIFY2(room.adjusted(-0.5, -0.5, 0.5, 0.5).contains(box),
             qPrintable(QStringLiteral("box %1…%2 × %3…%4 in %5…%6 × %7…%8 (%9)")
                            .arg(box.left()).arg(box.right()).arg(box.top()).arg(box.bottom())
                            .arg(room.left()).arg(room.right()).arg(room.top()).arg(room.bottom())
                            .arg(clipped ? QStringLiteral("clipped to the axis rect") : QStringLiteral("unclipped"))));
-        // the box holds its text: nothing of it is drawn outside
+        // the box holds its text, on one line or two: nothing of it is drawn outside
         const QFontMetrics metrics(QApplication::font());
-        QCOMPARE_GE(box.width(), 0.9 * metrics.horizontalAdvance(text));
+        QCOMPARE(QString(shown).replace(QLatin1Char('\n'), QLatin1Char(' ')), text);
+        for (const QString &line : shown.split(QLatin1Char('\n')))
+            QCOMPARE_GE(box.width(), 0.9 * metrics.horizontalAdvance(line));
+        // in the narrowest plot it takes two lines and stays over the curve, off the ticks
+        if (width == 220) {
+            QVERIFY2(shown.contains(QLatin1Char('\n')) && clipped, qPrintable(shown));
+        } else if (width == 420) {
+            QCOMPARE(shown, text);
+        }
     }
 
     /// A figure's subtitle with θ̇ (fig. 12: "θ̇ = J⁻¹·ḋ") drew the combining dot apart from
