@@ -199,6 +199,10 @@ double SceneLabels::collisions(const Quad &box, double enough, double perLine) c
         if (overlap(box, q) && (cost += coversALabel) >= enough)
             return cost;
     }
+    for (const Quad &q : m_reserved) {
+        if (overlap(box, q) && (cost += 3.0 * perLine) >= enough)
+            return cost;
+    }
     for (const Obstacle &o : m_obstacles) {
         if (!overlap(box, o.quad))
             continue;
@@ -213,6 +217,8 @@ double SceneLabels::collisions(const Quad &box, double enough, double perLine) c
 double SceneLabels::thinLinesOnly(const Quad &box) const
 {
     double cost = collisions(box, coversALabel, 0.0); // labels only
+    for (const Quad &q : m_reserved) // a joint's name's first place counts as a thin line
+        cost += overlap(box, q) ? 1.0 : 0.0;
     for (const Obstacle &o : m_obstacles) {
         if (cost < coversALabel && overlap(box, o.quad))
             // bars are 4.5 px wide each side of their axis, dimension lines 3.5, the ground 2.25
@@ -225,6 +231,7 @@ bool SceneLabels::isFree(const Quad &box) const
 {
     const auto covers = [&box](const Quad &q) { return overlap(box, q); };
     return std::none_of(m_labelBoxes.begin(), m_labelBoxes.end(), covers)
+        && std::none_of(m_reserved.begin(), m_reserved.end(), covers)
         && std::none_of(m_obstacles.begin(), m_obstacles.end(), [&box](const Obstacle &o) { return overlap(box, o.quad); });
 }
 
@@ -240,6 +247,8 @@ std::optional<QLineF> SceneLabels::leaderToBox(const QPointF &anchor, const QPoi
 
 bool SceneLabels::leaderIsClear(const Leader &leader) const
 {
+    if (leader.nearerAnother)
+        return false;
     const Quad line = segmentQuad(leader.line.p1(), leader.line.p2(), 0.5 * m_px);
     const QPointF &from = leader.from, &to = leader.to;
     const auto at = [](const QPointF &p, const QPointF &q) { return length(p - q) < 1.0; };

@@ -176,6 +176,7 @@ private:
         QLineF line;
         QPointF from, to;
         bool acrossBars = false;
+        bool nearerAnother = false; ///< the name is nearer another joint: taken only when no other is free
     };
     using LeaderFor = std::function<std::optional<Leader>(std::size_t candidate)>;
     bool placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates,
@@ -200,6 +201,12 @@ private:
     std::optional<QLineF> leaderTo(const PendingAngleLabel &pending, const QPointF &centre, const QSizeF &size) const;
     void placeGuideLabels();
     void placeJointLabels();
+    /// The angular gaps (width, middle) between what leaves `joint`, widest first.
+    std::vector<std::pair<double, double>> gapsAround(std::size_t joint) const;
+    /// The centre of a joint's name of `size` in direction `angle`, `extra` beyond the ring.
+    QPointF jointNameCentre(std::size_t joint, const QSizeF &size, double angle, double extra) const;
+    /// Fills m_reserved.
+    void reserveJointNames();
 
     const Scene &m_scene;
     const std::vector<QPointF> &m_points; ///< joint positions, device
@@ -221,6 +228,8 @@ private:
     };
     std::vector<Obstacle> m_obstacles;
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
+    /// the joints' names' first places, kept free while the other labels are placed
+    std::vector<detail::Quad> m_reserved;
     std::vector<QLineF> m_leaders; ///< from angle labels placed away to their arcs
     /// from joint and bar names placed away to their joint or bar, in the name's colour; on
     /// screen only where the CAD text stays on its member
