@@ -295,6 +295,7 @@ private:
     QByteArray m_stateBeforePresentation;
     QByteArray m_splitterBeforePresentation;
     bool m_maximizedBeforePresentation = false;
+    QRect m_geometryBeforePresentation; ///< the window's own place and size, given back on leaving
 };
 
 } // namespace pkm

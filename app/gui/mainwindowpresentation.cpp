@@ -200,6 +200,7 @@ void MainWindow::setPresentationMode(bool on)
         m_stateBeforePresentation = saveState();
         m_splitterBeforePresentation = m_splitter->saveState();
         m_maximizedBeforePresentation = isMaximized();
+        m_geometryBeforePresentation = geometry();
         for (QDockWidget *dock : findChildren<QDockWidget *>())
             dock->hide();
         m_toolBar->hide();
@@ -248,6 +249,19 @@ void MainWindow::setPresentationMode(bool on)
             const int width = m_splitter->width();
             m_splitter->setSizes({width * 11 / 20, width * 9 / 20});
         } else {
+            // and the window's own size: showNormal() or showMaximized() ran while the panels
+            // still had the presentation's large text, and grew the window to what they asked
+            // then (1552 px wide in Russian on a 1280×720 projector, the map off the screen,
+            // where no window manager holds a maximised window to the screen)
+            if (!m_maximizedBeforePresentation && m_geometryBeforePresentation.isValid()) {
+                resize(m_geometryBeforePresentation.size());
+                move(m_geometryBeforePresentation.topLeft());
+            } else if (screen() && !screen()->availableGeometry().contains(frameGeometry())) {
+                // a maximised window keeps its size: maximised again, now that the text is small
+                showNormal();
+                setGeometry(screen()->availableGeometry());
+                showMaximized();
+            }
             // the docks' sizes again at the window's own size: restored while the window was
             // still full screen, they were shared out anew as it shrank
             restoreState(m_stateBeforePresentation);

@@ -12,6 +12,8 @@
 #include <QAction>
 #include <QLabel>
 #include <QMenu>
+#include <QScopeGuard>
+#include <QScreen>
 #include <QTabWidget>
 #include <QTest>
 
@@ -161,6 +163,33 @@ private slots:
         for (int i = 0; i < 3; ++i)
             QTRY_VERIFY2(std::abs(plots[i]->width() - widths[i]) <= 4,
                          qPrintable(QStringLiteral("fig. %1: %2 px, before %3 px").arg(8 + i).arg(plots[i]->width()).arg(widths[i])));
+    }
+
+    /// Maximised on a 1280×720 projector in Russian, MOMA came back from presentation mode
+    /// 1552 px wide, its map off the screen: the window had been maximised again while its
+    /// panels still had the presentation's large text.
+    void leavingKeepsTheWindowOnTheScreen()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(language::apply(QStringLiteral("ru")));
+        const auto english = qScopeGuard([] { language::apply(QStringLiteral("en")); });
+        QVERIFY(w.openDesign(QStringLiteral("moma-3a")));
+        w.showMaximized();
+        QTest::qWait(200);
+        const QRect screen = w.screen()->availableGeometry();
+        const QSize before = w.size();
+        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
+        QVERIFY(w.isPresenting());
+        QTest::qWait(200);
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        QTest::qWait(300);
+        // no larger than before or than the screen (the docks of the earlier tests may make it
+        // ask for a little more than the projector has)
+        QTRY_VERIFY2(w.width() <= std::max(before.width(), screen.width()) && w.height() <= std::max(before.height(), screen.height()),
+            qPrintable(QStringLiteral("%1×%2, before %3×%4, on a %5×%6 screen").arg(w.width()).arg(w.height())
+                           .arg(before.width()).arg(before.height()).arg(screen.width()).arg(screen.height())));
+        w.showNormal();
     }
 };
 
