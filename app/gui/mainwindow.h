@@ -7,6 +7,7 @@
 #include "mechanism.h"
 #include "scenestyle.h"
 
+#include <QDeadlineTimer>
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QPointer>
@@ -268,6 +269,9 @@ private:
     QLabel *m_singularityLabel = nullptr;
     QString m_lastStatus;
     bool m_statusIsError = false;
+    /// Until when a message stays while the pose moves on: Play's "turned back: …", which the
+    /// next step's pose would otherwise clear before anyone read it.
+    QDeadlineTimer m_statusHeldUntil;
     bool m_restoredGeometry = false;
     PlayBar *m_playBar = nullptr;
     Player *m_player = nullptr;

@@ -181,7 +181,7 @@ void MainWindow::onPoseChanged()
     m_view->setMessage(note);
     if (!note.isEmpty()) {
         showStatus(note);
-    } else {
+    } else if (m_statusHeldUntil.hasExpired()) {
         if (m_statusIsError)
             showStatus(QString());
         statusBar()->clearMessage();

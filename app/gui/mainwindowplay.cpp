@@ -20,6 +20,8 @@ namespace pkm {
 
 namespace {
 using mainwindow::failureText;
+/// How long Play's "turned back: …" stays while it plays on: long enough to read it aloud.
+constexpr int turnedMessageMs = 5000;
 } // namespace
 
 void MainWindow::createPlayControls(QMenu *viewMenu)
@@ -46,7 +48,10 @@ void MainWindow::createPlayControls(QMenu *viewMenu)
         m_playBar->setPlaying(false);
         showStatus(reason);
     });
-    connect(m_player, &Player::turned, this, [this](const QString &reason) { showStatus(reason); });
+    connect(m_player, &Player::turned, this, [this](const QString &reason) {
+        showStatus(reason);
+        m_statusHeldUntil = QDeadlineTimer(turnedMessageMs);
+    });
 
     m_bookmarksMenu = menuBar()->insertMenu(m_languageMenu ? m_languageMenu->menuAction() : nullptr, new QMenu(this))->menu();
     m_bookmarksMenu->setObjectName(QStringLiteral("bookmarksMenu"));

@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
@@ -176,8 +177,16 @@ private slots:
         w.playBar()->setMode(PlayMode::ForthAndBack);
         QSignalSpy turned(w.player(), &Player::turned);
         w.setPlaying(true);
+        int stepsSinceTurn = -1;
         for (int i = 0; i < 400 && w.player()->isPlaying(); ++i) {
+            const qsizetype turnsBefore = turned.count();
             w.player()->advance(1.0 / Player::framesPerSecond);
+            // the reason stays in the status bar while it plays on (the next pose cleared it
+            // before anyone could read it)
+            stepsSinceTurn = turned.count() > turnsBefore ? 0 : stepsSinceTurn < 0 ? -1 : stepsSinceTurn + 1;
+            if (stepsSinceTurn == 5)
+                QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("turned back")),
+                    qPrintable(w.statusBar()->currentMessage()));
             const Singularity here = singularityOf(*w.document()->mechanism(), w.document()->pose());
             QCOMPARE(here.type, SingularityType::None);
             QVERIFY2(here.margin >= Player::stopMargin(), qPrintable(w.lastStatus()));
