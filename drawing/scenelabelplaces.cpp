@@ -178,6 +178,19 @@ void SceneLabels::placeDimensionText(const PendingMemberLabel &pending, const Sc
             }
         }
     }
+    // and past either end, where a near-vertical member has room above or below it
+    const QPointF u = unit(q - p);
+    for (double extra : {10.0, 22.0, 36.0}) {
+        for (double end : {1.0, 0.0}) {
+            const QPointF out = end > 0.5 ? u : -u;
+            const QPointF tip = end > 0.5 ? q : p;
+            for (double lateral : {0.0, 1.0, -1.0}) {
+                const QPointF aside = lateral * (0.5 * size.width() + 6.0 * m_px) * left;
+                candidates.push_back(tip + (m_style.pivotRadius * m_px + extra * m_px + support(out, size)) * out + aside);
+                anchors.push_back(p + (end > 0.5 ? 0.85 : 0.15) * (q - p));
+            }
+        }
+    }
     const auto leaderFor = [&](std::size_t k) -> std::optional<Leader> {
         const std::optional<QLineF> line = leaderToBox(anchors[k], candidates[k], size, 4.0 * m_px);
         return line ? std::optional<Leader>(Leader {*line, p, q, true}) : std::nullopt;

@@ -194,7 +194,9 @@ double SceneLabels::collisions(const Quad &box, double enough, double perLine) c
     // A label over another label hides text, over a pin's ring a joint; over a line it interrupts
     // the line, the more the more of it it hides (a label across a bar costs less than one
     // along it, one over a hatch line less than one over a bar).
-    double cost = 0.0;
+    double cost = outside(box) ? coversALabel : 0.0; // cut by the view's edge: as bad as hidden
+    if (cost >= enough)
+        return cost;
     for (const Quad &q : m_labelBoxes) {
         if (overlap(box, q) && (cost += coversALabel) >= enough)
             return cost;
@@ -230,7 +232,7 @@ double SceneLabels::thinLinesOnly(const Quad &box) const
 bool SceneLabels::isFree(const Quad &box) const
 {
     const auto covers = [&box](const Quad &q) { return overlap(box, q); };
-    return std::none_of(m_labelBoxes.begin(), m_labelBoxes.end(), covers)
+    return !outside(box) && std::none_of(m_labelBoxes.begin(), m_labelBoxes.end(), covers)
         && std::none_of(m_reserved.begin(), m_reserved.end(), covers)
         && std::none_of(m_obstacles.begin(), m_obstacles.end(), [&box](const Obstacle &o) { return overlap(box, o.quad); });
 }

@@ -16,9 +16,11 @@
 #include <QFontMetricsF>
 #include <QLineF>
 #include <QPointF>
+#include <QRectF>
 #include <QSizeF>
 #include <QString>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -109,6 +111,9 @@ public:
     /// outlive this object. `device` sets the font metrics (a printer's differ from a screen's).
     SceneLabels(const Scene &scene, const std::vector<QPointF> &points, const ViewMapping &mapping,
         const SceneStyle &style, const QPaintDevice *device);
+
+    /// Where labels may stand (device); empty: anywhere. A place past it is never free.
+    void setRoom(const QRectF &room) { m_room = room; }
 
     // -- while the geometry is laid out ---------------------------------------------------
     /// Something leaves `joint` towards `towards` (device) for `reach` device units: joint
@@ -230,6 +235,13 @@ private:
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
     /// the joints' names' first places, kept free while the other labels are placed
     std::vector<detail::Quad> m_reserved;
+    QRectF m_room; ///< where labels may stand; empty: anywhere
+    /// Whether `box` lies past the room's edge.
+    bool outside(const detail::Quad &box) const
+    {
+        return !m_room.isEmpty()
+            && std::any_of(box.begin(), box.end(), [this](const QPointF &corner) { return !m_room.contains(corner); });
+    }
     std::vector<QLineF> m_leaders; ///< from angle labels placed away to their arcs
     /// from joint and bar names placed away to their joint or bar, in the name's colour; on
     /// screen only where the CAD text stays on its member

@@ -256,6 +256,7 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
     const std::vector<int> jointGuide = jointsOnGuides(scene);
     const std::vector<GuideShape> guides = guideShapes(scene, points, jointGuide, mapping, style);
     SceneLabels labels(scene, points, mapping, style, options.device);
+    labels.setRoom(options.labelRoom);
     const SceneCanvas canvas {list, scene, mapping, style, points, labels, guides, jointGuide};
     list.items.reserve(8 * (scene.joints.size() + scene.bars.size()) + 16);
 

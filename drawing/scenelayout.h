@@ -13,6 +13,7 @@
 #include "scene.h"
 #include "scenestyle.h"
 
+#include <QRectF>
 #include <QString>
 
 #include <limits>
@@ -30,6 +31,9 @@ struct LayoutOptions {
     /// The device whose font metrics size the labels (a printer's differ from a screen's);
     /// null: the screen's.
     const QPaintDevice *device = nullptr;
+    /// Where labels may stand, device units (the view's rectangle: a label past its edge is
+    /// cut); empty: anywhere (a file's drawing grows to hold them).
+    QRectF labelRoom;
 };
 
 /// The drawing of `scene` with `mapping` and `style`.

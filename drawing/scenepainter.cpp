@@ -51,6 +51,10 @@ void ScenePainter::paint(
     drawing::LayoutOptions options;
     options.activeHandle = activeHandle;
     options.device = painter.device();
+    // Labels stay inside what the painter shows (a view's rectangle), where no transform
+    // stands between the layout's device units and the painter's window.
+    if (painter.worldTransform().isIdentity())
+        options.labelRoom = QRectF(painter.window()).adjusted(2.0, 2.0, -2.0, -2.0);
     drawing::paintDrawList(painter, drawing::layoutScene(scene, mapping, style, options));
 }
 

@@ -4,7 +4,8 @@
 // found the П-joint's "μ = 21.8°" over the end of "d = 183.1 mm" and of "a = 170 mm" at θ = 0.
 // A joint's or a bar's name pushed away from what it names is joined to it by a leader, and a
 // bar's name is nearer its own bar than any other: the five-bar's "E" stood 90 px under its
-// joint, and MOMA's S₁ and S₂ stood one over the other between both links.
+// joint, and MOMA's S₁ and S₂ stood one over the other between both links. No label is cut by
+// the view's edge.
 #include "gui/mainwindow.h"
 
 #include "document/document.h"
@@ -90,8 +91,20 @@ private:
     QStringList coveredHere(const QString &where)
     {
         LinkageView *view = m_window->linkageView();
-        const drawing::DrawList list = drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle());
+        // as the view lays it out: labels inside its rectangle
+        drawing::LayoutOptions options;
+        options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
+        const drawing::DrawList list = drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle(), options);
         QStringList covered = coveredLabels(textsOf(list));
+        // none cut by the view's edge (the П-joint's "d = 148.2 mm" at θ = −30° was)
+        for (const drawing::Text &text : textsOf(list)) {
+            const QRectF box = boxOf(text).boundingRect();
+            const QRectF room(view->rect());
+            // a point far out (the four-bar's instant centre P) has its name out there too
+            const bool far = !box.intersects(room.adjusted(-box.width(), -box.height(), box.width(), box.height()));
+            if (!far && !room.adjusted(-0.5, -0.5, 0.5, 0.5).contains(box))
+                covered << QStringLiteral("'%1' cut by the view's edge (%2, %3)").arg(text.text).arg(box.left()).arg(box.top());
+        }
         for (QString &line : covered)
             line.prepend(where + QStringLiteral(": "));
         return covered;
