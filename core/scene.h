@@ -56,7 +56,7 @@ struct SceneAngle {
     double start = 0.0;
     double sweep = 0.0;
     double radius = 0.0; ///< preferred arc radius, mm
-    std::string label;   ///< "θ = 12.0°" (text::number: the locale's decimal point)
+    std::string label;   ///< "θ = 12.0°" (text::fixed for a pose value: the locale's decimal point)
 };
 
 /// A dimension line between two joints, offset sideways by `offset` mm (positive: to the left

@@ -3,6 +3,7 @@
 #include "mechanism.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <mutex>
 #include <shared_mutex>
@@ -85,9 +86,10 @@ std::string format(std::string_view pattern, std::initializer_list<std::string_v
     return text;
 }
 
-std::string number(double value, int decimals)
+namespace {
+/// `text` (a C-locale number) with the locale's decimal point and minus sign.
+std::string localised(std::string text)
 {
-    std::string text = formatNumber(value, decimals);
     std::string point, minus;
     {
         std::shared_lock lock(hooksMutex());
@@ -99,6 +101,24 @@ std::string number(double value, int decimals)
     if (!minus.empty() && !text.empty() && text.front() == '-')
         text.replace(0, 1, minus);
     return text;
+}
+} // namespace
+
+std::string number(double value, int decimals)
+{
+    return localised(formatNumber(value, decimals));
+}
+
+std::string fixed(double value, int decimals)
+{
+    if (!std::isfinite(value))
+        return localised(formatNumber(value, decimals));
+    char buffer[400];
+    // −0.04 to one decimal is "0.0", not "−0.0"
+    const double scale = std::pow(10.0, decimals);
+    const double rounded = std::round(value * scale) / scale;
+    auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, rounded == 0.0 ? 0.0 : value, std::chars_format::fixed, decimals);
+    return ec == std::errc() ? localised(std::string(buffer, end)) : localised(formatNumber(value, decimals));
 }
 
 std::string millimetres(double value)

@@ -46,6 +46,10 @@ std::string format(std::string_view pattern, std::initializer_list<std::string_v
 /// A number for a sentence: up to `decimals` decimals, trailing zeros dropped, the locale's
 /// decimal point and minus sign.
 std::string number(double value, int decimals = 3);
+/// A number with exactly `decimals` decimals, the locale's decimal point and minus sign: a value
+/// that moves with the pose ("θ = 40.0°", "d = 216.4 mm"), whose text would jump in width and
+/// precision from pose to pose with trailing zeros dropped.
+std::string fixed(double value, int decimals);
 /// A value said to be outside [lo, hi], with as many decimals (from `decimals` up to 12) as it
 /// takes not to read as the bound it passes: 60.000001 beside a bound of 60 is "60.000001",
 /// not "60" (display units, as text::number).

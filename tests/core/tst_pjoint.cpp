@@ -2,9 +2,11 @@
 // published prototype numbers (the П-joint document; docs/mathematics.md).
 #include "kinds/pjoint/pjoint.h"
 #include "support/kinematics.h"
+#include "text.h"
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -481,6 +483,38 @@ private slots:
         QVERIFY(pose.ok());
         QCOMPARE(pose->outputs[0], 60 * deg);
         QCOMPARE(scene.handles.size(), std::size_t(2));
+    }
+
+    /// The drawing's pose values keep one decimal whatever the pose: "d = 183.1 mm" at rest
+    /// became "d = 216.42 mm" and "φ = 40°" while playing, the labels jumping in width.
+    void sceneLabelsKeepTheirDecimals()
+    {
+        auto joint = make(design(170, 0.4));
+        const auto texts = [&](double thetaDegrees) {
+            const Pose pose = *joint->solveInverse(Coordinates::Constant(1, thetaDegrees * deg));
+            const Scene s = joint->scene(pose);
+            std::vector<std::string> all;
+            for (const SceneAngle &angle : s.angles)
+                all.push_back(angle.label);
+            for (const SceneDimension &dimension : s.dimensions)
+                all.push_back(dimension.text);
+            return all;
+        };
+        const auto has = [](const std::vector<std::string> &all, const std::string &text) {
+            return std::find(all.begin(), all.end(), text) != all.end();
+        };
+        const std::vector<std::string> home = texts(0.0);
+        QVERIFY(has(home, "θ = 0.0°"));
+        QVERIFY(has(home, "d = 183.1 mm"));
+        QVERIFY(has(home, "b = 68 mm")); // the design's own lengths as given
+        const std::vector<std::string> turned = texts(30.0);
+        QVERIFY(has(turned, "θ = 30.0°"));
+        QVERIFY(has(turned, "d = 212.3 mm"));
+        // below −0.05°, θ is no "−0.0°"
+        QVERIFY(has(texts(-0.04), "θ = 0.0°"));
+        QCOMPARE(text::fixed(-0.04, 1), std::string("0.0"));
+        QCOMPARE(text::fixed(-12.25, 2), std::string("-12.25"));
+        QCOMPARE(text::fixed(40.0, 1), std::string("40.0"));
     }
 
     void sceneMatchesPose_data() { addDesignRows(); }

@@ -42,7 +42,7 @@ Scene FiveBar::scene(const Pose &pose) const
     for (int leg = 0; leg < 2; ++leg) {
         const double theta = pose.inputs[leg];
         s.angles.push_back({leg, 0.0, theta, 0.3 * std::min(d.crank[leg], d.ground),
-                            joinText({leg == 0 ? "θ₁ = " : "θ₄ = ", text::number(theta / units::degree, 1), "°"})});
+                            joinText({leg == 0 ? "θ₁ = " : "θ₄ = ", text::fixed(theta / units::degree, 1), "°"})});
     }
     s.handles.push_back({4, text::translate("core", "drag to move C (inverse kinematics)")});
     s.handles.push_back({2, text::translate("core", "drag to turn crank AB (sets θ₁, direct kinematics)")});

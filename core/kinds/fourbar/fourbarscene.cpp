@@ -49,11 +49,11 @@ Scene FourBar::scene(const Pose &pose) const
                                : std::string("BC")});
     s.bars.push_back({1, 3, BarKind::Link, "CD"});
     const double shortest = std::min({d.crank, d.coupler, d.rocker, d.ground});
-    s.angles.push_back({0, 0.0, alpha, 0.3 * std::min(d.crank, d.ground), joinText({"α = ", text::number(alpha / units::degree, 1), "°"})});
-    s.angles.push_back({1, pi, -delta, 0.3 * std::min(d.rocker, d.ground), joinText({"δ = ", text::number(delta / units::degree, 1), "°"})});
+    s.angles.push_back({0, 0.0, alpha, 0.3 * std::min(d.crank, d.ground), joinText({"α = ", text::fixed(alpha / units::degree, 1), "°"})});
+    s.angles.push_back({1, pi, -delta, 0.3 * std::min(d.rocker, d.ground), joinText({"δ = ", text::fixed(delta / units::degree, 1), "°"})});
     const Eigen::Vector2d cb = B - C;
     s.angles.push_back({3, std::atan2(cb.y(), cb.x()), a.gamma, 0.3 * shortest,
-                        joinText({"γ = ", text::number(a.gamma / units::degree, 1), "°"})});
+                        joinText({"γ = ", text::fixed(a.gamma / units::degree, 1), "°"})});
     s.handles.push_back({2, text::translate("core", "drag to turn the crank (sets α, direct kinematics)")});
     s.handles.push_back({3, text::translate("core", "drag to swing the rocker (sets δ, inverse kinematics)")});
     ScenePolyline curve;

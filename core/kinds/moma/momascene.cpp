@@ -48,7 +48,7 @@ Scene Moma::scene(const Pose &pose) const
             const double c = cross(moma::direction(d.alpha[leg]), platform - z[leg]);
             const double offset = (c > 0 ? -1.0 : 1.0) * (d.guideWidth + 14.0);
             s.dimensions.push_back({3 + leg, 1 + leg, p > 0 ? offset : -offset,
-                                    joinText({leg == 0 ? "p₁ = " : "p₂ = ", text::number(p, 1)})});
+                                    joinText({leg == 0 ? "p₁ = " : "p₂ = ", text::fixed(p, 1)})});
         }
         const double gamma = std::remainder(d.alpha[leg] - 1.5 * pi, 2 * pi);
         if (std::abs(gamma) > 1e-9 && std::abs(gamma) <= 45.0 * units::degree) {

@@ -64,7 +64,7 @@ Scene OxGlide::scene(const Pose &pose) const
         const double start = rod.x() >= 0 ? 0.0 : std::numbers::pi;
         const double sweep = direction - start;
         scene.angles.push_back({jointAB, start, sweep, 0.3 * d.rod,
-                                joinText({"ψ = ", text::number(std::atan2(std::abs(y), std::abs(rod.x())) / units::degree, 1),
+                                joinText({"ψ = ", text::fixed(std::atan2(std::abs(y), std::abs(rod.x())) / units::degree, 1),
                                           "°"})});
     }
     scene.handles.push_back(

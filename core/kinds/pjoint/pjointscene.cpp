@@ -46,7 +46,8 @@ Scene PJoint::scene(const Pose &pose) const
     const Eigen::Vector2d toO = (o - a).normalized(), toB = (b - a).normalized();
     const double muStart = std::atan2(toB.y(), toB.x());
     const double mu = signedAngle(toB, toO);
-    auto deg = [](double r) { return text::number(units::angle.toDisplay(r), 1); };
+    // pose values with a fixed decimal, so that their labels keep their width while θ moves
+    auto deg = [](double r) { return text::fixed(units::angle.toDisplay(r), 1); };
     s.angles = {{B, 0.5 * std::numbers::pi, -theta, arc, joinText({"θ = ", deg(theta), "°"})},
                 {O, 0.0, phi, 1.15 * arc, joinText({"φ = ", deg(phi), "°"})},
                 {A, muStart, mu, 0.8 * arc, joinText({"μ = ", deg(std::abs(mu)), "°"})}};
@@ -56,12 +57,12 @@ Scene PJoint::scene(const Pose &pose) const
     // outside the parallelogram.
     const double sideB = -1.0;
     // "b = 68 mm": the unit is the locale's ("мм")
-    auto length = [](const char *symbol, double value, int decimals) {
-        return joinText({symbol, " = ", text::format(text::translate("core", "%1 mm"), {text::number(value, decimals)})});
+    auto length = [](const char *symbol, const std::string &value) {
+        return joinText({symbol, " = ", text::format(text::translate("core", "%1 mm"), {value})});
     };
-    s.dimensions = {{O, B, -0.18 * p.a, length("b", p.b, 1)},
-                    {B, A, sideB * 0.16 * p.a, length("a", p.a, 1)},
-                    {O, A, 0.0, length("d", d, 2)}};
+    s.dimensions = {{O, B, -0.18 * p.a, length("b", text::number(p.b, 1))},
+                    {B, A, sideB * 0.16 * p.a, length("a", text::number(p.a, 1))},
+                    {O, A, 0.0, length("d", text::fixed(d, 1))}};
     s.handles = {{A, text::translate("core", "drag A to set θ")}, {C, text::translate("core", "drag C to set θ")}};
 
     // Extent over the whole θ range so that fitting the view does not follow the motion.
