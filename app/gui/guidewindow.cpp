@@ -106,6 +106,14 @@ GuideWindow::GuideWindow(QWidget *parent)
     connect(nextShortcut, &QShortcut::activated, this, [this] { findNext(false); });
     auto *previousShortcut = new QShortcut(QKeySequence::FindPrevious, this);
     connect(previousShortcut, &QShortcut::activated, this, [this] { findNext(true); });
+    // Esc closes the guide, as a help window does; in the find field it first empties it.
+    auto *closeShortcut = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    connect(closeShortcut, &QShortcut::activated, this, [this] {
+        if (m_find->hasFocus() && !m_find->text().isEmpty())
+            m_find->clear();
+        else
+            close();
+    });
 
     auto *bar = new QHBoxLayout;
     bar->addWidget(m_back);
