@@ -166,7 +166,7 @@ void DesignPanel::showNote()
         text = QStringLiteral("<br>") + first.toHtmlEscaped();
     if (longer)
         text += QLatin1Char(' ') + link;
-    m_note->setText(QStringLiteral("<b>%1</b>%2").arg(m_noteTitle.toHtmlEscaped(), text));
+    m_note->setText(QStringLiteral("<b>%1</b>%2").arg(unbreakable(m_noteTitle).toHtmlEscaped(), text));
     m_note->setToolTip(m_noteText);
     m_note->show();
 }
@@ -262,7 +262,7 @@ void DesignPanel::describe(const Row &row)
                                        row.unit->fontMetrics().horizontalAdvance(unit)));
     // A symbol is the same in every language, unless it is a word ("form"), which core marks.
     row.label->setText(
-        QStringLiteral("<b>%1</b>&nbsp; %2").arg(symbolHtml(coreLabel(info.symbol)), label.toHtmlEscaped()));
+        QStringLiteral("<b>%1</b>&nbsp; %2").arg(symbolHtml(coreLabel(info.symbol)), unbreakable(label).toHtmlEscaped()));
     row.label->setToolTip(help);
 }
 

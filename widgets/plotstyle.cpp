@@ -232,12 +232,13 @@ void setFittedText(QCPTextElement *element, const QString &text)
     fitText(element);
 }
 
-QString wrapped(const QString &text, const QFont &font, int width)
+QString wrapped(const QString &input, const QFont &font, int width)
 {
     const QFontMetrics metrics(font);
     const auto fits = [&metrics, width](const QString &line) { return metrics.horizontalAdvance(line) <= width; };
-    if (width <= 0 || fits(text))
-        return text;
+    if (width <= 0 || fits(input))
+        return input;
+    const QString text = unbreakable(input); // where it breaks, "(k = 0.40)" stays on one line
     const QStringList clauses = text.split(QStringLiteral("; "));
     if (clauses.size() > 1 && std::all_of(clauses.cbegin(), clauses.cend(), fits))
         return clauses.join(QStringLiteral(";\n"));

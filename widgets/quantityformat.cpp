@@ -3,6 +3,7 @@
 #include "text.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 
 #include <algorithm>
 #include <cmath>
@@ -169,6 +170,13 @@ QString symbolHtmlKnown(const QString &text, const QStringList &symbols)
         }
     }
     return html + escaped(text.mid(done));
+}
+
+QString unbreakable(QString text)
+{
+    static const QRegularExpression slash(QStringLiteral("(?<=\\w)/(?=\\w)"));
+    text.replace(QStringLiteral(" = "), QStringLiteral("\u00A0=\u00A0"));
+    return text.replace(slash, QStringLiteral("/\u2060")); // the word joiner: no break after '/'
 }
 
 } // namespace pkm

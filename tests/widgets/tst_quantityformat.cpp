@@ -1,8 +1,11 @@
 // How a value reads on screen (widgets/quantityformat.h): the values panel, the Design panel's
 // notes and the map titles all go through formatQuantity().
+#include "plotstyle.h"
 #include "quantityformat.h"
 #include "units.h"
 
+#include <QApplication>
+#include <QFontMetrics>
 #include <QLocale>
 #include <QTest>
 
@@ -68,6 +71,21 @@ private slots:
     }
 
     // A sentence lowers only the symbols it is given, as whole words, the longest first.
+    /// A formula in a wrapped text breaks nowhere: the Serbian Design panel showed "k = b/"
+    /// over "a", a legend "(k" over "= 0,40)", MOMA's title "γ₂" over "= +5°".
+    void formulasStayWhole()
+    {
+        QCOMPARE(unbreakable(QStringLiteral("ratio k = b/a")), QStringLiteral("ratio k\u00A0=\u00A0b/\u2060a"));
+        QCOMPARE(unbreakable(QStringLiteral("1/2 and a / b")), QStringLiteral("1/\u20602 and a / b"));
+        // a legend wrapped in a narrow plot keeps "(k = 0,40)" on one line
+        const QFont font = QApplication::font();
+        const QString legend = QStringLiteral("эта конструкция (k = 0,40)");
+        const int width = QFontMetrics(font).horizontalAdvance(QStringLiteral("эта конструкция (k ="));
+        const QStringList lines = plotstyle::wrapped(legend, font, width).split(QLatin1Char('\n'));
+        QCOMPARE_GT(lines.size(), 1);
+        QVERIFY2(lines.last().startsWith(QStringLiteral("(k")), qPrintable(lines.join(QStringLiteral(" | "))));
+    }
+
     void knownSymbols()
     {
         const QStringList symbols {QStringLiteral("x_AB"), QStringLiteral("J_q"), QStringLiteral("det J_q"),
