@@ -173,8 +173,10 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
     ViewMapping mapping = ViewMapping::fit(extent, fitted, margin);
     ViewMapping best = mapping;
     double leastOverhang = std::numeric_limits<double>::infinity();
-    for (int pass = 0; pass < 8; ++pass) {
+    int stuck = 0; // passes in a row that cut no less
+    for (int pass = 0; pass < 8 && stuck < 2; ++pass) {
         const QMarginsF over = overhangs(mapping);
+        stuck = total(over) < leastOverhang - 0.5 ? 0 : stuck + 1;
         if (total(over) < leastOverhang) {
             leastOverhang = total(over);
             best = mapping;
@@ -190,7 +192,11 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
     // that taking room from one side after another never ends: then less and less of the whole
     // room, moved away from the side a label overhangs, and of the scales tried the one that
     // cuts least.
-    for (double factor = 0.95; leastOverhang >= 0.5 && factor > 0.45; factor -= 0.05) {
+    // Three tries in a row that cut no less end it: a label wider than the view, or a view
+    // not laid out yet, is cut at any scale, and each try is a layout (a start-up paid 20 ms).
+    int fruitless = 0;
+    for (double factor = 0.95; leastOverhang >= 0.5 && factor > 0.45 && fruitless < 3; factor -= 0.05) {
+        const double before = leastOverhang;
         const QSizeF size = room.size() * factor;
         QRectF smaller(room.center() - QPointF(0.5 * size.width(), 0.5 * size.height()), size);
         for (int move = 0; move < 2 && leastOverhang >= 0.5; ++move) {
@@ -204,6 +210,7 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
                 std::clamp(over.top() - over.bottom(), room.top() - smaller.top(), room.bottom() - smaller.bottom()));
             smaller.translate(by);
         }
+        fruitless = leastOverhang < before - 0.5 ? 0 : fruitless + 1;
     }
     return best;
 }

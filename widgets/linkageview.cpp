@@ -223,8 +223,12 @@ void LinkageView::fitToView()
             }
         }
     }
-    m_mapping = screenMapping(m_scene, extent, QRectF(rect()), m_style);
     m_userMoved = false;
+    // A hidden view (the window being built, its docks resized one after another at start-up)
+    // gets the plain fit; the fit that keeps every label whole runs once it is painted.
+    m_fitPending = !isVisible();
+    m_mapping = m_fitPending ? ViewMapping::fit(extent, QRectF(rect()), fitMargin * m_style.pixelSize)
+                             : screenMapping(m_scene, extent, QRectF(rect()), m_style);
     update();
 }
 
@@ -254,6 +258,8 @@ void LinkageView::paintEvent(QPaintEvent *)
 {
     QElapsedTimer timer;
     timer.start();
+    if (m_fitPending && !m_userMoved)
+        fitToView(); // visible now, at its size
     QPainter painter(this);
     const QRectF area(rect());
     ScenePainter::paintBackground(painter, area, m_mapping, m_style);

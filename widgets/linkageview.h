@@ -134,6 +134,9 @@ private:
     SceneStyle m_style;
     ViewMapping m_mapping;
     bool m_userMoved = false; ///< zoomed or panned since the last fit: resizing keeps the mapping
+    /// Fitted while hidden, without the labels: the whole fit, which lays the labels out a few
+    /// times, waits for the first paint at the size the view is shown at.
+    bool m_fitPending = false;
     QString m_message;
 
     int m_hoverHandle = -1;
