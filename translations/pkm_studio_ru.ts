@@ -6461,6 +6461,10 @@ Please verify the correct file name was given.</source>
         <source>near combined</source>
         <translation>вблизи комбинированного</translation>
     </message>
+    <message>
+        <source>Point at a row to read its meaning in full.</source>
+        <translation>Наведите указатель на строку, чтобы прочитать её описание полностью.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::VariablePanel</name>

@@ -6461,6 +6461,10 @@ Please verify the correct file name was given.</source>
         <source>near combined</source>
         <translation>близу комбинованог</translation>
     </message>
+    <message>
+        <source>Point at a row to read its meaning in full.</source>
+        <translation>Поставите показивач на ред да прочитате његово значење у целости.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::VariablePanel</name>

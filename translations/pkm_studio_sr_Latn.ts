@@ -6461,6 +6461,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>near combined</source>
         <translation>blizu kombinovanog</translation>
     </message>
+    <message>
+        <source>Point at a row to read its meaning in full.</source>
+        <translation>Postavite pokazivač na red da pročitate njegovo značenje u celosti.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::VariablePanel</name>

@@ -22,6 +22,7 @@
 namespace pkm {
 
 namespace {
+constexpr qsizetype longLabel = 40; ///< characters of the English label, past which it has a line
 QString groupTitle(ParameterGroup group)
 {
     switch (group) {
@@ -70,31 +71,6 @@ QString notNumberMessage(const QString &name, const QString &label, const QStrin
 const char *nameProperty = "pkmParameter";
 const char *helpProperty = "pkmHelp"; ///< the field's tooltip while it is valid
 } // namespace
-
-bool parseNumber(const QString &text, const QString &unitSymbol, double *value)
-{
-    return parseNumber(text, QStringList {unitSymbol}, value);
-}
-
-bool parseNumber(const QString &text, const QStringList &unitSymbols, double *value)
-{
-    QString t = text.trimmed();
-    for (const QString &unitSymbol : unitSymbols) {
-        if (!unitSymbol.isEmpty() && t.endsWith(unitSymbol)) {
-            t = t.left(t.size() - unitSymbol.size()).trimmed();
-            break;
-        }
-    }
-    t.replace(QChar(0x2212), QLatin1Char('-')); // typographic minus
-    bool ok = false;
-    double v = QLocale().toDouble(t, &ok);
-    if (!ok)
-        v = QLocale::c().toDouble(t, &ok);
-    if (!ok || !std::isfinite(v))
-        return false;
-    *value = v;
-    return true;
-}
 
 DesignPanel::DesignPanel(QWidget *parent)
     : QWidget(parent)
@@ -228,8 +204,16 @@ void DesignPanel::rebuild()
         describe(row);
         QGridLayout *form = forms.value(group);
         const int line = form->rowCount() - (form->count() == 0 ? 1 : 0);
-        form->addWidget(row.label, line, 0);
-        form->addWidget(rowWidget, line, 1);
+        // A label that explains a mode's values ("platform: 0 a point (2 DOF), 1 constant
+        // orientation (2 DOF), 2 free (3 DOF)") took six lines of a word or two beside its
+        // field: it has the whole width, and its field the line below.
+        if (toQString(info.label).size() > longLabel) {
+            form->addWidget(row.label, line, 0, 1, 2);
+            form->addWidget(rowWidget, line + 1, 1);
+        } else {
+            form->addWidget(row.label, line, 0);
+            form->addWidget(rowWidget, line, 1);
+        }
         m_fields.insert(name, row.edit);
         m_rows.append(row);
     }

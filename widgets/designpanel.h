@@ -97,11 +97,4 @@ private:
     QLabel *m_warnings = nullptr;
 };
 
-/// Parses a number typed by a person: the locale's form or the C form ("0,4" and "0.4" in a
-/// comma locale), with an optional trailing unit symbol. Returns false for anything else.
-bool parseNumber(const QString &text, const QString &unitSymbol, double *value);
-/// The same with any one of several unit symbols (the translated one and the English one:
-/// "12 мм" and "12 mm").
-bool parseNumber(const QString &text, const QStringList &unitSymbols, double *value);
-
 } // namespace pkm

@@ -3,6 +3,7 @@
 #include "text.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -177,6 +178,31 @@ QString unbreakable(QString text)
     static const QRegularExpression slash(QStringLiteral("(?<=\\w)/(?=\\w)"));
     text.replace(QStringLiteral(" = "), QStringLiteral("\u00A0=\u00A0"));
     return text.replace(slash, QStringLiteral("/\u2060")); // the word joiner: no break after '/'
+}
+
+bool parseNumber(const QString &text, const QString &unitSymbol, double *value)
+{
+    return parseNumber(text, QStringList {unitSymbol}, value);
+}
+
+bool parseNumber(const QString &text, const QStringList &unitSymbols, double *value)
+{
+    QString t = text.trimmed();
+    for (const QString &unitSymbol : unitSymbols) {
+        if (!unitSymbol.isEmpty() && t.endsWith(unitSymbol)) {
+            t = t.left(t.size() - unitSymbol.size()).trimmed();
+            break;
+        }
+    }
+    t.replace(QChar(0x2212), QLatin1Char('-')); // typographic minus
+    bool ok = false;
+    double v = QLocale().toDouble(t, &ok);
+    if (!ok)
+        v = QLocale::c().toDouble(t, &ok);
+    if (!ok || !std::isfinite(v))
+        return false;
+    *value = v;
+    return true;
 }
 
 } // namespace pkm

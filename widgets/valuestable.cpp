@@ -6,7 +6,9 @@
 #include <QEvent>
 #include <QFontMetrics>
 #include <QHeaderView>
+#include <QLabel>
 #include <QResizeEvent>
+#include <QStyle>
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +65,50 @@ ValuesTable::ValuesTable(QWidget *parent)
     // sized when the values first appear and widen only when a longer text comes.
     header()->setSectionResizeMode(QHeaderView::Interactive);
     header()->setStretchLastSection(true);
+    setMouseTracking(true); // itemEntered: the strip follows the pointer
+    connect(this, &QTreeWidget::itemEntered, this, [this](QTreeWidgetItem *item) { updateMeaningStrip(item); });
+    connect(header(), &QHeaderView::sectionResized, this, [this] { updateMeaningStrip(m_meaningShown); });
+}
+
+QLabel *ValuesTable::meaningStrip()
+{
+    if (!m_meaningStrip) {
+        m_meaningStrip = new QLabel; // the caller's layout takes it
+        m_meaningStrip->setObjectName(QStringLiteral("meaningStrip"));
+        m_meaningStrip->setWordWrap(true);
+        m_meaningStrip->setTextFormat(Qt::RichText);
+        m_meaningStrip->setContentsMargins(6, 3, 6, 3);
+        m_meaningStrip->setBackgroundRole(QPalette::AlternateBase);
+        m_meaningStrip->setAutoFillBackground(true);
+        updateMeaningStrip();
+    }
+    return m_meaningStrip;
+}
+
+void ValuesTable::updateMeaningStrip(const QTreeWidgetItem *item)
+{
+    if (!m_meaningStrip)
+        return;
+    // What the "Meaning" column shows of its widest text, as its cells elide it.
+    int widest = 0;
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        widest = std::max(widest, fontMetrics().horizontalAdvance(topLevelItem(i)->text(2)));
+    const int margin = 2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, this) + 1);
+    const int shown = viewport()->width() - header()->sectionViewportPosition(2);
+    const bool cut = topLevelItemCount() > 0 && shown < widest + margin;
+    m_meaningStrip->setVisible(cut);
+    if (item && !item->text(2).isEmpty())
+        m_meaningShown = item; // a group's title has none: the last row's stays
+    if (!cut)
+        return;
+    if (m_meaningShown) {
+        m_meaningStrip->setText(QStringLiteral("<b>%1</b> — %2").arg(symbolHtml(m_meaningShown->text(0)),
+                                                                     symbolHtml(m_meaningShown->text(2))));
+    } else {
+        m_meaningStrip->setText(QStringLiteral("<span style=\"color:%1\">%2</span>")
+                                    .arg(palette().color(QPalette::Disabled, QPalette::Text).name(),
+                                         tr("Point at a row to read its meaning in full.").toHtmlEscaped()));
+    }
 }
 
 void ValuesTable::fitColumns()
@@ -80,10 +126,13 @@ void ValuesTable::resizeEvent(QResizeEvent *event)
     QTreeWidget::resizeEvent(event);
     if (m_widestValue > 0)
         fitColumns();
+    updateMeaningStrip(m_meaningShown);
 }
 
 void ValuesTable::changeEvent(QEvent *event)
 {
+    if (event->type() == QEvent::FontChange)
+        updateMeaningStrip(m_meaningShown); // the texts' widths change with the text size
     if (event->type() == QEvent::LanguageChange) {
         setHeaderLabels({tr("Quantity"), tr("Value"), tr("Meaning")});
         // The rows again, in the new language, and the values of the pose shown in its locale.
@@ -121,6 +170,7 @@ void ValuesTable::setMechanism(const MechanismPtr &mechanism)
 
 void ValuesTable::rebuild()
 {
+    m_meaningShown = nullptr; // its row goes
     clear();
     m_items.clear();
     const ReportLayout &layout = m_mechanism->reportLayout();
@@ -164,6 +214,7 @@ void ValuesTable::rebuild()
     addGroup(tr("Singularity"));
     m_singularity = new QTreeWidgetItem(this, {tr("class"), QString(), tr("none, inverse, direct or combined")});
     m_singularity->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
+    updateMeaningStrip();
 }
 
 void ValuesTable::setPose(const Pose &pose)

@@ -6,10 +6,13 @@
 #include "capability.h"
 #include "mechanism.h"
 
+#include <QPointer>
 #include <QTreeWidget>
 
 #include <optional>
 #include <vector>
+
+class QLabel;
 
 namespace pkm {
 
@@ -27,6 +30,11 @@ public:
     /// is as at a singular pose ("capability"; empty where it is not); for tests.
     QString valueText(const QString &name) const;
 
+    /// A line for below the table that shows the meaning of the row under the pointer in full,
+    /// made on the first call, for the caller's layout. It shows only while the "Meaning"
+    /// column is too narrow for its texts (a 340 px dock on a projector shows "crank angl…").
+    QLabel *meaningStrip();
+
 protected:
     void changeEvent(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
@@ -37,6 +45,8 @@ private:
     /// push the short values, aligned right, out of sight.
     void fitColumns();
     void rebuild();
+    /// Shows the strip while a meaning is cut, with `item`'s meaning (or a prompt).
+    void updateMeaningStrip(const QTreeWidgetItem *item = nullptr);
     /// The text of entry `entry` in `values`: a number, or a matrix row by row.
     QString entryText(const ReportEntry &entry, const std::vector<double> &values) const;
 
@@ -51,6 +61,9 @@ private:
     std::vector<double> m_values;
     std::optional<Pose> m_pose; ///< the pose shown, to show it again in another language
     qsizetype m_widestValue = 0; ///< longest value text so far, in characters
+    QPointer<QLabel> m_meaningStrip;
+    const QTreeWidgetItem *m_meaningShown = nullptr; ///< the row whose meaning the strip shows
+    int m_widestMeaning = 0;                         ///< pixels, of the meanings' texts
 };
 
 } // namespace pkm

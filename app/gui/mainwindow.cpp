@@ -221,9 +221,15 @@ void MainWindow::createDocks()
 
     m_values = new ValuesTable(this);
     m_values->setMinimumWidth(270);
+    auto *valuesBox = new QWidget(this); // the table, and below it a meaning its column cuts
+    auto *valuesLayout = new QVBoxLayout(valuesBox);
+    valuesLayout->setContentsMargins(0, 0, 0, 0);
+    valuesLayout->setSpacing(0);
+    valuesLayout->addWidget(m_values, 1);
+    valuesLayout->addWidget(m_values->meaningStrip());
     auto *valuesDock = m_valuesDock = new QDockWidget(tr("Values"), this);
     valuesDock->setObjectName(QStringLiteral("valuesDock"));
-    valuesDock->setWidget(m_values);
+    valuesDock->setWidget(valuesBox);
     addDockWidget(Qt::LeftDockWidgetArea, valuesDock);
     splitDockWidget(designDock, valuesDock, Qt::Vertical);
     // Mobility, the equations and the tolerances are tabs behind the Design and the values,

@@ -10,9 +10,11 @@
 #include "valuestable.h"
 
 #include <QApplication>
+#include <QLabel>
 #include <QTest>
 #include <QTextDocument>
 #include <QTreeWidget>
+#include <QVBoxLayout>
 
 #include <cmath>
 
@@ -100,6 +102,47 @@ private slots:
             document.setHtml(shown);
             QCOMPARE_LE(document.idealWidth(), width);
         }
+    }
+    /// In a dock as narrow as a projector leaves (340 px), the "Meaning" column showed "crank
+    /// angl…" and nothing more: a strip below the table then gives the meaning of the row under
+    /// the pointer in full, and goes while the column is wide enough.
+    void meaningStripShowsWhatTheColumnCuts()
+    {
+        QWidget box;
+        auto *layout = new QVBoxLayout(&box);
+        auto *table = new ValuesTable;
+        layout->addWidget(table, 1);
+        QLabel *strip = table->meaningStrip();
+        QCOMPARE(table->meaningStrip(), strip); // one strip
+        layout->addWidget(strip);
+        const MechanismPtr m = test::make(FiveBarDesign{});
+        table->setMechanism(m);
+        table->setPose(m->homePose());
+        box.resize(340, 400);
+        box.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&box));
+        QTRY_VERIFY(strip->isVisible());
+        QVERIFY2(strip->text().contains(QLatin1String("Point at a row")), qPrintable(strip->text()));
+        const QTreeWidget *tree = table;
+        QTreeWidgetItem *row = nullptr;
+        for (int i = 0; i < tree->topLevelItemCount() && !row; ++i) {
+            if (tree->topLevelItem(i)->data(0, Qt::UserRole).toString() == QLatin1String("det_Jq"))
+                row = tree->topLevelItem(i);
+        }
+        QVERIFY(row);
+        QVERIFY(!row->text(2).isEmpty());
+        emit table->itemEntered(row, 0);
+        QCOMPARE(strip->text(), QStringLiteral("<b>%1</b> — %2").arg(symbolHtml(row->text(0)), symbolHtml(row->text(2))));
+        // a group's title has no meaning: the row's stays
+        emit table->itemEntered(tree->topLevelItem(0), 0);
+        QVERIFY(strip->text().contains(symbolHtml(row->text(2))));
+        // wide enough for every meaning: no strip
+        box.resize(1400, 400);
+        QTRY_VERIFY(!strip->isVisible());
+        // and narrow again: the strip returns, with the same row
+        box.resize(340, 400);
+        QTRY_VERIFY(strip->isVisible());
+        QVERIFY(strip->text().contains(symbolHtml(row->text(2))));
     }
 };
 
