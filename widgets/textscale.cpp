@@ -3,7 +3,12 @@
 #include <qcustomplot.h>
 
 #include <QApplication>
+#include <QEvent>
 #include <QSet>
+#include <QStyle>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTimer>
 #include <QWidget>
 
 #include <algorithm>
@@ -12,6 +17,68 @@ namespace pkm::textscale {
 
 namespace {
 double g_factor = 1.0;
+
+/// "δ(α)" of "δ(α) — fig. 4".
+QString shortTitle(const QString &title)
+{
+    const qsizetype dash = title.indexOf(QStringLiteral(" — "));
+    return dash > 0 ? title.left(dash) : title;
+}
+
+/// Watches a tab widget's size, font and language and picks the full or the short titles.
+class TabTitleFitter : public QObject
+{
+public:
+    explicit TabTitleFitter(QTabWidget *tabs)
+        : QObject(tabs)
+        , m_tabs(tabs)
+    {
+        tabs->installEventFilter(this);
+        tabs->tabBar()->installEventFilter(this);
+    }
+
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        switch (event->type()) {
+        case QEvent::Resize:
+        case QEvent::Show:
+        case QEvent::FontChange:
+        case QEvent::LanguageChange:
+        case QEvent::LayoutRequest:
+            // after the event, and after the owner's retranslation has set the new titles
+            QTimer::singleShot(0, this, [this] { fit(); });
+            break;
+        default: break;
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    void fit()
+    {
+        QTabBar *bar = m_tabs->tabBar();
+        const QFontMetrics metrics(bar->font());
+        // what a tab adds to its text, as QTabBar::tabSizeHint() reckons it
+        const int frame = bar->style()->pixelMetric(QStyle::PM_TabBarTabHSpace, nullptr, bar) + 4;
+        int fullWidth = 0;
+        for (int i = 0; i < bar->count(); ++i) {
+            // a title the owner set since (a new language) is the full one now
+            const QString full = bar->tabData(i).toString(), shown = bar->tabText(i);
+            if (shown != full && shown != shortTitle(full))
+                bar->setTabData(i, shown);
+            const QString title = bar->tabData(i).toString();
+            fullWidth += frame + metrics.horizontalAdvance(title);
+        }
+        const bool full = fullWidth <= m_tabs->width();
+        for (int i = 0; i < bar->count(); ++i) {
+            const QString title = bar->tabData(i).toString(), wanted = full ? title : shortTitle(title);
+            if (bar->tabText(i) != wanted)
+                bar->setTabText(i, wanted);
+        }
+    }
+
+    QTabWidget *m_tabs;
+};
 
 QFont scaled(QFont font, double ratio)
 {
@@ -89,6 +156,13 @@ void rescale(QWidget *root, double ratio)
         if (auto *plot = qobject_cast<QCustomPlot *>(widget))
             rescalePlot(plot, ratio);
     }
+}
+
+void keepTabsInSight(QTabWidget *tabs)
+{
+    tabs->setElideMode(Qt::ElideRight);
+    tabs->setUsesScrollButtons(false);
+    new TabTitleFitter(tabs);
 }
 
 } // namespace pkm::textscale

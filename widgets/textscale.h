@@ -3,6 +3,7 @@
 /// makes is its size in points times this factor (plotfont.h), and a change rescales the fonts
 /// already made, so that a classroom reads the labels, plots and maps from the back row.
 
+class QTabWidget;
 class QWidget;
 
 namespace pkm::textscale {
@@ -25,5 +26,11 @@ double setFactor(double factor);
 /// items, the title elements and the text items. The fonts a widget inherits follow the
 /// application's font (QApplication::setFont), which the caller scales.
 void rescale(QWidget *root, double ratio);
+
+/// Keeps every tab of `tabs` in sight whatever the text size: where the titles do not fit the
+/// bar, each shows its part before " — " ("δ(α)" for "δ(α) — fig. 4"; the plot's own title
+/// says the rest), and where even those do not fit, they end with "…". No scroll arrows. The
+/// titles stay the caller's to set (in its retranslation).
+void keepTabsInSight(QTabWidget *tabs);
 
 } // namespace pkm::textscale

@@ -14,6 +14,7 @@
 #include <QMenu>
 #include <QScopeGuard>
 #include <QScreen>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTest>
 
@@ -123,6 +124,39 @@ private slots:
         for (QCustomPlot *plot : plotfocus::plots(fourbarTabs->parentWidget()))
             QVERIFY(!plot->isHidden());
         QVERIFY(!grashof->parentWidget()->isHidden());
+    }
+
+    /// The four-bar's fourth page, "δ vs AB — fig. 5", was behind the tab bar's scroll arrows in
+    /// presentation mode: the tabs then show their short titles, each whole and in sight, and
+    /// the full ones again after.
+    void plotTabsStayInSight()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(!w.isPresenting());
+        QVERIFY(w.openDesign(QStringLiteral("fourbar-example")));
+        auto *tabs = w.findChild<QTabWidget *>(QStringLiteral("fourbarPlotTabs"));
+        QVERIFY(tabs);
+        QTabBar *bar = tabs->tabBar();
+        const auto inSight = [bar] {
+            for (int page = 0; page < bar->count(); ++page) {
+                const QRect rect = bar->tabRect(page);
+                if (rect.left() < 0 || rect.right() >= bar->width()
+                    || QFontMetrics(bar->font()).horizontalAdvance(bar->tabText(page)) > rect.width())
+                    return false;
+            }
+            return true;
+        };
+        QTRY_COMPARE(bar->tabText(3), QStringLiteral("δ vs AB — fig. 5"));
+        QVERIFY(inSight());
+        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
+        QVERIFY(w.isPresenting());
+        QTRY_COMPARE(bar->tabText(3), QStringLiteral("δ vs AB"));
+        QCOMPARE(bar->tabText(0), QStringLiteral("δ(α)"));
+        QTRY_VERIFY(inSight());
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        QTRY_COMPARE(bar->tabText(3), QStringLiteral("δ vs AB — fig. 5"));
+        QTRY_VERIFY(inSight());
     }
 
     /// Figs. 15 and 16 share a row above fig. 17 at 1280×720: their axes keep room (a legend

@@ -8,6 +8,7 @@
 #include "plotfont.h"
 #include "plotstyle.h"
 #include "plotticker.h"
+#include "textscale.h"
 
 #include <qcustomplot.h>
 
@@ -72,6 +73,8 @@ FourBarPlots::FourBarPlots(QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_tabs);
     m_tabs->setFont(fontOf(font(), labelPoints));
+    // presentation mode's large text pushed the fourth tab behind scroll arrows
+    textscale::keepTabsInSight(m_tabs);
     m_tabs->setObjectName(QStringLiteral("fourbarPlotTabs"));
 
     for (int i = 0; i < PlotCount; ++i)

@@ -2,6 +2,7 @@
 
 #include "plotfont.h"
 #include "plotstyle.h"
+#include "textscale.h"
 
 #include "kinds/pjoint/pjointcurves.h"
 
@@ -129,6 +130,8 @@ PJointPlots::PJointPlots(QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_tabs);
     m_tabs->setFont(fontOf(font(), labelPoints));
+    // presentation mode's large text pushed the fourth tab behind scroll arrows
+    textscale::keepTabsInSight(m_tabs);
 
     std::array<QWidget *, 3> pages {};
     for (QWidget *&page : pages) {
