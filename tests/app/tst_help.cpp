@@ -153,6 +153,15 @@ private slots:
         QVERIFY2(found.contains(section), qPrintable(found.join(QStringLiteral(" | "))));
         const QList<QImage> images = pictures(document);
         QVERIFY(!images.isEmpty());
+        // the first picture is the window in the guide's language (the Russian guide opened
+        // with the English window)
+        if (language != QLatin1String("en")) {
+            const QString own = QStringLiteral("screenshot.%1.png").arg(language);
+            QVERIFY(QFile::exists(QStringLiteral(":/guide/docs/") + own));
+            const QString markdown = document->toMarkdown();
+            QVERIFY2(markdown.indexOf(QStringLiteral(".png")) == markdown.indexOf(own) + own.size() - 4,
+                     qPrintable(markdown.left(300)));
+        }
         for (const QImage &image : images) {
             QVERIFY(!image.isNull());
             QCOMPARE_GT(image.width(), 300); // a screenshot, not an empty placeholder
