@@ -75,6 +75,22 @@ void collectRaysAndJoints(const SceneCanvas &canvas)
     }
 }
 
+/// A path is a thin line to the labels (the four-bar's coupler curve ran through B, M and δ):
+/// one in chords of about 16 px, each within a pixel of the curve, so that a label across it
+/// counts one line, not a dozen.
+void keepLabelsOffPath(const SceneCanvas &canvas, const QPolygonF &run)
+{
+    const double px = canvas.px(), chord = 16.0 * px;
+    QPointF from = run.front();
+    for (qsizetype i = 1; i < run.size(); ++i) {
+        const QPointF d = run[i] - from;
+        if (i + 1 < run.size() && d.x() * d.x() + d.y() * d.y() < chord * chord)
+            continue;
+        canvas.labels.addObstacle(from, run[i], 1.5 * px);
+        from = run[i];
+    }
+}
+
 /// Paths (a coupler curve) lie under the mechanism, thin; a path is broken where a point is
 /// undefined rather than bridged. The capability shapes (`shapes`) go over the members instead,
 /// since they are centred on the platform point: polygons solid, ellipses dashed.
@@ -92,8 +108,11 @@ void layoutPaths(const SceneCanvas &canvas, bool shapes)
         QPolygonF run;
         bool broken = false;
         auto flush = [&] {
-            if (run.size() >= 2)
+            if (run.size() >= 2) {
                 canvas.out.add(Polygon {run, polyline.closed && !broken, pen}, Layer::Paths);
+                if (!shapes)
+                    keepLabelsOffPath(canvas, run);
+            }
             run.clear();
         };
         for (const Eigen::Vector3d &p : polyline.points) {

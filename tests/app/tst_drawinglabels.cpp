@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 using namespace pkm;
 using namespace pkm::test;
@@ -270,6 +271,46 @@ private slots:
             }
             QCOMPARE(onLine, 1);
         }
+    }
+
+    /// The four-bar's coupler curve ran through the B, M and δ labels: a label now stands off
+    /// it where the view has room, at the home pose and across the crank's turn (eight labels
+    /// on it in these five poses before). M, which traces it, has its name beside it.
+    void couplerCurveCrossesNoLabel()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("fourbar-example")));
+        LinkageView *view = m_window->linkageView();
+        QTest::keyClick(view, Qt::Key_Home);
+        QStringList crossed;
+        for (double alpha : {60.0, 0.0, 120.0, 200.0, 300.0}) {
+            QVERIFY(m_window->document()->setVariable(0, alpha * std::numbers::pi / 180.0));
+            const Scene &scene = view->scene();
+            QVERIFY(!scene.polylines.empty());
+            const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), view->sceneStyle());
+            // the name of the point that traces the curve (M) stands next to it, on it or not
+            QStringList tracers;
+            for (const SceneJoint &joint : scene.joints) {
+                for (const ScenePolyline &path : scene.polylines) {
+                    for (const Eigen::Vector3d &p : path.points) {
+                        if ((p - joint.position).head<2>().norm() < 0.5 && !tracers.contains(QString::fromStdString(joint.label)))
+                            tracers << QString::fromStdString(joint.label);
+                    }
+                }
+            }
+            for (const drawing::Text &text : textsOf(list)) {
+                if (tracers.contains(text.text))
+                    continue;
+                const QPolygonF box = boxOf(text);
+                int inside = 0;
+                for (const ScenePolyline &path : scene.polylines) {
+                    for (const Eigen::Vector3d &p : path.points)
+                        inside += box.containsPoint(view->mapping().toDevice(Eigen::Vector2d(p.head<2>())), Qt::OddEvenFill);
+                }
+                if (inside > 0)
+                    crossed << QStringLiteral("α = %1°: '%2'").arg(alpha).arg(text.text);
+            }
+        }
+        QVERIFY2(crossed.isEmpty(), qPrintable(crossed.join(QLatin1Char('\n'))));
     }
 
     /// The П-joint at θ = 0: μ is measured at A between the diagonal and the crank, a narrow
