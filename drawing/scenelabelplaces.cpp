@@ -244,10 +244,20 @@ void SceneLabels::placeAngleLabels()
         // that costs least, a leader counting for its length and for what it crosses, near
         // candidates first among equals. A leader that is long or crosses much of the drawing
         // would tie the label to the wrong thing: such a place is not taken.
+        // A near place a little off the arc has a leader to it; one whose leader runs under
+        // another label is not free while another is (the П-joint's θ leader ran under
+        // "a = 170 mm", of which a stray tick was left).
+        const auto leaderClear = [&](const QPointF &candidate) {
+            const std::optional<QLineF> line = leaderTo(pending, candidate, size);
+            if (!line)
+                return true;
+            const QPointF start = line->p1() + 5.0 * m_px * unit(line->p2() - line->p1());
+            return collisions(segmentQuad(start, line->p2(), 1.0 * m_px), coversALabel, 0.0) < coversALabel;
+        };
         double best = std::numeric_limits<double>::infinity();
         QPointF centre;
         for (const QPointF &candidate : near) {
-            if (isFree(boxQuad(candidate, room, 0.0))) {
+            if (isFree(boxQuad(candidate, room, 0.0)) && leaderClear(candidate)) {
                 best = 0.0;
                 centre = candidate;
                 break;
@@ -260,7 +270,9 @@ void SceneLabels::placeAngleLabels()
                 centre = near[k];
             }
         }
-        std::optional<QLineF> leader = leaderTo(pending, centre, size);
+        // a leader that would run under another label shows only a stray tick beside it: the
+        // label, a few pixels off its arc, goes without
+        std::optional<QLineF> leader = leaderClear(centre) ? leaderTo(pending, centre, size) : std::nullopt;
         // Where none of those is free (a narrow angle inside a tight pose), all round the
         // vertex ring by ring. A label away from its arc gets a leader to it, so that it still
         // names its angle rather than the joint it lands near (μ at A, not at C).

@@ -106,6 +106,33 @@ private:
             if (!far && !room.adjusted(-0.5, -0.5, 0.5, 0.5).contains(box))
                 covered << QStringLiteral("'%1' cut by the view's edge (%2, %3)").arg(text.text).arg(box.left()).arg(box.top());
         }
+        // no angle's leader runs under a dimension's or another angle's text (the П-joint's θ
+        // leader under "a = 170 mm" left a stray tick beside it); a name may cover a little of
+        // one rather than leave its joint
+        std::vector<drawing::Text> texts;
+        for (const drawing::Primitive &item : list.items) {
+            const auto *text = std::get_if<drawing::Text>(&item.shape);
+            if (text && item.layer == drawing::Layer::Dimensions && drawing::shownOnScreen(item.medium) && !text->box.isEmpty())
+                texts.push_back(*text);
+        }
+        for (const drawing::Primitive &item : list.items) {
+            const auto *lines = std::get_if<drawing::Lines>(&item.shape);
+            if (!lines || lines->pen.colour != view->sceneStyle().angle || lines->pen.dash != drawing::Dash::Solid)
+                continue;
+            for (const QLineF &leader : lines->lines) {
+                for (const drawing::Text &text : texts) {
+                    const QPolygonF box = boxOf(text);
+                    if (box.boundingRect().adjusted(-1.5, -1.5, 1.5, 1.5).contains(leader.p2()))
+                        continue; // its own label
+                    for (int k = 2; k <= 18; ++k) { // past the arc's end, short of the label
+                        if (box.containsPoint(leader.pointAt(k / 20.0), Qt::OddEvenFill)) {
+                            covered << QStringLiteral("a leader runs under '%1'").arg(text.text);
+                            break;
+                        }
+                    }
+                }
+            }
+        }
         for (QString &line : covered)
             line.prepend(where + QStringLiteral(": "));
         return covered;
