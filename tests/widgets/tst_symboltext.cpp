@@ -15,6 +15,8 @@
 #include <QStandardItemModel>
 #include <QTest>
 
+#include <utility>
+
 using namespace pkm;
 
 namespace {
@@ -118,14 +120,14 @@ private slots:
         box.show();
         QVERIFY(QTest::qWaitForWindowExposed(&box));
         // typed with the keyboard's "-", or pasted with "−": both are read, and shown with "−"
-        for (const QString &typed : {QStringLiteral("-12.5"), QStringLiteral("\u221237.25")}) {
+        for (const auto &[typed, value] : {std::pair {QStringLiteral("-12.5"), -12.5}, std::pair {QStringLiteral("\u221237.25"), -37.25}}) {
             box.selectAll();
             for (const QChar c : typed) { // QTest::keyClicks() types ASCII only
                 QKeyEvent press(QEvent::KeyPress, Qt::Key_unknown, Qt::NoModifier, QString(c));
                 QApplication::sendEvent(&box, &press);
             }
             QTest::keyClick(&box, Qt::Key_Return);
-            QCOMPARE(box.value(), -plainMinus(typed).mid(1).toDouble());
+            QCOMPARE(box.value(), value);
             QVERIFY2(box.text().startsWith(QChar(0x2212)), qPrintable(box.text()));
         }
         // the arrows step through zero and back
