@@ -39,4 +39,17 @@ std::vector<bool> shownJoints(const Scene &scene, double margin)
     return shown;
 }
 
+Eigen::AlignedBox3d poseBox(const Scene &scene, double margin)
+{
+    Eigen::AlignedBox3d box;
+    for (const SceneJoint &joint : scene.joints) {
+        if (joint.kind != JointKind::Point && joint.position.allFinite())
+            box.extend(joint.position);
+    }
+    if (box.isEmpty())
+        return box;
+    const double pad = margin * std::max(box.sizes().head<2>().maxCoeff(), 1e-3);
+    return {box.min() - Eigen::Vector3d(pad, pad, 0.0), box.max() + Eigen::Vector3d(pad, pad, 0.0)};
+}
+
 } // namespace pkm

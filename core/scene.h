@@ -131,6 +131,11 @@ struct Scene {
     std::vector<SceneLegendEntry> legend; ///< drawn in a corner by the views and pictures
     /// Box holding the mechanism over its whole range of motion, so "fit" does not jump.
     Eigen::AlignedBox3d extent;
+    /// Where set, the box of this pose alone, for a mechanism whose range of motion is far
+    /// larger than itself: the screen fits it first, so that the mechanism is drawn large, and
+    /// widens towards `extent` only when a move would take the mechanism out of sight.
+    /// Pictures and animation frames keep `extent`, so that frames share one scale.
+    Eigen::AlignedBox3d poseExtent;
 };
 
 /// Which joints a drawing or a model shows: all but a free point (an instantaneous centre)
@@ -139,5 +144,9 @@ struct Scene {
 /// horizon. The DXF drawing allows half its size; the 3D model none, since its camera is fitted
 /// to the extent once for every pose.
 std::vector<bool> shownJoints(const Scene &scene, double margin = 0.5);
+
+/// The box of the scene's joints as they are (not its points of interest), with a margin of
+/// `margin` times its larger side all round: a Scene::poseExtent.
+Eigen::AlignedBox3d poseBox(const Scene &scene, double margin = 0.2);
 
 } // namespace pkm

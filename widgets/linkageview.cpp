@@ -17,10 +17,6 @@
 namespace pkm {
 
 namespace {
-constexpr double fitMargin = 24.0; ///< style px between the extent and the widget's edge
-constexpr double minimumScale = 1e-3; ///< px per mm: a 100 m mechanism still fits a screen
-constexpr double maximumScale = 1e3; ///< px per mm: a micrometre is a millimetre on screen
-
 double distanceToSegment(const QPointF &p, const QPointF &a, const QPointF &b)
 {
     const QPointF ab = b - a, ap = p - a;
@@ -46,6 +42,8 @@ void LinkageView::setScene(const Scene &scene)
     if (!m_hasScene) {
         m_hasScene = true;
         fitToView();
+    } else {
+        followMechanism();
     }
     if (m_hoverHandle >= int(m_scene.handles.size()))
         setHoverHandle(-1);
@@ -160,106 +158,12 @@ int LinkageView::handleAt(const QPointF &position) const
     return best;
 }
 
-// -- export ------------------------------------------------------------------------------
-
-QRectF LinkageView::belowLegend(const QRectF &area, const Scene &scene, const SceneStyle &style)
-{
-    // the fit's own margin already keeps the top free in part
-    const double legend = ScenePainter::legendHeight(area, scene, style, nullptr) - fitMargin * style.pixelSize;
-    QRectF below = area;
-    if (legend > 0.0)
-        below.setTop(area.top() + std::min(legend, 0.4 * area.height()));
-    return below;
-}
-
-ViewMapping LinkageView::fittedMapping(const Scene &scene, const QRectF &target, const SceneStyle &style)
-{
-    return ViewMapping::fit(scene.extent, belowLegend(target, scene, style), fitMargin * style.pixelSize);
-}
-
-ViewMapping LinkageView::screenMapping(
-    const Scene &scene, const Eigen::AlignedBox3d &extent, const QRectF &area, const SceneStyle &style)
-{
-    // above the scale bar (the fit's margin covers part of it), and with every label whole
-    QRectF room = belowLegend(area, scene, style), labelRoom = room;
-    const double bar = std::min(ScenePainter::scaleBarHeight(style, nullptr), 0.25 * room.height());
-    room.setBottom(room.bottom() - std::max(0.0, bar - fitMargin * style.pixelSize));
-    labelRoom.setBottom(labelRoom.bottom() - bar);
-    return ScenePainter::fitWithLabels(scene, extent, room, labelRoom, fitMargin * style.pixelSize, style);
-}
-
-void LinkageView::renderScene(QPainter &painter, const QRectF &target, const Scene &scene, const SceneStyle &style)
-{
-    SceneStyle exported = style;
-    exported.showHandles = false; // rings are an affordance of the screen, not of a drawing
-    const ViewMapping mapping = fittedMapping(scene, target, exported);
-    painter.save();
-    painter.setClipRect(target, Qt::IntersectClip);
-    ScenePainter::paintBackground(painter, target, mapping, exported);
-    ScenePainter::paint(painter, scene, mapping, exported);
-    ScenePainter::paintScaleBar(painter, target, mapping, exported);
-    ScenePainter::paintLegend(painter, target, scene, exported);
-    painter.restore();
-}
-
-void LinkageView::renderTo(QPainter &painter, const QRectF &target) const
-{
-    renderScene(painter, target, m_scene, m_style);
-}
-
-// -- view --------------------------------------------------------------------------------
-
-void LinkageView::fitToView()
-{
-    // The scene's extent, and the ghosts' joints where they are now, so they can be clicked —
-    // not their points of interest: a ghost four-bar's instant centre lies wherever AB and DC
-    // meet, far out when they are nearly parallel, and left the linkage small in a corner.
-    Eigen::AlignedBox3d extent = m_scene.extent;
-    if (!extent.isEmpty()) {
-        for (const Scene &ghost : m_ghosts) {
-            for (const SceneJoint &joint : ghost.joints) {
-                if (joint.kind != JointKind::Point && joint.position.allFinite())
-                    extent.extend(joint.position);
-            }
-        }
-    }
-    m_userMoved = false;
-    // A hidden view (the window being built, its docks resized one after another at start-up)
-    // gets the plain fit; the fit that keeps every label whole runs once it is painted.
-    m_fitPending = !isVisible();
-    m_mapping = m_fitPending ? ViewMapping::fit(extent, QRectF(rect()), fitMargin * m_style.pixelSize)
-                             : screenMapping(m_scene, extent, QRectF(rect()), m_style);
-    update();
-}
-
-void LinkageView::zoomIn()
-{
-    zoomAbout(QRectF(rect()).center(), zoomStep);
-}
-
-void LinkageView::zoomOut()
-{
-    zoomAbout(QRectF(rect()).center(), 1.0 / zoomStep);
-}
-
-void LinkageView::zoomAbout(const QPointF &anchor, double factor)
-{
-    const double scale = std::clamp(m_mapping.scale * factor, minimumScale, maximumScale);
-    if (scale == m_mapping.scale)
-        return;
-    const Eigen::Vector2d fixed = m_mapping.toScene(anchor);
-    m_mapping.scale = scale;
-    m_mapping.origin = anchor - QPointF(scale * fixed.x(), -scale * fixed.y());
-    m_userMoved = true;
-    update();
-}
-
 void LinkageView::paintEvent(QPaintEvent *)
 {
     QElapsedTimer timer;
     timer.start();
     if (m_fitPending && !m_userMoved)
-        fitToView(); // visible now, at its size
+        fit(); // visible now, at its size
     QPainter painter(this);
     const QRectF area(rect());
     ScenePainter::paintBackground(painter, area, m_mapping, m_style);
@@ -286,7 +190,7 @@ void LinkageView::paintEvent(QPaintEvent *)
 void LinkageView::resizeEvent(QResizeEvent *event)
 {
     if (!m_userMoved) {
-        fitToView();
+        fit();
     } else if (event->oldSize().isValid()) {
         // Keep what the user zoomed into at the centre.
         const QSizeF delta = QSizeF(event->size() - event->oldSize()) / 2.0;
@@ -375,6 +279,8 @@ void LinkageView::mouseReleaseEvent(QMouseEvent *event)
         m_dragHandle = -1;
         updateHover(event->position());
         updateCursor();
+        keepInSight(); // an attachment point's drag may have taken the mechanism out of sight
+        followMechanism(); // a pose's drag too
         update();
         emit dragFinished();
         event->accept();

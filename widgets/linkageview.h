@@ -33,7 +33,9 @@ public:
     explicit LinkageView(QWidget *parent = nullptr);
 
     /// Cheap: stores the scene and schedules a repaint. Only the first scene is fitted; later
-    /// ones keep the mapping so the drawing does not jump while the user drags.
+    /// ones keep the mapping so the drawing does not jump while the user drags — unless the
+    /// view is fitted to a pose (Scene::poseExtent) and the mechanism leaves it: then it widens
+    /// by steps towards the whole range of motion, and stays there until the next Fit.
     void setScene(const Scene &scene);
     const Scene &scene() const { return m_scene; }
 
@@ -93,7 +95,15 @@ public:
     static constexpr double hitRadius = 12.0; ///< device px around a handle's joint
     static constexpr double zoomStep = 1.25; ///< per wheel notch and per zoomIn()
 
+    /// After a design edit: Fit if the mechanism (its pose's box where the scene gives one,
+    /// else its range of motion) has left the view or shrunk to a small part of it.
+    void keepInSight();
+    /// What the last fit framed, in scene mm: the pose and its ghosts, or more once widened.
+    const Eigen::AlignedBox3d &fittedBox() const { return m_fitBox; }
+
 public slots:
+    /// Fits the pose (Scene::poseExtent) where the scene gives one, else the whole range of
+    /// motion; the ghosts' joints are taken in.
     void fitToView();
     void zoomIn();
     void zoomOut();
@@ -120,6 +130,15 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    /// Fits m_fitBox to the view as it is now (its size, the labels).
+    void fit();
+    /// Widens m_fitBox when the mechanism has moved out of sight (see setScene()).
+    void followMechanism();
+    /// Whether Fit frames the pose (Scene::poseExtent) rather than the whole range of motion.
+    bool fitsPose() const;
+    /// The pose's box where Fit frames it, else the range of motion.
+    Eigen::AlignedBox3d inSightBox() const;
+    Eigen::AlignedBox3d withGhostJoints(Eigen::AlignedBox3d box) const;
     /// Scales by `factor` keeping the scene point under `anchor` (widget) where it is.
     void zoomAbout(const QPointF &anchor, double factor);
     void setHoverHandle(int handle);
@@ -134,6 +153,7 @@ private:
     SceneStyle m_style;
     ViewMapping m_mapping;
     bool m_userMoved = false; ///< zoomed or panned since the last fit: resizing keeps the mapping
+    Eigen::AlignedBox3d m_fitBox; ///< what fit() frames: set by fitToView(), widened by followMechanism()
     /// Fitted while hidden, without the labels: the whole fit, which lays the labels out a few
     /// times, waits for the first paint at the size the view is shown at.
     bool m_fitPending = false;

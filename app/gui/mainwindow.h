@@ -197,7 +197,6 @@ private:
     void createDocks();
     void onDesignChanged();
     void onPoseChanged();
-    void keepMechanismInView();
     void updateModes();
     /// Gives the 3D view the current pose when it is shown; refits it for a new mechanism.
     void update3d(bool designChanged);

@@ -115,7 +115,7 @@ void MainWindow::onDesignChanged()
     m_plots->setVisible(m_currentPanel != nullptr);
     applyPresentationPlots(); // one plot per page of the new panel while presenting
     onPoseChanged();
-    keepMechanismInView();
+    m_view->keepInSight();
     update3d(true);
 }
 
@@ -138,24 +138,6 @@ void MainWindow::update3d(bool designChanged)
         m_view3d->view()->fit();
         m_view3dExtent = model.extent;
     }
-}
-
-void MainWindow::keepMechanismInView()
-{
-    // Refit only when the new design leaves the view or shrinks to a small part of it: a
-    // fixed scale while stepping a dimension shows the mechanism growing or shrinking.
-    const Eigen::AlignedBox3d &extent = m_view->scene().extent;
-    if (extent.isEmpty())
-        return;
-    const ViewMapping mapping = m_view->mapping();
-    const QRectF drawn = QRectF(mapping.toDevice(Eigen::Vector2d(extent.min().head<2>())),
-                                mapping.toDevice(Eigen::Vector2d(extent.max().head<2>())))
-                             .normalized();
-    const QRectF area = QRectF(m_view->rect());
-    const bool outside = !area.contains(drawn);
-    const bool tiny = drawn.width() < 0.3 * area.width() && drawn.height() < 0.3 * area.height();
-    if (outside || tiny)
-        m_view->fitToView();
 }
 
 void MainWindow::onPoseChanged()

@@ -7,6 +7,7 @@
 
 #include "document/designfile.h"
 #include "document/document.h"
+#include "linkageview.h"
 #include "playbar.h"
 #include "variablepanel.h"
 #include "support/app.h"
@@ -333,6 +334,65 @@ private slots:
         auto parsed = designfile::parse(file, QStringLiteral("lesson.pkm.json"));
         QVERIFY(!parsed);
         QVERIFY2(QString::fromStdString(parsed.failure().message).contains(message), parsed.failure().message.c_str());
+    }
+
+    /// A mechanism whose range of motion dwarfs it — the 3-RP̲R's platform reaches about three
+    /// times the mechanism's own size, the five-bar's cranks sweep whole circles — is drawn fitted to its pose, about twice as large as a
+    /// fit to the whole range; as Play moves it, the view widens in a few steps so that it never
+    /// leaves sight, never beyond the whole range. Fit brings a large drawing back.
+    void aSmallMechanismIsDrawnLargeAndKeptInSight_data()
+    {
+        QTest::addColumn<QString>("preset");
+        QTest::addColumn<double>("gain"); // the pose's scale over the whole range's, at least
+        QTest::newRow("3-RP̲R") << QStringLiteral("pp-3rpr") << 1.8;
+        QTest::newRow("five-bar") << QStringLiteral("fivebar-example") << 1.3;
+    }
+
+    void aSmallMechanismIsDrawnLargeAndKeptInSight()
+    {
+        QFETCH(QString, preset);
+        QFETCH(double, gain);
+        open(preset);
+        MainWindow &w = *m_window;
+        LinkageView *view = w.linkageView();
+        QTest::keyClick(view, Qt::Key_Home);
+        const QRectF area(view->rect());
+        const auto drawn = [&] { return ScenePainter::jointBounds(view->scene(), view->mapping(), view->sceneStyle()); };
+        const auto wholeScale = [&] {
+            return LinkageView::screenMapping(view->scene(), view->scene().extent, area, view->sceneStyle()).scale;
+        };
+        const double fitted = view->mapping().scale;
+        QCOMPARE_GT(fitted, gain * wholeScale());
+        QCOMPARE_GT(std::max(drawn().width() / area.width(), drawn().height() / area.height()), 0.5);
+
+        PlayBar *bar = w.playBar();
+        int widenings = 0;
+        double scale = fitted;
+        for (int index = 0; index < w.document()->mechanism()->inputCount(); ++index) {
+            bar->setVariable(index);
+            const Interval range = w.document()->mechanism()->variableRange(index);
+            bar->setRange(range.min, range.max);
+            bar->setMode(PlayMode::ForthAndBack);
+            w.setPlaying(true);
+            for (int step = 0; step < 120 && w.player()->isPlaying(); ++step) {
+                w.player()->advance(0.1);
+                QVERIFY2(area.contains(drawn()), qPrintable(QStringLiteral("input %1, step %2").arg(index + 1).arg(step)));
+                if (view->mapping().scale != scale) {
+                    QCOMPARE_LT(view->mapping().scale, scale); // it only widens
+                    scale = view->mapping().scale;
+                    ++widenings;
+                }
+            }
+            w.setPlaying(false);
+        }
+        QCOMPARE_GT(widenings, 0);
+        QCOMPARE_LE(widenings, 4);
+        QCOMPARE_GE(scale, 0.99 * wholeScale());
+        // Fit: the pose again (with its ghosts, spread wider at some poses than at others)
+        QTest::keyClick(view, Qt::Key_Home);
+        QVERIFY(view->fittedBox().contains(view->scene().poseExtent));
+        QVERIFY(!view->fittedBox().contains(view->scene().extent));
+        QCOMPARE_GT(view->mapping().scale, wholeScale());
     }
 
     void aBookmarkThatNoLongerFitsSaysSo()

@@ -58,6 +58,7 @@ Scene FiveBar::scene(const Pose &pose) const
     extent.extend(to3(C));
     const Eigen::Vector3d pad(0.08 * scaleOf(d), 0.08 * scaleOf(d), 0.0);
     s.extent = Eigen::AlignedBox3d(extent.min() - pad, extent.max() + pad);
+    s.poseExtent = poseBox(s); // the cranks' circles make the range of motion far larger than a pose
     return s;
 }
 

@@ -199,6 +199,9 @@ Scene PlanarParallel::scene(const Pose &pose) const
     Eigen::AlignedBox3d extent;
     for (const SceneJoint &j : s.joints)
         extent.extend(j.position);
+    // The reach of a 3-RP̲R's platform is about three times the mechanism: fitted to it, the
+    // mechanism would be a thumbnail in the middle of the view.
+    s.poseExtent = poseBox(s);
     extent.extend(Eigen::Vector3d(m_bounds.min().x(), m_bounds.min().y(), 0.0));
     extent.extend(Eigen::Vector3d(m_bounds.max().x(), m_bounds.max().y(), 0.0));
     for (const PlanarLeg &leg : m_design.legs) {
