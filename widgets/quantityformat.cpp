@@ -176,7 +176,11 @@ QString symbolHtmlKnown(const QString &text, const QStringList &symbols)
 QString unbreakable(QString text)
 {
     static const QRegularExpression slash(QStringLiteral("(?<=\\w)/(?=\\w)"));
+    // a hyphen after a letter or two that name a form: "П-шарнира" broke as "П-" and "шарнира"
+    static const QRegularExpression shortPrefix(QStringLiteral("(?:(?<=\\b\\w)|(?<=\\b\\w\\w))-(?=\\w)"),
+                                                QRegularExpression::UseUnicodePropertiesOption); // Cyrillic letters are \w too
     text.replace(QStringLiteral(" = "), QStringLiteral("\u00A0=\u00A0"));
+    text.replace(shortPrefix, QStringLiteral("-\u2060"));
     return text.replace(slash, QStringLiteral("/\u2060")); // the word joiner: no break after '/'
 }
 

@@ -35,7 +35,8 @@ QString symbolPlain(const QString &text);
 /// ("x_AB" in "x_CD − x_AB = s"), and turns line breaks into <br>.
 QString symbolHtmlKnown(const QString &text, const QStringList &symbols);
 /// `text` with its formulas kept whole where it wraps: no line break around " = " nor after a
-/// '/' between letters ("k = b/a", "(k = 0.40)", "γ₂ = +5°" broke as "k = b/" and "a").
+/// '/' between letters ("k = b/a", "(k = 0.40)", "γ₂ = +5°" broke as "k = b/" and "a"), nor
+/// after a hyphen that follows a word of one or two letters ("П-шарнир", "O-X", "3-RPR").
 QString unbreakable(QString text);
 /// `coreValue` in core units; shown in the unit's display units.
 QString formatQuantity(double coreValue, const Unit &unit, int decimals, const QLocale &locale = QLocale());

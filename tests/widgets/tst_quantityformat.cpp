@@ -77,6 +77,10 @@ private slots:
     {
         QCOMPARE(unbreakable(QStringLiteral("ratio k = b/a")), QStringLiteral("ratio k\u00A0=\u00A0b/\u2060a"));
         QCOMPARE(unbreakable(QStringLiteral("1/2 and a / b")), QStringLiteral("1/\u20602 and a / b"));
+        // a form's short name stays with its noun; other hyphens may still break
+        QCOMPARE(unbreakable(QStringLiteral("прототип П-шарнира")), QStringLiteral("прототип П-\u2060шарнира"));
+        QCOMPARE(unbreakable(QStringLiteral("the O-X glide, a 3-RPR")), QStringLiteral("the O-\u2060X glide, a 3-\u2060RPR"));
+        QCOMPARE(unbreakable(QStringLiteral("four-bar, leg-built")), QStringLiteral("four-bar, leg-built"));
         // a legend wrapped in a narrow plot keeps "(k = 0,40)" on one line
         const QFont font = QApplication::font();
         const QString legend = QStringLiteral("эта конструкция (k = 0,40)");
