@@ -370,6 +370,18 @@ double ScenePainter::legendHeight(const QRectF &area, const Scene &scene, const 
     return l.frame.bottom() - area.top();
 }
 
+void ScenePainter::paintPicture(
+    QPainter &painter, const QRectF &area, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style)
+{
+    painter.save();
+    painter.setClipRect(area, Qt::IntersectClip);
+    paintBackground(painter, area, mapping, style);
+    paint(painter, scene, mapping, style);
+    paintScaleBar(painter, area, mapping, style);
+    paintLegend(painter, area, scene, style);
+    painter.restore();
+}
+
 void ScenePainter::paintLegend(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style)
 {
     if (scene.legend.empty())

@@ -57,6 +57,9 @@ public:
     /// box at the top-left of `area`, each line after a sample of its pen: solid for the
     /// polygon, dashed for the ellipse; long lines wrap. Nothing when the legend is empty.
     static void paintLegend(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style);
+    /// A picture of the scene in `area`, clipped to it: background, scene, scale bar and legend.
+    static void paintPicture(
+        QPainter &painter, const QRectF &area, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style);
     /// How much of the top of `area` the legend takes, its margin included (0: no legend): a
     /// fit leaves it free, so that the legend covers none of the mechanism.
     static double legendHeight(const QRectF &area, const Scene &scene, const SceneStyle &style, QPaintDevice *device);

@@ -47,14 +47,7 @@ void LinkageView::renderScene(QPainter &painter, const QRectF &target, const Sce
 {
     SceneStyle exported = style;
     exported.showHandles = false; // rings are an affordance of the screen, not of a drawing
-    const ViewMapping mapping = fittedMapping(scene, target, exported);
-    painter.save();
-    painter.setClipRect(target, Qt::IntersectClip);
-    ScenePainter::paintBackground(painter, target, mapping, exported);
-    ScenePainter::paint(painter, scene, mapping, exported);
-    ScenePainter::paintScaleBar(painter, target, mapping, exported);
-    ScenePainter::paintLegend(painter, target, scene, exported);
-    painter.restore();
+    ScenePainter::paintPicture(painter, target, scene, fittedMapping(scene, target, exported), exported);
 }
 
 void LinkageView::renderTo(QPainter &painter, const QRectF &target) const

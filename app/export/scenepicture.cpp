@@ -118,12 +118,9 @@ void paintScenePicture(QPainter &painter, const QRectF &area, const Scene &scene
     const double px = style.pixelSize;
     const ViewMapping mapping = pictureMapping(area, scene, style, fit, painter.device());
 
+    ScenePainter::paintPicture(painter, area, scene, mapping, style);
     painter.save();
     painter.setClipRect(area, Qt::IntersectClip);
-    ScenePainter::paintBackground(painter, area, mapping, style);
-    ScenePainter::paint(painter, scene, mapping, style);
-    ScenePainter::paintScaleBar(painter, area, mapping, style);
-    ScenePainter::paintLegend(painter, area, scene, style);
     // the scale bar: at most 2.5 × its minimum length (1-2-5 steps), its knock-out and a gap
     const double bar = ScenePainter::niceStep(90.0 * px, mapping.scale) * mapping.scale;
     paintCaption(painter, area, caption, style, bar + (6.0 + 24.0) * px);
