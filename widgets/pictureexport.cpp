@@ -58,6 +58,38 @@ DialogMemory &memory()
 
 namespace {
 
+/// Laying a plot out at another size moves its layout there and may move its ranges (a map
+/// keeps equal scales on both axes when laid out): both go back for the screen once the
+/// picture is drawn, or the plot on screen kept the picture's margins and its cursor stood
+/// away from the pose.
+class ScreenLayoutKept
+{
+public:
+    explicit ScreenLayoutKept(QCustomPlot *plot)
+        : m_plot(plot)
+    {
+        for (QCPAxisRect *rect : plot->axisRects()) {
+            for (QCPAxis *axis : rect->axes())
+                m_ranges.emplace_back(axis, axis->range());
+        }
+    }
+    ~ScreenLayoutKept()
+    {
+        for (const auto &[axis, range] : m_ranges) {
+            if (axis && (axis->range().lower != range.lower || axis->range().upper != range.upper))
+                axis->setRange(range);
+        }
+        if (m_plot)
+            m_plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+    ScreenLayoutKept(const ScreenLayoutKept &) = delete;
+    ScreenLayoutKept &operator=(const ScreenLayoutKept &) = delete;
+
+private:
+    QPointer<QCustomPlot> m_plot;
+    std::vector<std::pair<QPointer<QCPAxis>, QCPRange>> m_ranges;
+};
+
 using pictureexport::count;
 using pictureexport::DialogMemory;
 using pictureexport::memory;
@@ -291,13 +323,7 @@ QByteArray plotPicture(QCustomPlot *plot, const QString &format, const PictureOp
     const QSize layout(std::max(1, int(std::lround(options.size.width() / scale))),
         std::max(1, int(std::lround(options.size.height() / scale))));
 
-    // Laying the plot out at another size may move its ranges (a map keeps equal scales on both
-    // axes when laid out): they are put back afterwards, and the plot laid out for the screen.
-    std::vector<std::pair<QPointer<QCPAxis>, QCPRange>> ranges;
-    for (QCPAxisRect *rect : plot->axisRects()) {
-        for (QCPAxis *axis : rect->axes())
-            ranges.emplace_back(axis, axis->range());
-    }
+    const ScreenLayoutKept kept(plot);
     // A plot that sets its ranges once laid out (a map keeps equal scales) does so in the
     // drawing, after its ticks and margins were worked out for the old ranges: lay it out at
     // the picture's size until the ranges settle, so that the picture's ticks fit its ranges.
@@ -338,12 +364,15 @@ QByteArray plotPicture(QCustomPlot *plot, const QString &format, const PictureOp
             plot->toPainter(&painter, layout.width(), layout.height());
         },
         error);
-    for (const auto &[axis, range] : ranges) {
-        if (axis && (axis->range().lower != range.lower || axis->range().upper != range.upper))
-            axis->setRange(range);
-    }
-    plot->replot(QCustomPlot::rpQueuedReplot);
     return bytes;
+}
+
+QImage plotImage(QCustomPlot *plot, const QSize &layout, double scale)
+{
+    if (!plot)
+        return {};
+    const ScreenLayoutKept kept(plot);
+    return plot->toPixmap(layout.width(), layout.height(), scale).toImage();
 }
 
 bool savePictureFile(const QString &path, const QByteArray &bytes, QString *error)

@@ -70,6 +70,9 @@ QByteArray paintPicture(const QString &format, const PictureOptions &options, in
 /// the plot on screen keeps its size, its axis ranges and its layout. Empty bytes with `error`
 /// set on failure.
 QByteArray plotPicture(QCustomPlot *plot, const QString &format, const PictureOptions &options, QString *error);
+/// `plot` laid out at `layout` and drawn `scale` times as large (a video's frame), the plot on
+/// screen left as it was: its ranges, and its layout at the next repaint. A null image for none.
+QImage plotImage(QCustomPlot *plot, const QSize &layout, double scale);
 
 /// Writes `bytes` to `path` atomically (QSaveFile): false with a sentence naming the file in
 /// `error` when it cannot be written (a missing folder, no permission, a full disk).

@@ -6,6 +6,7 @@
 #include "export/videowriter.h"
 #include "gui/backgroundtask.h"
 #include "kinds/kindpanel.h"
+#include "pictureexport.h"
 #include "quantityformat.h"
 #include "symboltext.h"
 
@@ -388,7 +389,7 @@ std::function<QImage(const Pose &, const QSize &)> shownPlotPictures(KindPanel *
                     // Laid out at the 720-pixel frame's scale, so a full-HD frame's plot is the
                     // same plot enlarged rather than one with small print.
                     const double scale = std::max(1.0, size.height() / 720.0);
-                    image = plot->toPixmap(int(size.width() / scale), int(size.height() / scale), scale).toImage();
+                    image = plotImage(plot, QSize(int(size.width() / scale), int(size.height() / scale)), scale);
                 }
                 picture->set_value(image);
             },

@@ -258,6 +258,8 @@ private slots:
         QCustomPlot *shown = plotfocus::active(window.currentPanel());
         QVERIFY(shown);
         const Pose before = window.document()->pose();
+        // a frame lays the plot out at the frame's size, and may move its ranges
+        const QCPRange screenX = shown->xAxis->range(), screenY = shown->yAxis->range();
         AnimationSettings settings = thetaSweep(*window.document()->mechanism());
         settings.frames = 3;
         settings.bounce = false;
@@ -273,6 +275,14 @@ private slots:
             QVERIFY2(frames[0].copy(plotHalf) != frames[2].copy(plotHalf), qPrintable(beside)); // the cursor moved
         }
         QCOMPARE(window.document()->pose().inputs, before.inputs); // the window's pose never moved
+        // ... and the plot on screen is laid out for the screen again, with its ranges: left at
+        // the frame's layout, its cursor stood away from the pose until the window was resized
+        QCoreApplication::processEvents();
+        QCOMPARE(shown->viewport(), shown->rect());
+        QVERIFY2(shown->rect().contains(shown->axisRect()->outerRect()),
+                 qPrintable(QStringLiteral("%1 px wide, laid out to %2").arg(shown->width()).arg(shown->axisRect()->outerRect().right())));
+        QCOMPARE(shown->xAxis->range(), screenX);
+        QCOMPARE(shown->yAxis->range(), screenY);
     }
 };
 

@@ -218,6 +218,27 @@ private slots:
         QCOMPARE(plot->xAxis->pixelToCoord(axisRect.center().x()), clicked);
     }
 
+    void videoFrameLeavesTheScreenPlot()
+    {
+        // A video's frame lays the plot out at the frame's size; a cursor moved afterwards
+        // redraws its layer alone, with the layout it finds, so the layout must be the
+        // screen's again or the cursor stands away from the pose.
+        auto plot = makePlot();
+        plot->show();
+        QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
+        plot->replot();
+        const QRect axisRect = plot->axisRect()->rect();
+        const QCPRange x = plot->xAxis->range(), y = plot->yAxis->range();
+        const QImage frame = plotImage(plot.get(), QSize(640, 720), 1.5);
+        QCOMPARE(frame.size(), QSize(960, 1080));
+        QCoreApplication::processEvents(); // the queued replot
+        QCOMPARE(plot->viewport(), plot->rect());
+        QCOMPARE(plot->axisRect()->rect(), axisRect);
+        QCOMPARE(plot->xAxis->range(), x);
+        QCOMPARE(plot->yAxis->range(), y);
+        QVERIFY(plotImage(nullptr, QSize(640, 720), 1.0).isNull());
+    }
+
     void svg()
     {
         auto plot = makePlot();
