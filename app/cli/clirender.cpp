@@ -17,6 +17,7 @@
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QFileInfo>
+#include <QLocale>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QGuiApplication>
@@ -283,26 +284,35 @@ int rerunUnderXvfb(const XvfbRerun &rerun, const QString &noGl, std::FILE *out, 
     return CliNoSolution;
 }
 
-/// The drawings' minus sign while a picture is drawn: the typographic one (U+2212), as the
+/// The drawings' numbers while a picture is drawn: the typographic minus (U+2212), as the
 /// application's drawings print it ("γ₁ = −5°"), not the hyphen that the command line's text
-/// and JSON keep for scripts. What was installed comes back at the end: runCli() also runs
-/// inside other programs (the tests).
-class TypographicMinus
+/// and JSON keep for scripts; and English numbers and units in the caption whatever the
+/// system's locale, as everything else the command line writes. What was installed comes back
+/// at the end: runCli() also runs inside other programs (the tests).
+class PictureNumbers
 {
 public:
-    TypographicMinus()
+    PictureNumbers()
         : m_previous(text::installed())
     {
         text::Hooks hooks = m_previous;
         hooks.minusSign = "\u2212";
         text::install(std::move(hooks));
+        QLocale english(QLocale::English, QLocale::UnitedStates);
+        english.setNumberOptions(QLocale::OmitGroupSeparator);
+        QLocale::setDefault(english);
     }
-    ~TypographicMinus() { text::install(m_previous); }
-    TypographicMinus(const TypographicMinus &) = delete;
-    TypographicMinus &operator=(const TypographicMinus &) = delete;
+    ~PictureNumbers()
+    {
+        text::install(m_previous);
+        QLocale::setDefault(m_locale);
+    }
+    PictureNumbers(const PictureNumbers &) = delete;
+    PictureNumbers &operator=(const PictureNumbers &) = delete;
 
 private:
     text::Hooks m_previous;
+    QLocale m_locale; ///< the default before
 };
 
 } // namespace
@@ -388,7 +398,7 @@ int runRenderCommand(const PreparedDesign &prepared, const Invocation &invocatio
         return is3d ? CliNoSolution : CliOutputError;
     }
 
-    const TypographicMinus minus; // in the scene's labels and the caption
+    const PictureNumbers numbers; // in the scene's labels and the caption
     const std::string &path = *invocation.output;
     const std::string extension = fileExtension(path);
     if (extension == "gif" || extension == "mp4" || extension == "webm")

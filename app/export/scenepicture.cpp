@@ -5,7 +5,7 @@
 #include "export/scenepicture.h"
 
 #include "linkageview.h"
-#include "report/texttable.h"
+#include "quantityformat.h"
 #include "scenepainter.h"
 
 #include <QFontMetricsF>
@@ -18,17 +18,6 @@
 namespace pkm::pictures {
 
 namespace {
-
-/// "30.00°", "187.13 mm", "0.40"
-std::string valueWithUnit(double value, int decimals, std::string_view unit)
-{
-    std::string text = report::fixedText(value, decimals);
-    if (unit.empty())
-        return text;
-    if (unit != "°")
-        text.append(" ");
-    return text.append(unit);
-}
 
 /// What the 2D drawing keeps free at the bottom for the scale bar and the caption: the scale
 /// bar's margin, tick, text and knock-out (ScenePainter::paintScaleBar), device units.
@@ -56,21 +45,23 @@ double captionBand(const SceneStyle &style)
 
 QString poseCaption(const Mechanism &mechanism, const Pose &at, const QString &name)
 {
-    std::string pose;
+    // As the window's read-out writes them: the language's decimal sign and unit ("21,95 мм"),
+    // the typographic minus ("θ = −7.40°"), ∞ or — at a singular pose.
+    QStringList pose;
     const auto &variables = mechanism.variableInfo();
     for (std::size_t i = 0; i < variables.size(); ++i) {
         const VariableInfo &info = variables[i];
-        const double value = info.unit.toDisplay(mechanism.variableValue(at, static_cast<int>(i)));
-        pose.append(pose.empty() ? "" : ", ").append(info.symbol).append(" = ");
-        pose.append(valueWithUnit(value, info.decimals, info.unit.symbol));
+        pose << QStringLiteral("%1 = %2").arg(QString::fromStdString(info.symbol),
+                    formatQuantity(mechanism.variableValue(at, static_cast<int>(i)), info.unit, info.decimals));
     }
     for (const ReportText &word : mechanism.reportText(at)) {
         if (word.group == ReportGroup::Pose)
-            pose.append(pose.empty() ? "" : ", ").append(word.name).append(" ").append(word.text);
+            pose << QString::fromStdString(word.name + " " + word.text);
     }
+    const QString joined = pose.join(QStringLiteral(", "));
     if (name.isEmpty())
-        return QString::fromStdString(pose);
-    return pose.empty() ? name : name + QStringLiteral(" — ") + QString::fromStdString(pose);
+        return joined;
+    return joined.isEmpty() ? name : name + QStringLiteral(" — ") + joined;
 }
 
 void paintCaption(

@@ -8,6 +8,7 @@
 #include "export/scenepicture.h"
 #include "document/designsession.h"
 #include "document/document.h"
+#include "document/language.h"
 #include "drawlist.h"
 #include "linkageview.h"
 #include "scenelayout.h"
@@ -37,6 +38,7 @@
 #include <QXmlStreamReader>
 
 #include <cmath>
+#include <numbers>
 
 using namespace pkm;
 using namespace pkm::test;
@@ -316,6 +318,23 @@ private slots:
         const QString text = poppler(QStringLiteral("pdftotext"), {path, QStringLiteral("-")});
         QVERIFY2(text.contains(name), qPrintable(text)); // the caption
         QVERIFY2(QRegularExpression(QStringLiteral("(^|\\s)A(\\s|$)")).match(text).hasMatch(), qPrintable(text));
+    }
+
+    /// A picture's or a video's caption writes the pose as the window's read-out does: in the
+    /// language's decimal sign and units, with the typographic minus. A Russian video read
+    /// "q₁ = 21.95 mm" and an English one "θ = -7.40°".
+    void captionSpeaksTheLanguage()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));
+        const Mechanism &mechanism = *m_window->document()->mechanism();
+        QVERIFY(m_window->document()->setVariable(mechanism.variableIndex("theta"), -7.4 * std::numbers::pi / 180.0));
+        const Pose &pose = m_window->document()->pose();
+        const QString english = pictures::poseCaption(mechanism, pose, QString());
+        QCOMPARE(english, QStringLiteral("d = 174.77 mm, θ = −7.40°")); // d = 170·√(1.16 + 0.8·sin(−7.4°))
+        language::apply(QStringLiteral("ru"));
+        const QString russian = pictures::poseCaption(mechanism, pose, QStringLiteral("урок"));
+        language::apply(QStringLiteral("en"));
+        QCOMPARE(russian, QStringLiteral("урок — d = 174,77 мм, θ = −7,40°"));
     }
 
     void suggestedNames()

@@ -1706,7 +1706,7 @@ void TestCli::render2dCaptionAndPose()
         QCOMPARE(image->size(), QSize(800, 600));
     QVERIFY(plus != minus);
     QCOMPARE(plus.text(QStringLiteral("Title")), QStringLiteral("pjoint-prototype — d = 212.33 mm, θ = 30.00°"));
-    QVERIFY(minus.text(QStringLiteral("Title")).endsWith(QStringLiteral("θ = -30.00°")));
+    QVERIFY(minus.text(QStringLiteral("Title")).endsWith(QStringLiteral("θ = −30.00°"))); // the drawings' minus
     // The caption sits in the bottom-left corner and moves nothing else.
     QVERIFY(plus.copy(0, 0, 800, 520) == bare.copy(0, 0, 800, 520));
     QVERIFY(plus.copy(0, 540, 400, 60) != bare.copy(0, 540, 400, 60));
