@@ -413,6 +413,10 @@ void SceneLabels::placeJointLabels()
         const std::string &name = m_scene.joints[i].label;
         if (name.empty() || !valid(int(i)))
             continue;
+        // A joint out of sight (the four-bar's instant centre P when AB and DC are nearly
+        // parallel) keeps its name out too: in sight with a leader, it named nothing.
+        if (!m_room.isEmpty() && !m_room.contains(m_points[i]))
+            continue;
         // Preferred: the middles of the angular gaps between what leaves the joint (members,
         // ground, extension lines, arc labels), widest first; then all round, farther out.
         const std::vector<std::pair<double, double>> gaps = gapsAround(i);

@@ -358,7 +358,23 @@ private slots:
         for (const SceneJoint &joint : view->scene().joints) {
             if (joint.kind != JointKind::Point)
                 QVERIFY(QRectF(view->rect()).contains(mapping.toDevice(Eigen::Vector2d(joint.position.head<2>()))));
+            // The instant centre P lies out of sight at this pose: its name is not drawn in sight
+        // either, with a leader to nowhere.
+        drawing::LayoutOptions options;
+        options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
+        QStringList names;
+        for (const drawing::Primitive &item : drawing::layoutScene(view->scene(), mapping, view->sceneStyle(), options).items) {
+            if (const auto *text = std::get_if<drawing::Text>(&item.shape); text && drawing::shownOnScreen(item.medium))
+                names << text->text;
         }
+        bool pOutside = false;
+        for (const SceneJoint &joint : view->scene().joints) {
+            if (joint.label == "P")
+                pOutside = !options.labelRoom.contains(mapping.toDevice(Eigen::Vector2d(joint.position.head<2>())));
+        }
+        QVERIFY(pOutside);
+        QVERIFY2(!names.contains(QStringLiteral("P")) && names.contains(QStringLiteral("B")), qPrintable(names.join(QLatin1Char(' '))));
+    }
     }
 
     void textSizeReachesPlotsAndDrawing()
