@@ -59,9 +59,12 @@ TolerancePanel::TolerancePanel(Document *document, QWidget *parent)
     m_table->setObjectName(QStringLiteral("toleranceTable"));
     m_table->verticalHeader()->hide();
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    // Every column as wide as its text, the parameters' names whole ("x_R1 (mm)" was cut to
+    // "x_R…" with the header "Paramete" in a 340 px dock); the share takes what is left, and
+    // a narrower dock scrolls rather than cutting a name.
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setSectionResizeMode(ColumnParameter, QHeaderView::Stretch);
-    m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     m_summary->setWordWrap(true);
     m_summary->setObjectName(QStringLiteral("toleranceSummary"));
     m_result->setWordWrap(true);

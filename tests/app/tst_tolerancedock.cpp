@@ -19,6 +19,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QLabel>
+#include <QTableWidget>
 #include <QTest>
 
 using namespace pkm;
@@ -52,6 +53,24 @@ private slots:
         QVERIFY(m_window->tabifiedDockWidgets(dock("valuesDock")).contains(dock("equationsDock")));
         QVERIFY(m_window->tabifiedDockWidgets(dock("designDock")).contains(dock("mobilityDock")));
         QVERIFY(panel());
+    }
+
+    /// At 1280×720 the dock is about 340 px wide: every parameter's name and the header are
+    /// whole ("x_R1 (mm)" read "x_R…" under "Paramete"); a narrower dock scrolls instead.
+    void namesAreWhole()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
+        dock("toleranceDock")->raise();
+        QVERIFY(QTest::qWaitFor([this] { return panel()->isVisible(); }));
+        auto *table = panel()->findChild<QTableWidget *>(QStringLiteral("toleranceTable"));
+        QVERIFY(table && table->rowCount() > 4);
+        const int width = table->columnWidth(0);
+        const QFontMetrics metrics(table->font());
+        QCOMPARE_LE(metrics.horizontalAdvance(table->horizontalHeaderItem(0)->text()), width);
+        for (int row = 0; row < table->rowCount(); ++row) {
+            const QString name = table->item(row, 0)->text();
+            QVERIFY2(metrics.horizontalAdvance(name) < width, qPrintable(name));
+        }
     }
 
     /// Edits are undoable document commands; the first order follows them and the pose.
