@@ -177,6 +177,10 @@ void VariablePanel::updateRanges()
         row.spinBox->setMinimumWidth(row.spinBox->sizeHint().width());
     }
     m_updating = false;
+    // New limits' texts, a new language or text size change what the rows need: the limits
+    // beside the sliders go where the panel no longer holds them, or the spin boxes were cut
+    // at its edge (Russian in presentation mode) until the next resize.
+    fitLimits();
 }
 
 int VariablePanel::limitsWidth() const

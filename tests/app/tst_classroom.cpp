@@ -306,6 +306,29 @@ private slots:
         QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join(QStringLiteral("\n"))));
     }
 
+    /// A design opened while presenting, as `pkm-studio --lang ru --presentation` does: the
+    /// limits beside the sliders went only at the next resize, so the Russian O-X glide's spin
+    /// boxes were cut at the panel's edge, their arrows lost.
+    void spinBoxesWholeInADesignOpenedWhilePresenting()
+    {
+        MainWindow &w = *m_window;
+        QVERIFY(language::apply(QStringLiteral("ru")));
+        w.setPresentationMode(true);
+        const auto leave = qScopeGuard([&w] {
+            w.setPresentationMode(false);
+            language::apply(QStringLiteral("en"));
+        });
+        QVERIFY(w.openDesign(QStringLiteral("oxglide-prototype")));
+        QTest::qWait(150); // the queued limits, in the new language
+        QStringList cut;
+        for (QAbstractSpinBox *spin : w.variablePanel()->findChildren<QAbstractSpinBox *>()) {
+            if (spin->isVisible() && spin->visibleRegion().boundingRect() != spin->rect())
+                cut << QStringLiteral("'%1' shows %2 of %3 px").arg(spin->text())
+                           .arg(spin->visibleRegion().boundingRect().width()).arg(spin->width());
+        }
+        QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
+    }
+
     void labelsAreWholeAfterFit_data() { addEveryPresetRows(); }
 
     /// After Fit at 1280×720 no label of the 2D drawing is cut by the view's edge or covered by
