@@ -34,6 +34,8 @@
 #include <QScopeGuard>
 #include <QScreen>
 #include <QSettings>
+
+#include <memory>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTest>
@@ -311,22 +313,24 @@ private slots:
     /// boxes were cut at the panel's edge, their arrows lost.
     void spinBoxesWholeInADesignOpenedWhilePresenting()
     {
-        MainWindow &w = *m_window;
         QVERIFY(language::apply(QStringLiteral("ru")));
+        const auto english = qScopeGuard([] { language::apply(QStringLiteral("en")); });
+        std::unique_ptr<MainWindow> window(freshMainWindow(QSize(1280, 720))); // as at start-up
+        QVERIFY(window);
+        MainWindow &w = *window;
         w.setPresentationMode(true);
-        const auto leave = qScopeGuard([&w] {
-            w.setPresentationMode(false);
-            language::apply(QStringLiteral("en"));
-        });
+        const auto leave = qScopeGuard([&w] { w.setPresentationMode(false); }); // the application's font back
         QVERIFY(w.openDesign(QStringLiteral("oxglide-prototype")));
-        QTest::qWait(150); // the queued limits, in the new language
-        QStringList cut;
-        for (QAbstractSpinBox *spin : w.variablePanel()->findChildren<QAbstractSpinBox *>()) {
-            if (spin->isVisible() && spin->visibleRegion().boundingRect() != spin->rect())
-                cut << QStringLiteral("'%1' shows %2 of %3 px").arg(spin->text())
-                           .arg(spin->visibleRegion().boundingRect().width()).arg(spin->width());
-        }
-        QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
+        const auto cut = [&w] { // waited for: the limits' texts come queued, in the new language
+            QStringList cut;
+            for (QAbstractSpinBox *spin : w.variablePanel()->findChildren<QAbstractSpinBox *>()) {
+                if (spin->isVisible() && spin->visibleRegion().boundingRect() != spin->rect())
+                    cut << QStringLiteral("'%1' shows %2 of %3 px").arg(spin->text())
+                               .arg(spin->visibleRegion().boundingRect().width()).arg(spin->width());
+            }
+            return cut.join(QStringLiteral("; "));
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(cut().isEmpty(), qPrintable(cut()), 5000);
     }
 
     void labelsAreWholeAfterFit_data() { addEveryPresetRows(); }

@@ -1,0 +1,64 @@
+// The variable panel's rows in a panel of fixed width: the limits beside the sliders give way
+// whenever the rows need their room, not only when the panel is resized.
+#include "variablepanel.h"
+#include "registry.h"
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QLabel>
+#include <QTest>
+
+using namespace pkm;
+
+class TestVariablePanel : public QObject
+{
+    Q_OBJECT
+
+    /// The spin boxes that the panel's edge cuts.
+    static QStringList cutSpinBoxes(const VariablePanel &panel)
+    {
+        QStringList cut;
+        for (const QAbstractSpinBox *spin : panel.findChildren<QAbstractSpinBox *>()) {
+            if (spin->isVisible() && !panel.rect().contains(spin->geometry()))
+                cut << spin->text();
+        }
+        return cut;
+    }
+
+private slots:
+    /// A larger text (presentation mode's) widens the spin boxes a moment after the panel's
+    /// font changes, with no resize to follow: the limits must go then, or the spin boxes were
+    /// cut at the panel's edge, their arrows lost (the Russian O-X glide at 1280×720).
+    void limitsGiveWayToALargerText()
+    {
+        const Result<MechanismPtr> oxglide = createMechanism("oxglide", {});
+        QVERIFY(oxglide);
+        VariablePanel panel;
+        panel.setMechanism(*oxglide);
+        panel.setPose((*oxglide)->homePose());
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        // as wide as the rows need with their limits, and no wider
+        panel.setFixedWidth(panel.QWidget::minimumSizeHint().width() + 4);
+        QApplication::processEvents();
+        const auto limitsShown = [&panel] {
+            for (const QLabel *label : panel.findChildren<QLabel *>()) {
+                if (label->text().contains(QStringLiteral("130")) && label->isVisible())
+                    return true;
+            }
+            return false;
+        };
+        QVERIFY(limitsShown());
+        QVERIFY(cutSpinBoxes(panel).isEmpty());
+
+        QFont larger = panel.font();
+        larger.setPointSizeF(1.6 * larger.pointSizeF());
+        panel.setFont(larger);
+        QTest::qWait(50); // the queued widths, and the layout
+        QTRY_VERIFY(!limitsShown());
+        QVERIFY2(cutSpinBoxes(panel).isEmpty(), qPrintable(cutSpinBoxes(panel).join(QStringLiteral(", "))));
+    }
+};
+
+QTEST_MAIN(TestVariablePanel)
+#include "tst_variablepanel.moc"
