@@ -113,8 +113,7 @@ void WorkspaceMapView::updateCapabilityTitle()
                 : tr("Requirements met in %1 of the workspace %2 (%3 %)")
                       .arg(formatQuantity(m_specificationArea, units::squareMillimetre, 0), area,
                            QLocale().toString(share, 'f', 1)));
-        m_colorScale->setLabel(plotstyle::wrapped(tr("green: every requirement holds; grey: one fails"),
-                                                  m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
+        setScaleLabel(tr("green: every requirement holds; grey: one fails"));
         QStringList lines;
         const capability::Actuators actuators = capability::actuatorsOf(*m_mechanism);
         for (const capability::Requirement &requirement : m_requirements)
@@ -127,10 +126,9 @@ void WorkspaceMapView::updateCapabilityTitle()
     plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4%5")
                                           .arg(area, toQString(m_shownSymbol), significant(m_summary.min),
                                                significant(m_summary.max), unit));
-    m_colorScale->setLabel(plotstyle::wrapped(tr("%1 (%2): %3, colours end at %4")
-                                                  .arg(toQString(m_shownSymbol), coreLabel(m_shownUnit),
-                                                       coreLabel(m_shownLabel), significant(m_colourLimit)),
-                                              m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
+    setScaleLabel(tr("%1 (%2): %3, colours end at %4")
+                      .arg(toQString(m_shownSymbol), coreLabel(m_shownUnit), coreLabel(m_shownLabel),
+                           significant(m_colourLimit)));
     m_plot->setToolTip(m_shownQuantity == MapQuantity::ToleranceWorst
             ? tr("The first-order worst-case error of the platform point at each point of the workspace, from the "
                  "tolerances of the Tolerances panel: ∞ at a direct singularity.")

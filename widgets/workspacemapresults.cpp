@@ -230,7 +230,7 @@ void WorkspaceMapView::updateTitle()
     }
     if (m_mapBounds.isEmpty()) {
         plotstyle::setFittedText(m_title, tr("Workspace map"));
-        m_colorScale->setLabel(QString());
+        setScaleLabel(QString());
         return;
     }
     if (m_summary.reachableCells == 0) {
@@ -240,8 +240,7 @@ void WorkspaceMapView::updateTitle()
         plotstyle::setFittedText(m_title, tr("Workspace %1 · orientation range of φ from %2° to %3°")
                                               .arg(formatQuantity(shownArea(), units::squareMillimetre, 0),
                                                    significant(m_summary.min / degree), significant(m_summary.max / degree)));
-        m_colorScale->setLabel(plotstyle::wrapped(tr("orientation range of φ (°): the angles that hold the platform"),
-                                                  m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
+        setScaleLabel(tr("orientation range of φ (°): the angles that hold the platform"));
         m_plot->setToolTip(tr("At each point, the total width of the platform angles φ at which the legs can hold it "
                               "there; the map's outline is the workspace at φ_map."));
         return;
@@ -254,7 +253,7 @@ void WorkspaceMapView::updateTitle()
     // Along the scale, broken into lines where the map is short (a projector at 1280×720).
     const QString scaleLabel = condition ? tr("κ(J), log scale (colours end at %1)").arg(significant(m_colourLimit))
                                          : tr("det J (colours clipped at ±%1)").arg(significant(m_colourLimit));
-    m_colorScale->setLabel(plotstyle::wrapped(scaleLabel, m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
+    setScaleLabel(scaleLabel);
     m_plot->setToolTip(condition
             ? tr("The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the "
                  "singularities.")
@@ -361,11 +360,25 @@ double WorkspaceMapView::valueAt(const Eigen::Vector2d &pointMm) const
 
 /// Runs after every layout (so the axis rect's size is known) and gives both axes the same
 /// mm per pixel: the whole map (and comparison) fitted, or the user's zoom kept.
+void WorkspaceMapView::setScaleLabel(const QString &text)
+{
+    m_scaleLabel = text;
+    m_colorScale->setLabel(plotstyle::wrapped(text, m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
+}
+
 void WorkspaceMapView::fitView()
 {
     const QRect pixels = m_plot->axisRect()->rect();
     if (pixels.width() < 10 || pixels.height() < 10)
         return;
+    // The scale's label broken for the height the layout gave it: broken for the height before
+    // (a legend grown by a Russian line, presentation mode's text), "det J (цвета ограничены
+    // на" ran past the scale's top and lost its "d".
+    const QString label = plotstyle::wrapped(m_scaleLabel, m_colorScale->axis()->labelFont(), pixels.height());
+    if (label != m_colorScale->label()) {
+        m_colorScale->setLabel(label);
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    }
     QCPAxis *x = m_plot->xAxis, *y = m_plot->yAxis;
     Eigen::Vector2d centre;
     double mmPerPixel = 0.0;

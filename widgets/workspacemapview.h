@@ -158,6 +158,9 @@ private:
     void retranslateToleranceItem();
     void updateLegend();
     void fitView();
+    /// The colour scale's label, broken into lines for the scale's height now and again after
+    /// every layout (fitView()).
+    void setScaleLabel(const QString &text);
     void resetView();
     void retranslate();
 
@@ -194,6 +197,7 @@ private:
     Eigen::AlignedBox2d m_mapBounds;        ///< grid bounds of the map, mm (empty: none)
     Eigen::AlignedBox2d m_comparisonBounds; ///< of the comparison's grid, mm (empty: none)
     bool m_userView = false; ///< the user zoomed or dragged: keep the view on new maps
+    QString m_scaleLabel; ///< the colour scale's label before it is broken into lines
     int m_refits = 0; ///< relayouts in a row asked by fitView(), to stop a ping-pong of margins
     bool m_hasPose = false;
     Eigen::Vector2d m_pose = Eigen::Vector2d::Zero();

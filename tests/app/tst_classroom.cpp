@@ -278,6 +278,17 @@ private slots:
             plot->replot(QCustomPlot::rpImmediateRefresh);
             const QRect room = plot->rect().adjusted(-1, -1, 1, 1);
             for (QCPLayoutElement *element : plot->plotLayout()->elements(true)) {
+                if (auto *scale = qobject_cast<QCPColorScale *>(element)) {
+                    // along the scale: each line within its length ("det J (цвета ограничены на"
+                    // lost its "d" past the top)
+                    const QFontMetrics metrics(scale->axis()->labelFont());
+                    const int length = scale->axis()->axisRect()->height();
+                    for (const QString &line : scale->label().split(QLatin1Char('\n'))) {
+                        if (metrics.horizontalAdvance(line) > length)
+                            clipped << QStringLiteral("colour scale label '%1' needs %2 px, has %3 px").arg(line)
+                                           .arg(metrics.horizontalAdvance(line)).arg(length);
+                    }
+                }
                 if (auto *title = qobject_cast<QCPTextElement *>(element)) {
                     const QFontMetrics metrics(title->font());
                     for (const QString &line : title->text().split(QLatin1Char('\n'))) {
