@@ -88,6 +88,16 @@ bool writeFile(const QString &path, const QByteArray &bytes)
     return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
 }
 
+/// Shows `plot` and lays it out for the screen; false if it never appeared.
+bool shownAndLaidOut(QCustomPlot *plot)
+{
+    plot->show();
+    if (!QTest::qWaitForWindowExposed(plot))
+        return false;
+    plot->replot();
+    return true;
+}
+
 /// The menu a context menu request opened on `plot`, if any.
 QMenu *openMenu(QCustomPlot *plot)
 {
@@ -197,9 +207,7 @@ private slots:
     {
         // The picture lays the plot out at its own size for the drawing only.
         auto plot = makePlot();
-        plot->show();
-        QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
-        plot->replot();
+        QVERIFY(shownAndLaidOut(plot.get()));
         const QRect axisRect = plot->axisRect()->rect();
         const QCPRange x = plot->xAxis->range(), y = plot->yAxis->range();
         const QSize size = plot->size();
@@ -224,9 +232,7 @@ private slots:
         // redraws its layer alone, with the layout it finds, so the layout must be the
         // screen's again or the cursor stands away from the pose.
         auto plot = makePlot();
-        plot->show();
-        QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
-        plot->replot();
+        QVERIFY(shownAndLaidOut(plot.get()));
         const QRect axisRect = plot->axisRect()->rect();
         const QCPRange x = plot->xAxis->range(), y = plot->yAxis->range();
         const QImage frame = plotImage(plot.get(), QSize(640, 720), 1.5);
