@@ -232,12 +232,16 @@ void ScenePainter::paintScaleBar(
     const double margin = 16.0 * px, tick = 8.0 * px;
     const QPointF right(area.right() - margin, area.bottom() - margin);
     const QPointF left = right - QPointF(barLength, 0.0);
-    const QRectF textBox(left.x(), left.y() - tick - metrics.height() - 2.0 * px, barLength, metrics.height());
+    // Centred over the bar; where large text is wider than the bar ("100 mm" at presentation
+    // mode's size over a bar of 90 px), ending with the bar, whole, never cut to "100 m".
+    const double textWidth = metrics.horizontalAdvance(text);
+    const double textLeft = textWidth <= barLength ? left.x() : right.x() - textWidth;
+    const QRectF textBox(textLeft, left.y() - tick - metrics.height() - 2.0 * px, right.x() - textLeft, metrics.height());
 
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     const double pad = 6.0 * px;
-    paintKnockout(painter, QRectF(QPointF(left.x() - pad, textBox.top() - pad), QPointF(right.x() + pad, right.y() + pad)),
+    paintKnockout(painter, QRectF(QPointF(textLeft - pad, textBox.top() - pad), QPointF(right.x() + pad, right.y() + pad)),
                   style);
     QPen pen(style.ink, 2.0 * px, Qt::SolidLine, Qt::FlatCap);
     painter.setPen(pen);
@@ -246,7 +250,7 @@ void ScenePainter::paintScaleBar(
     painter.drawLine(right, right - QPointF(0.0, tick));
     painter.drawLine(0.5 * (left + right), 0.5 * (left + right) - QPointF(0.0, 0.5 * tick));
     painter.setFont(font);
-    painter.drawText(textBox, Qt::AlignCenter, text);
+    painter.drawText(textBox, Qt::AlignCenter | Qt::TextDontClip, text);
     painter.restore();
 }
 

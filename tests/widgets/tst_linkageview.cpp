@@ -130,6 +130,7 @@ private slots:
     void renderDrawsMotorBody_data() { thetaTable(); }
     void renderDrawsMotorBody();
     void degenerateScenesDoNotCrash();
+    void scaleBarTextIsWhole();
     void rendersIntoPdf();
     void paintIsCountedAndTimed();
 
@@ -444,6 +445,28 @@ void TestLinkageView::renderDrawsMotorBody()
     const Eigen::Vector2d screwPoint = o + (actuator.bodyLength + 4.0) * (a - o).normalized();
     const QColor screw = image.pixelColor(mapping.toDevice(screwPoint).toPoint());
     QVERIFY(qGray(screw.rgb()) > 110 && qGray(screw.rgb()) < 235);
+}
+
+/// The scale bar's text wider than the bar (presentation mode's large text over a bar of about
+/// 90 px) ends with the bar, whole: it was cut at the bar's ends, "100 mm" to "100 m".
+void TestLinkageView::scaleBarTextIsWhole()
+{
+    SceneStyle style;
+    style.fontPixels = 40.0;
+    QImage image(400, 200, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    ViewMapping mapping;
+    mapping.scale = 0.9; // px per mm: a bar of 100 mm is 90 px
+    QPainter painter(&image);
+    ScenePainter::paintScaleBar(painter, QRectF(image.rect()), mapping, style);
+    painter.end();
+    const int barLeft = 400 - 16 - 90;
+    int inkLeftOfBar = 0;
+    for (int y = 0; y < 200 - 16 - 8; ++y) {
+        for (int x = 0; x < barLeft - 2; ++x)
+            inkLeftOfBar += qGray(image.pixel(x, y)) < 128;
+    }
+    QCOMPARE_GT(inkLeftOfBar, 20); // the first digits stand left of the bar
 }
 
 void TestLinkageView::degenerateScenesDoNotCrash()
