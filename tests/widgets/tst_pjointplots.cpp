@@ -599,6 +599,12 @@ void TestPJointPlots::thetaTicksNeverCrowd()
         QVERIFY2(step == 90.0 || pixels * step / 180 >= 44.0, qPrintable(QString::number(pixels)));
     }
     QCOMPARE(pjointcurves::thetaStep(30, 100), 5.0);
+    // twice the text (presentation mode): twice the room a step
+    QCOMPARE(pjointcurves::thetaStep(180, 400, 68.0), 45.0);
+    for (int pixels = 80; pixels <= 1200; pixels += 10) {
+        const double step = pjointcurves::thetaStep(180, pixels, 68.0);
+        QVERIFY2(step == 90.0 || pixels * step / 180 >= 78.0, qPrintable(QString::number(pixels)));
+    }
 }
 
 QTEST_MAIN(TestPJointPlots)

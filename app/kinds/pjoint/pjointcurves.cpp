@@ -181,15 +181,15 @@ double angleStep(double span)
     return 90.0;
 }
 
-double thetaStep(double span, int pixels)
+double thetaStep(double span, int pixels, double labelPixels)
 {
     if (span <= 40.0)
         return 5.0;
-    if (pixels * 15.0 / span >= 64.0)
+    // 15° steps with room to spare (64 px for a 34 px label), others with 10 px between labels
+    if (pixels * 15.0 / span >= labelPixels * 64.0 / 34.0)
         return 15.0;
-    // a label "−60°" at 11 pt is ~34 px wide: below ~44 px a step, they run into each other
     for (const double step : {30.0, 45.0})
-        if (pixels * step / span >= 44.0)
+        if (pixels * step / span >= labelPixels + 10.0)
             return step;
     return 90.0;
 }

@@ -103,6 +103,8 @@ double angleStep(double span);
 
 /// θ tick step, °: every 15° where the labels have room (~64 px a step at 11 pt), else 30°,
 /// 45° or 90° in a narrower plot (at least ~44 px a step), so that the labels never overlap.
-double thetaStep(double span, int pixels);
+/// `labelPixels` is the width of a label such as "−60°" (~34 px at 11 pt): presentation mode's
+/// larger text needs wider steps, or fig. 8 read "−90°−60°−30°".
+double thetaStep(double span, int pixels, double labelPixels = 34.0);
 
 } // namespace pkm::pjointcurves

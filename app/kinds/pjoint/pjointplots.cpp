@@ -28,8 +28,9 @@ void fitThetaTicks(QCustomPlot *plot)
 {
     const int laidOut = plot->axisRect()->width();
     const int axisPixels = laidOut > 0 ? laidOut : plot->width() - 110;
+    const double label = QFontMetricsF(plot->xAxis->tickLabelFont()).horizontalAdvance(QStringLiteral("−60°"));
     qSharedPointerCast<QCPAxisTickerFixed>(plot->xAxis->ticker())
-        ->setTickStep(pjointcurves::thetaStep(plot->xAxis->range().size(), axisPixels));
+        ->setTickStep(pjointcurves::thetaStep(plot->xAxis->range().size(), axisPixels, label));
 }
 
 using pjointcurves::familyK;
