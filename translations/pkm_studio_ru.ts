@@ -4112,6 +4112,42 @@ Please verify the correct file name was given.</source>
         <source>near a combined singularity: one actuator moves the platform less than 1/1000, another more than 1000 times what it does at the home pose</source>
         <translation>вблизи комбинированного особого положения: один привод перемещает платформу менее чем на 1/1000, другой более чем в 1000 раз сильнее, чем в исходном положении</translation>
     </message>
+    <message>
+        <source>mm³</source>
+        <translation>мм³</translation>
+    </message>
+    <message>
+        <source>mm³/rad</source>
+        <translation>мм³/рад</translation>
+    </message>
+    <message>
+        <source>mm⁴/rad</source>
+        <translation>мм⁴/рад</translation>
+    </message>
+    <message>
+        <source>mm⁵/rad</source>
+        <translation>мм⁵/рад</translation>
+    </message>
+    <message>
+        <source>mm⁴/rad²</source>
+        <translation>мм⁴/рад²</translation>
+    </message>
+    <message>
+        <source>mm⁵/rad²</source>
+        <translation>мм⁵/рад²</translation>
+    </message>
+    <message>
+        <source>mm⁶/rad²</source>
+        <translation>мм⁶/рад²</translation>
+    </message>
+    <message>
+        <source>mm⁶/rad³</source>
+        <translation>мм⁶/рад³</translation>
+    </message>
+    <message>
+        <source>mm⁷/rad³</source>
+        <translation>мм⁷/рад³</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

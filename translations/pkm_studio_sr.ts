@@ -4112,6 +4112,42 @@ Please verify the correct file name was given.</source>
         <source>near a combined singularity: one actuator moves the platform less than 1/1000, another more than 1000 times what it does at the home pose</source>
         <translation>близу комбинованог сингуларитета: један погон помера платформу мање од 1/1000, други више од 1000 пута више него у почетном положају</translation>
     </message>
+    <message>
+        <source>mm³</source>
+        <translation>mm³</translation>
+    </message>
+    <message>
+        <source>mm³/rad</source>
+        <translation>mm³/rad</translation>
+    </message>
+    <message>
+        <source>mm⁴/rad</source>
+        <translation>mm⁴/rad</translation>
+    </message>
+    <message>
+        <source>mm⁵/rad</source>
+        <translation>mm⁵/rad</translation>
+    </message>
+    <message>
+        <source>mm⁴/rad²</source>
+        <translation>mm⁴/rad²</translation>
+    </message>
+    <message>
+        <source>mm⁵/rad²</source>
+        <translation>mm⁵/rad²</translation>
+    </message>
+    <message>
+        <source>mm⁶/rad²</source>
+        <translation>mm⁶/rad²</translation>
+    </message>
+    <message>
+        <source>mm⁶/rad³</source>
+        <translation>mm⁶/rad³</translation>
+    </message>
+    <message>
+        <source>mm⁷/rad³</source>
+        <translation>mm⁷/rad³</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

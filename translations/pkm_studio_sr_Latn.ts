@@ -4112,6 +4112,42 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>near a combined singularity: one actuator moves the platform less than 1/1000, another more than 1000 times what it does at the home pose</source>
         <translation>blizu kombinovanog singulariteta: jedan pogon pomera platformu manje od 1/1000, drugi više od 1000 puta više nego u početnom položaju</translation>
     </message>
+    <message>
+        <source>mm³</source>
+        <translation>mm³</translation>
+    </message>
+    <message>
+        <source>mm³/rad</source>
+        <translation>mm³/rad</translation>
+    </message>
+    <message>
+        <source>mm⁴/rad</source>
+        <translation>mm⁴/rad</translation>
+    </message>
+    <message>
+        <source>mm⁵/rad</source>
+        <translation>mm⁵/rad</translation>
+    </message>
+    <message>
+        <source>mm⁴/rad²</source>
+        <translation>mm⁴/rad²</translation>
+    </message>
+    <message>
+        <source>mm⁵/rad²</source>
+        <translation>mm⁵/rad²</translation>
+    </message>
+    <message>
+        <source>mm⁶/rad²</source>
+        <translation>mm⁶/rad²</translation>
+    </message>
+    <message>
+        <source>mm⁶/rad³</source>
+        <translation>mm⁶/rad³</translation>
+    </message>
+    <message>
+        <source>mm⁷/rad³</source>
+        <translation>mm⁷/rad³</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -428,6 +428,78 @@ private slots:
         }
     }
 
+    /// The determinants' units follow the legs' types (units::power): a design scaled by 2 in
+    /// every length, at the scaled pose, has each determinant scaled by 2 to the power of mm in
+    /// its unit, for random designs of every leg type and platform.
+    void determinantUnitsFollowTheLegs()
+    {
+        auto lengthPower = [](const Unit &unit) {
+            for (const units::PowerUnit &p : units::powerUnits) {
+                if (p.unit.symbol == unit.symbol)
+                    return p.length;
+            }
+            return 99;
+        };
+        std::mt19937 g(11);
+        int checked = 0;
+        for (int trial = 0; trial < 400 && checked < 60; ++trial) {
+            const int platform = trial % 3;
+            ParameterSet p{{"platform", platform}};
+            std::array<int, 3> types{};
+            for (int i = 1; i <= 3; ++i) {
+                types[std::size_t(i - 1)] = platform == 1 ? (uniform(g, 0, 1) < 0.5 ? 1 : 3) : int(uniform(g, 0, 4));
+                randomLeg(g, p, i, types[std::size_t(i - 1)], platform != 0);
+            }
+            auto made = createMechanism("planar-parallel", p);
+            if (!made)
+                continue;
+            ParameterSet scaled = p;
+            for (int i = 1; i <= 3; ++i) {
+                const std::string n = std::to_string(i);
+                for (const char *length : {"A", "B"}) {
+                    scaled[key(length, n, "x")] *= 2;
+                    scaled[key(length, n, "y")] *= 2;
+                }
+                for (const char *length : {"r", "l", "a"})
+                    scaled[key(length, n, "")] *= 2;
+                if (types[std::size_t(i - 1)] != 0) {
+                    scaled[key("q", n, "_min")] *= 2;
+                    scaled[key("q", n, "_max")] *= 2;
+                }
+            }
+            auto madeScaled = createMechanism("planar-parallel", scaled);
+            QVERIFY(madeScaled);
+            const Mechanism &m = **made, &m2 = **madeScaled;
+            const Pose pose = m.homePose();
+            Singularity s;
+            const std::vector<double> v = evaluated(m, pose, &s);
+            if (s.margin < 0.05)
+                continue;
+            const int n = platform == 2 ? 3 : 2;
+            Pose reference = pose;
+            for (int i = 0; i < n; ++i) {
+                if (types[std::size_t(i)] != 0)
+                    reference.inputs[i] *= 2;
+            }
+            reference.outputs[0] *= 2;
+            reference.outputs[1] *= 2;
+            const auto pose2 = m2.solveDirect(reference.inputs, &reference);
+            QVERIFY(pose2 && (pose2->outputs - reference.outputs).norm() < 1e-6);
+            const std::vector<double> v2 = evaluated(m2, *pose2);
+            for (const char *name : {"det_J", "det_Jq", "det_Jx"}) {
+                const ReportEntry *e = m.reportLayout().find(name);
+                QVERIFY(e);
+                const int power = lengthPower(e->unit);
+                QVERIFY2(power != 99, name);
+                const double ratio = v2[std::size_t(e->offset)] / v[std::size_t(e->offset)];
+                QVERIFY2(std::abs(ratio / std::pow(2.0, power) - 1) < 1e-6,
+                         qPrintable(QString("trial %1 %2 ratio %3 unit %4").arg(trial).arg(name).arg(ratio).arg(e->unit.symbol.data())));
+            }
+            ++checked;
+        }
+        QVERIFY(checked >= 30);
+    }
+
     void pjointLegs()
     {
         PlanarLeg leg;

@@ -23,8 +23,8 @@ using fivebar::pi;
 using fivebar::Vectors;
 using fivebar::vectorsOf;
 
-constexpr Unit millimetre4{QT_TRANSLATE_NOOP("core", "mm⁴"), 1.0};
-constexpr Unit radianPerMillimetre2{QT_TRANSLATE_NOOP("core", "rad²/mm²"), 1.0};
+constexpr Unit millimetre4 = units::power(4, 0);
+constexpr Unit radianPerMillimetre2 = units::power(-2, 2);
 
 enum Slot {
     SlotTheta1, SlotTheta4, SlotX, SlotY,

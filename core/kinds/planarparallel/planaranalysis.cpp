@@ -20,6 +20,29 @@ std::string number(int leg)
 {
     return std::to_string(leg + 1);
 }
+
+/// Powers of mm and rad (units::power) of the determinants, which follow the legs' types.
+/// Row i of J_q is ∂g_i/∂q_i with g_i in mm²: mm²/rad for a crank (R̲RR, and П̲RR, whose row
+/// is by θ), mm for a slider or strut. Row i of J_x is mm, times ∂d/∂θ (mm/rad) for a П̲RR;
+/// its columns x, y are bare and φ's is mm (a moment arm). J maps Ẋ (mm, mm, rad) onto q̇.
+struct DeterminantUnits {
+    Unit J, Jq, Jx;
+};
+DeterminantUnits determinantUnits(const PlanarParallelDesign &design)
+{
+    const int n = design.legCount();
+    int jLength = -2, jAngle = n == 3 ? -1 : 0, qLength = 0, qAngle = 0, xLength = n == 3 ? 1 : 0, xAngle = 0;
+    for (int i = 0; i < n; ++i) {
+        const LegType type = design.legs[std::size_t(i)].type;
+        const bool crank = type == LegType::RRR || type == LegType::PiRR;
+        (type == LegType::RRR ? jAngle : jLength) += 1;
+        qLength += crank ? 2 : 1;
+        qAngle -= crank ? 1 : 0;
+        xLength += type == LegType::PiRR ? 2 : 1;
+        xAngle -= type == LegType::PiRR ? 1 : 0;
+    }
+    return {units::power(jLength, jAngle), units::power(qLength, qAngle), units::power(xLength, xAngle)};
+}
 } // namespace
 
 void PlanarParallel::jacobianParts(const Pose &pose, Eigen::Matrix3d &jq, Eigen::Matrix3d &jx) const
@@ -108,9 +131,15 @@ void PlanarParallel::buildReport()
     l.add(G::Jacobian, "Jq", "J_q", QT_TRANSLATE_NOOP("core", "J_q = diag(∂g_i/∂q_i)"), units::none, 3, n, n);
     l.add(G::Jacobian, "Jx", "J_x", QT_TRANSLATE_NOOP("core", "J_x rows −∂g_i/∂X"), units::none, 3, n, n);
     l.add(G::Jacobian, "J", "J", QT_TRANSLATE_NOOP("core", "q̇ = J·Ẋ, J = J_q⁻¹·J_x"), units::none, 4, n, n);
-    l.add(G::Jacobian, "det_J", "det J", QT_TRANSLATE_NOOP("core", "determinant of J (0: direct, ∞: inverse singularity)"), units::none, 4);
-    l.add(G::Jacobian, "det_Jq", "det J_q", QT_TRANSLATE_NOOP("core", "0 at an inverse singularity"), units::none, 1);
-    l.add(G::Jacobian, "det_Jx", "det J_x", QT_TRANSLATE_NOOP("core", "0 at a direct singularity"), units::none, 1);
+    // det J of a five-bar is about 10⁻⁴ rad²/mm²: two more decimals per power of mm⁻¹ keep
+    // four figures of it (five-bar kind: 8).
+    const DeterminantUnits du = determinantUnits(m_design);
+    const int jLength = int(std::count_if(m_design.legs.begin(), m_design.legs.begin() + n,
+                                          [](const PlanarLeg &leg) { return leg.type != LegType::RRR; }));
+    l.add(G::Jacobian, "det_J", "det J", QT_TRANSLATE_NOOP("core", "determinant of J (0: direct, ∞: inverse singularity)"), du.J,
+          4 + 2 * (2 - jLength));
+    l.add(G::Jacobian, "det_Jq", "det J_q", QT_TRANSLATE_NOOP("core", "0 at an inverse singularity"), du.Jq, 1);
+    l.add(G::Jacobian, "det_Jx", "det J_x", QT_TRANSLATE_NOOP("core", "0 at a direct singularity"), du.Jx, 1);
     l.add(G::Jacobian, "cond", "κ(J)", QT_TRANSLATE_NOOP("core", "condition number of J"), units::none, 3);
     l.add(G::Derived, "margin", "m", QT_TRANSLATE_NOOP("core", "distance from the nearest singularity (0 … 1)"), units::none, 4);
     // exact values at singular poses (mechanism.h: AtSingularity)
