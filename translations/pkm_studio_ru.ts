@@ -6701,10 +6701,6 @@ Please verify the correct file name was given.</source>
         <translation>Рабочее пространство пусто при рабочем режиме и варианте сборки конструкции</translation>
     </message>
     <message>
-        <source>Workspace %1 · %2 from %3 to %4</source>
-        <translation>Рабочее пространство %1 · %2 от %3 до %4</translation>
-    </message>
-    <message>
         <source>κ(J), log scale (colours end at %1)</source>
         <translation>κ(J), логарифмическая шкала (цвета до %1)</translation>
     </message>
@@ -6817,10 +6813,6 @@ Please verify the correct file name was given.</source>
         <translation>Требуется: %1</translation>
     </message>
     <message>
-        <source>Workspace %1 · %2 from %3 to %4%5</source>
-        <translation>Рабочее пространство %1 · %2 от %3 до %4%5</translation>
-    </message>
-    <message>
         <source>%1 (%2): %3, colours end at %4</source>
         <translation>%1 (%2): %3, цвета до %4</translation>
     </message>
@@ -6843,6 +6835,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>worst-case error from the tolerances</source>
         <translation>наибольшая ошибка от допусков</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4%5 at the grid points</source>
+        <translation>Рабочее пространство %1 · %2 от %3 до %4%5 в узлах сетки</translation>
+    </message>
+    <message>
+        <source>%1 at φ = %2</source>
+        <translation>%1 при φ = %2</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4 at the grid points</source>
+        <translation>Рабочее пространство %1 · %2 от %3 до %4 в узлах сетки</translation>
     </message>
 </context>
 <context>

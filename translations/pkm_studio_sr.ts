@@ -6701,10 +6701,6 @@ Please verify the correct file name was given.</source>
         <translation>Радни простор је празан у радном моду и начину склапања ове конструкције</translation>
     </message>
     <message>
-        <source>Workspace %1 · %2 from %3 to %4</source>
-        <translation>Радни простор %1 · %2 од %3 до %4</translation>
-    </message>
-    <message>
         <source>κ(J), log scale (colours end at %1)</source>
         <translation>κ(J), логаритамска скала (боје до %1)</translation>
     </message>
@@ -6817,10 +6813,6 @@ Please verify the correct file name was given.</source>
         <translation>Захтева се: %1</translation>
     </message>
     <message>
-        <source>Workspace %1 · %2 from %3 to %4%5</source>
-        <translation>Радни простор %1 · %2 од %3 до %4%5</translation>
-    </message>
-    <message>
         <source>%1 (%2): %3, colours end at %4</source>
         <translation>%1 (%2): %3, боје до %4</translation>
     </message>
@@ -6843,6 +6835,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>worst-case error from the tolerances</source>
         <translation>највећа грешка од толеранција</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4%5 at the grid points</source>
+        <translation>Радни простор %1 · %2 од %3 до %4%5 у чворовима мреже</translation>
+    </message>
+    <message>
+        <source>%1 at φ = %2</source>
+        <translation>%1 при φ = %2</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4 at the grid points</source>
+        <translation>Радни простор %1 · %2 од %3 до %4 у чворовима мреже</translation>
     </message>
 </context>
 <context>

@@ -6701,10 +6701,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Radni prostor je prazan u radnom modu i načinu sklapanja ove konstrukcije</translation>
     </message>
     <message>
-        <source>Workspace %1 · %2 from %3 to %4</source>
-        <translation>Radni prostor %1 · %2 od %3 do %4</translation>
-    </message>
-    <message>
         <source>κ(J), log scale (colours end at %1)</source>
         <translation>κ(J), logaritamska skala (boje do %1)</translation>
     </message>
@@ -6817,10 +6813,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>Zahteva se: %1</translation>
     </message>
     <message>
-        <source>Workspace %1 · %2 from %3 to %4%5</source>
-        <translation>Radni prostor %1 · %2 od %3 do %4%5</translation>
-    </message>
-    <message>
         <source>%1 (%2): %3, colours end at %4</source>
         <translation>%1 (%2): %3, boje do %4</translation>
     </message>
@@ -6843,6 +6835,18 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>worst-case error from the tolerances</source>
         <translation>najveća greška od tolerancija</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4%5 at the grid points</source>
+        <translation>Radni prostor %1 · %2 od %3 do %4%5 u čvorovima mreže</translation>
+    </message>
+    <message>
+        <source>%1 at φ = %2</source>
+        <translation>%1 pri φ = %2</translation>
+    </message>
+    <message>
+        <source>Workspace %1 · %2 from %3 to %4 at the grid points</source>
+        <translation>Radni prostor %1 · %2 od %3 do %4 u čvorovima mreže</translation>
     </message>
 </context>
 <context>

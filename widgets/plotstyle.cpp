@@ -224,10 +224,8 @@ const char *fullTextProperty = "pkmFullText"; ///< the text before it was broken
 void setFittedText(QCPTextElement *element, const QString &text)
 {
     // θ̇ has no precomposed letter: the combining dot after θ was drawn apart from it, at the
-    // start of the line above, in the figures' subtitles. dθ/dt says the same, as the speed
-    // plot's axis does; ḋ is one letter and stays.
-    QString plain = symbolPlain(text); // "T = J·Fₘₐₓ"
-    plain.replace(QStringLiteral("θ\u0307"), QStringLiteral("dθ/dt"));
+    // start of the line above, in the figures' subtitles; symbolPlain() spells it dθ/dt.
+    const QString plain = symbolPlain(text); // "T = J·Fₘₐₓ"
     element->setProperty(fullTextProperty, plain);
     fitText(element);
 }

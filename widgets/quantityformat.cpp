@@ -26,7 +26,32 @@ QString coreLabel(std::string_view label)
     if (label.empty())
         return {};
     const std::string source(label);
-    return QCoreApplication::translate("core", source.c_str());
+    return spelledDots(QCoreApplication::translate("core", source.c_str()));
+}
+
+QString spelledDots(const QString &input)
+{
+    const QChar dot(0x0307), twoDots(0x0308);
+    if (!input.contains(dot) && !input.contains(twoDots))
+        return input;
+    QString text;
+    for (qsizetype i = 0; i < input.size(); ++i) {
+        const QChar base = input[i];
+        const QChar mark = i + 1 < input.size() ? input[i + 1] : QChar();
+        const bool greek = base.unicode() >= 0x0370 && base.unicode() <= 0x03FF;
+        if ((mark != dot && mark != twoDots) || !(greek || base == QLatin1Char('q'))) {
+            text += base;
+            continue;
+        }
+        const QString derivative = mark == dot ? QStringLiteral("d%1/dt").arg(base) : QStringLiteral("d²%1/dt²").arg(base);
+        i += 1;
+        // a power after it belongs to the whole derivative: (dθ/dt)²
+        if (i + 1 < input.size() && QStringLiteral("²³").contains(input[i + 1]))
+            text += QLatin1Char('(') + derivative + QLatin1Char(')');
+        else
+            text += derivative;
+    }
+    return text;
 }
 
 namespace {
@@ -105,8 +130,9 @@ QChar subscriptOf(QChar c)
 }
 } // namespace
 
-QString symbolHtml(const QString &text)
+QString symbolHtml(const QString &input)
 {
+    const QString text = spelledDots(input);
     QString html;
     qsizetype done = 0;
     for (qsizetype at = text.indexOf(QLatin1Char('_')); at >= 0; at = text.indexOf(QLatin1Char('_'), at + 1)) {
@@ -121,8 +147,9 @@ QString symbolHtml(const QString &text)
     return html + text.mid(done).toHtmlEscaped();
 }
 
-QString symbolPlain(const QString &text)
+QString symbolPlain(const QString &input)
 {
+    const QString text = spelledDots(input);
     QString plain;
     qsizetype done = 0;
     for (qsizetype at = text.indexOf(QLatin1Char('_')); at >= 0; at = text.indexOf(QLatin1Char('_'), at + 1)) {

@@ -21,6 +21,12 @@ QString unitText(const Unit &unit);
 /// ReportEntry::label, ReportText::label and ::text, ModeAlternative::label, SingularCurve::label,
 /// MechanismKind::title), marked there with QT_TRANSLATE_NOOP("core", …), in the current language.
 QString coreLabel(std::string_view label);
+/// `text` with a time derivative that the screen's fonts cannot draw spelled out: a combining
+/// dot (U+0307) or two (U+0308) over a Greek letter or q has no mark position in DejaVu Sans
+/// and is left out or drawn apart, so "θ̇" reads "dθ/dt", "θ̈" "d²θ/dt²" and "θ̇²" "(dθ/dt)²".
+/// Precomposed letters (ḋ, ẋ, Ẋ) and Latin ones the font places (d̈) stay. coreLabel(),
+/// symbolHtml() and symbolPlain() apply it: every text on screen, in pictures and in video.
+QString spelledDots(const QString &text);
 /// The program's symbols write a subscript after '_' ("F_max", "det J_q", "x_AB", "T_max₁"):
 /// the one display rule for them. symbolHtml() escapes `text` and lowers each subscript,
 /// "F<sub>max</sub>", for rich text (labels, the values panel, the equations); a run of letters

@@ -71,6 +71,24 @@ void SymbolDelegate::paint(QPainter *painter, const QStyleOptionViewItem &option
                    item.palette.color(selected ? QPalette::HighlightedText : QPalette::Text));
 }
 
+QSize SymbolDelegate::sizeHint(const QStyleOptionViewItem &option, const QModelIndex &index) const
+{
+    QSize size = QStyledItemDelegate::sizeHint(option, index);
+    QStyleOptionViewItem item = option;
+    initStyleOption(&item, index);
+    if (item.text.isEmpty())
+        return size;
+    // The style's row is the font's line height; a mark over a capital (Ẋ) stands above the
+    // line's ascent and would be cut off by the row above it. The text is centred in its row,
+    // so the row grows by twice the larger overhang.
+    const QFontMetrics metrics(item.font);
+    const QRect ink = metrics.tightBoundingRect(spelledDots(item.text));
+    const int overhang = std::max({0, -ink.top() - metrics.ascent(), ink.bottom() - metrics.descent()});
+    if (overhang > 0)
+        size.setHeight(std::max(size.height(), metrics.height() + 2 * overhang + 2));
+    return size;
+}
+
 SymbolComboBox::SymbolComboBox(QWidget *parent)
     : QComboBox(parent)
 {

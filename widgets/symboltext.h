@@ -26,6 +26,8 @@ class SymbolDelegate : public QStyledItemDelegate
 public:
     using QStyledItemDelegate::QStyledItemDelegate;
     void paint(QPainter *painter, const QStyleOptionViewItem &option, const QModelIndex &index) const override;
+    /// Tall enough for a mark over a tall letter (the dot of θ̇) and a lowered subscript.
+    QSize sizeHint(const QStyleOptionViewItem &option, const QModelIndex &index) const override;
 };
 
 /// A combo box whose entries are symbols or start with one ("x_AB — rod joint C, D"): the field

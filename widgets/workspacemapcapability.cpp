@@ -105,7 +105,7 @@ void WorkspaceMapView::retranslateCapabilityItems()
 void WorkspaceMapView::updateCapabilityTitle()
 {
     using workspacemap::significant;
-    const QString area = formatQuantity(m_summary.area, units::squareMillimetre, 0);
+    const QString area = areaText();
     if (m_shownQuantity == MapQuantity::Specification) {
         const double share = m_summary.area > 0.0 ? 100.0 * m_specificationArea / m_summary.area : 0.0;
         plotstyle::setFittedText(m_title, m_requirements.empty()
@@ -123,7 +123,7 @@ void WorkspaceMapView::updateCapabilityTitle()
         return;
     }
     const QString unit = m_shownUnit.empty() ? QString() : QStringLiteral(" ") + coreLabel(m_shownUnit);
-    plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4%5")
+    plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4%5 at the grid points")
                                           .arg(area, toQString(m_shownSymbol), significant(m_summary.min),
                                                significant(m_summary.max), unit));
     setScaleLabel(tr("%1 (%2): %3, colours end at %4")

@@ -220,6 +220,21 @@ double WorkspaceMapView::shownArea() const
     return m_summary.area;
 }
 
+QString WorkspaceMapView::titleText() const
+{
+    return m_title->text().simplified();
+}
+
+QString WorkspaceMapView::areaText() const
+{
+    const QString area = formatQuantity(shownArea(), units::squareMillimetre, 0);
+    if (!m_mechanism || m_mechanism->outputCount() != 3 || !m_mechanism->parameterApplies("phi_map"))
+        return area;
+    const ParameterSet parameters = m_mechanism->parameters();
+    const auto phi = parameters.find("phi_map");
+    return phi == parameters.end() ? area : tr("%1 at φ = %2").arg(area, formatQuantity(phi->second, units::angle, 1));
+}
+
 void WorkspaceMapView::updateTitle()
 {
     const bool condition = m_shownQuantity == MapQuantity::Condition;
@@ -238,17 +253,16 @@ void WorkspaceMapView::updateTitle()
     } else if (m_shownQuantity == MapQuantity::OrientationRange) {
         const double degree = std::numbers::pi / 180.0;
         plotstyle::setFittedText(m_title, tr("Workspace %1 · orientation range of φ from %2° to %3°")
-                                              .arg(formatQuantity(shownArea(), units::squareMillimetre, 0),
-                                                   significant(m_summary.min / degree), significant(m_summary.max / degree)));
+                                              .arg(areaText(), significant(m_summary.min / degree), significant(m_summary.max / degree)));
         setScaleLabel(tr("orientation range of φ (°): the angles that hold the platform"));
         m_plot->setToolTip(tr("At each point, the total width of the platform angles φ at which the legs can hold it "
                               "there; the map's outline is the workspace at φ_map."));
         return;
     } else {
-        // broken into lines where the map is narrow (between words, never cut off)
-        plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4")
-                             .arg(formatQuantity(shownArea(), units::squareMillimetre, 0), symbol,
-                                 significant(m_summary.min), significant(m_summary.max)));
+        // Broken into lines where the map is narrow (between words, never cut off). The range
+        // is the grid points': the pose's own value can lie outside it, nearer a singularity.
+        plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4 at the grid points")
+                                              .arg(areaText(), symbol, significant(m_summary.min), significant(m_summary.max)));
     }
     // Along the scale, broken into lines where the map is short (a projector at 1280×720).
     const QString scaleLabel = condition ? tr("κ(J), log scale (colours end at %1)").arg(significant(m_colourLimit))

@@ -94,6 +94,8 @@ public:
     int computationsStarted() const { return m_computationsStarted; }
     /// The shown map's summary (empty before the first map and without a planar workspace).
     const MapSummary &summary() const { return m_summary; }
+    /// The map's title as shown, lines joined by spaces (tests, the walk-through's checks).
+    QString titleText() const;
     double area() const { return m_summary.area; } ///< mm²
     /// The comparison's workspace area, mm² (0 without a comparison result).
     double comparisonArea() const { return m_comparisonArea; }
@@ -149,6 +151,9 @@ private:
     void updateTitle();
     /// The workspace area the title gives: exact where the kind knows it, else the map's count (mm²).
     double shownArea() const;
+    /// shownArea() as the titles give it, with the slice φ = φ_map of a platform that turns:
+    /// the map of a 3-DOF platform is that slice, whatever φ the pose has.
+    QString areaText() const;
     /// The title and scale of a capability or specification map (workspacemapcapability.cpp).
     void updateCapabilityTitle();
     /// Adds or removes the capability items of the combo box as the design declares actuators.

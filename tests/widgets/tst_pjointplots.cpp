@@ -519,7 +519,7 @@ void TestPJointPlots::valueText()
     QCOMPARE(
         pjointcurves::valueText(PJointPlots::InverseJacobianPlot, 0.0123456), QStringLiteral("J⁻¹ = 0.0123 rad/mm"));
     QCOMPARE(pjointcurves::valueText(PJointPlots::SpeedPlot, std::numeric_limits<double>::infinity()),
-        QStringLiteral("θ̇ = ∞ rad/s"));
+        QStringLiteral("dθ/dt = ∞ rad/s"));
     QLocale::setDefault(saved);
 }
 

@@ -65,7 +65,13 @@ private slots:
         QCOMPARE(symbolHtml(QStringLiteral("a<b & _x")), QStringLiteral("a&lt;b &amp; _x")); // escaped; a lone '_' stays
         QCOMPARE(symbolHtml(QStringLiteral("one side")), QStringLiteral("one side"));
         QCOMPARE(symbolPlain(QStringLiteral("T = J·F_max, (13)")), QStringLiteral("T = J·Fₘₐₓ, (13)"));
-        QCOMPARE(symbolPlain(QStringLiteral("ḋ = J·θ̇; ḋ_max")), QStringLiteral("ḋ = J·θ̇; ḋₘₐₓ"));
+        QCOMPARE(symbolPlain(QStringLiteral("ḋ = J·θ̇; ḋ_max")), QStringLiteral("ḋ = J·dθ/dt; ḋₘₐₓ"));
+        // The screen's font draws no dot over θ or q (the export dialog's list showed
+        // "ḋ = J·θ"): spelled out, with a power kept on the whole derivative.
+        QCOMPARE(spelledDots(QStringLiteral("d̈ = J·θ̈ + (∂J/∂θ)·θ̇²")), QStringLiteral("d̈ = J·d²θ/dt² + (∂J/∂θ)·(dθ/dt)²"));
+        QCOMPARE(spelledDots(QStringLiteral("q̇ = J·Ẋ, ẋ")), QStringLiteral("dq/dt = J·Ẋ, ẋ"));
+        QCOMPARE(symbolHtml(QStringLiteral("θ̇ = ḋ_max / J")), QStringLiteral("dθ/dt = ḋ<sub>max</sub> / J"));
+        QCOMPARE(coreLabel("Jacobian ḋ = J·θ̇"), QStringLiteral("Jacobian ḋ = J·dθ/dt"));
         QCOMPARE(symbolPlain(QStringLiteral("det J_q, x_AB")), QStringLiteral("det J_q, x_AB"));
         QCOMPARE(symbolPlain(QStringLiteral("m_inv and v_max₁")), QStringLiteral("mᵢₙᵥ and vₘₐₓ₁"));
     }

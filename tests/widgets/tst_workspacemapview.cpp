@@ -161,6 +161,10 @@ void TestWorkspaceMapView::momaMap()
     QCOMPARE(view.plot()->xAxis->label(), QStringLiteral("x (mm)"));
     QCOMPARE(view.plot()->yAxis->label(), QStringLiteral("y (mm)"));
     QVERIFY(view.plot()->plotLayout()->elementCount() > 0);
+    // the range is the grid points' (a pose nearer a singularity lies outside it), and a
+    // 2-DOF map is no slice
+    QVERIFY2(view.titleText().endsWith(QStringLiteral("at the grid points")) && !view.titleText().contains(QStringLiteral("φ")),
+             qPrintable(view.titleText()));
 }
 
 void TestWorkspaceMapView::equalAspect()
@@ -349,6 +353,13 @@ void TestWorkspaceMapView::orientationRange()
     QVERIFY(view.valueAt(platform(design->mechanism->homePose())) > 0.0);
     QCOMPARE(view.colorMap()->dataRange().lower, 0.0);
     QCOMPARE(view.colorMap()->dataRange().upper, 360.0);
+    // the map of a platform that turns is its slice at φ_map, whatever φ the pose has; the
+    // titles say so
+    QVERIFY2(view.titleText().contains(QStringLiteral("at φ = 0.0°")), qPrintable(view.titleText()));
+    ready.clear();
+    emit view.quantityBox()->activated(view.quantityBox()->findData(int(MapQuantity::Determinant)));
+    QVERIFY(ready.wait(waitMilliseconds));
+    QVERIFY2(view.titleText().contains(QStringLiteral("at φ = 0.0° · det J from")), qPrintable(view.titleText()));
 
     ready.clear();
     view.setMechanism(moma());

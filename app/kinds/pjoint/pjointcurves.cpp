@@ -170,7 +170,7 @@ QString valueText(int index, double value)
     }
     const QString unit = unitOf(index);
     const QString gap = unit == QStringLiteral("°") ? QString() : QStringLiteral(" "); // "21.8°", "183.1 mm"
-    return symbolOf(index) + QStringLiteral(" = ") + number + gap + unit;
+    return spelledDots(symbolOf(index)) + QStringLiteral(" = ") + number + gap + unit; // "dθ/dt = ∞ rad/s"
 }
 
 double angleStep(double span)
