@@ -1,7 +1,7 @@
 // Where each pending label goes, once all geometry is known (SceneLabels::placeAll()): the
 // candidate places of dimension text, angle labels (with a leader where one is pushed away from
-// its arc), guide, bar and joint names, most constrained first. What a place costs is in
-// scenelabels.cpp.
+// its arc), guide and bar names, most constrained first; the joints' names are placed in
+// scenejointnames.cpp. What a place costs is in scenelabels.cpp.
 #include "scenelabels.h"
 
 #include "scenegeometry.h"
@@ -363,110 +363,6 @@ void SceneLabels::placeGuideLabels()
             }
         }
         placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}, {}}, candidates);
-    }
-}
-
-std::vector<std::pair<double, double>> SceneLabels::gapsAround(std::size_t joint) const
-{
-    std::vector<double> taken;
-    for (const Ray &ray : m_rays[joint])
-        taken.push_back(sceneAngle(ray.direction));
-    std::sort(taken.begin(), taken.end());
-    std::vector<std::pair<double, double>> gaps; // (width, middle)
-    for (std::size_t k = 0; k < taken.size(); ++k) {
-        const double a = taken[k];
-        const double b = k + 1 < taken.size() ? taken[k + 1] : taken.front() + 2.0 * pi;
-        gaps.emplace_back(b - a, 0.5 * (a + b));
-    }
-    std::sort(gaps.begin(), gaps.end(), [](const auto &x, const auto &y) { return x.first > y.first; });
-    if (gaps.empty())
-        gaps.emplace_back(2.0 * pi, 45.0 * degree);
-    return gaps;
-}
-
-QPointF SceneLabels::jointNameCentre(std::size_t joint, const QSizeF &size, double angle, double extra) const
-{
-    const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
-    const QPointF u = deviceDirection(angle);
-    return m_points[joint] + (clear + extra + support(u, size)) * u;
-}
-
-void SceneLabels::reserveJointNames()
-{
-    // Where each joint's name would go first (the middle of the widest gap at its joint): the
-    // angle labels and bar names keep off while they have room elsewhere, so that "E" is not
-    // pushed away from E by an angle measured at A.
-    m_reserved.clear();
-    for (std::size_t i = 0; i < m_points.size(); ++i) {
-        if (m_scene.joints[i].label.empty() || !valid(int(i)))
-            continue;
-        const QSizeF size = textSize(QString::fromStdString(m_scene.joints[i].label), true);
-        m_reserved.push_back(boxQuad(jointNameCentre(i, size, gapsAround(i).front().second, 0.0), size, 0.0));
-    }
-}
-
-void SceneLabels::placeJointLabels()
-{
-    m_reserved.clear();
-    std::vector<QPointF> candidates;
-    for (std::size_t i = 0; i < m_points.size(); ++i) {
-        const std::string &name = m_scene.joints[i].label;
-        if (name.empty() || !valid(int(i)))
-            continue;
-        // A joint out of sight (the four-bar's instant centre P when AB and DC are nearly
-        // parallel) keeps its name out too: in sight with a leader, it named nothing.
-        if (!m_room.isEmpty() && !m_room.contains(m_points[i]))
-            continue;
-        // Preferred: the middles of the angular gaps between what leaves the joint (members,
-        // ground, extension lines, arc labels), widest first; then all round, farther out.
-        const std::vector<std::pair<double, double>> gaps = gapsAround(i);
-        const QString text = QString::fromStdString(name);
-        const QSizeF size = textSize(text, true);
-        const auto centreAt = [&](double a, double extra) { return jointNameCentre(i, size, a, extra); };
-        const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
-        candidates.clear();
-        for (const auto &[width, middle] : gaps) {
-            if (width > 25.0 * degree)
-                candidates.push_back(centreAt(middle, 0.0));
-        }
-        // The far rings clear a large neighbour such as a zoomed-in carriage. Before going
-        // there, a name next to its joint may cover a few thin lines, never a bar (in a
-        // crowded pose a "B" far from B names the wrong joint).
-        // Out there a name nearer another joint than its own reads as that one's, leader or
-        // not (the five-bar's "E" under A): such places come last.
-        const auto nearerAnother = [&](const QPointF &centre) {
-            const double own = length(centre - m_points[i]);
-            for (std::size_t j = 0; j < m_points.size(); ++j) {
-                if (j != i && valid(int(j)) && !m_scene.joints[j].label.empty() && length(centre - m_points[j]) < own)
-                    return true;
-            }
-            return false;
-        };
-        std::size_t near = 0;
-        std::vector<QPointF> last;
-        for (double extra : {0.0, 8.0 * m_px, 16.0 * m_px, 26.0 * m_px, 40.0 * m_px, 60.0 * m_px, 90.0 * m_px}) {
-            for (int k = 0; k < 24; ++k) {
-                const QPointF centre = centreAt(gaps.front().second + k * 15.0 * degree, extra);
-                (extra < 16.0 * m_px || !nearerAnother(centre) ? candidates : last).push_back(centre);
-            }
-            if (extra == 8.0 * m_px)
-                near = candidates.size();
-        }
-        const std::size_t firstLast = candidates.size();
-        candidates.insert(candidates.end(), last.begin(), last.end());
-        // A name pushed out past the near rings gets a leader from its joint's ring, so a "D"
-        // among other joints still names D (the five-bar's small view, with its handles).
-        const QPointF joint = m_points[i];
-        const double ring = (m_style.pivotRadius + 1.0) * m_px;
-        const auto leaderFor = [&](std::size_t k) -> std::optional<Leader> {
-            if (k < near)
-                return std::nullopt;
-            const QPointF start = joint + ring * unit(candidates[k] - joint);
-            const std::optional<QLineF> line = leaderToBox(start, candidates[k], size, clear - ring + 12.0 * m_px);
-            return line ? std::optional<Leader>(Leader {*line, joint, joint, false, k >= firstLast}) : std::nullopt;
-        };
-        placeFirstFree(SceneLabel {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}, {}}, candidates,
-            std::numeric_limits<double>::infinity(), near, 4.0, leaderFor);
     }
 }
 

@@ -208,6 +208,9 @@ private:
     void placeJointLabels();
     /// The angular gaps (width, middle) between what leaves `joint`, widest first.
     std::vector<std::pair<double, double>> gapsAround(std::size_t joint) const;
+    /// The directions a joint's name is tried in first: in the gap between what leaves the
+    /// joint that faces outward of the linkage, the most outward first; none in its middle.
+    std::vector<double> outwardNameAngles(std::size_t joint) const;
     /// The centre of a joint's name of `size` in direction `angle`, `extra` beyond the ring.
     QPointF jointNameCentre(std::size_t joint, const QSizeF &size, double angle, double extra) const;
     /// Fills m_reserved.

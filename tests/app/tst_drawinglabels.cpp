@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <numbers>
 
@@ -247,6 +248,44 @@ private slots:
         }
         QCOMPARE_GT(names, 0);
         QVERIFY2(astray.isEmpty(), qPrintable(astray.join(QLatin1Char('\n'))));
+    }
+
+    /// The 5R from two R̲RR legs named A₁ and A₂ between its legs, over the other modes'
+    /// dashes, where they read as the space's between the bars: a base joint's name stands on
+    /// the outer side of its joint, as the five-bar's A does.
+    void baseNamesStandOutside()
+    {
+        for (const QString &preset : {QStringLiteral("pp-5r"), QStringLiteral("fivebar-example")}) {
+            QVERIFY(m_window->openDesign(preset));
+            LinkageView *view = m_window->linkageView();
+            QTest::keyClick(view, Qt::Key_Home);
+            const Scene &scene = view->scene();
+            drawing::LayoutOptions options;
+            options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
+            const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), view->sceneStyle(), options);
+            QPointF middle;
+            int named = 0;
+            std::map<QString, QPointF> joints;
+            for (const SceneJoint &joint : scene.joints) {
+                if (joint.label.empty())
+                    continue;
+                const QPointF at = view->mapping().toDevice(Eigen::Vector2d(joint.position.head<2>()));
+                joints[QString::fromStdString(joint.label)] = at;
+                middle += at;
+                ++named;
+            }
+            middle /= double(named);
+            int checked = 0;
+            for (const drawing::Text &text : textsOf(list)) {
+                if (!text.font.bold() || !QStringList {QStringLiteral("A₁"), QStringLiteral("A₂"), QStringLiteral("A")}.contains(text.text))
+                    continue;
+                const QPointF joint = joints.at(text.text), outward = joint - middle, name = text.centre - joint;
+                QVERIFY2(QPointF::dotProduct(outward, name) > 0.0,
+                         qPrintable(QStringLiteral("%1: %2 inside the linkage").arg(preset, text.text)));
+                ++checked;
+            }
+            QCOMPARE(checked, preset == QStringLiteral("pp-5r") ? 2 : 1);
+        }
     }
 
     /// The П-joint in its small view at θ = 0: "d = 183.1 mm" along the diagonal lay over bar

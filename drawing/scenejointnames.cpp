@@ -1,0 +1,186 @@
+// Where the joints' names go (SceneLabels::placeJointLabels(), last of the labels): into the
+// gaps between what leaves each joint, outward of the linkage where there is room, else in
+// the widest gap, then all round farther out with a leader.
+#include "scenelabels.h"
+
+#include "scenegeometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+
+namespace pkm {
+
+using namespace detail;
+
+std::vector<std::pair<double, double>> SceneLabels::gapsAround(std::size_t joint) const
+{
+    std::vector<double> taken;
+    for (const Ray &ray : m_rays[joint])
+        taken.push_back(sceneAngle(ray.direction));
+    std::sort(taken.begin(), taken.end());
+    std::vector<std::pair<double, double>> gaps; // (width, middle)
+    for (std::size_t k = 0; k < taken.size(); ++k) {
+        const double a = taken[k];
+        const double b = k + 1 < taken.size() ? taken[k + 1] : taken.front() + 2.0 * pi;
+        gaps.emplace_back(b - a, 0.5 * (a + b));
+    }
+    std::sort(gaps.begin(), gaps.end(), [](const auto &x, const auto &y) { return x.first > y.first; });
+    if (gaps.empty())
+        gaps.emplace_back(2.0 * pi, 45.0 * degree);
+    return gaps;
+}
+
+QPointF SceneLabels::jointNameCentre(std::size_t joint, const QSizeF &size, double angle, double extra) const
+{
+    const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
+    const QPointF u = deviceDirection(angle);
+    return m_points[joint] + (clear + extra + support(u, size)) * u;
+}
+
+std::vector<double> SceneLabels::outwardNameAngles(std::size_t joint) const
+{
+    // Outward: from the middle of the named joints to this one. A name inside the linkage
+    // stands among its bars and ghosts and reads as the space's between them (the 5R's A₁
+    // and A₂ between the legs, over the other assembly mode's dashes).
+    QPointF middle;
+    int named = 0;
+    for (std::size_t j = 0; j < m_points.size(); ++j) {
+        if (!m_scene.joints[j].label.empty() && valid(int(j))) {
+            middle += m_points[j];
+            ++named;
+        }
+    }
+    const QPointF away = named > 2 ? m_points[joint] - middle / double(named) : QPointF();
+    if (length(away) <= 4.0 * m_style.pivotRadius * m_px)
+        return {}; // in the middle: no side is outward
+    const double out = sceneAngle(away);
+    // The gap wide enough for a name that contains the outward direction or is nearest to
+    // it; in it, directions 15° apart that keep 30° from what bounds it, the most outward first.
+    double nearest = std::numeric_limits<double>::infinity();
+    std::vector<double> angles;
+    for (const auto &[width, centre] : gapsAround(joint)) {
+        if (width <= 60.0 * degree)
+            continue;
+        const double half = 0.5 * width - 30.0 * degree;
+        const double toward = std::clamp(std::remainder(out - centre, 2.0 * pi), -half, half);
+        const double off = std::abs(std::remainder(centre + toward - out, 2.0 * pi));
+        if (off >= nearest)
+            continue;
+        nearest = off;
+        angles.clear();
+        for (double offset = -half; offset <= half + 1e-9; offset += 15.0 * degree)
+            angles.push_back(centre + offset);
+        std::stable_sort(angles.begin(), angles.end(), [&](double x, double y) {
+            return std::abs(std::remainder(x - centre - toward, 2.0 * pi)) < std::abs(std::remainder(y - centre - toward, 2.0 * pi));
+        });
+    }
+    // only a gap that faces outward, within 60°
+    return nearest < 60.0 * degree ? angles : std::vector<double> {};
+}
+
+void SceneLabels::reserveJointNames()
+{
+    // Where each joint's name would go first (the middle of the widest gap at its joint): the
+    // angle labels and bar names keep off while they have room elsewhere, so that "E" is not
+    // pushed away from E by an angle measured at A.
+    m_reserved.clear();
+    for (std::size_t i = 0; i < m_points.size(); ++i) {
+        if (m_scene.joints[i].label.empty() || !valid(int(i)))
+            continue;
+        const QSizeF size = textSize(QString::fromStdString(m_scene.joints[i].label), true);
+        m_reserved.push_back(boxQuad(jointNameCentre(i, size, gapsAround(i).front().second, 0.0), size, 0.0));
+    }
+}
+
+void SceneLabels::placeJointLabels()
+{
+    m_reserved.clear();
+    std::vector<QPointF> candidates;
+    for (std::size_t i = 0; i < m_points.size(); ++i) {
+        const std::string &name = m_scene.joints[i].label;
+        if (name.empty() || !valid(int(i)))
+            continue;
+        // A joint out of sight (the four-bar's instant centre P when AB and DC are nearly
+        // parallel) keeps its name out too: in sight with a leader, it named nothing.
+        if (!m_room.isEmpty() && !m_room.contains(m_points[i]))
+            continue;
+        // Preferred: outward beside the joint (outwardNameAngles()); else the middles of the angular
+        // gaps between what leaves the joint (members, ground, extension lines, arc labels),
+        // widest first; then all round, farther out.
+        const QString text = QString::fromStdString(name);
+        const QSizeF size = textSize(text, true);
+        const auto centreAt = [&](double a, double extra) { return jointNameCentre(i, size, a, extra); };
+        const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
+        candidates.clear();
+        // Outward beside the joint, covering a little of one thin line at most (the ground's
+        // hatching under a pivot), rather than free inside the linkage.
+        const SceneLabel label {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}, {}};
+        const QSizeF room = size + QSizeF(4.0 * m_px, 4.0 * m_px); // keep a gap, as placeFirstFree()
+        std::optional<QPointF> outside;
+        double least = 1.0; // a little of a thin line (collisions()), never a bar, a pivot or a label
+        for (const double angle : outwardNameAngles(i)) {
+            if (least == 0.0)
+                break;
+            const QPointF centre = centreAt(angle, 0.0);
+            const double cost = collisions(boxQuad(centre, room, 0.0), least);
+            if (cost < least) {
+                least = cost;
+                outside = centre;
+            }
+        }
+        if (outside) {
+            SceneLabel placed = label;
+            placed.centre = *outside;
+            place(placed);
+            continue;
+        }
+        const std::vector<std::pair<double, double>> gaps = gapsAround(i);
+        for (const auto &[width, middle] : gaps) {
+            if (width > 25.0 * degree)
+                candidates.push_back(centreAt(middle, 0.0));
+        }
+        // The far rings clear a large neighbour such as a zoomed-in carriage. Before going
+        // there, a name next to its joint may cover a few thin lines, never a bar (in a
+        // crowded pose a "B" far from B names the wrong joint).
+        // Out there a name nearer another joint than its own reads as that one's, leader or
+        // not (the five-bar's "E" under A): such places come last.
+        const auto nearerAnother = [&](const QPointF &centre) {
+            const double own = length(centre - m_points[i]);
+            for (std::size_t j = 0; j < m_points.size(); ++j) {
+                if (j != i && valid(int(j)) && !m_scene.joints[j].label.empty() && length(centre - m_points[j]) < own)
+                    return true;
+            }
+            return false;
+        };
+        std::size_t near = 0;
+        std::vector<QPointF> last;
+        for (double extra : {0.0, 8.0 * m_px, 16.0 * m_px, 26.0 * m_px, 40.0 * m_px, 60.0 * m_px, 90.0 * m_px}) {
+            for (int k = 0; k < 24; ++k) {
+                const QPointF centre = centreAt(gaps.front().second + k * 15.0 * degree, extra);
+                (extra < 16.0 * m_px || !nearerAnother(centre) ? candidates : last).push_back(centre);
+            }
+            if (extra == 8.0 * m_px)
+                near = candidates.size();
+        }
+        const std::size_t firstLast = candidates.size();
+        candidates.insert(candidates.end(), last.begin(), last.end());
+        // A name pushed out past the near rings gets a leader from its joint's ring, so a "D"
+        // among other joints still names D (the five-bar's small view, with its handles).
+        const QPointF joint = m_points[i];
+        const double ring = (m_style.pivotRadius + 1.0) * m_px;
+        const auto leaderFor = [&](std::size_t k) -> std::optional<Leader> {
+            if (k < near)
+                return std::nullopt;
+            const QPointF start = joint + ring * unit(candidates[k] - joint);
+            const std::optional<QLineF> line = leaderToBox(start, candidates[k], size, clear - ring + 12.0 * m_px);
+            return line ? std::optional<Leader>(Leader {*line, joint, joint, false, k >= firstLast}) : std::nullopt;
+        };
+        placeFirstFree(label, candidates,
+            std::numeric_limits<double>::infinity(), near, 4.0, leaderFor);
+    }
+}
+
+} // namespace pkm
