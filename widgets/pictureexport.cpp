@@ -372,6 +372,11 @@ QImage plotImage(QCustomPlot *plot, const QSize &layout, double scale)
     if (!plot)
         return {};
     const ScreenLayoutKept kept(plot);
+    // A plot with equal scales (a map) fits its ranges to the axis rect after each layout
+    // (afterLayout): the first drawing at the frame's size lays it out and fits the ranges,
+    // but drew its ticks for the screen's, so that a tick label stood past the axis, under
+    // the colour scale. The second one draws what the first laid out.
+    plot->toPixmap(layout.width(), layout.height(), scale);
     return plot->toPixmap(layout.width(), layout.height(), scale).toImage();
 }
 

@@ -130,6 +130,22 @@ std::vector<const Pose *> frameOrder(const std::vector<Pose> &poses, bool bounce
 }
 } // namespace
 
+Eigen::AlignedBox3d sweptExtent(const Mechanism &mechanism, const std::vector<Pose> &poses)
+{
+    Eigen::AlignedBox3d swept, whole;
+    for (const Pose &pose : poses) {
+        const Scene scene = mechanism.scene(pose);
+        if (scene.poseExtent.isEmpty())
+            return {}; // a kind whose range of motion is its pose's size
+        swept.extend(scene.poseExtent);
+        whole = scene.extent;
+    }
+    const auto area = [](const Eigen::AlignedBox3d &box) { return box.sizes().x() * box.sizes().y(); };
+    if (swept.isEmpty() || whole.isEmpty() || area(swept) >= 0.5 * area(whole))
+        return {};
+    return swept;
+}
+
 QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings)
 {
     const SceneStyle style;
@@ -151,8 +167,10 @@ QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const Animat
         painter.setPen(QColor(0xc8, 0xcf, 0xd9));
         painter.drawLine(scene.topRight(), scene.bottomRight());
     }
-    pictures::paintScenePicture(painter, QRectF(scene), mechanism.scene(pose), style, caption,
-                                pictures::PictureFit::MotionRange);
+    Scene drawn = mechanism.scene(pose);
+    if (!settings.extent.isEmpty())
+        drawn.extent = settings.extent;
+    pictures::paintScenePicture(painter, QRectF(scene), drawn, style, caption, pictures::PictureFit::MotionRange);
     painter.end();
     return image;
 }
@@ -160,13 +178,15 @@ QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const Animat
 QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose> &poses,
                               const AnimationSettings &settings, const std::atomic<bool> *cancel)
 {
+    AnimationSettings fitted = settings;
+    fitted.extent = sweptExtent(mechanism, poses);
     const std::vector<const Pose *> order = frameOrder(poses, settings.bounce);
     QList<QImage> frames;
     frames.reserve(static_cast<qsizetype>(order.size()));
     for (const Pose *pose : order) {
         if (cancel && cancel->load())
             return {};
-        frames.append(animationFrame(mechanism, *pose, settings));
+        frames.append(animationFrame(mechanism, *pose, fitted));
     }
     return frames;
 }
@@ -186,6 +206,8 @@ VideoExport writeAnimationVideo(const Mechanism &mechanism, const std::vector<Po
     if (!writer.open(path, *format, settings.size, &result.error))
         return result;
     result.codec = writer.codecName();
+    AnimationSettings fitted = settings;
+    fitted.extent = sweptExtent(mechanism, poses);
     const std::vector<const Pose *> order = frameOrder(poses, settings.bounce);
     const int total = static_cast<int>(order.size());
     for (int i = 0; i < total; ++i) {
@@ -193,7 +215,7 @@ VideoExport writeAnimationVideo(const Mechanism &mechanism, const std::vector<Po
             result.cancelled = true;
             return result; // the writer discards its temporary file
         }
-        if (!writer.addFrame(animationFrame(mechanism, *order[i], settings), &result.error))
+        if (!writer.addFrame(animationFrame(mechanism, *order[i], fitted), &result.error))
             return result;
         if (progress)
             progress(i + 1, total);
@@ -219,13 +241,15 @@ Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start
     GifOptions options;
     options.frameMilliseconds = settings.frameMilliseconds;
     GifEncoder encoder;
+    AnimationSettings fitted = settings;
+    fitted.extent = sweptExtent(mechanism, *poses);
     if (!encoder.begin(settings.size, options, &error))
         return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
     for (const Pose *pose : frameOrder(*poses, settings.bounce)) {
         if (cancel && cancel->load())
             return Failure{FailureKind::InvalidParameter, {},
                            message(QCoreApplication::translate("pkm::Animation", "The animation was cancelled."))};
-        if (!encoder.addFrame(animationFrame(mechanism, *pose, settings), &error))
+        if (!encoder.addFrame(animationFrame(mechanism, *pose, fitted), &error))
             return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
     }
     const QByteArray gif = encoder.finish(&error);

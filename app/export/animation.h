@@ -31,7 +31,16 @@ struct AnimationSettings {
     /// plot of a quantity (animationplot.h) or, in the GUI, the plot on screen. Called for
     /// every frame from the thread that draws it, with the pose and the size it is to fill.
     std::function<QImage(const Pose &pose, const QSize &size)> beside;
+    /// The box every frame is fitted to (mm), so that all share one scale: empty for the
+    /// scene's range of motion; animationFrames() and the writers set it to the sweep's
+    /// (sweptExtent()).
+    Eigen::AlignedBox3d extent;
 };
+
+/// The box of the poses `poses` reach (their scenes' poseExtent), where it is less than half
+/// the range of motion (the 3-RP̲R's platform, a five-bar's cranks); else empty. A video of a
+/// small motion then shows the mechanism large, where the whole range left it small.
+Eigen::AlignedBox3d sweptExtent(const Mechanism &mechanism, const std::vector<Pose> &poses);
 
 inline constexpr int minAnimationFrames = 2;
 inline constexpr int maxAnimationFrames = 1000;

@@ -64,6 +64,25 @@ QString poseCaption(const Mechanism &mechanism, const Pose &at, const QString &n
     return joined.isEmpty() ? name : name + QStringLiteral(" — ") + joined;
 }
 
+QStringList captionLines(const QString &caption, const QFontMetricsF &metrics, double available)
+{
+    // A caption wider than its room (the five-bar's four variables in a video's half frame
+    // ended "y = 1…") goes on two lines, broken after a comma; only a second line still too
+    // long is cut short.
+    QStringList lines {caption};
+    if (metrics.horizontalAdvance(caption) > available) {
+        for (qsizetype at = caption.lastIndexOf(QStringLiteral(", ")); at > 0; at = caption.lastIndexOf(QStringLiteral(", "), at - 1)) {
+            if (metrics.horizontalAdvance(caption.left(at + 1)) <= available) {
+                lines = {caption.left(at + 1), caption.mid(at + 2)};
+                break;
+            }
+        }
+    }
+    for (QString &line : lines)
+        line = metrics.elidedText(line, Qt::ElideRight, available);
+    return lines;
+}
+
 void paintCaption(
     QPainter &painter, const QRectF &area, const QString &caption, const SceneStyle &style, double rightReserve)
 {
@@ -76,16 +95,19 @@ void paintCaption(
     const double available = area.width() - 2.0 * margin - 2.0 * pad - rightReserve;
     if (available < 40.0 * px)
         return; // no room beside the scale bar
-    const QString shown = metrics.elidedText(caption, Qt::ElideRight, available);
-    const QRectF text(area.left() + margin + pad, area.bottom() - margin - metrics.height(),
-        metrics.horizontalAdvance(shown), metrics.height());
+    const QStringList lines = captionLines(caption, metrics, available);
+    double width = 0.0;
+    for (const QString &line : lines)
+        width = std::max(width, metrics.horizontalAdvance(line));
+    const double height = metrics.height() * double(lines.size());
+    const QRectF text(area.left() + margin + pad, area.bottom() - margin - height, width, height);
 
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     ScenePainter::paintKnockout(painter, text.adjusted(-pad, -pad, pad, pad), style);
     painter.setFont(font);
     painter.setPen(style.ink);
-    painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, shown);
+    painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, lines.join(QLatin1Char('\n')));
     painter.restore();
 }
 

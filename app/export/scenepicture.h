@@ -6,6 +6,8 @@
 #include "mechanism.h"
 
 #include <QFont>
+#include <QFontMetricsF>
+#include <QStringList>
 #include <QString>
 
 class QPaintDevice;
@@ -38,8 +40,12 @@ ViewMapping pictureMapping(const QRectF &area, const Scene &scene, const SceneSt
 void paintScenePicture(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style,
     const QString &caption, PictureFit fit = PictureFit::LabelsWhole);
 
-/// Draws `caption` at the bottom-left of `area` on a light knock-out, elided so that it keeps
-/// clear of the scale bar's corner (`rightReserve` device units from the right edge).
+/// `caption` as it is drawn in `available` device units of width: one line, or two broken
+/// after a comma where one is too long; a line still too long ends in "…".
+QStringList captionLines(const QString &caption, const QFontMetricsF &metrics, double available);
+
+/// Draws `caption` at the bottom-left of `area` on a light knock-out (captionLines()), so that
+/// it keeps clear of the scale bar's corner (`rightReserve` device units from the right edge).
 void paintCaption(
     QPainter &painter, const QRectF &area, const QString &caption, const SceneStyle &style, double rightReserve);
 

@@ -182,6 +182,43 @@ private slots:
         QCOMPARE(frames[9], frames[11]); // the way back passes the same poses
     }
 
+    /// A video of the 3-RP̲R's q₁ from 10 to 20 mm showed the platform small in its half
+    /// frame, fitted to the whole range of motion, about three times its size: the frames now
+    /// share the sweep's box, which holds every pose's joints. The П-joint's range of motion is
+    /// its pose's size: it keeps it.
+    void framesFitTheSweep()
+    {
+        auto design = designfile::load(QStringLiteral("pp-3rpr"));
+        QVERIFY(design);
+        const Mechanism &mechanism = *design->mechanism;
+        AnimationSettings settings;
+        settings.variable = mechanism.variableIndex("q1");
+        settings.from = 10.0;
+        settings.to = 20.0;
+        settings.frames = 6;
+        auto poses = animationPoses(mechanism, design->pose, settings);
+        QVERIFY(poses.ok());
+        const Eigen::AlignedBox3d swept = sweptExtent(mechanism, *poses);
+        QVERIFY(!swept.isEmpty());
+        const Eigen::AlignedBox3d whole = mechanism.scene(design->pose).extent;
+        QVERIFY2(swept.sizes().x() * swept.sizes().y() < 0.5 * whole.sizes().x() * whole.sizes().y(),
+                 qPrintable(QStringLiteral("%1 × %2 mm of %3 × %4").arg(swept.sizes().x()).arg(swept.sizes().y())
+                                .arg(whole.sizes().x()).arg(whole.sizes().y())));
+        for (const Pose &pose : *poses) {
+            for (const SceneJoint &joint : mechanism.scene(pose).joints) {
+                if (joint.position.allFinite())
+                    QVERIFY(swept.contains(joint.position));
+            }
+        }
+        const MechanismPtr pjoint = prototype();
+        settings.variable = pjoint->variableIndex("theta");
+        settings.from = -0.5;
+        settings.to = 0.5;
+        auto pjointPoses = animationPoses(*pjoint, pjoint->homePose(), settings);
+        QVERIFY(pjointPoses.ok());
+        QVERIFY(sweptExtent(*pjoint, *pjointPoses).isEmpty());
+    }
+
     void unreachableFrameIsNamed()
     {
         const MechanismPtr mechanism = prototype();

@@ -337,6 +337,27 @@ private slots:
         QCOMPARE(russian, QStringLiteral("урок — d = 174,77 мм, θ = −7,40°"));
     }
 
+    /// The five-bar's caption in a video's half frame ended "y = 1…": it goes on two lines,
+    /// broken after a comma, and is cut short only where two lines are not enough.
+    void longCaptionTakesTwoLines()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("fivebar-example")));
+        const Mechanism &mechanism = *m_window->document()->mechanism();
+        const QString caption = pictures::poseCaption(mechanism, m_window->document()->pose(), QString());
+        const QFontMetricsF metrics(pictures::captionFont(SceneStyle()));
+        const double width = metrics.horizontalAdvance(caption);
+        const QStringList whole = pictures::captionLines(caption, metrics, width + 1.0);
+        QCOMPARE(whole, QStringList {caption});
+        const QStringList two = pictures::captionLines(caption, metrics, 0.75 * width);
+        QCOMPARE(two.size(), 2);
+        QVERIFY2(two[0].endsWith(QLatin1Char(',')) && !two.join(QString()).contains(QChar(0x2026)), qPrintable(two.join(QLatin1Char('|'))));
+        QCOMPARE(two[0] + QLatin1Char(' ') + two[1], caption);
+        for (const QString &line : two)
+            QVERIFY(metrics.horizontalAdvance(line) <= 0.75 * width);
+        const QStringList cut = pictures::captionLines(caption, metrics, 0.2 * width);
+        QVERIFY(cut.join(QString()).contains(QChar(0x2026)));
+    }
+
     void suggestedNames()
     {
         QCOMPARE(viewpicture::suggestedName(QString(), QStringLiteral("moma-3a")), QStringLiteral("moma-3a-2d"));

@@ -2,6 +2,7 @@
 // a burst of design edits computes once and stale results are dropped, a pose change only moves
 // the marker, clicks map to mm, and a mechanism without a planar workspace says so.
 
+#include "pictureexport.h"
 #include "planarworkspace.h"
 #include "quantityformat.h"
 #include "registry.h"
@@ -85,6 +86,7 @@ private slots:
     void withoutMechanism();
     void momaMap();
     void equalAspect();
+    void frameTicksFollowTheFrame();
     void poseMovesMarkerOnly();
     void burstComputesOnce();
     void staleResultDropped();
@@ -187,6 +189,33 @@ void TestWorkspaceMapView::equalAspect()
         QVERIFY(plot->xAxis->range().contains(bounds.min().x()) && plot->xAxis->range().contains(bounds.max().x()));
         QVERIFY(plot->yAxis->range().contains(bounds.min().y()) && plot->yAxis->range().contains(bounds.max().y()));
     }
+}
+
+/// A video frame with the map beside the mechanism lays the map out at the frame's size, and
+/// the map fits its ranges after that layout: a frame drew its ticks for the screen's ranges,
+/// so that the 3-RP̲R's "25" stood past the x axis, under the colour scale.
+void TestWorkspaceMapView::frameTicksFollowTheFrame()
+{
+    auto design = designfile::load(QStringLiteral("pp-3rpr"));
+    QVERIFY(design);
+    WorkspaceMapView view;
+    view.resize(1000, 500);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QVERIFY(showMap(view, design->mechanism));
+    QTest::qWait(50); // the fit's queued relayouts
+    QCustomPlot *plot = view.plot();
+    QCPRange last;
+    const QMetaObject::Connection watch = connect(plot, &QCustomPlot::afterLayout, plot, [&] { last = plot->xAxis->range(); });
+    const QCPRange screen = plot->xAxis->range();
+    const QImage frame = plotImage(plot, QSize(640, 720), 1.0);
+    disconnect(watch);
+    QCOMPARE(frame.size(), QSize(640, 720));
+    QVERIFY(last.size() < 0.9 * screen.size()); // the frame's layout fitted other ranges
+    const QVector<double> ticks = plot->xAxis->tickVector();
+    QVERIFY(!ticks.isEmpty());
+    for (double tick : ticks)
+        QVERIFY2(last.contains(tick), qPrintable(QStringLiteral("tick %1 outside %2 … %3").arg(tick).arg(last.lower).arg(last.upper)));
 }
 
 void TestWorkspaceMapView::poseMovesMarkerOnly()
