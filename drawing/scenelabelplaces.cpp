@@ -342,19 +342,23 @@ void SceneLabels::placeGuideLabels()
         const double gap = 6.0 * m_px;
         candidates.clear();
         // Beside the rail on the hatched side, which the mechanism keeps clear of, from the
-        // middle outwards; then on the other side; then past its ends; then farther out.
-        for (double extra : {0.0, 14.0 * m_px}) {
-            for (double side : {1.0, -1.0}) {
-                const QPointF normal = side * pending.outer;
-                const double lift = (side > 0.0 ? pending.outerReach : pending.innerReach) + gap + extra;
-                for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9})
-                    candidates.push_back(pending.start + fraction * axis + (lift + support(normal, size)) * normal);
-            }
-        }
+        // middle outwards; then past its ends; then on the other side, where the mechanism
+        // stands (the O-X glide's "D · 0" went inside its triangle, between the links, rather
+        // than past the rail's end with the other rails' names); then farther out.
+        const auto beside = [&](double side, double extra) {
+            const QPointF normal = side * pending.outer;
+            const double lift = (side > 0.0 ? pending.outerReach : pending.innerReach) + gap + extra;
+            for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9})
+                candidates.push_back(pending.start + fraction * axis + (lift + support(normal, size)) * normal);
+        };
+        beside(1.0, 0.0);
         for (const QPointF &tip : {pending.end, pending.start}) {
             const QPointF out = tip == pending.end ? u : -u;
             candidates.push_back(tip + (gap + 10.0 * m_px + support(out, size)) * out);
         }
+        beside(-1.0, 0.0);
+        beside(1.0, 14.0 * m_px);
+        beside(-1.0, 14.0 * m_px);
         for (double extra = 30.0 * m_px; extra <= 120.0 * m_px; extra += 15.0 * m_px) {
             for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9}) {
                 const QPointF normal = pending.outer;

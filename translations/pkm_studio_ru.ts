@@ -6200,10 +6200,6 @@ Please verify the correct file name was given.</source>
         <translation>комбинированное</translation>
     </message>
     <message>
-        <source>close</source>
-        <translation>рядом</translation>
-    </message>
-    <message>
         <source>Play needs a range: “from” must be below “to” for %1, and the speed above 0.</source>
         <translation>Для воспроизведения нужен диапазон: для %1 значение «от» должно быть меньше «до», а скорость — больше 0.</translation>
     </message>
@@ -6218,6 +6214,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Play turned back: %1</source>
         <translation>Воспроизведение повернуло обратно: %1</translation>
+    </message>
+    <message>
+        <source>Play stopped close to a singular pose at %1 = %2.</source>
+        <translation>Воспроизведение остановлено вблизи особого положения при %1 = %2.</translation>
+    </message>
+    <message>
+        <source>Play turned back close to a singular pose at %1 = %2.</source>
+        <translation>Воспроизведение повернуло обратно вблизи особого положения при %1 = %2.</translation>
+    </message>
+    <message>
+        <source>Play turned back before a singular pose (%1) at %2 = %3.</source>
+        <translation>Воспроизведение повернуло обратно перед особым положением (%1) при %2 = %3.</translation>
     </message>
 </context>
 <context>

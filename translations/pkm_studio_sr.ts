@@ -6200,10 +6200,6 @@ Please verify the correct file name was given.</source>
         <translation>комбиновани</translation>
     </message>
     <message>
-        <source>close</source>
-        <translation>близу</translation>
-    </message>
-    <message>
         <source>Play needs a range: “from” must be below “to” for %1, and the speed above 0.</source>
         <translation>За покретање је потребан опсег: за %1 „од” мора бити мање од „до”, а брзина већа од 0.</translation>
     </message>
@@ -6218,6 +6214,18 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Play turned back: %1</source>
         <translation>Покретање се вратило назад: %1</translation>
+    </message>
+    <message>
+        <source>Play stopped close to a singular pose at %1 = %2.</source>
+        <translation>Покретање је заустављено близу сингуларног положаја при %1 = %2.</translation>
+    </message>
+    <message>
+        <source>Play turned back close to a singular pose at %1 = %2.</source>
+        <translation>Покретање се вратило назад близу сингуларног положаја при %1 = %2.</translation>
+    </message>
+    <message>
+        <source>Play turned back before a singular pose (%1) at %2 = %3.</source>
+        <translation>Покретање се вратило назад пре сингуларног положаја (%1) при %2 = %3.</translation>
     </message>
 </context>
 <context>

@@ -6200,10 +6200,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>kombinovani</translation>
     </message>
     <message>
-        <source>close</source>
-        <translation>blizu</translation>
-    </message>
-    <message>
         <source>Play needs a range: “from” must be below “to” for %1, and the speed above 0.</source>
         <translation>Za pokretanje je potreban opseg: za %1 „od” mora biti manje od „do”, a brzina veća od 0.</translation>
     </message>
@@ -6218,6 +6214,18 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Play turned back: %1</source>
         <translation>Pokretanje se vratilo nazad: %1</translation>
+    </message>
+    <message>
+        <source>Play stopped close to a singular pose at %1 = %2.</source>
+        <translation>Pokretanje je zaustavljeno blizu singularnog položaja pri %1 = %2.</translation>
+    </message>
+    <message>
+        <source>Play turned back close to a singular pose at %1 = %2.</source>
+        <translation>Pokretanje se vratilo nazad blizu singularnog položaja pri %1 = %2.</translation>
+    </message>
+    <message>
+        <source>Play turned back before a singular pose (%1) at %2 = %3.</source>
+        <translation>Pokretanje se vratilo nazad pre singularnog položaja (%1) pri %2 = %3.</translation>
     </message>
 </context>
 <context>

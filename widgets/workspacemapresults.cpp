@@ -220,9 +220,16 @@ double WorkspaceMapView::shownArea() const
     return m_summary.area;
 }
 
+QString WorkspaceMapView::determinantUnit() const
+{
+    // det J's unit follows the kind (and a leg-built mechanism's legs): rad²/mm² for a five-bar
+    const ReportEntry *entry = m_mechanism ? m_mechanism->reportLayout().find("det_J") : nullptr;
+    return entry && !entry->unit.symbol.empty() ? QLatin1Char(' ') + coreLabel(entry->unit.symbol) : QString();
+}
+
 QString WorkspaceMapView::titleText() const
 {
-    return m_title->text().simplified();
+    return m_title->text().remove(QChar(0x2060)).simplified(); // without the word joiners of unbreakable()
 }
 
 QString WorkspaceMapView::areaText() const
@@ -262,11 +269,12 @@ void WorkspaceMapView::updateTitle()
         // Broken into lines where the map is narrow (between words, never cut off). The range
         // is the grid points': the pose's own value can lie outside it, nearer a singularity.
         plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4 at the grid points")
-                                              .arg(areaText(), symbol, significant(m_summary.min), significant(m_summary.max)));
+                                              .arg(areaText(), symbol, significant(m_summary.min),
+                                                   significant(m_summary.max) + (condition ? QString() : determinantUnit())));
     }
     // Along the scale, broken into lines where the map is short (a projector at 1280×720).
     const QString scaleLabel = condition ? tr("κ(J), log scale (colours end at %1)").arg(significant(m_colourLimit))
-                                         : tr("det J (colours clipped at ±%1)").arg(significant(m_colourLimit));
+                                         : tr("det J (colours clipped at ±%1)").arg(significant(m_colourLimit) + determinantUnit());
     setScaleLabel(scaleLabel);
     m_plot->setToolTip(condition
             ? tr("The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the "

@@ -154,6 +154,8 @@ private:
     /// shownArea() as the titles give it, with the slice φ = φ_map of a platform that turns:
     /// the map of a 3-DOF platform is that slice, whatever φ the pose has.
     QString areaText() const;
+    /// " rad²/mm²": det J's unit after a number, empty where det J has none.
+    QString determinantUnit() const;
     /// The title and scale of a capability or specification map (workspacemapcapability.cpp).
     void updateCapabilityTitle();
     /// Adds or removes the capability items of the combo box as the design declares actuators.

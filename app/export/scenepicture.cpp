@@ -7,6 +7,7 @@
 #include "linkageview.h"
 #include "quantityformat.h"
 #include "scenepainter.h"
+#include "symboltext.h"
 
 #include <QFontMetricsF>
 #include <QImage>
@@ -67,16 +68,20 @@ QString poseCaption(const Mechanism &mechanism, const Pose &at, const QString &n
 QStringList captionLines(const QString &caption, const QFontMetricsF &metrics, double available)
 {
     // A caption wider than its room (the five-bar's four variables in a video's half frame
-    // ended "y = 1…") goes on two lines, broken after a comma; only a second line still too
-    // long is cut short.
-    QStringList lines {caption};
-    if (metrics.horizontalAdvance(caption) > available) {
-        for (qsizetype at = caption.lastIndexOf(QStringLiteral(", ")); at > 0; at = caption.lastIndexOf(QStringLiteral(", "), at - 1)) {
-            if (metrics.horizontalAdvance(caption.left(at + 1)) <= available) {
-                lines = {caption.left(at + 1), caption.mid(at + 2)};
-                break;
-            }
-        }
+    // ended "y = 1…", the O-X glide's five "… y = 73.74 mm, …") is broken after commas onto
+    // up to three lines, each filled as far as it goes; only a last line still too long is
+    // cut short. (Measured as plain text: lowered subscripts take less room.)
+    constexpr int most = 3;
+    const QStringList items = caption.split(QStringLiteral(", "));
+    QStringList lines;
+    for (qsizetype i = 0; i < items.size(); ++i) {
+        const bool last = i + 1 == items.size();
+        const QString item = items[i] + (last ? QString() : QStringLiteral(","));
+        if (!lines.isEmpty() && lines.size() <= most
+            && (lines.size() == most || metrics.horizontalAdvance(lines.back() + QLatin1Char(' ') + item) <= available))
+            lines.back() += QLatin1Char(' ') + item;
+        else
+            lines << item;
     }
     for (QString &line : lines)
         line = metrics.elidedText(line, Qt::ElideRight, available);
@@ -105,9 +110,11 @@ void paintCaption(
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     ScenePainter::paintKnockout(painter, text.adjusted(-pad, -pad, pad, pad), style);
-    painter.setFont(font);
-    painter.setPen(style.ink);
-    painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, lines.join(QLatin1Char('\n')));
+    // the symbols as the window shows them: "x_AB" with AB lowered
+    for (qsizetype i = 0; i < lines.size(); ++i)
+        drawSymbolText(&painter, QRectF(text.left(), text.top() + double(i) * metrics.height(), text.width() + pad,
+                                        metrics.height()).toAlignedRect(),
+                       lines[i], font, style.ink);
     painter.restore();
 }
 

@@ -29,7 +29,7 @@ QString singularName(SingularityType type)
     case SingularityType::None:
         break;
     }
-    return Player::tr("close");
+    return {};
 }
 
 } // namespace
@@ -110,8 +110,14 @@ void Player::advance(double seconds)
 
     const VariableInfo &info = m.variableInfo()[std::size_t(variable)];
     const auto stoppedBefore = [&](SingularityType type, double at) {
-        blocked(tr("Play stopped before a singular pose (%1) at %2 = %3.")
-                    .arg(singularName(type), toQString(info.symbol), formatQuantity(at, info.unit, info.decimals)));
+        // One sentence each way: "Play turned back: Play stopped before …" said both.
+        const QString symbol = toQString(info.symbol), where = formatQuantity(at, info.unit, info.decimals);
+        if (type == SingularityType::None) // within the stop margin of one, of no class yet
+            blocked(tr("Play stopped close to a singular pose at %1 = %2.").arg(symbol, where),
+                    tr("Play turned back close to a singular pose at %1 = %2.").arg(symbol, where));
+        else
+            blocked(tr("Play stopped before a singular pose (%1) at %2 = %3.").arg(singularName(type), symbol, where),
+                    tr("Play turned back before a singular pose (%1) at %2 = %3.").arg(singularName(type), symbol, where));
     };
     const auto ahead = m.solveWith(current, variable, next);
     if (!ahead) {
@@ -176,14 +182,14 @@ void Player::advance(double seconds)
     }
 }
 
-void Player::blocked(const QString &reason)
+void Player::blocked(const QString &reason, const QString &turnedBack)
 {
     // Forth and back turns at what blocks it, unless it was blocked right after turning:
     // then both ways are closed and it stops.
     if (m_settings.mode == PlayMode::ForthAndBack && !m_blockedLastStep) {
         m_direction = -m_direction;
         m_blockedLastStep = true;
-        emit turned(tr("Play turned back: %1").arg(reason));
+        emit turned(turnedBack.isEmpty() ? tr("Play turned back: %1").arg(reason) : turnedBack);
         return;
     }
     stop();

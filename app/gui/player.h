@@ -45,8 +45,9 @@ signals:
 
 private:
     void onTimer();
-    /// The pose ahead cannot be taken: turn (forth and back) or stop, saying `reason`.
-    void blocked(const QString &reason);
+    /// The pose ahead cannot be taken: stop, saying `reason`, or, playing forth and back, turn,
+    /// saying `turnedBack` (by default "Play turned back: `reason`").
+    void blocked(const QString &reason, const QString &turnedBack = {});
 
     Document *m_document;
     PlaySettings m_settings;

@@ -288,6 +288,43 @@ private slots:
         }
     }
 
+    /// The O-X glide's top rail named "D · 0" inside the triangle of its two links, where it
+    /// names neither: a rail's name goes past the rail's end before it goes among the links.
+    void railNameStaysOutOfTheTriangle()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("oxglide-prototype")));
+        LinkageView *view = m_window->linkageView();
+        QTest::keyClick(view, Qt::Key_Home);
+        const Scene &scene = view->scene();
+        drawing::LayoutOptions options;
+        options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
+        const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), view->sceneStyle(), options);
+        std::vector<QLineF> links;
+        for (const SceneBar &bar : scene.bars) {
+            if (bar.label == "l")
+                links.emplace_back(view->mapping().toDevice(Eigen::Vector2d(scene.joints[std::size_t(bar.from)].position.head<2>())),
+                                   view->mapping().toDevice(Eigen::Vector2d(scene.joints[std::size_t(bar.to)].position.head<2>())));
+        }
+        QCOMPARE(links.size(), std::size_t(2));
+        int rails = 0;
+        for (const drawing::Text &text : textsOf(list)) {
+            if (!text.text.contains(QStringLiteral(" · ")))
+                continue;
+            ++rails;
+            // where a horizontal line through the name crosses each link
+            std::vector<double> across;
+            for (const QLineF &link : links) {
+                const double t = (text.centre.y() - link.y1()) / (link.y2() - link.y1());
+                if (t >= 0.0 && t <= 1.0)
+                    across.push_back(link.x1() + t * (link.x2() - link.x1()));
+            }
+            const bool between = across.size() == 2 && text.centre.x() > std::min(across[0], across[1])
+                && text.centre.x() < std::max(across[0], across[1]);
+            QVERIFY2(!between, qPrintable(QStringLiteral("'%1' between the links").arg(text.text)));
+        }
+        QCOMPARE(rails, 4);
+    }
+
     /// The П-joint in its small view at θ = 0: "d = 183.1 mm" along the diagonal lay over bar
     /// OC, the parallelogram being narrower than the text. It now stands upright outside with
     /// a leader to the diagonal, and covers neither crank; a CAD drawing keeps it on its line.

@@ -389,6 +389,8 @@ void TestWorkspaceMapView::orientationRange()
     emit view.quantityBox()->activated(view.quantityBox()->findData(int(MapQuantity::Determinant)));
     QVERIFY(ready.wait(waitMilliseconds));
     QVERIFY2(view.titleText().contains(QStringLiteral("at φ = 0.0° · det J from")), qPrintable(view.titleText()));
+    // with det J's unit, as the values panel gives it
+    QVERIFY2(view.titleText().endsWith(QStringLiteral(" mm/rad at the grid points")), qPrintable(view.titleText()));
 
     ready.clear();
     view.setMechanism(moma());
