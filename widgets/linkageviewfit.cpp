@@ -122,9 +122,11 @@ void LinkageView::followMechanism()
     if (drawn.isEmpty() || sight.contains(drawn))
         return;
     // A quarter more than the poses seen so far, in a few steps at most: once the box nears
-    // the range of motion, the whole of it, after which the view no longer moves.
+    // the range of motion, the whole of it, after which the view no longer moves. The poses
+    // are the mechanism's own, as the first fit's: with the other modes' ghosts, whose elbows
+    // stand out far, the five-bar's first step took the whole range of its cranks' circles.
     Eigen::AlignedBox3d box = m_fitBox;
-    box.extend(withGhostJoints(inSightBox()));
+    box.extend(inSightBox());
     const Eigen::Vector3d half = 0.625 * box.sizes();
     box = Eigen::AlignedBox3d(box.center() - half, box.center() + half).intersection(whole);
     const Eigen::Vector3d share = box.sizes().cwiseQuotient(whole.sizes().cwiseMax(1e-9));

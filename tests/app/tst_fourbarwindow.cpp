@@ -22,6 +22,7 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QSlider>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QStyleOptionSlider>
 #include <QTabWidget>
@@ -124,6 +125,38 @@ private slots:
         QVERIFY(
             std::any_of(scene.joints.begin(), scene.joints.end(), [](const SceneJoint &j) { return j.label == "P"; }));
         QCOMPARE(scene.polylines.size(), std::size_t(1));
+    }
+
+    /// Presentation mode in Russian cut the title of fig. 6 on both sides ("— угловая скорость
+    /// коромысла ω₃ ="): a plot's title breaks into lines as its subtitle does.
+    void titlesBreakIntoLines()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("fourbar-example")));
+        for (int i = 0; i < FourBarPlots::PlotCount; ++i) {
+            QCustomPlot *plot = plots()->plot(i);
+            // its tab in front: a hidden plot is laid out when it is shown
+            for (QWidget *child = plot; child && child->parentWidget(); child = child->parentWidget()) {
+                if (auto *stack = qobject_cast<QStackedWidget *>(child->parentWidget()))
+                    stack->setCurrentWidget(child);
+            }
+            const QSize before = plot->size();
+            plot->resize(260, plot->height());
+            QCoreApplication::processEvents();
+            for (QCPLayoutElement *element : plot->plotLayout()->elements(true)) {
+                if (auto *title = qobject_cast<QCPTextElement *>(element)) {
+                    const QFontMetrics metrics(title->font());
+                    for (const QString &line : title->text().split(QLatin1Char('\n')))
+                        QVERIFY2(metrics.horizontalAdvance(line) <= plot->width(),
+                                 qPrintable(QStringLiteral("plot %1: '%2'").arg(i).arg(line)));
+                }
+            }
+            plot->resize(before);
+        }
+        // the first tab in front again, as the window opened
+        for (QWidget *child = plots()->plot(0); child && child->parentWidget(); child = child->parentWidget()) {
+            if (auto *stack = qobject_cast<QStackedWidget *>(child->parentWidget()))
+                stack->setCurrentWidget(child);
+        }
     }
 
     void plotsHoldTheCurves()

@@ -290,7 +290,7 @@ void FourBarPlots::retitle()
         QStringLiteral("δ (°)"), tr("ω₃ (rad/s)"), tr("ε₃ (rad/s²)"), QStringLiteral("γ (°)"), QStringLiteral("δ (°)")};
     for (int i = 0; i < PlotCount; ++i) {
         Panel &p = m_panels[i];
-        p.title->setText(titles[std::size_t(i)]);
+        plotstyle::setFittedText(p.title, titles[std::size_t(i)]); // broken into lines, as the subtitle
         plotstyle::setFittedText(p.subtitle, subtitles[std::size_t(i)]);
         p.plot->xAxis->setLabel(i == SweepPlot ? tr("crank length AB (mm)") : tr("crank angle α (°)"));
         p.plot->yAxis->setLabel(yLabels[std::size_t(i)]);
@@ -391,8 +391,10 @@ bool FourBarPlots::eventFilter(QObject *watched, QEvent *event)
                 const double width = std::max(200, p.plot->width() - 110);
                 setDegreeStep(p.plot->xAxis, angleStep(span, std::max(3.0, width / 60.0)));
             }
-            if (event->type() == QEvent::Resize)
+            if (event->type() == QEvent::Resize) {
+                plotstyle::fitText(p.title);
                 plotstyle::fitText(p.subtitle);
+            }
             p.needsReplot = true;
             refresh(i);
             break;
