@@ -76,7 +76,12 @@ QSize SymbolDelegate::sizeHint(const QStyleOptionViewItem &option, const QModelI
     QSize size = QStyledItemDelegate::sizeHint(option, index);
     QStyleOptionViewItem item = option;
     initStyleOption(&item, index);
-    if (item.text.isEmpty())
+    // Only a mark over a letter stands above the line (ḋ, Ẋ, a combining mark): the ink of
+    // other texts is not measured, a values panel asks for every row's size on each move.
+    const bool marked = std::any_of(item.text.cbegin(), item.text.cend(), [](QChar c) {
+        return (c.unicode() >= 0x0300 && c.unicode() <= 0x036F) || (c.unicode() >= 0x1E00 && c.unicode() <= 0x1EFF);
+    });
+    if (!marked)
         return size;
     // The style's row is the font's line height; a mark over a capital (Ẋ) stands above the
     // line's ascent and would be cut off by the row above it. The text is centred in its row,
