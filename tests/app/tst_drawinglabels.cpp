@@ -90,13 +90,28 @@ class TestDrawingLabels : public QObject
 private:
     std::unique_ptr<MainWindow> m_window;
 
+    /// The view's scene laid out as the view lays it out: labels inside its rectangle.
+    drawing::DrawList laidOutAsShown() const
+    {
+        const LinkageView *view = m_window->linkageView();
+        drawing::LayoutOptions options;
+        options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
+        return drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle(), options);
+    }
+
+    /// `preset` opened and fitted (Home), laid out as the view shows it.
+    drawing::DrawList openedAndFitted(const QString &preset)
+    {
+        if (!m_window->openDesign(preset))
+            return {};
+        QTest::keyClick(m_window->linkageView(), Qt::Key_Home);
+        return laidOutAsShown();
+    }
+
     QStringList coveredHere(const QString &where)
     {
         LinkageView *view = m_window->linkageView();
-        // as the view lays it out: labels inside its rectangle
-        drawing::LayoutOptions options;
-        options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
-        const drawing::DrawList list = drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle(), options);
+        const drawing::DrawList list = laidOutAsShown();
         QStringList covered = coveredLabels(textsOf(list));
         // none cut by the view's edge (the П-joint's "d = 148.2 mm" at θ = −30° was)
         for (const drawing::Text &text : textsOf(list)) {
@@ -256,13 +271,10 @@ private slots:
     void baseNamesStandOutside()
     {
         for (const QString &preset : {QStringLiteral("pp-5r"), QStringLiteral("fivebar-example")}) {
-            QVERIFY(m_window->openDesign(preset));
-            LinkageView *view = m_window->linkageView();
-            QTest::keyClick(view, Qt::Key_Home);
+            const drawing::DrawList list = openedAndFitted(preset);
+            QVERIFY(!list.items.empty());
+            const LinkageView *view = m_window->linkageView();
             const Scene &scene = view->scene();
-            drawing::LayoutOptions options;
-            options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
-            const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), view->sceneStyle(), options);
             QPointF middle;
             int named = 0;
             std::map<QString, QPointF> joints;
@@ -292,13 +304,10 @@ private slots:
     /// names neither: a rail's name goes past the rail's end before it goes among the links.
     void railNameStaysOutOfTheTriangle()
     {
-        QVERIFY(m_window->openDesign(QStringLiteral("oxglide-prototype")));
-        LinkageView *view = m_window->linkageView();
-        QTest::keyClick(view, Qt::Key_Home);
+        const drawing::DrawList list = openedAndFitted(QStringLiteral("oxglide-prototype"));
+        QVERIFY(!list.items.empty());
+        const LinkageView *view = m_window->linkageView();
         const Scene &scene = view->scene();
-        drawing::LayoutOptions options;
-        options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
-        const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), view->sceneStyle(), options);
         std::vector<QLineF> links;
         for (const SceneBar &bar : scene.bars) {
             if (bar.label == "l")
