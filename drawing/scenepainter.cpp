@@ -172,6 +172,10 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
     QRectF fitted = room;
     ViewMapping mapping = ViewMapping::fit(extent, fitted, margin);
     ViewMapping best = mapping;
+    // The labels may take half of the scale at most: a short view (a status message of
+    // two lines in presentation mode) gave large-text labels up to 60 % of the room, and the
+    // five-bar shrank to 60 px under a 500 mm bar. Past that a label is cut or left out.
+    const double leastScale = 0.5 * mapping.scale;
     double leastOverhang = std::numeric_limits<double>::infinity();
     int stuck = 0; // passes in a row that cut no less
     for (int pass = 0; pass < 8 && stuck < 2; ++pass) {
@@ -187,6 +191,8 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
             break;
         fitted = less;
         mapping = ViewMapping::fit(extent, fitted, margin);
+        if (mapping.scale < leastScale)
+            break;
     }
     // A label may jump to another side at another scale (a joint's name in a crowded pose), so
     // that taking room from one side after another never ends: then less and less of the whole
@@ -201,6 +207,8 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
         QRectF smaller(room.center() - QPointF(0.5 * size.width(), 0.5 * size.height()), size);
         for (int move = 0; move < 2 && leastOverhang >= 0.5; ++move) {
             mapping = ViewMapping::fit(extent, smaller, margin);
+            if (mapping.scale < leastScale)
+                break;
             const QMarginsF over = overhangs(mapping);
             if (total(over) < leastOverhang) {
                 leastOverhang = total(over);

@@ -5,6 +5,7 @@
 #include "linkageview.h"
 #include "kinds/pjoint/pjoint.h"
 #include "registry.h"
+#include "scenepainter.h"
 
 #include <QApplication>
 #include <QBuffer>
@@ -131,6 +132,7 @@ private slots:
     void renderDrawsMotorBody();
     void degenerateScenesDoNotCrash();
     void scaleBarTextIsWhole();
+    void labelsTakeHalfTheScaleAtMost();
     void rendersIntoPdf();
     void paintIsCountedAndTimed();
 
@@ -449,6 +451,26 @@ void TestLinkageView::renderDrawsMotorBody()
 
 /// The scale bar's text wider than the bar (presentation mode's large text over a bar of about
 /// 90 px) ends with the bar, whole: it was cut at the bar's ends, "100 mm" to "100 m".
+/// A short view with large text (presentation mode, a status message of two lines): the fit
+/// that keeps labels whole shrank the five-bar to 60 px under a 500 mm bar. The labels may
+/// take half of the plain fit's scale at most.
+void TestLinkageView::labelsTakeHalfTheScaleAtMost()
+{
+    const Result<MechanismPtr> made = createMechanism("fivebar", {});
+    QVERIFY(made);
+    const MechanismPtr fivebar = *made;
+    const Scene scene = fivebar->scene(fivebar->homePose());
+    SceneStyle style;
+    style.fontPixels *= 2.0; // large text, as presentation mode at 200 %
+    style.jointFontPixels *= 2.0;
+    for (const QRectF room : {QRectF(0, 0, 700, 265), QRectF(0, 0, 700, 180), QRectF(0, 0, 300, 400)}) {
+        const double plain = ViewMapping::fit(scene.extent, room, 20.0).scale;
+        const double withLabels = ScenePainter::fitWithLabels(scene, scene.extent, room, room, 20.0, style).scale;
+        QVERIFY2(withLabels >= 0.5 * plain - 1e-9,
+                 qPrintable(QStringLiteral("%1 × %2: %3 of %4 px/mm").arg(room.width()).arg(room.height()).arg(withLabels).arg(plain)));
+    }
+}
+
 void TestLinkageView::scaleBarTextIsWhole()
 {
     SceneStyle style;
