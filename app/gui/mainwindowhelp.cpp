@@ -37,7 +37,7 @@ namespace pkm {
 
 namespace {
 
-/// Calls `react` whenever the watched widget changes size.
+/// Calls `react` whenever the watched widget changes size or font.
 class ResizeWatcher : public QObject
 {
 public:
@@ -48,7 +48,8 @@ public:
     }
     bool eventFilter(QObject *watched, QEvent *event) override
     {
-        if (event->type() == QEvent::Resize)
+        // a new text size reaches the bar after the message was fitted with the old one
+        if (event->type() == QEvent::Resize || event->type() == QEvent::FontChange)
             m_react();
         return QObject::eventFilter(watched, event);
     }
@@ -204,7 +205,10 @@ void MainWindow::fitStatusMessage()
         } while (width > room && height(shown) > maxHeight);
     }
     m_statusText->setText(symbolHtmlKnown(shown, symbols));
-    m_statusText->setFixedHeight(std::max(metrics.lineSpacing(), message.isEmpty() ? 0 : height(shown)));
+    // While presenting, the bar keeps two lines' height whatever the message: a bar that grew
+    // for a long message moved the sliders and the Play bar under the teacher's pointer.
+    const int least = (m_presenting ? 2 : 1) * metrics.lineSpacing();
+    m_statusText->setFixedHeight(std::max(least, message.isEmpty() ? 0 : height(shown)));
 }
 
 QStringList MainWindow::shownSymbols() const

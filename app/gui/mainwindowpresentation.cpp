@@ -241,6 +241,7 @@ void MainWindow::setPresentationMode(bool on)
         showStatus(QString());
     }
     applySceneStyle();
+    fitStatusMessage(); // the bar's height for the mode (two lines while presenting)
     // Once the window has its new size (full screen or back): the splitter shared out again
     // over the width the window really has (the screen's was a first guess), and the linkage
     // fills the view.

@@ -226,6 +226,36 @@ private slots:
         QCOMPARE_LT(std::abs(QApplication::font().pointSizeF() - before), 0.01);
     }
 
+    /// While presenting, a status message of two lines does not move the Play bar or the
+    /// sliders: the bar keeps two lines' height from the start (a bar that grew for a long
+    /// message moved the controls by a line under the teacher's pointer).
+    void playBarStaysPutWhilePresenting()
+    {
+        language::apply(QStringLiteral("ru"));
+        MainWindow &w = *m_window;
+        QVERIFY(w.openDesign(QStringLiteral("fivebar-example")));
+        w.findChild<QAction *>(QStringLiteral("presentationAction"))->trigger();
+        QVERIFY(w.isPresenting());
+        auto *play = w.findChild<QToolBar *>(QStringLiteral("playToolBar"));
+        QVERIFY(play);
+        w.statusBar()->showMessage(QStringLiteral("short"));
+        QTest::qWait(100);
+        const int before = play->mapTo(&w, QPoint(0, 0)).y();
+        QString twoLines; // about one and a half bars wide, whatever the text size
+        while (w.statusBar()->fontMetrics().horizontalAdvance(twoLines) < 1.4 * w.statusBar()->width())
+            twoLines += QStringLiteral("a long message ");
+        w.statusBar()->showMessage(twoLines);
+        QTest::qWait(100);
+        const int longer = play->mapTo(&w, QPoint(0, 0)).y();
+        w.statusBar()->showMessage(QString());
+        QTest::qWait(100);
+        const int after = play->mapTo(&w, QPoint(0, 0)).y();
+        QTest::keyClick(&w, Qt::Key_Escape);
+        language::apply(QStringLiteral("en"));
+        QCOMPARE(longer, before);
+        QCOMPARE(after, before);
+    }
+
     /// Presentation mode on a projector's 1280×720 screen and 150 % text, in all four
     /// languages: no label or button is cut, no wrapped label is shorter than its lines (the
     /// sliders' "q₁ (input, actuated)" lost its second line under a 3-DOF design's six rows),
