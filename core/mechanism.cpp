@@ -7,6 +7,7 @@
 #include <charconv>
 #include <limits>
 #include <cmath>
+#include <numbers>
 
 namespace pkm {
 
@@ -344,6 +345,13 @@ std::string formatNumber(double value, int decimals)
     if (text == "-0")
         text = "0";
     return text;
+}
+
+bool turnsFully(const Mechanism &mechanism, int i)
+{
+    const VariableInfo &info = mechanism.variableInfo()[std::size_t(i)];
+    const Interval range = mechanism.variableRange(i);
+    return info.unit.symbol == units::angle.symbol && range.max - range.min >= 2.0 * std::numbers::pi - 1e-9;
 }
 
 } // namespace pkm

@@ -273,6 +273,10 @@ public:
     static Result<MechanismPtr> blameChange(Result<MechanismPtr> made, const ParameterSet &changes);
 };
 
+/// Whether variable `i` of `mechanism` is an angle whose range is a whole turn (a crank that
+/// turns fully): the two ends of its range are one pose, so neither is a limit.
+bool turnsFully(const Mechanism &mechanism, int i);
+
 /// Formats a number with up to `decimals` decimals, trailing zeros removed, always with a '.':
 /// for files, JSON and keys. Sentences a person reads use text::number().
 std::string formatNumber(double value, int decimals = 3);

@@ -90,6 +90,10 @@ void PlayBar::setMechanism(const MechanismPtr &mechanism)
         resetRange();
     else
         setRange(kept.from < kept.to ? lo : hi, kept.from < kept.to ? hi : lo);
+    // An edit that stops the crank turning fully (a crank-rocker made a double rocker) ends
+    // its loop; otherwise the teacher's mode stays.
+    if (kept.mode == PlayMode::Loop && !suitsLoop())
+        m_mode->setCurrentIndex(static_cast<int>(PlayMode::ForthAndBack));
 }
 
 PlaySettings PlayBar::settings() const
@@ -185,6 +189,24 @@ void PlayBar::resetRange()
     setRange(range.min, range.max);
     // The whole range in about five seconds: slow enough to follow on a projector.
     setSpeed((range.max - range.min) / 5.0);
+    // A crank that turns fully loops, as its motor turns it; anything else goes forth and back.
+    // Once stays as the teacher chose it.
+    if (m_mode->currentIndex() != static_cast<int>(PlayMode::Once))
+        m_mode->setCurrentIndex(static_cast<int>(suitsLoop() ? PlayMode::Loop : PlayMode::ForthAndBack));
+}
+
+bool PlayBar::suitsLoop() const
+{
+    // The only input, over a whole turn: a crank-rocker's crank. A loop of anything else would
+    // jump from the end of a stroke back to its start, and a 2-DOF mechanism's crank that may
+    // turn on its own meets the other leg's limits on the way.
+    if (!m_mechanism || m_variable->currentIndex() < 0)
+        return false;
+    const auto &variables = m_mechanism->variableInfo();
+    const auto inputs = std::count_if(variables.begin(), variables.end(),
+                                      [](const VariableInfo &info) { return info.actuated; });
+    const int i = m_variable->currentIndex();
+    return inputs == 1 && variables[std::size_t(i)].actuated && pkm::turnsFully(*m_mechanism, i);
 }
 
 void PlayBar::retranslate()

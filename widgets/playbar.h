@@ -65,6 +65,8 @@ private:
     /// Spin boxes' units, decimals and limits for the variable chosen now.
     void describeVariable();
     void resetRange();
+    /// Whether the variable chosen now is a crank that turns fully (Loop suits it).
+    bool suitsLoop() const;
 
     MechanismPtr m_mechanism;
     QToolButton *m_play = nullptr;

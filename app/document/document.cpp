@@ -203,7 +203,9 @@ QString Document::limitNote() const
         const double tolerance = 1e-9 * std::max({1.0, std::abs(range.min), std::abs(range.max)});
         const bool atMin = value <= range.min + tolerance;
         const bool atMax = value >= range.max - tolerance;
-        if (!atMin && !atMax)
+        // a crank that turns fully has no limit: 360° is 0° (the four-bar opened at α = 0°
+        // said "α stops at its lower limit" although nothing had moved)
+        if ((!atMin && !atMax) || turnsFully(m, i))
             continue;
         const QString symbol = toQString(info.symbol);
         const QString limit = formatQuantity(atMax ? range.max : range.min, info.unit, info.decimals);

@@ -115,6 +115,25 @@ private slots:
         QVERIFY(!document.undoStack()->canUndo());
     }
 
+    /// A crank that turns fully has no limit: at α = 0° or 360° the four-bar says nothing (it
+    /// said "α stops at its lower limit" on opening at 0°, although nothing had moved), while a
+    /// crank that only rocks still names its limit.
+    void aCrankThatTurnsFullyHasNoLimit()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("fourbar-example")).ok());
+        QVERIFY(turnsFully(*document.mechanism(), 0));
+        for (const double alpha : {0.0, 360.0}) {
+            QVERIFY(document.setVariable(0, alpha * units::degree).ok());
+            QVERIFY2(document.limitNote().isEmpty(), qPrintable(document.limitNote()));
+        }
+        QVERIFY(document.setParameter(QStringLiteral("AB"), 130.0).ok()); // a double rocker
+        QVERIFY(!turnsFully(*document.mechanism(), 0));
+        QVERIFY(document.setVariable(0, 0.0).ok());
+        QVERIFY2(document.limitNote().startsWith(QStringLiteral("α stops at its lower limit")),
+                 qPrintable(document.limitNote()));
+    }
+
     void designChangeKeepsOutputs()
     {
         Document document;

@@ -24,6 +24,7 @@
 #include <QUndoStack>
 
 #include <cmath>
+#include <numbers>
 
 using namespace pkm;
 using namespace pkm::test;
@@ -262,6 +263,33 @@ private slots:
         QVERIFY2(qAbs(fresh.from - range.min) < 0.01 && qAbs(fresh.to - range.max) < 0.01,
                  qPrintable(QStringLiteral("%1 … %2 mm").arg(fresh.from).arg(fresh.to)));
         QVERIFY(qAbs(fresh.speed - (range.max - range.min) / 5.0) < 0.01);
+    }
+
+    /// A crank that turns fully loops, as its motor turns it; a crank that only rocks, a slider
+    /// and a 2-DOF mechanism's crank go forth and back (a loop would jump back to the start);
+    /// Once stays as chosen.
+    void theModeSuitsTheVariable()
+    {
+        open(QStringLiteral("fourbar-example"));
+        MainWindow &w = *m_window;
+        PlayBar *bar = w.playBar();
+        bar->setVariable(0); // α of a crank-rocker: 0 … 360°
+        QCOMPARE(bar->settings().mode, PlayMode::Loop);
+        bar->setVariable(1); // δ, the rocker: an output
+        QCOMPARE(bar->settings().mode, PlayMode::ForthAndBack);
+        bar->setVariable(0);
+        QCOMPARE(bar->settings().mode, PlayMode::Loop);
+        QVERIFY(w.document()->setParameter(QStringLiteral("AB"), 130.0).ok()); // a double rocker
+        QVERIFY(w.document()->mechanism()->variableRange(0).max < 2.0 * std::numbers::pi);
+        QCOMPARE(bar->settings().mode, PlayMode::ForthAndBack);
+        for (const char *preset : {"fivebar-example", "pp-3rpr", "pjoint-prototype"}) {
+            QVERIFY(w.openDesign(QLatin1String(preset)));
+            QVERIFY2(bar->settings().mode == PlayMode::ForthAndBack, preset);
+        }
+        bar->setMode(PlayMode::Once);
+        QVERIFY(w.openDesign(QStringLiteral("fourbar-example")));
+        QCOMPARE(bar->settings().mode, PlayMode::Once);
+        bar->setMode(PlayMode::ForthAndBack);
     }
 
     void bookmarksStepWithPageKeys()
