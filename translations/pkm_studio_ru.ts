@@ -1526,11 +1526,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>working mode of leg 1: elbow B left (+1) or right (−1) of A→C</source>
-        <translation>рабочий режим ветви 1: шарнир B слева (+1) или справа (−1) от A→C</translation>
+        <translation>рабочий режим ноги 1: шарнир B слева (+1) или справа (−1) от A→C</translation>
     </message>
     <message>
         <source>working mode of leg 2: elbow D left (+1) or right (−1) of E→C</source>
-        <translation>рабочий режим ветви 2: шарнир D слева (+1) или справа (−1) от E→C</translation>
+        <translation>рабочий режим ноги 2: шарнир D слева (+1) или справа (−1) от E→C</translation>
     </message>
     <message>
         <source>assembly mode: C left (+1) or right (−1) of B→D</source>
@@ -1598,7 +1598,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>At theta1 = %1, theta4 = %2 leg %3 would be in its other working mode (%4): crank %5 and link %6 pass through in line (an inverse singularity) on the way; switch %7 to go on.</source>
-        <translation>При theta1 = %1, theta4 = %2 ветвь %3 оказалась бы в другом рабочем режиме (%4): по пути кривошип %5 и шатун %6 проходят через положение на одной прямой (особое положение обратной кинематики); чтобы продолжить, переключите %7.</translation>
+        <translation>При theta1 = %1, theta4 = %2 нога %3 оказалась бы в другом рабочем режиме (%4): по пути кривошип %5 и шатун %6 проходят через положение на одной прямой (особое положение обратной кинематики); чтобы продолжить, переключите %7.</translation>
     </message>
     <message>
         <source>C cannot reach %1: it lies %2 from %3, more than %4 + %5 = %6.</source>
@@ -1654,7 +1654,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>0 at an inverse singularity (a leg stretched or folded)</source>
-        <translation>0 в особом положении обратной кинематики (ветвь вытянута или сложена)</translation>
+        <translation>0 в особом положении обратной кинематики (нога вытянута или сложена)</translation>
     </message>
     <message>
         <source>0 at a direct singularity (the distal links in line)</source>
@@ -1702,19 +1702,19 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>leg 1: other working mode (B left of A→C, same C)</source>
-        <translation>ветвь 1: другой рабочий режим (B слева от A→C, та же точка C)</translation>
+        <translation>нога 1: другой рабочий режим (B слева от A→C, та же точка C)</translation>
     </message>
     <message>
         <source>leg 1: other working mode (B right of A→C, same C)</source>
-        <translation>ветвь 1: другой рабочий режим (B справа от A→C, та же точка C)</translation>
+        <translation>нога 1: другой рабочий режим (B справа от A→C, та же точка C)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (D left of E→C, same C)</source>
-        <translation>ветвь 2: другой рабочий режим (D слева от E→C, та же точка C)</translation>
+        <translation>нога 2: другой рабочий режим (D слева от E→C, та же точка C)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (D right of E→C, same C)</source>
-        <translation>ветвь 2: другой рабочий режим (D справа от E→C, та же точка C)</translation>
+        <translation>нога 2: другой рабочий режим (D справа от E→C, та же точка C)</translation>
     </message>
     <message>
         <source>ground</source>
@@ -1766,19 +1766,19 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>leg 1 stretched (AB, BC in line)</source>
-        <translation>ветвь 1 вытянута (AB, BC на одной прямой)</translation>
+        <translation>нога 1 вытянута (AB, BC на одной прямой)</translation>
     </message>
     <message>
         <source>leg 1 folded (AB, BC in line)</source>
-        <translation>ветвь 1 сложена (AB, BC на одной прямой)</translation>
+        <translation>нога 1 сложена (AB, BC на одной прямой)</translation>
     </message>
     <message>
         <source>leg 2 stretched (DE, CD in line)</source>
-        <translation>ветвь 2 вытянута (DE, CD на одной прямой)</translation>
+        <translation>нога 2 вытянута (DE, CD на одной прямой)</translation>
     </message>
     <message>
         <source>leg 2 folded (DE, CD in line)</source>
-        <translation>ветвь 2 сложена (DE, CD на одной прямой)</translation>
+        <translation>нога 2 сложена (DE, CD на одной прямой)</translation>
     </message>
     <message>
         <source>rad/s²</source>
@@ -2386,11 +2386,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>working mode of leg 1: sign in p₁ = B₁ ± √…</source>
-        <translation>рабочий режим ветви 1: знак в p₁ = B₁ ± √…</translation>
+        <translation>рабочий режим ноги 1: знак в p₁ = B₁ ± √…</translation>
     </message>
     <message>
         <source>working mode of leg 2: sign in p₂ = B₂ ± √…</source>
-        <translation>рабочий режим ветви 2: знак в p₂ = B₂ ± √…</translation>
+        <translation>рабочий режим ноги 2: знак в p₂ = B₂ ± √…</translation>
     </message>
     <message>
         <source>assembly mode: +1 platform left of Z₁→Z₂</source>
@@ -2470,7 +2470,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past perpendicular to its guide, in its other working mode (an inverse singularity lies between); switch the mode to go on.</source>
-        <translation>При p₁ = %1 мм, p₂ = %2 мм ветвь %3 перешла бы через перпендикуляр к своей направляющей, в другой рабочий режим (между ними — особое положение обратной кинематики); чтобы продолжить, переключите режим.</translation>
+        <translation>При p₁ = %1 мм, p₂ = %2 мм нога %3 перешла бы через перпендикуляр к своей направляющей, в другой рабочий режим (между ними — особое положение обратной кинематики); чтобы продолжить, переключите режим.</translation>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm %3.</source>
@@ -2538,11 +2538,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>leg 1: other working mode (same platform position)</source>
-        <translation>ветвь 1: другой рабочий режим (то же положение платформы)</translation>
+        <translation>нога 1: другой рабочий режим (то же положение платформы)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (same platform position)</source>
-        <translation>ветвь 2: другой рабочий режим (то же положение платформы)</translation>
+        <translation>нога 2: другой рабочий режим (то же положение платформы)</translation>
     </message>
     <message>
         <source>slider K₁</source>
@@ -3566,11 +3566,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Input Jacobian of leg 1 (0: inverse singularity)</source>
-        <translation>Якобиан входа ветви 1 (0: особое положение обратной кинематики)</translation>
+        <translation>Якобиан входа ноги 1 (0: особое положение обратной кинематики)</translation>
     </message>
     <message>
         <source>Input Jacobian of leg 2 (0: inverse singularity)</source>
-        <translation>Якобиан входа ветви 2 (0: особое положение обратной кинематики)</translation>
+        <translation>Якобиан входа ноги 2 (0: особое положение обратной кинематики)</translation>
     </message>
     <message>
         <source>Output Jacobian (0: direct singularity)</source>
@@ -3650,7 +3650,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Inverse kinematics of leg %1</source>
-        <translation>Обратная кинематика ветви %1</translation>
+        <translation>Обратная кинематика ноги %1</translation>
     </message>
     <message>
         <source>The program takes B_i² − C_i as l_i² − (a_i × (P − R_i))², the same number without cancelling two large ones.</source>
@@ -3778,7 +3778,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
-        <translation>Строка ветви в J_x содержит этот J множителем, поэтому особое положение самого П-шарнира (θ = ±90°) — особое положение прямой кинематики всего механизма (документ о П-шарнире, раздел 4).</translation>
+        <translation>Строка ноги в J_x содержит этот J множителем, поэтому особое положение самого П-шарнира (θ = ±90°) — особое положение прямой кинематики всего механизма (документ о П-шарнире, раздел 4).</translation>
     </message>
     <message>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
@@ -3810,27 +3810,27 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>leg 1 stretched (crank and link in line)</source>
-        <translation>ветвь 1 вытянута (кривошип и звено на одной прямой)</translation>
+        <translation>нога 1 вытянута (кривошип и звено на одной прямой)</translation>
     </message>
     <message>
         <source>leg 1 folded (crank and link in line)</source>
-        <translation>ветвь 1 сложена (кривошип и звено на одной прямой)</translation>
+        <translation>нога 1 сложена (кривошип и звено на одной прямой)</translation>
     </message>
     <message>
         <source>leg 2 stretched (crank and link in line)</source>
-        <translation>ветвь 2 вытянута (кривошип и звено на одной прямой)</translation>
+        <translation>нога 2 вытянута (кривошип и звено на одной прямой)</translation>
     </message>
     <message>
         <source>leg 2 folded (crank and link in line)</source>
-        <translation>ветвь 2 сложена (кривошип и звено на одной прямой)</translation>
+        <translation>нога 2 сложена (кривошип и звено на одной прямой)</translation>
     </message>
     <message>
         <source>leg 3 stretched (crank and link in line)</source>
-        <translation>ветвь 3 вытянута (кривошип и звено на одной прямой)</translation>
+        <translation>нога 3 вытянута (кривошип и звено на одной прямой)</translation>
     </message>
     <message>
         <source>leg 3 folded (crank and link in line)</source>
-        <translation>ветвь 3 сложена (кривошип и звено на одной прямой)</translation>
+        <translation>нога 3 сложена (кривошип и звено на одной прямой)</translation>
     </message>
     <message>
         <source>link 3 ⟂ guide 3</source>
@@ -6856,6 +6856,10 @@ Please verify the correct file name was given.</source>
         <source>Workspace %1 · %2 from %3 to %4 at the grid points</source>
         <translation>Рабочее пространство %1 · %2 от %3 до %4 в узлах сетки</translation>
     </message>
+    <message>
+        <source>%1 at φ = %2, not the pose&apos;s φ</source>
+        <translation>%1 при φ = %2, а не при φ положения</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>
@@ -7027,7 +7031,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Configuration of fig. 3a: R₁ = (−100, 0) mm, R₂ = (100, 0) mm, guides turned from the vertical by γ₁ = −5° and γ₂ = +5° (α_i = 270° + γ_i), so they open downwards. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Both legs work with p_i = B_i − √(B_i² − C_i), the platform below the sliders. The document finds no direct singularities in this workspace.</source>
-        <translation>Конфигурация рис. 3a: R₁ = (−100, 0) мм, R₂ = (100, 0) мм, направляющие повёрнуты от вертикали на γ₁ = −5° и γ₂ = +5° (α_i = 270° + γ_i), так что они расходятся книзу. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Обе ветви работают с p_i = B_i − √(B_i² − C_i), платформа ниже ползунов. Документ не находит в этом рабочем пространстве особых положений прямой кинематики.</translation>
+        <translation>Конфигурация рис. 3a: R₁ = (−100, 0) мм, R₂ = (100, 0) мм, направляющие повёрнуты от вертикали на γ₁ = −5° и γ₂ = +5° (α_i = 270° + γ_i), так что они расходятся книзу. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Обе ноги работают с p_i = B_i − √(B_i² − C_i), платформа ниже ползунов. Документ не находит в этом рабочем пространстве особых положений прямой кинематики.</translation>
     </message>
     <message>
         <source>MOMA configuration 3b (γ₁ = +5°, γ₂ = −5°)</source>
@@ -7043,7 +7047,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Interpreted: the document describes 3c in two ways that do not agree (the guides along the axes, or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this preset takes the first. Configuration of fig. 3c: R₁ = (250, 0) mm with α₁ = 180° and R₂ = (0, 250) mm with α₂ = 270°, the guides along the axes towards the corner. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Here both legs take the document&apos;s root p_i = B_i − √…; every inverse singularity lies on x = 195 mm or y = 195 mm (a link perpendicular to its guide), where the document puts them, at the edge of the other assembly mode&apos;s region near (195, 195) mm; the direct singularity needs both slider joints at the origin, beyond the strokes.</source>
-        <translation>Интерпретация: документ описывает 3c двумя несогласующимися способами (направляющие вдоль осей или α = 225°/315°, повёрнутые на β матрицами (15–16)), а рисунок отсутствует; эта предустановка берёт первый. Конфигурация рис. 3c: R₁ = (250, 0) мм с α₁ = 180° и R₂ = (0, 250) мм с α₂ = 270°, направляющие вдоль осей в сторону угла. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Здесь обе ветви берут корень из документа p_i = B_i − √…; все особые положения обратной кинематики лежат на x = 195 мм или y = 195 мм (звено перпендикулярно своей направляющей), где их и указывает документ, на границе области другого варианта сборки около (195, 195) мм; для особого положения прямой кинематики оба шарнира ползунов должны оказаться в начале координат, за пределами ходов.</translation>
+        <translation>Интерпретация: документ описывает 3c двумя несогласующимися способами (направляющие вдоль осей или α = 225°/315°, повёрнутые на β матрицами (15–16)), а рисунок отсутствует; эта предустановка берёт первый. Конфигурация рис. 3c: R₁ = (250, 0) мм с α₁ = 180° и R₂ = (0, 250) мм с α₂ = 270°, направляющие вдоль осей в сторону угла. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Здесь обе ноги берут корень из документа p_i = B_i − √…; все особые положения обратной кинематики лежат на x = 195 мм или y = 195 мм (звено перпендикулярно своей направляющей), где их и указывает документ, на границе области другого варианта сборки около (195, 195) мм; для особого положения прямой кинематики оба шарнира ползунов должны оказаться в начале координат, за пределами ходов.</translation>
     </message>
     <message>
         <source>MOMA configuration 3d (interpreted)</source>
@@ -7051,7 +7055,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Interpreted: the document describes 3d in two ways that do not agree (the guides along the axes, or α = 225°/315° turned by β through the matrices (15–16)), and its figure is missing; this preset takes the first. Configuration of fig. 3d: R₁ = (117, 0) mm with α₁ = 0° and R₂ = (0, 117) mm with α₂ = 90°, the guides along the axes away from the corner, the platform between them near the origin. Links l₁ = l₂ = 195 mm, strokes h = 200 mm (p from 0 to 200 mm, measured from R_i along the guide). Here both legs take the root p_i = B_i + √… that keeps the platform on the corner side of the sliders; the direct singularities (links stretched in line) bound the workspace on the far side.</source>
-        <translation>Интерпретация: документ описывает 3d двумя несогласующимися способами (направляющие вдоль осей или α = 225°/315°, повёрнутые на β матрицами (15–16)), а рисунок отсутствует; эта предустановка берёт первый. Конфигурация рис. 3d: R₁ = (117, 0) мм с α₁ = 0° и R₂ = (0, 117) мм с α₂ = 90°, направляющие вдоль осей в сторону от угла, платформа между ними около начала координат. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Здесь обе ветви берут корень p_i = B_i + √…, при котором платформа остаётся со стороны угла относительно ползунов; особые положения прямой кинематики (звенья вытянуты в линию) ограничивают рабочее пространство с дальней стороны.</translation>
+        <translation>Интерпретация: документ описывает 3d двумя несогласующимися способами (направляющие вдоль осей или α = 225°/315°, повёрнутые на β матрицами (15–16)), а рисунок отсутствует; эта предустановка берёт первый. Конфигурация рис. 3d: R₁ = (117, 0) мм с α₁ = 0° и R₂ = (0, 117) мм с α₂ = 90°, направляющие вдоль осей в сторону от угла, платформа между ними около начала координат. Звенья l₁ = l₂ = 195 мм, ходы h = 200 мм (p от 0 до 200 мм, отсчитывается от R_i вдоль направляющей). Здесь обе ноги берут корень p_i = B_i + √…, при котором платформа остаётся со стороны угла относительно ползунов; особые положения прямой кинематики (звенья вытянуты в линию) ограничивают рабочее пространство с дальней стороны.</translation>
     </message>
     <message>
         <source>O-X glide prototype (l = 80 mm, s = 20 mm, L = 130 mm)</source>
@@ -7095,7 +7099,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>A classroom five-bar chosen for PKM Studio (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov shows the planar five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. Chebyshev&apos;s count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out (B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by the legs stretched or folded in line and, low between A and E, by a direct singularity where BC and CD come in line.</source>
-        <translation>Учебный пятизвенный механизм, подобранный для PKM Studio (документ Хабибуллиной, Хабибуллина и Исламова о четырёхзвенных механизмах и подвижности показывает плоский пятизвенный механизм на рис. 1 без размеров). Стойка AE = 100 мм; кривошипы AB = DE = 80 мм приводятся в A и в E и совершают полный оборот; дальние звенья BC = CD = 120 мм сходятся в выходной точке C. По формуле Чебышева W = 3·4 − 2·5 = 2: два угла кривошипов θ₁, θ₄ определяют положение C. Рабочие режимы «локтями наружу» (B слева от A→C, D справа от E→C), вариант сборки — C над BD (слева от B→D). При C = (50, 150) мм каждое дальнее звено почти перпендикулярно своему кривошипу, а дальние звенья почти перпендикулярны друг другу, поэтому κ(J) ≈ 1,11; рабочее пространство в этих режимах ограничено положениями, где ветви механизма вытянуты или сложены в линию, а внизу между A и E — особым положением прямой кинематики, где BC и CD оказываются на одной прямой.</translation>
+        <translation>Учебный пятизвенный механизм, подобранный для PKM Studio (документ Хабибуллиной, Хабибуллина и Исламова о четырёхзвенных механизмах и подвижности показывает плоский пятизвенный механизм на рис. 1 без размеров). Стойка AE = 100 мм; кривошипы AB = DE = 80 мм приводятся в A и в E и совершают полный оборот; дальние звенья BC = CD = 120 мм сходятся в выходной точке C. По формуле Чебышева W = 3·4 − 2·5 = 2: два угла кривошипов θ₁, θ₄ определяют положение C. Рабочие режимы «локтями наружу» (B слева от A→C, D справа от E→C), вариант сборки — C над BD (слева от B→D). При C = (50, 150) мм каждое дальнее звено почти перпендикулярно своему кривошипу, а дальние звенья почти перпендикулярны друг другу, поэтому κ(J) ≈ 1,11; рабочее пространство в этих режимах ограничено положениями, где ноги механизма вытянуты или сложены в линию, а внизу между A и E — особым положением прямой кинематики, где BC и CD оказываются на одной прямой.</translation>
     </message>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>

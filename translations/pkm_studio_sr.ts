@@ -1055,7 +1055,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Working and assembly modes</source>
-        <translation>Радни модови и начини склапања</translation>
+        <translation>Радни режими и начини склапања</translation>
     </message>
     <message>
         <source>symbol</source>
@@ -1187,7 +1187,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Area per working and assembly mode</source>
-        <translation>Површина по радним модовима и начинима склапања</translation>
+        <translation>Површина по радним режимима и начинима склапања</translation>
     </message>
     <message>
         <source>mode</source>
@@ -1526,11 +1526,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>working mode of leg 1: elbow B left (+1) or right (−1) of A→C</source>
-        <translation>радни мод ноге 1: зглоб B лево (+1) или десно (−1) од A→C</translation>
+        <translation>радни режим ноге 1: зглоб B лево (+1) или десно (−1) од A→C</translation>
     </message>
     <message>
         <source>working mode of leg 2: elbow D left (+1) or right (−1) of E→C</source>
-        <translation>радни мод ноге 2: зглоб D лево (+1) или десно (−1) од E→C</translation>
+        <translation>радни режим ноге 2: зглоб D лево (+1) или десно (−1) од E→C</translation>
     </message>
     <message>
         <source>assembly mode: C left (+1) or right (−1) of B→D</source>
@@ -1598,7 +1598,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>At theta1 = %1, theta4 = %2 leg %3 would be in its other working mode (%4): crank %5 and link %6 pass through in line (an inverse singularity) on the way; switch %7 to go on.</source>
-        <translation>При theta1 = %1, theta4 = %2 нога %3 би била у другом радном моду (%4): полуга %5 и спојка %6 успут пролазе кроз положај на истој правој (сингуларитет инверзне кинематике); промените %7 да бисте наставили.</translation>
+        <translation>При theta1 = %1, theta4 = %2 нога %3 би била у другом радном режиму (%4): полуга %5 и спојка %6 успут пролазе кроз положај на истој правој (сингуларитет инверзне кинематике); промените %7 да бисте наставили.</translation>
     </message>
     <message>
         <source>C cannot reach %1: it lies %2 from %3, more than %4 + %5 = %6.</source>
@@ -1702,19 +1702,19 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>leg 1: other working mode (B left of A→C, same C)</source>
-        <translation>нога 1: други радни мод (B лево од A→C, иста тачка C)</translation>
+        <translation>нога 1: други радни режим (B лево од A→C, иста тачка C)</translation>
     </message>
     <message>
         <source>leg 1: other working mode (B right of A→C, same C)</source>
-        <translation>нога 1: други радни мод (B десно од A→C, иста тачка C)</translation>
+        <translation>нога 1: други радни режим (B десно од A→C, иста тачка C)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (D left of E→C, same C)</source>
-        <translation>нога 2: други радни мод (D лево од E→C, иста тачка C)</translation>
+        <translation>нога 2: други радни режим (D лево од E→C, иста тачка C)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (D right of E→C, same C)</source>
-        <translation>нога 2: други радни мод (D десно од E→C, иста тачка C)</translation>
+        <translation>нога 2: други радни режим (D десно од E→C, иста тачка C)</translation>
     </message>
     <message>
         <source>ground</source>
@@ -2386,11 +2386,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>working mode of leg 1: sign in p₁ = B₁ ± √…</source>
-        <translation>радни мод ноге 1: знак у p₁ = B₁ ± √…</translation>
+        <translation>радни режим ноге 1: знак у p₁ = B₁ ± √…</translation>
     </message>
     <message>
         <source>working mode of leg 2: sign in p₂ = B₂ ± √…</source>
-        <translation>радни мод ноге 2: знак у p₂ = B₂ ± √…</translation>
+        <translation>радни режим ноге 2: знак у p₂ = B₂ ± √…</translation>
     </message>
     <message>
         <source>assembly mode: +1 platform left of Z₁→Z₂</source>
@@ -2430,7 +2430,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>This configuration has no workspace: with l₁ = %1 mm, l₂ = %2 mm and strokes [%3, %4] mm the links cannot meet in the chosen working and assembly modes.</source>
-        <translation>Ова конфигурација нема радни простор: са l₁ = %1 mm, l₂ = %2 mm и ходом [%3; %4] mm спојке не могу да се споје у изабраним радним модовима и начину склапања.</translation>
+        <translation>Ова конфигурација нема радни простор: са l₁ = %1 mm, l₂ = %2 mm и ходом [%3; %4] mm спојке не могу да се споје у изабраним радним режимима и начину склапања.</translation>
     </message>
     <message>
         <source>The guides cross inside their strokes: the sliders can collide there.</source>
@@ -2470,7 +2470,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past perpendicular to its guide, in its other working mode (an inverse singularity lies between); switch the mode to go on.</source>
-        <translation>При p₁ = %1 mm, p₂ = %2 mm нога %3 би прешла преко положаја управног на своју вођицу, у други радни мод (између је сингуларитет инверзне кинематике); промените мод да бисте наставили.</translation>
+        <translation>При p₁ = %1 mm, p₂ = %2 mm нога %3 би прешла преко положаја управног на своју вођицу, у други радни режим (између је сингуларитет инверзне кинематике); промените мод да бисте наставили.</translation>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm %3.</source>
@@ -2538,11 +2538,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>leg 1: other working mode (same platform position)</source>
-        <translation>нога 1: други радни мод (исти положај платформе)</translation>
+        <translation>нога 1: други радни режим (исти положај платформе)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (same platform position)</source>
-        <translation>нога 2: други радни мод (исти положај платформе)</translation>
+        <translation>нога 2: други радни режим (исти положај платформе)</translation>
     </message>
     <message>
         <source>slider K₁</source>
@@ -3162,7 +3162,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>other assembly mode (same inputs)</source>
-        <translation>други склопни режим (исти улази)</translation>
+        <translation>други начин склапања (исти улази)</translation>
     </message>
     <message>
         <source>leg 1: other working mode (same platform pose)</source>
@@ -3322,7 +3322,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>assembly mode: 2 DOF +1 platform left of C₁→C₂, −1 right; 3 DOF the n-th solution in order of φ</source>
-        <translation>склопни режим: за 2 степена слободе +1 платформа лево од C₁→C₂, −1 десно; за 3 — n-то решење по растућем φ</translation>
+        <translation>начин склапања: за 2 степена слободе +1 платформа лево од C₁→C₂, −1 десно; за 3 — n-то решење по растућем φ</translation>
     </message>
     <message>
         <source>platform angle φ of the workspace map (3 DOF)</source>
@@ -3350,7 +3350,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The assembly mode of a 3-DOF platform counts the solutions from 1.</source>
-        <translation>Склопни режим платформе са 3 степена слободе броји решења од 1.</translation>
+        <translation>Начин склапања платформе са 3 степена слободе броји решења од 1.</translation>
     </message>
     <message>
         <source>The platform points B₁, B₂, B₃ coincide: the platform&apos;s angle is undetermined.</source>
@@ -3386,11 +3386,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The legs cannot be assembled at these inputs in the design&apos;s working and assembly modes.</source>
-        <translation>При овим улазима ноге се не могу склопити у радним и склопном режиму пројекта.</translation>
+        <translation>При овим улазима ноге се не могу склопити у радним режимима и начину склапања пројекта.</translation>
     </message>
     <message>
         <source>At these inputs the platform has %1 assembly modes in the design&apos;s working modes, fewer than assembly = %2.</source>
-        <translation>При овим улазима платформа има %1 склопних режима у радним режимима пројекта, мање од assembly = %2.</translation>
+        <translation>При овим улазима платформа има %1 начина склапања у радним режимима пројекта, мање од assembly = %2.</translation>
     </message>
     <message>
         <source>(%1, %2) mm, φ = %3°</source>
@@ -3398,7 +3398,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The platform cannot reach %1 in this assembly mode: the legs would pass through a direct singularity; switch the assembly mode to go on.</source>
-        <translation>Платформа не може достићи %1 у овом склопном режиму: ноге би прошле кроз сингуларитет директне кинематике; промените склопни режим да бисте наставили.</translation>
+        <translation>Платформа не може достићи %1 у овом начину склапања: ноге би прошле кроз сингуларитет директне кинематике; промените начин склапања да бисте наставили.</translation>
     </message>
     <message>
         <source>the input of leg %1 would leave its range</source>
@@ -3738,7 +3738,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
-        <translation>У положају платформе %1 ноге би је држале само у другом склопном режиму.</translation>
+        <translation>У положају платформе %1 ноге би је држале само у другом начину склапања.</translation>
     </message>
     <message>
         <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
@@ -3786,27 +3786,27 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>assembly mode 1 (same inputs)</source>
-        <translation>склопни режим 1 (исти улази)</translation>
+        <translation>начин склапања 1 (исти улази)</translation>
     </message>
     <message>
         <source>assembly mode 2 (same inputs)</source>
-        <translation>склопни режим 2 (исти улази)</translation>
+        <translation>начин склапања 2 (исти улази)</translation>
     </message>
     <message>
         <source>assembly mode 3 (same inputs)</source>
-        <translation>склопни режим 3 (исти улази)</translation>
+        <translation>начин склапања 3 (исти улази)</translation>
     </message>
     <message>
         <source>assembly mode 4 (same inputs)</source>
-        <translation>склопни режим 4 (исти улази)</translation>
+        <translation>начин склапања 4 (исти улази)</translation>
     </message>
     <message>
         <source>assembly mode 5 (same inputs)</source>
-        <translation>склопни режим 5 (исти улази)</translation>
+        <translation>начин склапања 5 (исти улази)</translation>
     </message>
     <message>
         <source>assembly mode 6 (same inputs)</source>
-        <translation>склопни режим 6 (исти улази)</translation>
+        <translation>начин склапања 6 (исти улази)</translation>
     </message>
     <message>
         <source>leg 1 stretched (crank and link in line)</source>
@@ -6706,7 +6706,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Workspace empty in the design&apos;s working and assembly modes</source>
-        <translation>Радни простор је празан у радном моду и начину склапања ове конструкције</translation>
+        <translation>Радни простор је празан у радном режиму и начину склапања ове конструкције</translation>
     </message>
     <message>
         <source>κ(J), log scale (colours end at %1)</source>
@@ -6855,6 +6855,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Workspace %1 · %2 from %3 to %4 at the grid points</source>
         <translation>Радни простор %1 · %2 од %3 до %4 у чворовима мреже</translation>
+    </message>
+    <message>
+        <source>%1 at φ = %2, not the pose&apos;s φ</source>
+        <translation>%1 при φ = %2, а не при φ положаја</translation>
     </message>
 </context>
 <context>
@@ -7095,7 +7099,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>A classroom five-bar chosen for PKM Studio (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov shows the planar five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. Chebyshev&apos;s count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out (B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by the legs stretched or folded in line and, low between A and E, by a direct singularity where BC and CD come in line.</source>
-        <translation>Наставни петочлани механизам изабран за PKM Studio (документ Хабибулине, Хабибулина и Исламова о зглобном четвороуглу и покретљивости приказује равански петочлани механизам на сл. 1 без димензија). Постоље AE = 100 mm; полуге AB = DE = 80 mm, погоњене у A и у E, окрећу се пуним кругом; крајње спојке BC = CD = 120 mm спајају се у излазној тачки C. По Чебишевљевој формули W = 3·4 − 2·5 = 2: два угла полуга θ₁, θ₄ одређују положај C. Радни модови „лактови ка споља“ (B лево од A→C, D десно од E→C), начин склапања C изнад BD (лево од B→D). За C = (50, 150) mm свака крајња спојка је скоро управна на своју полугу, а крајње спојке скоро управне једна на другу, па је κ(J) ≈ 1,11; радни простор ових модова ограничен је положајима у којима су гране опружене или склопљене у линију и, ниско између A и E, сингуларитетом директне кинематике где BC и CD долазе у исту линију.</translation>
+        <translation>Наставни петочлани механизам изабран за PKM Studio (документ Хабибулине, Хабибулина и Исламова о зглобном четвороуглу и покретљивости приказује равански петочлани механизам на сл. 1 без димензија). Постоље AE = 100 mm; полуге AB = DE = 80 mm, погоњене у A и у E, окрећу се пуним кругом; крајње спојке BC = CD = 120 mm спајају се у излазној тачки C. По Чебишевљевој формули W = 3·4 − 2·5 = 2: два угла полуга θ₁, θ₄ одређују положај C. Радни режими „лактови ка споља“ (B лево од A→C, D десно од E→C), начин склапања C изнад BD (лево од B→D). За C = (50, 150) mm свака крајња спојка је скоро управна на своју полугу, а крајње спојке скоро управне једна на другу, па је κ(J) ≈ 1,11; радни простор ових модова ограничен је положајима у којима су гране опружене или склопљене у линију и, ниско између A и E, сингуларитетом директне кинематике где BC и CD долазе у исту линију.</translation>
     </message>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>
@@ -7111,11 +7115,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Planar parallel: a 3-RP̲R with six assembly modes</source>
-        <translation>Равански паралелни: 3-RP̲R са шест склопних режима</translation>
+        <translation>Равански паралелни: 3-RP̲R са шест начина склапања</translation>
     </message>
     <message>
         <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
-        <translation>Механизам 3-RP̲R Иноћентија и Паренти-Кастелија, који су проучавали Зеин, Венгер и Шабла (чланак о прелазима између склопних режима 3-RP̲R без сингуларитета, часопис „Теорија механизама и машина”, 2008): зглобови основе A₁ = (0; 0), A₂ = (15,91; 0), A₃ = (0; 10), странице платформе B₁B₂ = 17,04, B₂B₃ = 16,54, B₃B₁ = 20,84. При дужинама шипки 14,98; 15,38 и 12 његова директна кинематика има шест реалних решења.</translation>
+        <translation>Механизам 3-RP̲R Иноћентија и Паренти-Кастелија, који су проучавали Зеин, Венгер и Шабла (чланак о прелазима између начина склапања 3-RP̲R без сингуларитета, часопис „Теорија механизама и машина”, 2008): зглобови основе A₁ = (0; 0), A₂ = (15,91; 0), A₃ = (0; 10), странице платформе B₁B₂ = 17,04, B₂B₃ = 16,54, B₃B₁ = 20,84. При дужинама шипки 14,98; 15,38 и 12 његова директна кинематика има шест реалних решења.</translation>
     </message>
     <message>
         <source>Planar parallel: a symmetric 3-R̲RR</source>

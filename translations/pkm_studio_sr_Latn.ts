@@ -1055,7 +1055,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Working and assembly modes</source>
-        <translation>Radni modovi i načini sklapanja</translation>
+        <translation>Radni režimi i načini sklapanja</translation>
     </message>
     <message>
         <source>symbol</source>
@@ -1187,7 +1187,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Area per working and assembly mode</source>
-        <translation>Površina po radnim modovima i načinima sklapanja</translation>
+        <translation>Površina po radnim režimima i načinima sklapanja</translation>
     </message>
     <message>
         <source>mode</source>
@@ -1526,11 +1526,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>working mode of leg 1: elbow B left (+1) or right (−1) of A→C</source>
-        <translation>radni mod noge 1: zglob B levo (+1) ili desno (−1) od A→C</translation>
+        <translation>radni režim noge 1: zglob B levo (+1) ili desno (−1) od A→C</translation>
     </message>
     <message>
         <source>working mode of leg 2: elbow D left (+1) or right (−1) of E→C</source>
-        <translation>radni mod noge 2: zglob D levo (+1) ili desno (−1) od E→C</translation>
+        <translation>radni režim noge 2: zglob D levo (+1) ili desno (−1) od E→C</translation>
     </message>
     <message>
         <source>assembly mode: C left (+1) or right (−1) of B→D</source>
@@ -1598,7 +1598,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>At theta1 = %1, theta4 = %2 leg %3 would be in its other working mode (%4): crank %5 and link %6 pass through in line (an inverse singularity) on the way; switch %7 to go on.</source>
-        <translation>Pri theta1 = %1, theta4 = %2 noga %3 bi bila u drugom radnom modu (%4): poluga %5 i spojka %6 usput prolaze kroz položaj na istoj pravoj (singularitet inverzne kinematike); promenite %7 da biste nastavili.</translation>
+        <translation>Pri theta1 = %1, theta4 = %2 noga %3 bi bila u drugom radnom režimu (%4): poluga %5 i spojka %6 usput prolaze kroz položaj na istoj pravoj (singularitet inverzne kinematike); promenite %7 da biste nastavili.</translation>
     </message>
     <message>
         <source>C cannot reach %1: it lies %2 from %3, more than %4 + %5 = %6.</source>
@@ -1702,19 +1702,19 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>leg 1: other working mode (B left of A→C, same C)</source>
-        <translation>noga 1: drugi radni mod (B levo od A→C, ista tačka C)</translation>
+        <translation>noga 1: drugi radni režim (B levo od A→C, ista tačka C)</translation>
     </message>
     <message>
         <source>leg 1: other working mode (B right of A→C, same C)</source>
-        <translation>noga 1: drugi radni mod (B desno od A→C, ista tačka C)</translation>
+        <translation>noga 1: drugi radni režim (B desno od A→C, ista tačka C)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (D left of E→C, same C)</source>
-        <translation>noga 2: drugi radni mod (D levo od E→C, ista tačka C)</translation>
+        <translation>noga 2: drugi radni režim (D levo od E→C, ista tačka C)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (D right of E→C, same C)</source>
-        <translation>noga 2: drugi radni mod (D desno od E→C, ista tačka C)</translation>
+        <translation>noga 2: drugi radni režim (D desno od E→C, ista tačka C)</translation>
     </message>
     <message>
         <source>ground</source>
@@ -2386,11 +2386,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>working mode of leg 1: sign in p₁ = B₁ ± √…</source>
-        <translation>radni mod noge 1: znak u p₁ = B₁ ± √…</translation>
+        <translation>radni režim noge 1: znak u p₁ = B₁ ± √…</translation>
     </message>
     <message>
         <source>working mode of leg 2: sign in p₂ = B₂ ± √…</source>
-        <translation>radni mod noge 2: znak u p₂ = B₂ ± √…</translation>
+        <translation>radni režim noge 2: znak u p₂ = B₂ ± √…</translation>
     </message>
     <message>
         <source>assembly mode: +1 platform left of Z₁→Z₂</source>
@@ -2430,7 +2430,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>This configuration has no workspace: with l₁ = %1 mm, l₂ = %2 mm and strokes [%3, %4] mm the links cannot meet in the chosen working and assembly modes.</source>
-        <translation>Ova konfiguracija nema radni prostor: sa l₁ = %1 mm, l₂ = %2 mm i hodom [%3; %4] mm spojke ne mogu da se spoje u izabranim radnim modovima i načinu sklapanja.</translation>
+        <translation>Ova konfiguracija nema radni prostor: sa l₁ = %1 mm, l₂ = %2 mm i hodom [%3; %4] mm spojke ne mogu da se spoje u izabranim radnim režimima i načinu sklapanja.</translation>
     </message>
     <message>
         <source>The guides cross inside their strokes: the sliders can collide there.</source>
@@ -2470,7 +2470,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past perpendicular to its guide, in its other working mode (an inverse singularity lies between); switch the mode to go on.</source>
-        <translation>Pri p₁ = %1 mm, p₂ = %2 mm noga %3 bi prešla preko položaja upravnog na svoju vođicu, u drugi radni mod (između je singularitet inverzne kinematike); promenite mod da biste nastavili.</translation>
+        <translation>Pri p₁ = %1 mm, p₂ = %2 mm noga %3 bi prešla preko položaja upravnog na svoju vođicu, u drugi radni režim (između je singularitet inverzne kinematike); promenite mod da biste nastavili.</translation>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm %3.</source>
@@ -2538,11 +2538,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>leg 1: other working mode (same platform position)</source>
-        <translation>noga 1: drugi radni mod (isti položaj platforme)</translation>
+        <translation>noga 1: drugi radni režim (isti položaj platforme)</translation>
     </message>
     <message>
         <source>leg 2: other working mode (same platform position)</source>
-        <translation>noga 2: drugi radni mod (isti položaj platforme)</translation>
+        <translation>noga 2: drugi radni režim (isti položaj platforme)</translation>
     </message>
     <message>
         <source>slider K₁</source>
@@ -3162,7 +3162,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>other assembly mode (same inputs)</source>
-        <translation>drugi sklopni režim (isti ulazi)</translation>
+        <translation>drugi način sklapanja (isti ulazi)</translation>
     </message>
     <message>
         <source>leg 1: other working mode (same platform pose)</source>
@@ -3322,7 +3322,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>assembly mode: 2 DOF +1 platform left of C₁→C₂, −1 right; 3 DOF the n-th solution in order of φ</source>
-        <translation>sklopni režim: za 2 stepena slobode +1 platforma levo od C₁→C₂, −1 desno; za 3 — n-to rešenje po rastućem φ</translation>
+        <translation>način sklapanja: za 2 stepena slobode +1 platforma levo od C₁→C₂, −1 desno; za 3 — n-to rešenje po rastućem φ</translation>
     </message>
     <message>
         <source>platform angle φ of the workspace map (3 DOF)</source>
@@ -3350,7 +3350,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>The assembly mode of a 3-DOF platform counts the solutions from 1.</source>
-        <translation>Sklopni režim platforme sa 3 stepena slobode broji rešenja od 1.</translation>
+        <translation>Način sklapanja platforme sa 3 stepena slobode broji rešenja od 1.</translation>
     </message>
     <message>
         <source>The platform points B₁, B₂, B₃ coincide: the platform&apos;s angle is undetermined.</source>
@@ -3386,11 +3386,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>The legs cannot be assembled at these inputs in the design&apos;s working and assembly modes.</source>
-        <translation>Pri ovim ulazima noge se ne mogu sklopiti u radnim i sklopnom režimu projekta.</translation>
+        <translation>Pri ovim ulazima noge se ne mogu sklopiti u radnim režimima i načinu sklapanja projekta.</translation>
     </message>
     <message>
         <source>At these inputs the platform has %1 assembly modes in the design&apos;s working modes, fewer than assembly = %2.</source>
-        <translation>Pri ovim ulazima platforma ima %1 sklopnih režima u radnim režimima projekta, manje od assembly = %2.</translation>
+        <translation>Pri ovim ulazima platforma ima %1 načina sklapanja u radnim režimima projekta, manje od assembly = %2.</translation>
     </message>
     <message>
         <source>(%1, %2) mm, φ = %3°</source>
@@ -3398,7 +3398,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>The platform cannot reach %1 in this assembly mode: the legs would pass through a direct singularity; switch the assembly mode to go on.</source>
-        <translation>Platforma ne može dostići %1 u ovom sklopnom režimu: noge bi prošle kroz singularitet direktne kinematike; promenite sklopni režim da biste nastavili.</translation>
+        <translation>Platforma ne može dostići %1 u ovom načinu sklapanja: noge bi prošle kroz singularitet direktne kinematike; promenite način sklapanja da biste nastavili.</translation>
     </message>
     <message>
         <source>the input of leg %1 would leave its range</source>
@@ -3738,7 +3738,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>At the platform&apos;s position %1 the legs would hold it only in the other assembly mode.</source>
-        <translation>U položaju platforme %1 noge bi je držale samo u drugom sklopnom režimu.</translation>
+        <translation>U položaju platforme %1 noge bi je držale samo u drugom načinu sklapanja.</translation>
     </message>
     <message>
         <source>At the platform&apos;s position %1 leg %2 cannot reach it: its platform point is too far from its base point A%2 for its links.</source>
@@ -3786,27 +3786,27 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>assembly mode 1 (same inputs)</source>
-        <translation>sklopni režim 1 (isti ulazi)</translation>
+        <translation>način sklapanja 1 (isti ulazi)</translation>
     </message>
     <message>
         <source>assembly mode 2 (same inputs)</source>
-        <translation>sklopni režim 2 (isti ulazi)</translation>
+        <translation>način sklapanja 2 (isti ulazi)</translation>
     </message>
     <message>
         <source>assembly mode 3 (same inputs)</source>
-        <translation>sklopni režim 3 (isti ulazi)</translation>
+        <translation>način sklapanja 3 (isti ulazi)</translation>
     </message>
     <message>
         <source>assembly mode 4 (same inputs)</source>
-        <translation>sklopni režim 4 (isti ulazi)</translation>
+        <translation>način sklapanja 4 (isti ulazi)</translation>
     </message>
     <message>
         <source>assembly mode 5 (same inputs)</source>
-        <translation>sklopni režim 5 (isti ulazi)</translation>
+        <translation>način sklapanja 5 (isti ulazi)</translation>
     </message>
     <message>
         <source>assembly mode 6 (same inputs)</source>
-        <translation>sklopni režim 6 (isti ulazi)</translation>
+        <translation>način sklapanja 6 (isti ulazi)</translation>
     </message>
     <message>
         <source>leg 1 stretched (crank and link in line)</source>
@@ -6706,7 +6706,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Workspace empty in the design&apos;s working and assembly modes</source>
-        <translation>Radni prostor je prazan u radnom modu i načinu sklapanja ove konstrukcije</translation>
+        <translation>Radni prostor je prazan u radnom režimu i načinu sklapanja ove konstrukcije</translation>
     </message>
     <message>
         <source>κ(J), log scale (colours end at %1)</source>
@@ -6855,6 +6855,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Workspace %1 · %2 from %3 to %4 at the grid points</source>
         <translation>Radni prostor %1 · %2 od %3 do %4 u čvorovima mreže</translation>
+    </message>
+    <message>
+        <source>%1 at φ = %2, not the pose&apos;s φ</source>
+        <translation>%1 pri φ = %2, a ne pri φ položaja</translation>
     </message>
 </context>
 <context>
@@ -7095,7 +7099,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>A classroom five-bar chosen for PKM Studio (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov shows the planar five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. Chebyshev&apos;s count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out (B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by the legs stretched or folded in line and, low between A and E, by a direct singularity where BC and CD come in line.</source>
-        <translation>Nastavni petočlani mehanizam izabran za PKM Studio (dokument Habibuline, Habibulina i Islamova o zglobnom četvorouglu i pokretljivosti prikazuje ravanski petočlani mehanizam na sl. 1 bez dimenzija). Postolje AE = 100 mm; poluge AB = DE = 80 mm, pogonjene u A i u E, okreću se punim krugom; krajnje spojke BC = CD = 120 mm spajaju se u izlaznoj tački C. Po Čebiševljevoj formuli W = 3·4 − 2·5 = 2: dva ugla poluga θ₁, θ₄ određuju položaj C. Radni modovi „laktovi ka spolja“ (B levo od A→C, D desno od E→C), način sklapanja C iznad BD (levo od B→D). Za C = (50, 150) mm svaka krajnja spojka je skoro upravna na svoju polugu, a krajnje spojke skoro upravne jedna na drugu, pa je κ(J) ≈ 1,11; radni prostor ovih modova ograničen je položajima u kojima su grane opružene ili sklopljene u liniju i, nisko između A i E, singularitetom direktne kinematike gde BC i CD dolaze u istu liniju.</translation>
+        <translation>Nastavni petočlani mehanizam izabran za PKM Studio (dokument Habibuline, Habibulina i Islamova o zglobnom četvorouglu i pokretljivosti prikazuje ravanski petočlani mehanizam na sl. 1 bez dimenzija). Postolje AE = 100 mm; poluge AB = DE = 80 mm, pogonjene u A i u E, okreću se punim krugom; krajnje spojke BC = CD = 120 mm spajaju se u izlaznoj tački C. Po Čebiševljevoj formuli W = 3·4 − 2·5 = 2: dva ugla poluga θ₁, θ₄ određuju položaj C. Radni režimi „laktovi ka spolja“ (B levo od A→C, D desno od E→C), način sklapanja C iznad BD (levo od B→D). Za C = (50, 150) mm svaka krajnja spojka je skoro upravna na svoju polugu, a krajnje spojke skoro upravne jedna na drugu, pa je κ(J) ≈ 1,11; radni prostor ovih modova ograničen je položajima u kojima su grane opružene ili sklopljene u liniju i, nisko između A i E, singularitetom direktne kinematike gde BC i CD dolaze u istu liniju.</translation>
     </message>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>
@@ -7111,11 +7115,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Planar parallel: a 3-RP̲R with six assembly modes</source>
-        <translation>Ravanski paralelni: 3-RP̲R sa šest sklopnih režima</translation>
+        <translation>Ravanski paralelni: 3-RP̲R sa šest načina sklapanja</translation>
     </message>
     <message>
         <source>The 3-RP̲R of Innocenti and Parenti-Castelli, studied by Zein, Wenger and Chablat (Non-singular assembly-mode changing motions for 3-RPR parallel manipulators, Mechanism and Machine Theory, 2008): base joints A₁ = (0, 0), A₂ = (15.91, 0), A₃ = (0, 10), platform sides B₁B₂ = 17.04, B₂B₃ = 16.54, B₃B₁ = 20.84. At the strut lengths 14.98, 15.38 and 12 its direct kinematics has six real solutions.</source>
-        <translation>Mehanizam 3-RP̲R Inoćentija i Parenti-Kastelija, koji su proučavali Zein, Venger i Šabla (članak o prelazima između sklopnih režima 3-RP̲R bez singulariteta, časopis „Teorija mehanizama i mašina”, 2008): zglobovi osnove A₁ = (0; 0), A₂ = (15,91; 0), A₃ = (0; 10), stranice platforme B₁B₂ = 17,04, B₂B₃ = 16,54, B₃B₁ = 20,84. Pri dužinama šipki 14,98; 15,38 i 12 njegova direktna kinematika ima šest realnih rešenja.</translation>
+        <translation>Mehanizam 3-RP̲R Inoćentija i Parenti-Kastelija, koji su proučavali Zein, Venger i Šabla (članak o prelazima između načina sklapanja 3-RP̲R bez singulariteta, časopis „Teorija mehanizama i mašina”, 2008): zglobovi osnove A₁ = (0; 0), A₂ = (15,91; 0), A₃ = (0; 10), stranice platforme B₁B₂ = 17,04, B₂B₃ = 16,54, B₃B₁ = 20,84. Pri dužinama šipki 14,98; 15,38 i 12 njegova direktna kinematika ima šest realnih rešenja.</translation>
     </message>
     <message>
         <source>Planar parallel: a symmetric 3-R̲RR</source>

@@ -206,7 +206,9 @@ QString unbreakable(QString text)
     // a hyphen after a letter or two that name a form: "П-шарнира" broke as "П-" and "шарнира"
     static const QRegularExpression shortPrefix(QStringLiteral("(?:(?<=\\b\\w)|(?<=\\b\\w\\w))-(?=\\w)"),
                                                 QRegularExpression::UseUnicodePropertiesOption); // Cyrillic letters are \w too
+    static const QRegularExpression determinant(QStringLiteral("\\bdet (?=\\S)")); // "det J" broke as "det" and "J"
     text.replace(QStringLiteral(" = "), QStringLiteral("\u00A0=\u00A0"));
+    text.replace(determinant, QStringLiteral("det\u00A0"));
     text.replace(shortPrefix, QStringLiteral("-\u2060"));
     return text.replace(slash, QStringLiteral("/\u2060")); // the word joiner: no break after '/'
 }

@@ -232,14 +232,23 @@ QString WorkspaceMapView::titleText() const
     return m_title->text().remove(QChar(0x2060)).simplified(); // without the word joiners of unbreakable()
 }
 
+std::optional<double> WorkspaceMapView::sliceAngle() const
+{
+    if (!m_mechanism || m_mechanism->outputCount() != 3 || !m_mechanism->parameterApplies("phi_map"))
+        return std::nullopt;
+    const ParameterSet parameters = m_mechanism->parameters();
+    const auto phi = parameters.find("phi_map");
+    return phi == parameters.end() ? std::nullopt : std::optional<double>(phi->second);
+}
+
 QString WorkspaceMapView::areaText() const
 {
     const QString area = formatQuantity(shownArea(), units::squareMillimetre, 0);
-    if (!m_mechanism || m_mechanism->outputCount() != 3 || !m_mechanism->parameterApplies("phi_map"))
+    const std::optional<double> slice = sliceAngle();
+    if (!slice)
         return area;
-    const ParameterSet parameters = m_mechanism->parameters();
-    const auto phi = parameters.find("phi_map");
-    return phi == parameters.end() ? area : tr("%1 at φ = %2").arg(area, formatQuantity(phi->second, units::angle, 1));
+    const QString angle = formatQuantity(*slice, units::angle, 1);
+    return m_poseOffSlice ? tr("%1 at φ = %2, not the pose's φ").arg(area, angle) : tr("%1 at φ = %2").arg(area, angle);
 }
 
 void WorkspaceMapView::updateTitle()

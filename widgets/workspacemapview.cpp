@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <unordered_map>
 
 namespace pkm {
@@ -302,6 +303,8 @@ void WorkspaceMapView::setMechanism(MechanismPtr mechanism)
     }
     syncCapabilityItems();
     syncToleranceItem();
+    if (m_hasPose)
+        setPose(m_fullPose); // the slice may have moved to the pose's φ or away from it
     requestMap();
 }
 
@@ -332,6 +335,21 @@ void WorkspaceMapView::setPose(const Pose &pose)
         m_fullPose = pose; // no recomputation: a capability map follows the design, not the drag
     if (valid)
         m_pose = Eigen::Vector2d(pose.outputs[0], pose.outputs[1]);
+    // A platform that turns is mapped on its slice φ = φ_map: a pose at another φ is drawn as
+    // a dashed ring without its white disc, where it would stand on the slice, and the title
+    // says that the pose is not on it (the marker stood on white, outside the slice's
+    // workspace, with nothing to tell why).
+    const std::optional<double> slice = sliceAngle();
+    const bool offSlice = valid && slice && pose.outputs.size() >= 3
+        && std::abs(std::remainder(pose.outputs[2] - *slice, 2.0 * std::numbers::pi)) > offSliceTolerance;
+    if (offSlice != m_poseOffSlice) {
+        m_poseOffSlice = offSlice;
+        QPen rim(QColor(markerRgb), 2.0);
+        rim.setStyle(offSlice ? Qt::DashLine : Qt::SolidLine);
+        m_poseCircle->setPen(rim);
+        m_poseCircle->setBrush(offSlice ? QBrush(Qt::NoBrush) : QBrush(Qt::white));
+        updateTitle();
+    }
     for (QCPItemTracer *item : {m_poseCircle, m_poseCross}) {
         item->position->setCoords(m_pose.x(), m_pose.y());
         item->setVisible(valid && !m_mapBounds.isEmpty());

@@ -25,6 +25,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,8 @@ public:
     int curveCount(SingularCurve::Type type) const { return m_curveCounts[type == SingularCurve::Type::Direct]; }
     /// Where the pose marker is (mm), NaN when there is none.
     Eigen::Vector2d markerPosition() const;
+    /// Whether the pose's φ is off the slice mapped (a dashed marker; the title says so).
+    bool markerOffSlice() const { return m_poseOffSlice; }
     /// The message shown instead of the map ("no planar workspace"), or empty.
     QString message() const;
     QCustomPlot *plot() const { return m_plot; }
@@ -180,6 +183,11 @@ private:
     QString m_comparisonLabel;
     MapQuantity m_quantity = MapQuantity::Determinant;
     int m_resolution = 500;
+    /// φ_map of a platform that turns (the slice mapped), none for a 2-DOF mechanism.
+    std::optional<double> sliceAngle() const;
+    /// A pose's φ this far from the slice's (rad) is off it: the marker is dashed.
+    static constexpr double offSliceTolerance = 1e-3;
+    bool m_poseOffSlice = false;
     Pose m_fullPose; ///< the last pose given: a capability map's cells start from its modes
     std::vector<capability::Requirement> m_requirements;
     ParameterSet m_tolerances;

@@ -443,9 +443,9 @@ private slots:
         QCOMPARE(bar->button(1)->mapTo(bar, QPoint()).y(), bar->button(2)->mapTo(bar, QPoint()).y());
         const QList<QLabel *> captions = bar->findChildren<QLabel *>();
         QVERIFY(std::any_of(captions.begin(), captions.end(), [](const QLabel *label) {
-            return label->text() == QStringLiteral("→ другой рабочий режим, ветвь:");
+            return label->text() == QStringLiteral("→ другой рабочий режим, нога:");
         }));
-        QVERIFY(bar->button(1)->toolTip().contains(QStringLiteral("ветвь 1")));
+        QVERIFY(bar->button(1)->toolTip().contains(QStringLiteral("нога 1")));
         QVERIFY2(window.valuesTable()->width() >= englishDock - 2,
                  qPrintable(QStringLiteral("%1 < %2").arg(window.valuesTable()->width()).arg(englishDock)));
         ValuesTable *table = window.valuesTable();

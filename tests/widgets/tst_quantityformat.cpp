@@ -87,6 +87,7 @@ private slots:
         QCOMPARE(unbreakable(QStringLiteral("прототип П-шарнира")), QStringLiteral("прототип П-\u2060шарнира"));
         QCOMPARE(unbreakable(QStringLiteral("the O-X glide, a 3-RPR")), QStringLiteral("the O-\u2060X glide, a 3-\u2060RPR"));
         QCOMPARE(unbreakable(QStringLiteral("four-bar, leg-built")), QStringLiteral("four-bar, leg-built"));
+        QCOMPARE(unbreakable(QStringLiteral("· det J from")), QStringLiteral("· det\u00A0J from")); // a symbol, one word
         // a legend wrapped in a narrow plot keeps "(k = 0,40)" on one line
         const QFont font = QApplication::font();
         const QString legend = QStringLiteral("эта конструкция (k = 0,40)");

@@ -391,6 +391,26 @@ void TestWorkspaceMapView::orientationRange()
     QVERIFY2(view.titleText().contains(QStringLiteral("at φ = 0.0° · det J from")), qPrintable(view.titleText()));
     // with det J's unit, as the values panel gives it
     QVERIFY2(view.titleText().endsWith(QStringLiteral(" mm/rad at the grid points")), qPrintable(view.titleText()));
+    // a pose at another φ is off the slice: a dashed ring, and the title says so
+    Pose pose = design->pose;
+    QVERIFY(std::abs(pose.outputs[2]) > 0.1); // the preset stands at φ = 57°
+    view.setPose(pose);
+    QVERIFY(view.markerOffSlice());
+    QVERIFY2(view.titleText().contains(QStringLiteral("at φ = 0.0°, not the pose's φ · det J")), qPrintable(view.titleText()));
+    pose.outputs[2] = 2.0 * std::numbers::pi; // a whole turn from the slice is on it
+    view.setPose(pose);
+    QVERIFY(!view.markerOffSlice());
+    QVERIFY2(!view.titleText().contains(QStringLiteral("not the pose")), qPrintable(view.titleText()));
+    // the slice moved to the pose's φ (an edit of φ_map) puts the pose on it
+    pose.outputs[2] = design->pose.outputs[2];
+    view.setPose(pose);
+    QVERIFY(view.markerOffSlice());
+    auto turned = design->mechanism->withParameter("phi_map", pose.outputs[2]);
+    QVERIFY(turned);
+    ready.clear();
+    view.setMechanism(*turned);
+    QVERIFY(!view.markerOffSlice());
+    QVERIFY(ready.wait(waitMilliseconds));
 
     ready.clear();
     view.setMechanism(moma());
