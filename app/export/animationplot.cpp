@@ -137,8 +137,19 @@ Result<AnimationPlot> animationPlot(const Mechanism &mechanism, const Pose &star
     const VariableInfo &input = mechanism.variableInfo()[settings.variable];
     plot.xLabel = axisName(input.symbol, input.unit);
     plot.yLabel = axisName(plot.entry.symbol, plot.entry.unit);
+    // The labels' names only, without what follows them ("(0: direct, ∞: inverse singularity)",
+    // ", from +x counter-clockwise"): the whole descriptions took three lines over a plot of
+    // half a frame, and the axes give the symbols and units.
+    const auto name = [](const std::string &label) {
+        QString text = coreLabel(label);
+        for (const QString &end : {QStringLiteral(" ("), QStringLiteral(", ")}) {
+            if (const qsizetype at = text.indexOf(end); at > 0)
+                text.truncate(at);
+        }
+        return text;
+    };
     plot.title = QCoreApplication::translate("pkm::AnimationPlot", "%1 against %2")
-                     .arg(coreLabel(plot.entry.label), coreLabel(input.label));
+                     .arg(name(plot.entry.label), name(input.label));
     if (!plot.title.isEmpty())
         plot.title[0] = plot.title[0].toUpper(); // a title, where the labels are set for a sentence
     const double from = std::min(settings.from, settings.to), to = std::max(settings.from, settings.to);

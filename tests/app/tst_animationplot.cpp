@@ -118,6 +118,24 @@ private slots:
         QCOMPARE(plot->xLabel, QStringLiteral("θ (°)"));
     }
 
+    /// The title names the two quantities without their descriptions: the five-bar's det J
+    /// against θ₁ took three lines beside the mechanism ("Determinant of J (0: direct, ∞:
+    /// inverse singularity) against crank AB angle at A, from +x counter-clockwise").
+    void titleNamesWithoutDescriptions()
+    {
+        const Design design = designfile::load(QStringLiteral("fivebar-example")).value();
+        const Mechanism &m = *design.mechanism;
+        AnimationSettings settings;
+        settings.variable = m.variableIndex("theta1");
+        settings.from = 100.0 * std::numbers::pi / 180.0;
+        settings.to = 130.0 * std::numbers::pi / 180.0;
+        settings.frames = 8;
+        settings.size = QSize(640, 360);
+        const auto plot = animationPlot(m, design.pose, settings, "det_J");
+        QVERIFY2(plot.ok(), plot.ok() ? "" : plot.failure().message.c_str());
+        QCOMPARE(plot->title, QStringLiteral("Determinant of J against crank AB angle at A"));
+    }
+
     /// The title joins two labels in the nominative: Russian and Serbian say which is on the
     /// abscissa rather than put a nominative after "от"/"од" ("… в зависимости от угол …").
     void titleIsGrammaticalInEveryLanguage()
