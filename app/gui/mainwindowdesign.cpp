@@ -7,6 +7,7 @@
 
 #include "gui/animationdialog.h"
 #include "gui/backgroundtask.h"
+#include "gui/player.h"
 #include "designpanel.h"
 #include "document/designsession.h"
 #include "document/document.h"
@@ -160,7 +161,9 @@ void MainWindow::onPoseChanged()
     // A pose that arrives is a success: an error about an earlier move (a drag, a map click or a
     // value beyond reach) is no longer true, whatever the next note says.
     const QString note = m_document->limitNote();
-    m_view->setMessage(note);
+    // While Play runs, a limit it turns at is said in the status bar only (Play says why it
+    // turned or stopped): the note over the drawing covered part of what the class watches.
+    m_view->setMessage(m_player && m_player->isPlaying() ? QString() : note);
     if (!note.isEmpty()) {
         showStatus(note);
     } else if (m_statusHeldUntil.hasExpired()) {

@@ -103,6 +103,31 @@ private slots:
         QVERIFY(!w.player()->isPlaying());
     }
 
+    /// While Play turns at a limit, the note is in the status bar only: over the drawing it
+    /// covered part of what the class watches. A hand that moves there gets it over the drawing.
+    void aLimitDuringPlayLeavesTheDrawingFree()
+    {
+        open(QStringLiteral("pjoint-prototype"));
+        MainWindow &w = *m_window;
+        PlayBar *bar = w.playBar();
+        const int t = theta(w);
+        bar->setVariable(t);
+        const Interval range = w.document()->mechanism()->variableRange(t);
+        bar->setRange(range.max - 12 * deg, range.max);
+        bar->setSpeed(60 * deg);
+        bar->setMode(PlayMode::ForthAndBack);
+        w.setPlaying(true);
+        for (int i = 0; i < 20 && variable(w, t) < range.max - 1e-9; ++i)
+            w.player()->advance(0.1);
+        QCOMPARE_LT(std::abs(variable(w, t) - range.max), 1e-9);
+        QVERIFY(w.player()->isPlaying());
+        QVERIFY(!w.document()->limitNote().isEmpty());
+        QVERIFY2(w.linkageView()->message().isEmpty(), qPrintable(w.linkageView()->message()));
+        w.setPlaying(false);
+        QVERIFY(w.document()->setVariable(t, range.max + 1 * deg).ok()); // a hand past the limit
+        QCOMPARE(w.linkageView()->message(), w.document()->limitNote());
+    }
+
     void onceStopsAtTheEndAndSaysSo()
     {
         open(QStringLiteral("pjoint-prototype"));
