@@ -351,8 +351,7 @@ void exportAnimation(QWidget *parent, MechanismPtr mechanism, const Pose &pose, 
             TaskFailure failure = video ? writeVideo(*mechanism, pose, settings, path, cancel, progress)
                                         : writeGif(*mechanism, pose, settings, path, cancel);
             // Here as well as below: the frames are freed by now, in this thread; on a loaded
-            // machine the trim below could run before they were, and their pages stayed with
-            // the pool's idle thread for its 30 s.
+            // machine the trim below could run before they were.
             malloc_trim(0);
             return failure;
         },

@@ -4,6 +4,7 @@
 #include <QFutureWatcher>
 #include <QPointer>
 #include <QProgressDialog>
+#include <QThreadPool>
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -18,6 +19,21 @@ struct Progress {
     std::atomic<int> done {0};
     std::atomic<int> total {0}; ///< 0: not known (a busy bar)
 };
+/// The pool long jobs run in. Its threads leave as soon as their job is done: a thread keeps
+/// caches of its own (the glyphs an animation's frames were drawn with, its malloc arena)
+/// until it exits, and in the shared pool an idle thread lives 30 s, so the memory of one
+/// export could stay with the window that long (CI measured 29.5 s).
+QThreadPool *jobPool()
+{
+    static QPointer<QThreadPool> pool;
+    if (!pool) {
+        // The application's child: it waits for a running job as the application closes,
+        // as the shared pool would.
+        pool = new QThreadPool(QCoreApplication::instance());
+        pool->setExpiryTimeout(0);
+    }
+    return pool;
+}
 } // namespace
 
 void runWithProgress(QWidget *parent, const QString &title, const QString &label,
@@ -59,7 +75,7 @@ void runWithProgress(QWidget *parent, const QString &title, const QString &label
         state->done = doneSteps;
         state->total = total;
     };
-    watcher->setFuture(QtConcurrent::run([work = std::move(work), cancel, report] { return work(*cancel, report); }));
+    watcher->setFuture(QtConcurrent::run(jobPool(), [work = std::move(work), cancel, report] { return work(*cancel, report); }));
 }
 
 void runInBackground(QWidget *parent, const QString &title, const QString &label,
