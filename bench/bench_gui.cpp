@@ -38,9 +38,6 @@
 #include "workspacemapview.h"
 
 #include <QApplication>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
-#include <QOpenGLWidget>
 #include <QTabWidget>
 #include <QElapsedTimer>
 #include <QStandardPaths>
@@ -171,10 +168,7 @@ int main(int argc, char *argv[])
             QApplication::processEvents();
             if (in3d) {
                 // the frame is done when the GL pipeline has drawn it
-                QOpenGLWidget *gl = view3d->glWidget();
-                gl->makeCurrent();
-                gl->context()->functions()->glFinish();
-                gl->doneCurrent();
+                view3d->finishFrame();
             }
             times.push_back(timer.nsecsElapsed() / 1e6);
         }

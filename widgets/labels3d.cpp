@@ -69,30 +69,4 @@ void paintLabels3D(QPainter &painter, const std::vector<Label3D> &labels, const 
     painter.restore();
 }
 
-Labels3DOverlay::Labels3DOverlay(const Scene3D *scene, const Camera3D *camera, QWidget *parent)
-    : QWidget(parent)
-    , m_scene(scene)
-    , m_camera(camera)
-{
-    setAttribute(Qt::WA_TransparentForMouseEvents);
-    setAttribute(Qt::WA_NoSystemBackground);
-    setFocusPolicy(Qt::NoFocus);
-}
-
-void Labels3DOverlay::setShown(bool shown)
-{
-    m_shown = shown;
-    update();
-}
-
-void Labels3DOverlay::paintEvent(QPaintEvent *)
-{
-    if (!m_shown || m_scene->labels.empty())
-        return;
-    QPainter painter(this);
-    Camera3D camera = *m_camera;
-    camera.setViewport(width(), height());
-    paintLabels3D(painter, m_scene->labels, camera, font());
-}
-
 } // namespace pkm

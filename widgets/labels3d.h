@@ -9,7 +9,6 @@
 #include "scene3d.h"
 
 #include <QFont>
-#include <QWidget>
 
 #include <vector>
 
@@ -23,25 +22,5 @@ void paintLabels3D(QPainter &painter, const std::vector<Label3D> &labels, const 
 
 /// The font of the names: the given one, bold and a little larger, as the 2D view's joint names.
 QFont labelFont3D(const QFont &base);
-
-/// A transparent layer over the 3D view's OpenGL surface that draws the names, without
-/// touching OpenGL's state; mouse events pass through it to the view.
-class Labels3DOverlay : public QWidget
-{
-public:
-    /// Reads the scene and the camera of the view it lies over, whenever it paints.
-    Labels3DOverlay(const Scene3D *scene, const Camera3D *camera, QWidget *parent);
-
-    void setShown(bool shown);
-    bool shown() const { return m_shown; }
-
-protected:
-    void paintEvent(QPaintEvent *event) override;
-
-private:
-    const Scene3D *m_scene;
-    const Camera3D *m_camera;
-    bool m_shown = true;
-};
 
 } // namespace pkm

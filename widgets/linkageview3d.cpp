@@ -1,5 +1,6 @@
 #include "linkageview3d.h"
 
+#include "canvas3d.h"
 #include "labels3d.h"
 
 #include <QElapsedTimer>
@@ -8,7 +9,8 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
-#include <QOpenGLWidget>
+#include <QOpenGLFunctions>
+#include <QOpenGLPaintDevice>
 #include <QFontInfo>
 #include <QPainter>
 #include <QWheelEvent>
@@ -17,28 +19,6 @@
 #include <cmath>
 
 namespace pkm {
-
-/// The OpenGL surface: draws through its view and leaves every input event to it (ignored
-/// events go on to the parent).
-class LinkageView3D::Canvas : public QOpenGLWidget
-{
-public:
-    explicit Canvas(LinkageView3D *view)
-        : QOpenGLWidget(view)
-        , m_view(view)
-    {
-        // On this widget only: the rest of the application keeps the platform's format.
-        setFormat(Renderer3D::surfaceFormat());
-        setFocusPolicy(Qt::NoFocus);
-    }
-
-protected:
-    void initializeGL() override { m_view->initializeGl(); }
-    void paintGL() override { m_view->paintGl(); }
-
-private:
-    LinkageView3D *m_view;
-};
 
 LinkageView3D::LinkageView3D(QWidget *parent)
     : QWidget(parent)
@@ -49,7 +29,7 @@ LinkageView3D::LinkageView3D(QWidget *parent)
     connect(&m_refine, &QTimer::timeout, this, [this] {
         m_refining = true;
         if (m_canvas)
-            m_canvas->update();
+            m_canvas->requestFrame();
     });
 
     m_unavailableLabel = new QLabel(this);
@@ -67,32 +47,33 @@ LinkageView3D::LinkageView3D(QWidget *parent)
     m_unavailableLabel->hide();
 
     // Known before the first paint, so that a view that can never draw says so at once and
-    // never puts a QOpenGLWidget into a window that cannot composite it.
+    // never makes a native OpenGL window that cannot work.
     static const Renderer3D::Message problem = Renderer3D::probeOpenGLMessage(); // once per process: it makes a context
 
-    if (problem.isEmpty())
-        m_canvas = new Canvas(this);
-    else
+    if (problem.isEmpty()) {
+        m_canvas = new Canvas3D(this);
+        connect(m_canvas, &Canvas3D::frameDue, this, &LinkageView3D::drawFrame);
+        m_container = QWidget::createWindowContainer(m_canvas, this); // owns the canvas
+        m_container->setFocusPolicy(Qt::NoFocus);
+    } else {
         setUnavailable(problem);
-    // Over the OpenGL surface, drawn by QPainter alone: OpenGL's state is the renderer's.
-    m_labels = new Labels3DOverlay(&m_scene, &m_camera, this);
-    m_labels->setVisible(problem.isEmpty());
+    }
 }
 
 LinkageView3D::~LinkageView3D()
 {
     cleanupGl();
-    // The GL widget goes now, while this object is whole: deleting it destroys its context,
-    // whose aboutToBeDestroyed would otherwise reach cleanupGl() from ~QWidget, on a view that
-    // is no longer a LinkageView3D.
-    Canvas *canvas = m_canvas;
+    // The canvas and its context go now, while this object is whole: its frames reach
+    // drawFrame(), which a view being destroyed must not run.
+    QWidget *container = m_container;
+    m_container = nullptr;
     m_canvas = nullptr;
-    delete canvas;
+    delete container;
 }
 
-QOpenGLWidget *LinkageView3D::glWidget() const
+bool LinkageView3D::hasGlContext() const
 {
-    return m_canvas;
+    return m_canvas && m_canvas->hasContext();
 }
 
 void LinkageView3D::setUnavailable(const Renderer3D::Message &reason)
@@ -103,10 +84,8 @@ void LinkageView3D::setUnavailable(const Renderer3D::Message &reason)
     m_unavailableLabel->setGeometry(rect());
     m_unavailableLabel->show();
     m_unavailableLabel->raise();
-    if (m_canvas)
-        m_canvas->hide();
-    if (m_labels)
-        m_labels->hide();
+    if (m_container)
+        m_container->hide();
 }
 
 QString LinkageView3D::unavailableText(QChar separator) const
@@ -123,48 +102,82 @@ void LinkageView3D::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange && m_glFailed)
         m_unavailableLabel->setText(unavailableText(QLatin1Char('\n')));
+    if (event->type() == QEvent::FontChange)
+        requestFrame(); // the names follow the text size
     QWidget::changeEvent(event);
 }
 
 void LinkageView3D::requestFrame()
 {
     if (m_canvas)
-        m_canvas->update();
-    if (m_labels)
-        m_labels->update();
+        m_canvas->requestFrame();
 }
 
 void LinkageView3D::setLabelsShown(bool shown)
 {
-    m_labels->setShown(shown);
+    m_labelsShown = shown;
+    requestFrame();
 }
 
 bool LinkageView3D::labelsShown() const
 {
-    return m_labels->shown();
+    return m_labelsShown;
 }
 
 void LinkageView3D::cleanupGl()
 {
-    if (!m_canvas || !m_renderer.isInitialized())
+    if (!m_canvas || !m_renderer.isInitialized() || !m_canvas->makeCurrent())
         return;
-    m_canvas->makeCurrent();
     m_renderer.cleanup();
     m_canvas->doneCurrent();
 }
 
-void LinkageView3D::initializeGl()
+bool LinkageView3D::makeCurrent()
 {
-    // A new context after reparenting: the old objects went with the old one.
-    connect(m_canvas->context(), &QOpenGLContext::aboutToBeDestroyed, this, &LinkageView3D::cleanupGl,
-        Qt::UniqueConnection);
-    if (!m_renderer.initialize()) {
-        setUnavailable(m_renderer.errorMessage());
-        return;
+    if (!m_canvas || m_glFailed)
+        return false;
+    if (!m_canvas->makeCurrent()) {
+        setUnavailable({QT_TRANSLATE_NOOP("pkm::Renderer3D", "No OpenGL context is current."), {}});
+        return false;
     }
-    m_glFailed = false;
-    m_unavailableReason = {};
-    m_unavailableLabel->hide();
+    if (!m_renderer.isInitialized() && !m_renderer.initialize()) {
+        setUnavailable(m_renderer.errorMessage());
+        return false;
+    }
+    return true;
+}
+
+void LinkageView3D::drawFrame()
+{
+    if (!m_canvas || !m_canvas->isExposed() || !makeCurrent())
+        return;
+    paintGl();
+    m_canvas->swapBuffers();
+}
+
+QImage LinkageView3D::grabFrame()
+{
+    if (!m_canvas || !m_canvas->isExposed() || !makeCurrent())
+        return {};
+    m_canvas->cancelFrame(); // this one is the latest
+    paintGl();
+    const QSize pixels = m_canvas->size() * m_canvas->devicePixelRatio();
+    QImage frame(pixels, QImage::Format_RGBA8888);
+    QOpenGLFunctions *gl = QOpenGLContext::currentContext()->functions();
+    gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl->glReadPixels(0, 0, pixels.width(), pixels.height(), GL_RGBA, GL_UNSIGNED_BYTE, frame.bits());
+    m_canvas->swapBuffers();
+    return frame.mirrored().convertToFormat(QImage::Format_RGB32);
+}
+
+void LinkageView3D::finishFrame()
+{
+    if (m_canvas && m_canvas->framePending()) {
+        m_canvas->cancelFrame();
+        drawFrame();
+    }
+    if (makeCurrent())
+        QOpenGLContext::currentContext()->functions()->glFinish();
 }
 
 void LinkageView3D::paintGl()
@@ -181,9 +194,19 @@ void LinkageView3D::paintGl()
     const bool refine = m_refining;
     m_refining = false;
     m_lastFrameSamples = !m_renderer.isSoftware() || refine ? 4 : 1;
-    m_renderer.render(m_camera, m_canvas->size(), m_canvas->devicePixelRatioF(), m_lastFrameSamples);
+    m_renderer.render(m_camera, m_canvas->size(), m_canvas->devicePixelRatio(), m_lastFrameSamples);
     if (m_lastFrameSamples == 1)
         m_refine.start();
+    if (m_labelsShown && !m_scene.labels.empty()) {
+        // The names over the model, by QPainter on OpenGL: Renderer3D sets every state it
+        // draws with, so what the painter leaves behind does not reach the next frame.
+        QOpenGLPaintDevice device(m_canvas->size() * m_canvas->devicePixelRatio());
+        device.setDevicePixelRatio(m_canvas->devicePixelRatio());
+        QPainter painter(&device);
+        Camera3D view = m_camera;
+        view.setViewport(m_canvas->width(), m_canvas->height());
+        paintLabels3D(painter, m_scene.labels, view, font());
+    }
     ++m_frameCount;
     m_lastFrameMilliseconds = double(timer.nsecsElapsed()) / 1e6;
 }
@@ -257,8 +280,7 @@ QImage LinkageView3D::renderImage(const QSize &size)
     }
     syncViewport();
     QImage image;
-    if (m_canvas && m_renderer.isInitialized() && m_canvas->isValid()) {
-        m_canvas->makeCurrent();
+    if (hasGlContext() && m_renderer.isInitialized() && makeCurrent()) {
         image = m_renderer.renderImage(m_camera, size);
         if (image.isNull())
             m_imageError = m_renderer.errorString();
@@ -273,7 +295,7 @@ QImage LinkageView3D::renderImage(const QSize &size)
         // The names as the view shows them, enlarged with the picture (it is drawn at `size`).
         Camera3D view = m_camera;
         view.setViewport(size.width(), size.height());
-        QFont font = m_labels->font();
+        QFont font = this->font();
         font.setPixelSize(int(std::lround(QFontInfo(font).pixelSize() * double(size.height()) / std::max(1, height()))));
         QPainter painter(&image);
         paintLabels3D(painter, m_scene.labels, view, font);
@@ -285,9 +307,8 @@ void LinkageView3D::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
     m_unavailableLabel->setGeometry(rect());
-    if (m_canvas)
-        m_canvas->setGeometry(rect());
-    m_labels->setGeometry(rect());
+    if (m_container)
+        m_container->setGeometry(rect());
     syncViewport();
     if (m_hasScene && !m_userMoved)
         fit();
@@ -310,8 +331,23 @@ void LinkageView3D::mousePressEvent(QMouseEvent *event)
     else
         return QWidget::mousePressEvent(event);
     m_lastPosition = event->position().toPoint();
-    setCursor(m_drag == Drag::Orbit ? Qt::SizeAllCursor : Qt::ClosedHandCursor);
+    setFocus(Qt::MouseFocusReason); // the canvas under the mouse takes no focus itself
+    setDragCursor(m_drag == Drag::Orbit ? Qt::SizeAllCursor : Qt::ClosedHandCursor);
     event->accept();
+}
+
+void LinkageView3D::setDragCursor(Qt::CursorShape shape)
+{
+    setCursor(shape);
+    if (m_canvas)
+        m_canvas->setCursor(shape);
+}
+
+void LinkageView3D::unsetDragCursor()
+{
+    unsetCursor();
+    if (m_canvas)
+        m_canvas->unsetCursor();
 }
 
 void LinkageView3D::mouseMoveEvent(QMouseEvent *event)
@@ -336,7 +372,7 @@ void LinkageView3D::mouseReleaseEvent(QMouseEvent *event)
         return QWidget::mouseReleaseEvent(event);
     if (!(event->buttons() & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton))) {
         m_drag = Drag::None;
-        unsetCursor();
+        unsetDragCursor();
     }
     event->accept();
 }
@@ -346,7 +382,7 @@ void LinkageView3D::mouseDoubleClickEvent(QMouseEvent *event)
     if (event->button() != Qt::LeftButton)
         return QWidget::mouseDoubleClickEvent(event);
     m_drag = Drag::None;
-    unsetCursor();
+    unsetDragCursor();
     fit();
     event->accept();
 }

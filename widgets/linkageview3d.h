@@ -4,9 +4,8 @@
 /// pose: its owner calls setScene() whenever the pose or the design changes.
 ///
 /// Without OpenGL 3.3 (the offscreen platform, a remote session, an old driver) it does not
-/// crash and does not go blank: it shows why, and isGlAvailable() is false. That is why the
-/// QOpenGLWidget is a child made only once a 3.3 core context is known to work, not a base
-/// class: Qt 6.4 crashes flushing a window that holds a QOpenGLWidget when OpenGL cannot start.
+/// crash and does not go blank: it shows why, and isGlAvailable() is false. The OpenGL surface
+/// (canvas3d.h) is a child made only once a 3.3 core context is known to work.
 ///
 /// Mouse: left drag orbits; right, middle or Shift+left drag pans; the wheel zooms towards the
 /// cursor; a double click fits. Keys: F (or Home) fits, 1 front, 3 side, 7 top, 5 switches
@@ -23,12 +22,11 @@
 #include <QWidget>
 
 class QLabel;
-class QOpenGLWidget;
 class QToolButton;
 
 namespace pkm {
 
-class Labels3DOverlay;
+class Canvas3D;
 
 class LinkageView3D : public QWidget
 {
@@ -66,14 +64,22 @@ public:
     void setLabelsShown(bool shown);
     bool labelsShown() const;
 
-    /// The OpenGL surface (a child filling the view), or null when OpenGL is unavailable.
-    QOpenGLWidget *glWidget() const;
+    /// Whether the view has its OpenGL surface (false when OpenGL is unavailable) and whether
+    /// that surface has made its context (it does when first shown).
+    bool hasGlSurface() const { return m_canvas != nullptr; }
+    bool hasGlContext() const;
+    /// Draws a frame now, as the view would show it, and returns it (a null image when the
+    /// view is not on screen): what a test compares.
+    QImage grabFrame();
+    /// Draws the frame asked for, if one is, and waits until OpenGL has finished it: what a
+    /// benchmark times.
+    void finishFrame();
 
     int frameCount() const { return m_frameCount; }
     /// The samples per pixel of the last frame: 4, or 1 for a frame drawn in motion by a
     /// renderer on the CPU (it is drawn again with 4 once the motion rests).
     int lastFrameSamples() const { return m_lastFrameSamples; }
-    /// CPU time of the last paintGL(), ms (GL work may finish later).
+    /// CPU time of the last frame, ms (GL work may finish later).
     double lastFrameMilliseconds() const { return m_lastFrameMilliseconds; }
 
     QSize sizeHint() const override { return {800, 600}; }
@@ -102,10 +108,13 @@ protected:
 
 private:
     enum class Drag { None, Orbit, Pan };
-    class Canvas;
 
-    void initializeGl();
+    /// Makes the canvas's context current, setting the renderer up in it the first time.
+    bool makeCurrent();
+    /// Draws the frame into the canvas's back buffer (swapped by the caller).
     void paintGl();
+    /// Draws the frame and shows it.
+    void drawFrame();
     void cleanupGl();
     void requestFrame();
     /// Shows why (one sentence) instead of the picture.
@@ -114,6 +123,9 @@ private:
     QString unavailableText(QChar separator) const;
     void syncViewport();
     void cameraMoved();
+    /// On the view and on its canvas, a native window with a cursor of its own.
+    void setDragCursor(Qt::CursorShape shape);
+    void unsetDragCursor();
 
     Renderer3D m_renderer;
     Camera3D m_camera;
@@ -123,9 +135,10 @@ private:
     bool m_glFailed = false;
     Renderer3D::Message m_unavailableReason;
     QString m_imageError;
-    Canvas *m_canvas = nullptr;
+    Canvas3D *m_canvas = nullptr;
+    QWidget *m_container = nullptr; ///< the canvas as a child widget filling the view
     QLabel *m_unavailableLabel = nullptr;
-    Labels3DOverlay *m_labels = nullptr;
+    bool m_labelsShown = true;
 
     Drag m_drag = Drag::None;
     QPoint m_lastPosition;

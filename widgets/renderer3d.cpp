@@ -296,6 +296,11 @@ void Renderer3D::render(const Camera3D &camera, const QSize &viewport, qreal dev
 void Renderer3D::draw(const Camera3D &camera, const QSize &viewport, const QSize &pixels)
 {
     m_gl->glViewport(0, 0, pixels.width(), pixels.height());
+    // What a QPainter on the same context (the view's names) may have left set.
+    m_gl->glDisable(GL_SCISSOR_TEST);
+    m_gl->glDisable(GL_STENCIL_TEST);
+    m_gl->glDisable(GL_BLEND);
+    m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     const QColor background = backgroundColour();
     m_gl->glClearColor(float(background.redF()), float(background.greenF()), float(background.blueF()), 1.0f);
     m_gl->glDepthMask(GL_TRUE);

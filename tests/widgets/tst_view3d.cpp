@@ -11,7 +11,6 @@
 
 #include <QDir>
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -291,7 +290,7 @@ void TestView3D::widgetPaintsWhatRenderImageRenders()
     const Camera3D camera = fixedCamera(scene, View::Isometric, Projection::Perspective);
     const QImage offscreen = render(scene, camera);
     const int frames = m_view->frameCount();
-    const QImage frame = m_view->glWidget()->grabFramebuffer();
+    const QImage frame = m_view->grabFrame();
     QVERIFY(m_view->frameCount() > frames);
     QCOMPARE(frame.size(), pictureSize * m_view->devicePixelRatioF());
     const Difference d = compare(frame.scaled(pictureSize), offscreen);
@@ -315,12 +314,13 @@ void TestView3D::renderImageBeforeShown()
     hidden.setScene(scene);
     hidden.setCamera(camera);
     QVERIFY(hidden.isGlAvailable());
-    QVERIFY(!hidden.glWidget()->isValid());
+    QVERIFY(hidden.hasGlSurface());
+    QVERIFY(!hidden.hasGlContext());
     const QImage image = hidden.renderImage(pictureSize);
     QVERIFY2(!image.isNull(), qPrintable(hidden.imageError()));
     const Difference d = compare(image, shown);
     QVERIFY2(d.mean < 1.0 && d.farFraction < 0.002, qPrintable(QString::number(d.mean)));
-    QVERIFY(!hidden.glWidget()->isValid()); // no context was made for the widget
+    QVERIFY(!hidden.hasGlContext()); // no context was made for the view
 }
 
 void TestView3D::projectionChangesPicture()
@@ -437,7 +437,7 @@ void TestView3D::frameTime()
         sceneTimer.start();
         m_view->setScene(m->scene3d(pose));
         sceneNanoseconds += sceneTimer.nsecsElapsed();
-        QVERIFY(!m_view->glWidget()->grabFramebuffer().isNull());
+        QVERIFY(!m_view->grabFrame().isNull());
     }
     const double total = double(timer.nsecsElapsed()) / 1e6 / double(poses.size());
     QCOMPARE(m_view->frameCount(), frames + int(poses.size()));
@@ -476,7 +476,7 @@ void TestView3D::manySolidsFrameTime()
         sceneTimer.start();
         m_view->setScene(scene);
         sceneNanoseconds += sceneTimer.nsecsElapsed();
-        QVERIFY(!m_view->glWidget()->grabFramebuffer().isNull());
+        QVERIFY(!m_view->grabFrame().isNull());
     }
     const QImage image = m_view->renderImage(pictureSize);
     keep(image, QStringLiteral("many-solids"));

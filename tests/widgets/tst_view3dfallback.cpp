@@ -51,7 +51,7 @@ void TestView3DFallback::viewWithoutOpenGl()
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
     QTest::qWait(50);
     QVERIFY(!view->isGlAvailable());
-    QVERIFY(!view->glWidget()); // no QOpenGLWidget in a window that cannot composite it
+    QVERIFY(!view->hasGlSurface()); // no OpenGL window where OpenGL cannot start
     QVERIFY(view->glStatus().startsWith(QStringLiteral("3D view unavailable: OpenGL 3.3 could not be started")));
     const auto labels = view->findChildren<QLabel *>();
     QCOMPARE(labels.size(), 1);
