@@ -74,6 +74,7 @@ Singularity classifySingularity(double inverseMargin, double directMargin, doubl
            : direct            ? SingularityType::Direct
                                : SingularityType::None;
     s.margin = std::min(inverseMargin, directMargin);
+    s.directMargin = directMargin;
     return s;
 }
 
@@ -196,12 +197,28 @@ Result<Pose> Mechanism::solveWith(const Pose &current, int variable, double valu
 
 std::vector<ModeAlternative> Mechanism::modeAlternatives(const Pose &pose) const
 {
-    return solveAlternatives(modeNeighbours(), pose);
+    return solveAlternatives(modeNeighbours(), pose, this);
 }
 
 std::vector<ModeAlternative> Mechanism::solveAlternatives(const std::vector<ModeAlternative> &neighbours,
-                                                          const Pose &pose)
+                                                          const Pose &pose, const Mechanism *current)
 {
+    bool meeting = false; // two assembly modes meet at this pose
+    ParameterSet parameters;
+    if (current) {
+        std::vector<double> values(current->reportLayout().size);
+        const SingularityType type = current->evaluate(pose, values).type;
+        meeting = type == SingularityType::Direct || type == SingularityType::Combined;
+        if (meeting)
+            parameters = current->parameters();
+    }
+    // a neighbour whose changes hold already is the mode the design is in
+    const auto isCurrentMode = [&](const ModeAlternative &neighbour) {
+        return std::all_of(neighbour.changes.begin(), neighbour.changes.end(), [&](const auto &change) {
+            const auto it = parameters.find(change.first);
+            return it != parameters.end() && it->second == change.second;
+        });
+    };
     std::vector<ModeAlternative> solved;
     for (const ModeAlternative &neighbour : neighbours) {
         const bool taken = std::any_of(solved.begin(), solved.end(),
@@ -217,7 +234,8 @@ std::vector<ModeAlternative> Mechanism::solveAlternatives(const std::vector<Mode
             continue;
         // a mode whose pose is the current one (the solution the design is in already) is no ghost
         if (neighbour.sameInputs && pose2->outputs.size() == pose.outputs.size()
-            && (pose2->outputs - pose.outputs).norm() <= 1e-9 * std::max(1.0, pose.outputs.norm()))
+            && (pose2->outputs - pose.outputs).norm() <= 1e-9 * std::max(1.0, pose.outputs.norm())
+            && (!meeting || isCurrentMode(neighbour)))
             continue;
         ModeAlternative alternative = neighbour;
         alternative.pose = *pose2;

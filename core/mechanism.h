@@ -142,6 +142,7 @@ std::string_view singularityName(SingularityType type); ///< "none", "inverse", 
 struct Singularity {
     SingularityType type = SingularityType::None;
     double margin = 1.0; ///< dimensionless distance from the nearest singularity, 0 at it
+    double directMargin = 1.0; ///< the same from the nearest direct singularity alone
 };
 
 /// The class of a pose from its scale-free margins from the inverse and the direct
@@ -246,9 +247,12 @@ public:
     /// The other modes the mechanism could be in at this pose: the neighbours solved at the
     /// pose's inputs (or outputs), one per label.
     std::vector<ModeAlternative> modeAlternatives(const Pose &pose) const;
-    /// The same for neighbours computed before (cheap: one solve per neighbour).
+    /// The same for neighbours computed before (cheap: one solve per neighbour). A neighbour
+    /// whose pose is this one is dropped — unless `current`, the design the pose is in, is at a
+    /// direct singularity there and the neighbour is another mode: that is where two assembly
+    /// modes meet and the mechanism can go on in the other one.
     static std::vector<ModeAlternative> solveAlternatives(const std::vector<ModeAlternative> &neighbours,
-                                                          const Pose &pose);
+                                                          const Pose &pose, const Mechanism *current = nullptr);
     /// Every real assembly mode at the inputs of `pose` (every solution of the direct
     /// kinematics in the design's working modes), `pose` among them, for `pkm eval
     /// --all-modes`. The default: `pose` and the neighbours that keep the inputs, solved there.

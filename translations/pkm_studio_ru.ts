@@ -1617,10 +1617,6 @@ Please verify the correct file name was given.</source>
         <translation>C не может достичь точки %1: кривошип %2 должен был бы стоять в %3 = %4, вне своего диапазона %5.</translation>
     </message>
     <message>
-        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch assembly to go on.</source>
-        <translation>C не может достичь точки %1 в этом варианте сборки (%2): она пересекла бы прямую BD, на которой шатуны лежат на одной линии (особое положение прямой кинематики); чтобы продолжить, переключите вариант сборки (assembly).</translation>
-    </message>
-    <message>
         <source>No failure.</source>
         <translation>Ошибки нет.</translation>
     </message>
@@ -4147,6 +4143,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>mm⁷/rad³</source>
         <translation>мм⁷/рад³</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch to the other assembly mode to go on.</source>
+        <translation>C не может достичь точки %1 в этом варианте сборки (%2): она пересекла бы прямую BD, на которой шатуны лежат на одной линии (особое положение прямой кинематики); чтобы продолжить, переключитесь на другой вариант сборки.</translation>
     </message>
 </context>
 <context>

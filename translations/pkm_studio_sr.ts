@@ -1617,10 +1617,6 @@ Please verify the correct file name was given.</source>
         <translation>C не може да стигне до тачке %1: полуга %2 би морала да буде на %3 = %4, ван свог опсега %5.</translation>
     </message>
     <message>
-        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch assembly to go on.</source>
-        <translation>C не може да стигне до тачке %1 у овом начину склапања (%2): прешла би праву BD, на којој су спојке на истој правој (сингуларитет директне кинематике); промените начин склапања (assembly) да бисте наставили.</translation>
-    </message>
-    <message>
         <source>No failure.</source>
         <translation>Нема грешке.</translation>
     </message>
@@ -4147,6 +4143,10 @@ Please verify the correct file name was given.</source>
     <message>
         <source>mm⁷/rad³</source>
         <translation>mm⁷/rad³</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch to the other assembly mode to go on.</source>
+        <translation>C не може да стигне до тачке %1 у овом начину склапања (%2): прешла би праву BD, на којој су спојке на истој правој (сингуларитет директне кинематике); пређите на други начин склапања да бисте наставили.</translation>
     </message>
 </context>
 <context>

@@ -1617,10 +1617,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>C ne može da stigne do tačke %1: poluga %2 bi morala da bude na %3 = %4, van svog opsega %5.</translation>
     </message>
     <message>
-        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch assembly to go on.</source>
-        <translation>C ne može da stigne do tačke %1 u ovom načinu sklapanja (%2): prešla bi pravu BD, na kojoj su spojke na istoj pravoj (singularitet direktne kinematike); promenite način sklapanja (assembly) da biste nastavili.</translation>
-    </message>
-    <message>
         <source>No failure.</source>
         <translation>Nema greške.</translation>
     </message>
@@ -4147,6 +4143,10 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>mm⁷/rad³</source>
         <translation>mm⁷/rad³</translation>
+    </message>
+    <message>
+        <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch to the other assembly mode to go on.</source>
+        <translation>C ne može da stigne do tačke %1 u ovom načinu sklapanja (%2): prešla bi pravu BD, na kojoj su spojke na istoj pravoj (singularitet direktne kinematike); pređite na drugi način sklapanja da biste nastavili.</translation>
     </message>
 </context>
 <context>

@@ -173,7 +173,7 @@ Result<Pose> Document::moveOutputsTo(const Coordinates &outputs)
 
 std::vector<ModeAlternative> Document::modeAlternatives() const
 {
-    return Mechanism::solveAlternatives(m_modeNeighbours, m_design.pose);
+    return Mechanism::solveAlternatives(m_modeNeighbours, m_design.pose, m_design.mechanism.get());
 }
 
 Result<bool> Document::switchMode(const ModeAlternative &alternative)

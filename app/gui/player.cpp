@@ -109,6 +109,22 @@ void Player::advance(double seconds)
         next = m_direction > 0 ? m_settings.to : m_settings.from;
 
     const VariableInfo &info = m.variableInfo()[std::size_t(variable)];
+    // The crank of a one-input mechanism that turns fully passes its inverse singular poses:
+    // there the output stands still and turns back (a crank-rocker's rocker at either end), and
+    // the crank goes on in the same mode. Only a direct one, where the output is no longer
+    // held, stops it. With more inputs such a pose is where a leg stretches and would go on in
+    // its other working mode, which is the user's switch (the five-bar's crank stops there).
+    const bool passesInverse = info.actuated && m.inputCount() == 1 && turnsFully(m, variable);
+    const auto singularityOf = [&](const Pose &pose) {
+        Singularity s = singularityAt(m, pose);
+        if (passesInverse) {
+            s.type = s.type == SingularityType::Combined ? SingularityType::Direct
+                   : s.type == SingularityType::Inverse  ? SingularityType::None
+                                                         : s.type;
+            s.margin = s.directMargin;
+        }
+        return s;
+    };
     const auto stoppedBefore = [&](SingularityType type, double at) {
         // One sentence each way: "Play turned back: Play stopped before …" said both.
         const QString symbol = toQString(info.symbol), where = formatQuantity(at, info.unit, info.decimals);
@@ -128,7 +144,7 @@ void Player::advance(double seconds)
             const auto at = m.solveWith(current, variable, v);
             if (!at)
                 return false;
-            const Singularity s = singularityAt(m, *at);
+            const Singularity s = singularityOf(*at);
             *type = s.type;
             return s.type == SingularityType::None && s.margin >= stopMargin();
         };
@@ -146,16 +162,16 @@ void Player::advance(double seconds)
         }
         if (good != value)
             m_document->setVariable(variable, good);
-        const Singularity here = singularityAt(m, m_document->pose());
+        const Singularity here = singularityOf(m_document->pose());
         if (here.margin < 2.0 * stopMargin() || edge != SingularityType::None)
             stoppedBefore(edge, m.variableValue(m_document->pose(), variable));
         else
             blocked(QString::fromStdString(ahead.failure().message));
         return;
     }
-    const Singularity there = singularityAt(m, *ahead);
+    const Singularity there = singularityOf(*ahead);
     if (there.type != SingularityType::None
-        || (there.margin < stopMargin() && there.margin < singularityAt(m, current).margin)) {
+        || (there.margin < stopMargin() && there.margin < singularityOf(current).margin)) {
         stoppedBefore(there.type, value);
         return;
     }

@@ -4,6 +4,7 @@
 #include "kinds/moma/moma.h"
 #include "kinds/pjoint/pjoint.h"
 
+#include <algorithm>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -132,6 +133,35 @@ private slots:
         QVERIFY(document.setVariable(0, 0.0).ok());
         QVERIFY2(document.limitNote().startsWith(QStringLiteral("α stops at its lower limit")),
                  qPrintable(document.limitNote()));
+    }
+
+    /// Where the five-bar's distal links line up, its two assembly modes meet: the pose stops
+    /// there and says "switch to the other assembly mode to go on", so that switch is offered
+    /// there (it was dropped as a ghost on the pose itself), and the pose goes on from it.
+    void twoAssemblyModesMeetAtADirectSingularity()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("fivebar-example")).ok());
+        const int y = 3;
+        QCOMPARE(QString::fromStdString(document.mechanism()->variableInfo()[y].name), QStringLiteral("y"));
+        (void)document.setVariable(y, 19.0); // beyond the line BD in this mode: stops on it
+        std::vector<double> values(document.mechanism()->reportLayout().size);
+        const SingularityType here = document.mechanism()->evaluate(document.pose(), values).type;
+        QVERIFY(here == SingularityType::Direct || here == SingularityType::Combined);
+        const std::vector<ModeAlternative> alternatives = document.modeAlternatives();
+        const auto other = std::find_if(alternatives.begin(), alternatives.end(), [](const ModeAlternative &a) {
+            return a.changes.count("assembly") && a.changes.size() == 1;
+        });
+        QVERIFY(other != alternatives.end());
+        const double assembly = document.mechanism()->parameters().at("assembly");
+        QCOMPARE(other->changes.at("assembly"), -assembly);
+        QVERIFY(document.switchMode(*other).ok());
+        QCOMPARE(document.mechanism()->parameters().at("assembly"), -assembly);
+        QVERIFY(document.setVariable(y, 19.0).ok()); // on, in the other mode
+        QCOMPARE(document.mechanism()->variableValue(document.pose(), y), 19.0);
+        // at a regular pose the mode the design is in is never offered
+        for (const ModeAlternative &a : document.modeAlternatives())
+            QVERIFY(!(a.changes.size() == 1 && a.changes.count("assembly") && a.changes.at("assembly") == -assembly));
     }
 
     void designChangeKeepsOutputs()

@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 using namespace pkm;
 using namespace pkm::test;
@@ -166,6 +167,41 @@ private slots:
         }
         QVERIFY2(w.player()->isPlaying(), qPrintable(w.lastStatus()));
         QVERIFY(wrapped);
+        w.setPlaying(false);
+    }
+
+    /// A crank-rocker's crank at the speed a class watches: where crank and coupler line up the
+    /// rocker stands still at either end (an inverse singular pose), and the crank goes on
+    /// round — Play stopped there, at α = 221.86°, as if the mechanism locked.
+    void aCrankPassesTheRockersEnds()
+    {
+        open(QStringLiteral("fourbar-example"));
+        MainWindow &w = *m_window;
+        w.playBar()->setVariable(0); // the crank α over its whole turn, a degree a frame
+        w.playBar()->setMode(PlayMode::Loop);
+        const Interval range = w.document()->mechanism()->variableRange(0);
+        w.playBar()->setRange(range.min, range.max);
+        w.playBar()->setSpeed(Player::framesPerSecond * deg);
+        QSignalSpy stopped(w.player(), &Player::stopped);
+        w.setPlaying(true);
+        const int output = w.document()->mechanism()->inputCount(); // the rocker δ
+        double closest = 1.0, turned = 0.0, previous = variable(w, 0);
+        std::vector<double> rocker;
+        for (int i = 0; i < 4000 && w.player()->isPlaying() && turned < 2 * 360 * deg; ++i) {
+            w.player()->advance(1.0 / Player::framesPerSecond);
+            const double now = variable(w, 0);
+            turned += now - previous < -std::numbers::pi ? now - previous + 2 * std::numbers::pi : now - previous; // 360° is 0°
+            previous = now;
+            rocker.push_back(variable(w, output));
+            closest = std::min(closest, singularityOf(*w.document()->mechanism(), w.document()->pose()).margin);
+        }
+        QVERIFY2(stopped.isEmpty(), qPrintable(stopped.isEmpty() ? QString() : stopped.first().first().toString()));
+        QVERIFY2(turned >= 2 * 360 * deg, qPrintable(QString::number(turned / deg)));
+        QVERIFY2(closest < Player::stopMargin(), qPrintable(QString::number(closest))); // it went through the rocker's ends
+        int reversals = 0;
+        for (std::size_t i = 2; i < rocker.size(); ++i)
+            reversals += (rocker[i] - rocker[i - 1]) * (rocker[i - 1] - rocker[i - 2]) < 0 ? 1 : 0;
+        QVERIFY2(reversals >= 3, qPrintable(QString::number(reversals)));
         w.setPlaying(false);
     }
 

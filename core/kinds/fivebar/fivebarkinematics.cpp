@@ -160,7 +160,7 @@ Failure FiveBar::explain(const Check &check, bool direct, const std::string &cul
         return Failure{FailureKind::Unreachable, culprit,
                        text::format(text::translate("core", "C cannot reach %1 in this assembly mode (%2): it would cross "
                                                             "the line BD, where the distal links are in line (a direct "
-                                                            "singularity); switch assembly to go on."),
+                                                            "singularity); switch to the other assembly mode to go on."),
                                     {point, sidePhrase(d.assembly, "C", "B→D")})};
     case R::None: break;
     }

@@ -402,6 +402,7 @@ Singularity PJoint::singularity(double theta) const
     // Every singularity of the П-joint lies at θ = ±90° (the inverse one only together with the
     // direct one, for k = 1): |cos θ| is the distance to the nearest.
     s.margin = directMeasure;
+    s.directMargin = directMeasure;
     return s;
 }
 
