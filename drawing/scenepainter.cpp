@@ -288,16 +288,46 @@ ScenePainter::MessageLayout ScenePainter::messageLayout(const QRectF &area, cons
     const QSizeF size(std::ceil(text.width()) + 2.0 * pad, std::ceil(text.height()) + 2.0 * pad);
     // never above the view's top: a message taller than the view starts at its top
     layout.box = QRectF(area.left() + margin, std::max(area.top(), bottom - size.height()), size.width(), size.height());
-    // A mechanism low in a short view (a five-bar at a singular pose, its view squeezed by the
-    // mode buttons) would lose its lower joints under the box: at the top, where it covers less.
+    layout.message = message;
     if (drawing.isValid()) {
-        const QRectF top(layout.box.left(), area.top() + margin, size.width(), size.height());
         const auto covered = [&drawing](const QRectF &box) {
             const QRectF both = box.intersected(drawing);
             return both.isValid() ? both.width() * both.height() : 0.0;
         };
+        // A mechanism low in a short view (a five-bar at a singular pose, its view squeezed by
+        // the mode buttons) would lose its lower joints under the box: at the top, where it
+        // covers less.
+        const QRectF top(layout.box.left(), area.top() + margin, size.width(), size.height());
         if (top.bottom() <= area.bottom() && covered(top) < covered(layout.box))
             layout.box = top;
+        // One that fills the view is covered wherever the whole message goes: its headline
+        // ("Singular pose (inverse)", "x stops at its upper limit 18.49 mm") alone then goes to
+        // the corner where it covers least; the whole message is in the status bar.
+        const qsizetype colon = message.indexOf(QStringLiteral(": "));
+        if (covered(layout.box) > 0.0 && colon > 0) {
+            const QString headline = message.left(colon);
+            const auto sized = [&](double width) {
+                const QRectF text = metrics.boundingRect(QRectF(0, 0, width, 1e6), layout.flags, headline);
+                return QSizeF(std::ceil(text.width()) + 2.0 * pad, std::ceil(text.height()) + 2.0 * pad);
+            };
+            const QSizeF small = sized(full), beside = sized(std::max(besideScaleBar, 40.0 * px));
+            const double left = area.left() + margin, right = area.right() - margin - small.width();
+            const double upper = area.top() + margin, lower = area.bottom() - margin;
+            // the scale bar's height (paintScaleBar(): its tick and its label) and a gap
+            const double aboveBar = lower - small.height() - (8.0 * px + metrics.height() + 8.0 * px);
+            // beside the scale bar (wrapped to the room there), or in a corner above it or at the top
+            QRectF best = layout.box;
+            for (const QRectF &box : {QRectF(QPointF(left, lower - beside.height()), beside), QRectF(QPointF(left, upper), small),
+                                      QRectF(QPointF(right, upper), small), QRectF(QPointF(left, aboveBar), small),
+                                      QRectF(QPointF(right, aboveBar), small)}) {
+                if (area.contains(box) && covered(box) < covered(best))
+                    best = box;
+            }
+            if (best != layout.box) {
+                layout.box = best;
+                layout.message = headline;
+            }
+        }
     }
     layout.text = layout.box.adjusted(pad, pad, -pad, -pad);
     return layout;
@@ -332,7 +362,7 @@ void ScenePainter::paintMessage(QPainter &painter, const QRectF &area, const QSt
     painter.drawRoundedRect(layout.box, 6.0 * px, 6.0 * px);
     painter.setFont(layout.font);
     painter.setPen(style.ink);
-    painter.drawText(layout.text, layout.flags, message);
+    painter.drawText(layout.text, layout.flags, layout.message);
     painter.restore();
 }
 

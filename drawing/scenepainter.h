@@ -72,10 +72,12 @@ public:
     static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style,
         const QRectF &drawing = QRectF());
     /// Where paintMessage() puts `message` on `device`: the box, the rectangle of the text
-    /// inside it, and the font and flags it is drawn with.
+    /// inside it, the font and flags it is drawn with, and what it says (the message, or its
+    /// headline when the whole one would cover the drawing wherever it went).
     struct MessageLayout {
         QRectF box;
         QRectF text;
+        QString message;
         QFont font;
         int flags = 0;
     };

@@ -351,6 +351,15 @@ private slots:
         QCOMPARE_LT(low.box.bottom(), 120.0);
         QCOMPARE(high.box, none.box);
         QCOMPARE_GT(none.box.top(), 130.0);
+        QCOMPARE(low.message, message);
+        // one that fills the view, covered wherever the whole message goes: its headline in
+        // a corner clear of it (the whole message is the status bar's)
+        const QRectF drawing(80, 60, 200, 140);
+        const auto full = ScenePainter::messageLayout(area, message, style, nullptr, drawing);
+        QCOMPARE(full.message, QStringLiteral("Singular pose (direct)"));
+        QVERIFY(area.contains(full.box));
+        QVERIFY2(!full.box.intersects(drawing), qPrintable(QStringLiteral("%1,%2 %3×%4").arg(full.box.x()).arg(full.box.y()).arg(full.box.width()).arg(full.box.height())));
+        QVERIFY(full.text.contains(QFontMetricsF(full.font).boundingRect(full.text, full.flags, full.message)));
     }
 
     void statusLowersOnlySymbols()
