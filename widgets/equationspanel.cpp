@@ -123,11 +123,16 @@ void EquationsPanel::refresh()
     int blocks = 0;
     for (std::size_t i = 0; i < m_equations.size(); ++i) {
         const Equation &equation = m_equations[i];
+        // A heading begins with a capital, although the string also names a value in the values
+        // panel, where Russian writes it in lower case ("якобиан ḋ = J·θ̇")
+        QString title = toQString(equation.title);
+        if (!title.isEmpty())
+            title[0] = title[0].toUpper();
         const QString &line = m_substituted[qsizetype(i)];
         const QString &result = m_results[qsizetype(i)];
         html += QStringLiteral("<p style=\"margin-top:10px; margin-bottom:2px\"><b>%1</b> "
                                "<span style=\"color:%2; font-size:small\">— %3</span></p>")
-                    .arg(symbolHtml(toQString(equation.title)), QLatin1String(quietColour),
+                    .arg(symbolHtml(title), QLatin1String(quietColour),
                          toQString(equation.source).toHtmlEscaped());
         html += QStringLiteral("<p style=\"margin-left:12px; margin-top:0px; margin-bottom:0px; font-size:large\">%1</p>")
                     .arg(symbolHtml(formulaText(toQString(equation.symbolic))));

@@ -104,8 +104,11 @@ int main(int argc, char *argv[])
     } else {
         window.show();
     }
+    // After the window's own first steps (queued before this one: the Design and the values
+    // raised in front of their tabs, the docks sized to the screen), so that leaving the
+    // presentation returns to that layout, not to Mobility and Tolerances in front.
     if (parser.isSet(presentation))
-        window.setPresentationMode(true);
+        QTimer::singleShot(0, &window, [&window] { window.setPresentationMode(true); });
     FirstPaint firstPaint;
     if (parser.isSet(quitAfterPaint))
         window.linkageView()->installEventFilter(&firstPaint);

@@ -157,7 +157,10 @@ void TolerancePanel::rebuildRows()
             const int row = m_table->rowCount();
             m_table->insertRow(row);
             m_names.push_back(info.name);
-            auto *name = new QTableWidgetItem(QStringLiteral("%1 (%2)").arg(toQString(info.symbol), unitText(info.unit)));
+            // a ratio (λ, k) has no unit to name: "λ", not "λ ()"
+            const QString unitName = unitText(info.unit);
+            auto *name = new QTableWidgetItem(unitName.isEmpty() ? toQString(info.symbol)
+                                                             : QStringLiteral("%1 (%2)").arg(toQString(info.symbol), unitName));
             name->setToolTip(coreLabel(info.label));
             name->setFlags(Qt::ItemIsEnabled);
             m_table->setItem(row, ColumnParameter, name);

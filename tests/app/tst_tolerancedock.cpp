@@ -73,6 +73,21 @@ private slots:
         }
     }
 
+    /// A ratio has no unit to name: the four-bar's λ reads "λ", not "λ ()"; a length keeps it.
+    void aRatioHasNoEmptyUnit()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("fourbar-example")));
+        dock("toleranceDock")->raise();
+        QVERIFY(QTest::qWaitFor([this] { return panel()->isVisible(); }));
+        auto *table = panel()->findChild<QTableWidget *>(QStringLiteral("toleranceTable"));
+        QVERIFY(table && table->rowCount() > 0);
+        QStringList names;
+        for (int row = 0; row < table->rowCount(); ++row)
+            names << table->item(row, 0)->text();
+        QVERIFY2(!names.join(QLatin1Char(' ')).contains(QStringLiteral("()")), qPrintable(names.join(QStringLiteral(", "))));
+        QVERIFY2(names.join(QLatin1Char(' ')).contains(QStringLiteral("(mm)")), qPrintable(names.join(QStringLiteral(", "))));
+    }
+
     /// Edits are undoable document commands; the first order follows them and the pose.
     void editsAreUndoable()
     {
