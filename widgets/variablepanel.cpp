@@ -234,7 +234,16 @@ void VariablePanel::setPose(const Pose &pose)
         // While the user drags this slider, leave it where the hand is.
         if (!row.slider->isSliderDown())
             row.slider->setValue(static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * sliderSteps)));
-        row.spinBox->setValue(m_mechanism->variableInfo()[i].unit.toDisplay(value));
+        // The truth, also beyond the range: an output's range may be an estimate (the 3-RP̲R's
+        // x is the workspace's extent at one orientation, and a pose at another goes past it),
+        // and a spin box held to it showed 18.50 mm where the pose was at 19.41 mm.
+        const double shown = m_mechanism->variableInfo()[i].unit.toDisplay(value);
+        if (std::isfinite(shown) && (shown < row.spinBox->minimum() || shown > row.spinBox->maximum())) {
+            const double scale = std::pow(10.0, row.spinBox->decimals());
+            row.spinBox->setRange(std::min(row.spinBox->minimum(), std::floor(shown * scale) / scale),
+                                  std::max(row.spinBox->maximum(), std::ceil(shown * scale) / scale));
+        }
+        row.spinBox->setValue(shown);
     }
     m_updating = false;
 }

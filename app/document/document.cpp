@@ -201,8 +201,11 @@ QString Document::limitNote() const
         const Interval range = m.variableRange(i);
         const double value = m.variableValue(m_design.pose, i);
         const double tolerance = 1e-9 * std::max({1.0, std::abs(range.min), std::abs(range.max)});
-        const bool atMin = value <= range.min + tolerance;
-        const bool atMax = value >= range.max - tolerance;
+        // at a limit, not beyond it: an output's range may be an estimate that a pose passes
+        // (the 3-RP̲R's x at another orientation), and it stops at nothing there
+        const double beyond = 1e-6 * std::max({1.0, std::abs(range.min), std::abs(range.max)});
+        const bool atMin = value <= range.min + tolerance && value >= range.min - beyond;
+        const bool atMax = value >= range.max - tolerance && value <= range.max + beyond;
         // a crank that turns fully has no limit: 360° is 0° (the four-bar opened at α = 0°
         // said "α stops at its lower limit" although nothing had moved)
         if ((!atMin && !atMax) || turnsFully(m, i))

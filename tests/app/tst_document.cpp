@@ -164,6 +164,20 @@ private slots:
             QVERIFY(!(a.changes.size() == 1 && a.changes.count("assembly") && a.changes.at("assembly") == -assembly));
     }
 
+    /// The 3-RP̲R's x range is the workspace's extent at one orientation; a pose at another
+    /// passes it (x = 19.29 mm at q₁ = 19.83 mm, the range ending at 18.49 mm). Nothing stops x
+    /// there, and no note says it does ("x stops at its upper limit 18.49 mm" was shown).
+    void aPoseBeyondAnEstimatedRangeIsNotAtALimit()
+    {
+        Document document;
+        QVERIFY(document.open(QStringLiteral("pp-3rpr")).ok());
+        const Mechanism &m = *document.mechanism();
+        QVERIFY(document.setVariable(0, 19.83).ok());
+        const int x = m.inputCount();
+        QCOMPARE_GT(m.variableValue(document.pose(), x), m.variableRange(x).max + 0.5);
+        QVERIFY2(!document.limitNote().contains(QStringLiteral("x stops")), qPrintable(document.limitNote()));
+    }
+
     void designChangeKeepsOutputs()
     {
         Document document;

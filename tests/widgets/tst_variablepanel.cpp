@@ -4,9 +4,12 @@
 #include "registry.h"
 
 #include <QAbstractSpinBox>
+#include <QDoubleSpinBox>
 #include <QApplication>
 #include <QLabel>
 #include <QTest>
+
+#include <cmath>
 
 using namespace pkm;
 
@@ -57,6 +60,28 @@ private slots:
         QTest::qWait(50); // the queued widths, and the layout
         QTRY_VERIFY(!limitsShown());
         QVERIFY2(cutSpinBoxes(panel).isEmpty(), qPrintable(cutSpinBoxes(panel).join(QStringLiteral(", "))));
+    }
+
+    /// A pose beyond an output's range (an estimate for the 3-RP̲R's x, which a pose at another
+    /// orientation passes) reads as it is: the spin box held to the range showed 18.50 mm where
+    /// the status bar said 19.41 mm.
+    void aValueBeyondTheRangeReadsAsItIs()
+    {
+        const Result<MechanismPtr> moma = createMechanism("moma", {});
+        QVERIFY(moma);
+        const Mechanism &m = **moma;
+        VariablePanel panel;
+        panel.setMechanism(*moma);
+        const int x = m.inputCount(); // the first output
+        const Interval range = m.variableRange(x);
+        Pose pose = m.homePose();
+        pose.outputs[0] = range.max + 0.92;
+        panel.setPose(pose);
+        const auto boxes = panel.findChildren<QDoubleSpinBox *>(); // the rows', in order
+        QCOMPARE(boxes.size(), qsizetype(m.variableInfo().size()));
+        const double expected = m.variableInfo()[std::size_t(x)].unit.toDisplay(range.max + 0.92);
+        QVERIFY2(std::abs(boxes[x]->value() - expected) <= 0.5 * std::pow(10.0, -boxes[x]->decimals()) + 1e-12,
+                 qPrintable(QStringLiteral("%1 shown for %2").arg(boxes[x]->value()).arg(expected)));
     }
 };
 
