@@ -134,7 +134,8 @@ void LinkageView3D::cleanupGl()
 
 bool LinkageView3D::makeCurrent()
 {
-    if (!m_canvas || m_glFailed)
+    // a canvas never shown has no native window yet: nothing failed, there is nothing to draw on
+    if (!m_canvas || m_glFailed || !m_canvas->handle())
         return false;
     if (!m_canvas->makeCurrent()) {
         setUnavailable({QT_TRANSLATE_NOOP("pkm::Renderer3D", "No OpenGL context is current."), {}});

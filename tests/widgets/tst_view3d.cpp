@@ -321,6 +321,8 @@ void TestView3D::renderImageBeforeShown()
     const Difference d = compare(image, shown);
     QVERIFY2(d.mean < 1.0 && d.farFraction < 0.002, qPrintable(QString::number(d.mean)));
     QVERIFY(!hidden.hasGlContext()); // no context was made for the view
+    hidden.finishFrame(); // nothing to draw on yet, and nothing failed
+    QVERIFY(hidden.isGlAvailable());
 }
 
 void TestView3D::projectionChangesPicture()
