@@ -256,15 +256,33 @@ void SceneLabels::placeAngleLabels()
         };
         double best = std::numeric_limits<double>::infinity();
         QPointF centre;
+        // A free place that reads as another joint's costs as much as a short leader: at a
+        // large text size the five-bar's θ₁ went under the ground beside E, and E inside.
+        constexpr double readsAsAnother = 2.0;
+        // An earlier angle label's leader is no obstacle to a joint's name, but an angle label
+        // over it hides where it goes.
+        const auto onALeader = [&](const QPointF &candidate) {
+            const Quad box = boxQuad(candidate, room, 0.0);
+            return std::any_of(m_leaders.begin(), m_leaders.end(),
+                [&](const QLineF &line) { return overlap(box, segmentQuad(line.p1(), line.p2(), 1.0 * m_px)); });
+        };
         for (const QPointF &candidate : near) {
-            if (isFree(boxQuad(candidate, room, 0.0)) && leaderClear(candidate)) {
+            if (!isFree(boxQuad(candidate, room, 0.0)) || onALeader(candidate) || !leaderClear(candidate))
+                continue;
+            if (!nearerAnotherJoint(candidate, size, pending.vertex)) {
                 best = 0.0;
                 centre = candidate;
                 break;
             }
+            if (best > readsAsAnother) {
+                best = readsAsAnother;
+                centre = candidate;
+            }
         }
         for (std::size_t k = 0; best > 0.0 && k < near.size(); ++k) {
-            const double cost = collisions(boxQuad(near[k], room, 0.0), best);
+            const double cost = collisions(boxQuad(near[k], room, 0.0), best)
+                + (nearerAnotherJoint(near[k], size, pending.vertex) ? readsAsAnother : 0.0)
+                + (onALeader(near[k]) ? coversALabel : 0.0);
             if (cost < best) {
                 best = cost;
                 centre = near[k];
@@ -287,7 +305,7 @@ void SceneLabels::placeAngleLabels()
         }
         for (std::size_t k = 0; best > 0.0 && k < around.size(); ++k) {
             const std::optional<QLineF> line = leaderTo(pending, around[k], size);
-            double cost = collisions(boxQuad(around[k], room, 0.0), best);
+            double cost = collisions(boxQuad(around[k], room, 0.0), best) + (onALeader(around[k]) ? coversALabel : 0.0);
             if (line && cost < best) {
                 // It starts a little off the arc, which it touches.
                 const QPointF start = line->p1() + 5.0 * m_px * unit(line->p2() - line->p1());
@@ -314,6 +332,22 @@ void SceneLabels::placeAngleLabels()
         }
         addRay(pending.vertex, centre - v, length(centre - v));
     }
+}
+
+bool SceneLabels::nearerAnotherJoint(const QPointF &centre, const QSizeF &size, int vertex) const
+{
+    // the gap from the label's box to a joint: a wide label reads by its edge, not its centre
+    const auto gap = [&](const QPointF &joint) {
+        const double dx = std::max(std::abs(joint.x() - centre.x()) - 0.5 * size.width(), 0.0);
+        const double dy = std::max(std::abs(joint.y() - centre.y()) - 0.5 * size.height(), 0.0);
+        return std::hypot(dx, dy);
+    };
+    const double own = gap(point(vertex));
+    for (std::size_t j = 0; j < m_points.size(); ++j) {
+        if (int(j) != vertex && valid(int(j)) && !m_scene.joints[j].label.empty() && gap(m_points[j]) < own)
+            return true;
+    }
+    return false;
 }
 
 std::optional<QLineF> SceneLabels::leaderTo(const PendingAngleLabel &pending, const QPointF &centre, const QSizeF &size) const

@@ -201,6 +201,9 @@ private:
     /// Whether a bar other than the member from `from` to `to` passes nearer `centre`.
     bool nearerAnotherBar(const QPointF &centre, int from, int to) const;
     void placeAngleLabels();
+    /// Whether a label of `size` at `centre` lies nearer another named joint than `vertex`, the
+    /// joint whose angle it states: there it reads as that joint's (θ₁ under E).
+    bool nearerAnotherJoint(const QPointF &centre, const QSizeF &size, int vertex) const;
     /// A line from the arc of `pending` to the edge of its label (`size`) at `centre`; none
     /// when the label is next to the arc.
     std::optional<QLineF> leaderTo(const PendingAngleLabel &pending, const QPointF &centre, const QSizeF &size) const;

@@ -6860,6 +6860,14 @@ Please verify the correct file name was given.</source>
         <source>%1 at φ = %2, not the pose&apos;s φ</source>
         <translation>%1 при φ = %2, а не при φ положения</translation>
     </message>
+    <message>
+        <source>range of φ (°)</source>
+        <translation>диапазон φ (°)</translation>
+    </message>
+    <message>
+        <source>κ(J), log scale</source>
+        <translation>κ(J), лог. шкала</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>

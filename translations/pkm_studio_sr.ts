@@ -1147,11 +1147,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>area in mode %1 (grid)</source>
-        <translation>површина у моду %1 (по мрежи)</translation>
+        <translation>површина у режиму %1 (по мрежи)</translation>
     </message>
     <message>
         <source>area of the union of all modes (grid)</source>
-        <translation>површина уније свих модова (по мрежи)</translation>
+        <translation>површина уније свих режима (по мрежи)</translation>
     </message>
     <message>
         <source>travel of the carrying axis</source>
@@ -1215,11 +1215,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Workspaces of the modes</source>
-        <translation>Радни простори модова</translation>
+        <translation>Радни простори по режимима</translation>
     </message>
     <message>
         <source>As &apos;pkm workspace -o FILE.png&apos;: this design&apos;s mode dark blue over the others&apos; light blue, the outline of their union dark.</source>
-        <translation>Као &apos;pkm workspace -o FILE.png&apos;: мод ове конструкције тамноплаво преко осталих (светлоплаво), обрис њихове уније тамно.</translation>
+        <translation>Као &apos;pkm workspace -o FILE.png&apos;: режим ове конструкције тамноплаво преко осталих (светлоплаво), обрис њихове уније тамно.</translation>
     </message>
     <message>
         <source>As &apos;pkm workspace -o FILE.png&apos;: the reachable cells light blue with a dark outline.</source>
@@ -1566,7 +1566,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The workspace of these modes reaches direct singularities (the curves where the distal links BC and CD come in line, marked on the map): there C can move with both cranks held and the mechanism may switch its assembly mode. Keep the path of C away from them.</source>
-        <translation>Радни простор ових модова досеже сингуларитете директне кинематике (криве на којима спојке BC и CD долазе на исту праву, означене на мапи): ту се C може померати и кад су обе полуге закочене, а механизам може да промени начин склапања. Држите путању тачке C даље од њих.</translation>
+        <translation>Радни простор ових режима досеже сингуларитете директне кинематике (криве на којима спојке BC и CD долазе на исту праву, означене на мапи): ту се C може померати и кад су обе полуге закочене, а механизам може да промени начин склапања. Држите путању тачке C даље од њих.</translation>
     </message>
     <message>
         <source>crank AB angle at A, from +x counter-clockwise (actuated)</source>
@@ -2466,7 +2466,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past perpendicular to its guide, in its other working mode (an inverse singularity lies between); switch the mode to go on.</source>
-        <translation>При p₁ = %1 mm, p₂ = %2 mm нога %3 би прешла преко положаја управног на своју вођицу, у други радни режим (између је сингуларитет инверзне кинематике); промените мод да бисте наставили.</translation>
+        <translation>При p₁ = %1 mm, p₂ = %2 mm нога %3 би прешла преко положаја управног на своју вођицу, у други радни режим (између је сингуларитет инверзне кинематике); промените режим да бисте наставили.</translation>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm %3.</source>
@@ -4345,7 +4345,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Modes</source>
-        <translation>Модови</translation>
+        <translation>Режими</translation>
     </message>
     <message>
         <source>less</source>
@@ -4423,7 +4423,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>That mode is not available at this pose.</source>
-        <translation>Тај мод није доступан у овом положају.</translation>
+        <translation>Тај режим није доступан у овом положају.</translation>
     </message>
     <message>
         <source>Singular pose (inverse): the mechanism cannot be driven here.</source>
@@ -5622,7 +5622,7 @@ Please verify the correct file name was given.</source>
     <name>pkm::ModeBar</name>
     <message>
         <source>Modes: %1</source>
-        <translation>Модови: %1</translation>
+        <translation>Режими: %1</translation>
     </message>
     <message>
         <source>→ %1:</source>
@@ -5635,7 +5635,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Switch to %1. The mechanism stays in its mode until you click here or on its ghost in the view.</source>
-        <translation>Пребаци: %1. Механизам остаје у тренутном моду док не кликнете овде или на његов провидни обрис у приказу.</translation>
+        <translation>Пребаци: %1. Механизам остаје у тренутном режиму док не кликнете овде или на његов провидни обрис у приказу.</translation>
     </message>
     <message>
         <source>→ %1, %2:</source>
@@ -6860,6 +6860,14 @@ Please verify the correct file name was given.</source>
         <source>%1 at φ = %2, not the pose&apos;s φ</source>
         <translation>%1 при φ = %2, а не при φ положаја</translation>
     </message>
+    <message>
+        <source>range of φ (°)</source>
+        <translation>опсег φ (°)</translation>
+    </message>
+    <message>
+        <source>κ(J), log scale</source>
+        <translation>κ(J), лог. скала</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>
@@ -7099,7 +7107,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>A classroom five-bar chosen for PKM Studio (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov shows the planar five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. Chebyshev&apos;s count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out (B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by the legs stretched or folded in line and, low between A and E, by a direct singularity where BC and CD come in line.</source>
-        <translation>Наставни петочлани механизам изабран за PKM Studio (документ Хабибулине, Хабибулина и Исламова о зглобном четвороуглу и покретљивости приказује равански петочлани механизам на сл. 1 без димензија). Постоље AE = 100 mm; полуге AB = DE = 80 mm, погоњене у A и у E, окрећу се пуним кругом; крајње спојке BC = CD = 120 mm спајају се у излазној тачки C. По Чебишевљевој формули W = 3·4 − 2·5 = 2: два угла полуга θ₁, θ₄ одређују положај C. Радни режими „лактови ка споља“ (B лево од A→C, D десно од E→C), начин склапања C изнад BD (лево од B→D). За C = (50, 150) mm свака крајња спојка је скоро управна на своју полугу, а крајње спојке скоро управне једна на другу, па је κ(J) ≈ 1,11; радни простор ових модова ограничен је положајима у којима су гране опружене или склопљене у линију и, ниско између A и E, сингуларитетом директне кинематике где BC и CD долазе у исту линију.</translation>
+        <translation>Наставни петочлани механизам изабран за PKM Studio (документ Хабибулине, Хабибулина и Исламова о зглобном четвороуглу и покретљивости приказује равански петочлани механизам на сл. 1 без димензија). Постоље AE = 100 mm; полуге AB = DE = 80 mm, погоњене у A и у E, окрећу се пуним кругом; крајње спојке BC = CD = 120 mm спајају се у излазној тачки C. По Чебишевљевој формули W = 3·4 − 2·5 = 2: два угла полуга θ₁, θ₄ одређују положај C. Радни режими „лактови ка споља“ (B лево од A→C, D десно од E→C), начин склапања C изнад BD (лево од B→D). За C = (50, 150) mm свака крајња спојка је скоро управна на своју полугу, а крајње спојке скоро управне једна на другу, па је κ(J) ≈ 1,11; радни простор ових режима ограничен је положајима у којима су гране опружене или склопљене у линију и, ниско између A и E, сингуларитетом директне кинематике где BC и CD долазе у исту линију.</translation>
     </message>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>

@@ -1147,11 +1147,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>area in mode %1 (grid)</source>
-        <translation>površina u modu %1 (po mreži)</translation>
+        <translation>površina u režimu %1 (po mreži)</translation>
     </message>
     <message>
         <source>area of the union of all modes (grid)</source>
-        <translation>površina unije svih modova (po mreži)</translation>
+        <translation>površina unije svih režima (po mreži)</translation>
     </message>
     <message>
         <source>travel of the carrying axis</source>
@@ -1215,11 +1215,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Workspaces of the modes</source>
-        <translation>Radni prostori modova</translation>
+        <translation>Radni prostori po režimima</translation>
     </message>
     <message>
         <source>As &apos;pkm workspace -o FILE.png&apos;: this design&apos;s mode dark blue over the others&apos; light blue, the outline of their union dark.</source>
-        <translation>Kao &apos;pkm workspace -o FILE.png&apos;: mod ove konstrukcije tamnoplavo preko ostalih (svetloplavo), obris njihove unije tamno.</translation>
+        <translation>Kao &apos;pkm workspace -o FILE.png&apos;: režim ove konstrukcije tamnoplavo preko ostalih (svetloplavo), obris njihove unije tamno.</translation>
     </message>
     <message>
         <source>As &apos;pkm workspace -o FILE.png&apos;: the reachable cells light blue with a dark outline.</source>
@@ -1566,7 +1566,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>The workspace of these modes reaches direct singularities (the curves where the distal links BC and CD come in line, marked on the map): there C can move with both cranks held and the mechanism may switch its assembly mode. Keep the path of C away from them.</source>
-        <translation>Radni prostor ovih modova doseže singularitete direktne kinematike (krive na kojima spojke BC i CD dolaze na istu pravu, označene na mapi): tu se C može pomerati i kad su obe poluge zakočene, a mehanizam može da promeni način sklapanja. Držite putanju tačke C dalje od njih.</translation>
+        <translation>Radni prostor ovih režima doseže singularitete direktne kinematike (krive na kojima spojke BC i CD dolaze na istu pravu, označene na mapi): tu se C može pomerati i kad su obe poluge zakočene, a mehanizam može da promeni način sklapanja. Držite putanju tačke C dalje od njih.</translation>
     </message>
     <message>
         <source>crank AB angle at A, from +x counter-clockwise (actuated)</source>
@@ -2466,7 +2466,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm leg %3 would be past perpendicular to its guide, in its other working mode (an inverse singularity lies between); switch the mode to go on.</source>
-        <translation>Pri p₁ = %1 mm, p₂ = %2 mm noga %3 bi prešla preko položaja upravnog na svoju vođicu, u drugi radni režim (između je singularitet inverzne kinematike); promenite mod da biste nastavili.</translation>
+        <translation>Pri p₁ = %1 mm, p₂ = %2 mm noga %3 bi prešla preko položaja upravnog na svoju vođicu, u drugi radni režim (između je singularitet inverzne kinematike); promenite režim da biste nastavili.</translation>
     </message>
     <message>
         <source>At p₁ = %1 mm, p₂ = %2 mm %3.</source>
@@ -4345,7 +4345,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Modes</source>
-        <translation>Modovi</translation>
+        <translation>Režimi</translation>
     </message>
     <message>
         <source>less</source>
@@ -4423,7 +4423,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>That mode is not available at this pose.</source>
-        <translation>Taj mod nije dostupan u ovom položaju.</translation>
+        <translation>Taj režim nije dostupan u ovom položaju.</translation>
     </message>
     <message>
         <source>Singular pose (inverse): the mechanism cannot be driven here.</source>
@@ -5622,7 +5622,7 @@ Proverite da li je ime datoteke tačno.</translation>
     <name>pkm::ModeBar</name>
     <message>
         <source>Modes: %1</source>
-        <translation>Modovi: %1</translation>
+        <translation>Režimi: %1</translation>
     </message>
     <message>
         <source>→ %1:</source>
@@ -5635,7 +5635,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Switch to %1. The mechanism stays in its mode until you click here or on its ghost in the view.</source>
-        <translation>Prebaci: %1. Mehanizam ostaje u trenutnom modu dok ne kliknete ovde ili na njegov providni obris u prikazu.</translation>
+        <translation>Prebaci: %1. Mehanizam ostaje u trenutnom režimu dok ne kliknete ovde ili na njegov providni obris u prikazu.</translation>
     </message>
     <message>
         <source>→ %1, %2:</source>
@@ -6860,6 +6860,14 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>%1 at φ = %2, not the pose&apos;s φ</source>
         <translation>%1 pri φ = %2, a ne pri φ položaja</translation>
     </message>
+    <message>
+        <source>range of φ (°)</source>
+        <translation>opseg φ (°)</translation>
+    </message>
+    <message>
+        <source>κ(J), log scale</source>
+        <translation>κ(J), log. skala</translation>
+    </message>
 </context>
 <context>
     <name>pkm::WorkspacePanel</name>
@@ -7099,7 +7107,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>A classroom five-bar chosen for PKM Studio (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov shows the planar five-bar in its fig. 1 without dimensions). Ground AE = 100 mm; cranks AB = DE = 80 mm, driven at A and at E and turning fully; distal links BC = CD = 120 mm, meeting at the output point C. Chebyshev&apos;s count W = 3·4 − 2·5 = 2: the two crank angles θ₁, θ₄ fix C. Working modes elbows out (B to the left of A→C, D to the right of E→C), assembly mode C above BD (to the left of B→D). At C = (50, 150) mm each distal link is nearly perpendicular to its crank and the distal links nearly perpendicular to each other, so κ(J) ≈ 1.11; the workspace of these modes is bounded by the legs stretched or folded in line and, low between A and E, by a direct singularity where BC and CD come in line.</source>
-        <translation>Nastavni petočlani mehanizam izabran za PKM Studio (dokument Habibuline, Habibulina i Islamova o zglobnom četvorouglu i pokretljivosti prikazuje ravanski petočlani mehanizam na sl. 1 bez dimenzija). Postolje AE = 100 mm; poluge AB = DE = 80 mm, pogonjene u A i u E, okreću se punim krugom; krajnje spojke BC = CD = 120 mm spajaju se u izlaznoj tački C. Po Čebiševljevoj formuli W = 3·4 − 2·5 = 2: dva ugla poluga θ₁, θ₄ određuju položaj C. Radni režimi „laktovi ka spolja“ (B levo od A→C, D desno od E→C), način sklapanja C iznad BD (levo od B→D). Za C = (50, 150) mm svaka krajnja spojka je skoro upravna na svoju polugu, a krajnje spojke skoro upravne jedna na drugu, pa je κ(J) ≈ 1,11; radni prostor ovih modova ograničen je položajima u kojima su grane opružene ili sklopljene u liniju i, nisko između A i E, singularitetom direktne kinematike gde BC i CD dolaze u istu liniju.</translation>
+        <translation>Nastavni petočlani mehanizam izabran za PKM Studio (dokument Habibuline, Habibulina i Islamova o zglobnom četvorouglu i pokretljivosti prikazuje ravanski petočlani mehanizam na sl. 1 bez dimenzija). Postolje AE = 100 mm; poluge AB = DE = 80 mm, pogonjene u A i u E, okreću se punim krugom; krajnje spojke BC = CD = 120 mm spajaju se u izlaznoj tački C. Po Čebiševljevoj formuli W = 3·4 − 2·5 = 2: dva ugla poluga θ₁, θ₄ određuju položaj C. Radni režimi „laktovi ka spolja“ (B levo od A→C, D desno od E→C), način sklapanja C iznad BD (levo od B→D). Za C = (50, 150) mm svaka krajnja spojka je skoro upravna na svoju polugu, a krajnje spojke skoro upravne jedna na drugu, pa je κ(J) ≈ 1,11; radni prostor ovih režima ograničen je položajima u kojima su grane opružene ili sklopljene u liniju i, nisko između A i E, singularitetom direktne kinematike gde BC i CD dolaze u istu liniju.</translation>
     </message>
     <message>
         <source>An example crank-rocker chosen for PKM Studio: the four-bar document of Khabibullina, Khabibullin and Islamov gives no link lengths, so these are not the document&apos;s. Crank AB = 40 mm, coupler BC = 120 mm, rocker CD = 100 mm, ground AD = 140 mm: s + l = 180 mm &lt; p + q = 220 mm with the crank the shortest link, so the crank turns fully (α from 0° to 360°) and the rocker swings; the transmission angle stays between 53° and 110°. Open branch, ω₁ = 10 rad/s, coupler point M at the middle of BC.</source>

@@ -3,6 +3,7 @@
 #include "flowlayout.h"
 
 #include <QEvent>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QToolButton>
@@ -84,8 +85,9 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
         for (QWidget *old : std::as_const(m_buttonList))
             retire(old);
         m_buttonList.clear();
-        for (QWidget *old : std::as_const(m_groupLabels))
+        for (QWidget *old : std::as_const(m_groups))
             retire(old);
+        m_groups.clear();
         m_groupLabels.clear();
         m_groupOf.clear();
         for (int i = 0; i < labels.size(); ++i) {
@@ -96,18 +98,29 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
             const bool inGroup = sameGroup(labels, i, i - 1) || sameGroup(labels, i, i + 1);
             const bool opens = inGroup && !sameGroup(labels, i, i - 1);
             if (opens) {
-                auto *caption = new QLabel(this);
+                // The caption and its numbers wrap as one: "1 2" alone on a third row named
+                // nothing (the Russian five-bar in presentation mode).
+                auto *group = new QWidget(this);
+                auto *row = new QHBoxLayout(group);
+                row->setContentsMargins(0, 0, 0, 0);
+                auto *caption = new QLabel(group);
                 caption->setTextFormat(Qt::PlainText);
-                m_layout->addWidget(caption);
+                row->addWidget(caption);
+                m_layout->addWidget(group);
+                m_groups.append(group);
                 m_groupLabels.append(caption);
             }
             m_groupOf.append(inGroup ? int(m_groupLabels.size()) - 1 : -1);
             // a number on a tool button, as wide as it needs: a push button is never narrower
             // than about 80 px, and five of them took two rows at 1280×720
-            QAbstractButton *button = inGroup ? static_cast<QAbstractButton *>(new QToolButton(this)) : new QPushButton(this);
+            QAbstractButton *button = inGroup ? static_cast<QAbstractButton *>(new QToolButton(m_groups.last()))
+                                              : new QPushButton(this);
             button->setObjectName(QStringLiteral("modeButton%1").arg(i));
             connect(button, &QAbstractButton::clicked, this, [this, i] { emit switchRequested(i); });
-            m_layout->addWidget(button);
+            if (inGroup)
+                m_groups.last()->layout()->addWidget(button);
+            else
+                m_layout->addWidget(button);
             m_buttonList.append(button);
         }
     }

@@ -44,6 +44,7 @@ private:
     FlowLayout *m_layout = nullptr;
     QStringList m_labels;
     QList<QAbstractButton *> m_buttonList;
+    QList<QWidget *> m_groups;     ///< the groups of numbered modes: a caption and its buttons
     QList<QLabel *> m_groupLabels; ///< the captions of the groups of numbered modes
     QList<int> m_groupOf;          ///< per button, its group's caption (−1: none)
 };

@@ -65,7 +65,7 @@ void VariablePanel::rebuild()
         row.slider = new QSlider(Qt::Horizontal, this);
         row.slider->setObjectName(QStringLiteral("slider_") + toQString(info.name));
         row.slider->setRange(0, sliderSteps);
-        row.slider->setMinimumWidth(60);
+        row.slider->setMinimumWidth(minimumSliderWidth);
         row.spinBox = new NumberSpinBox(this);
         row.spinBox->setObjectName(QStringLiteral("spin_") + toQString(info.name));
         row.spinBox->setDecimals(info.decimals);
@@ -90,14 +90,37 @@ void VariablePanel::rebuild()
             emit variableEdited(i, m_mechanism->variableInfo()[i].unit.fromDisplay(display));
         });
 
-        m_grid->addWidget(row.name, i, 0);
-        m_grid->addWidget(row.minimum, i, 1);
-        m_grid->addWidget(row.slider, i, 2);
-        m_grid->addWidget(row.maximum, i, 3);
-        m_grid->addWidget(row.spinBox, i, 4);
         m_rows.append(row);
         describe(i);
     }
+    placeRows();
+}
+
+void VariablePanel::placeRows()
+{
+    // Compact, from four rows on, the rows share two blocks side by side (the inputs, then the
+    // outputs): at 1280×720 the five-bar's four rows and a 3-DOF design's six, one under
+    // another, left the linkage above them a strip 260 px high.
+    const int count = int(m_rows.size());
+    m_twoBlocks = wantsTwoBlocks();
+    const int perBlock = m_twoBlocks ? (count + 1) / 2 : std::max(count, 1);
+    for (Row &row : m_rows) {
+        for (QWidget *widget : {static_cast<QWidget *>(row.name), static_cast<QWidget *>(row.minimum),
+                 static_cast<QWidget *>(row.slider), static_cast<QWidget *>(row.maximum), static_cast<QWidget *>(row.spinBox)})
+            m_grid->removeWidget(widget);
+    }
+    for (int i = 0; i < count; ++i) {
+        const Row &row = m_rows[i];
+        const int line = i % perBlock, first = (i / perBlock) * blockColumns;
+        m_grid->addWidget(row.name, line, first);
+        m_grid->addWidget(row.minimum, line, first + 1);
+        m_grid->addWidget(row.slider, line, first + 2);
+        m_grid->addWidget(row.maximum, line, first + 3);
+        m_grid->addWidget(row.spinBox, line, first + 4);
+    }
+    const bool two = count > perBlock;
+    m_grid->setColumnStretch(blockColumns + 2, two ? 1 : 0);
+    m_grid->setColumnMinimumWidth(blockColumns - 1, two ? blockGap : 0);
 }
 
 void VariablePanel::describe(int i)
@@ -116,6 +139,25 @@ void VariablePanel::describe(int i)
     row.spinBox->setSuffix(unit.startsWith(QChar(0x00B0)) ? unit : QLatin1Char(' ') + unit);
 }
 
+int VariablePanel::blockWidth() const
+{
+    // a row without its limits: the name, a short slider and the spin box
+    int name = 0, spin = 0;
+    for (const Row &row : m_rows) {
+        name = std::max(name, row.name->sizeHint().width());
+        spin = std::max(spin, std::max(row.spinBox->minimumWidth(), row.spinBox->sizeHint().width()));
+    }
+    return name + minimumSliderWidth + spin + 2 * m_grid->horizontalSpacing();
+}
+
+bool VariablePanel::wantsTwoBlocks() const
+{
+    // only where both blocks fit: the O-X glide's Russian names asked for 1447 px
+    const QMargins margins = m_grid->contentsMargins();
+    return m_compact && m_rows.size() >= 4
+        && width() >= 2 * blockWidth() + blockGap + m_grid->horizontalSpacing() + margins.left() + margins.right();
+}
+
 void VariablePanel::setCompact(bool compact)
 {
     if (compact == m_compact)
@@ -132,6 +174,7 @@ void VariablePanel::setCompact(bool compact)
         m_rows[i].spinBox->setFont(rows);
         describe(i);
     }
+    placeRows();
     if (m_mechanism)
         updateRanges(); // the spin boxes' widths for their new text
 }
@@ -198,6 +241,10 @@ QSize VariablePanel::minimumSizeHint() const
     QSize size = QWidget::minimumSizeHint();
     if (!m_rows.isEmpty() && !m_rows.first().minimum->isHidden())
         size.rwidth() -= limitsWidth();
+    if (m_twoBlocks) { // narrower, the rows go one under another again
+        const QMargins margins = m_grid->contentsMargins();
+        size.setWidth(blockWidth() + margins.left() + margins.right());
+    }
     return size;
 }
 
@@ -220,6 +267,8 @@ void VariablePanel::fitLimits()
 void VariablePanel::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
+    if (wantsTwoBlocks() != m_twoBlocks)
+        placeRows();
     fitLimits();
 }
 

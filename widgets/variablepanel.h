@@ -25,10 +25,13 @@ public:
     void setMechanism(const MechanismPtr &mechanism);
     void setPose(const Pose &pose);
 
-    /// Short roles ("input" for "input, actuated"), one line a row: presentation mode, where
-    /// a 3-DOF design's six rows at a large text size leave no room for a second line.
+    /// Short roles ("input" for "input, actuated"), one line a row, and from four rows on two
+    /// blocks side by side: presentation mode, where a 3-DOF design's six rows at a large text
+    /// size leave no room for a second line nor for the linkage above them.
     void setCompact(bool compact);
     bool isCompact() const { return m_compact; }
+    /// Whether the compact rows stand in two blocks side by side.
+    bool hasTwoBlocks() const { return m_twoBlocks; }
 
     QSlider *slider(int variable) const { return m_rows.value(variable).slider; }
     QDoubleSpinBox *spinBox(int variable) const { return m_rows.value(variable).spinBox; }
@@ -56,6 +59,16 @@ private:
         QDoubleSpinBox *spinBox = nullptr;
     };
     void rebuild();
+    /// Puts the rows in the grid: one under another, or compact in two blocks side by side.
+    void placeRows();
+    /// A block's columns: name, lower limit, slider, upper limit, spin box, and a gap.
+    static constexpr int blockColumns = 6;
+    static constexpr int blockGap = 16;
+    static constexpr int minimumSliderWidth = 60;
+    /// The least width of a block of rows, without the limits.
+    int blockWidth() const;
+    /// Compact, with four rows or more, and wide enough for two blocks side by side.
+    bool wantsTwoBlocks() const;
     /// The texts of row i (its name, role, tooltips and unit) in the current language.
     void describe(int i);
     void updateRanges();
@@ -68,6 +81,7 @@ private:
     QGridLayout *m_grid = nullptr;
     QVector<Row> m_rows;
     bool m_compact = false;
+    bool m_twoBlocks = false; ///< the rows in two blocks side by side (placeRows())
     bool m_updating = false;
 };
 

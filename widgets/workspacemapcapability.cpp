@@ -128,7 +128,9 @@ void WorkspaceMapView::updateCapabilityTitle()
                                                significant(m_summary.max), unit));
     setScaleLabel(tr("%1 (%2): %3, colours end at %4")
                       .arg(toQString(m_shownSymbol), coreLabel(m_shownUnit), coreLabel(m_shownLabel),
-                           significant(m_colourLimit)));
+                           significant(m_colourLimit)),
+                  m_shownUnit.empty() ? toQString(m_shownSymbol)
+                                      : QStringLiteral("%1 (%2)").arg(toQString(m_shownSymbol), coreLabel(m_shownUnit)));
     m_plot->setToolTip(m_shownQuantity == MapQuantity::ToleranceWorst
             ? tr("The first-order worst-case error of the platform point at each point of the workspace, from the "
                  "tolerances of the Tolerances panel: ∞ at a direct singularity.")

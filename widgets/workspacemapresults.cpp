@@ -270,7 +270,7 @@ void WorkspaceMapView::updateTitle()
         const double degree = std::numbers::pi / 180.0;
         plotstyle::setFittedText(m_title, tr("Workspace %1 · orientation range of φ from %2° to %3°")
                                               .arg(areaText(), significant(m_summary.min / degree), significant(m_summary.max / degree)));
-        setScaleLabel(tr("orientation range of φ (°): the angles that hold the platform"));
+        setScaleLabel(tr("orientation range of φ (°): the angles that hold the platform"), tr("range of φ (°)"));
         m_plot->setToolTip(tr("At each point, the total width of the platform angles φ at which the legs can hold it "
                               "there; the map's outline is the workspace at φ_map."));
         return;
@@ -284,7 +284,8 @@ void WorkspaceMapView::updateTitle()
     // Along the scale, broken into lines where the map is short (a projector at 1280×720).
     const QString scaleLabel = condition ? tr("κ(J), log scale (colours end at %1)").arg(significant(m_colourLimit))
                                          : tr("det J (colours clipped at ±%1)").arg(significant(m_colourLimit) + determinantUnit());
-    setScaleLabel(scaleLabel);
+    const QString unit = determinantUnit().trimmed();
+    setScaleLabel(scaleLabel, condition ? tr("κ(J), log scale") : unit.isEmpty() ? symbol : QStringLiteral("%1 (%2)").arg(symbol, unit));
     m_plot->setToolTip(condition
             ? tr("The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the "
                  "singularities.")
@@ -391,10 +392,19 @@ double WorkspaceMapView::valueAt(const Eigen::Vector2d &pointMm) const
 
 /// Runs after every layout (so the axis rect's size is known) and gives both axes the same
 /// mm per pixel: the whole map (and comparison) fitted, or the user's zoom kept.
-void WorkspaceMapView::setScaleLabel(const QString &text)
+void WorkspaceMapView::setScaleLabel(const QString &text, const QString &brief)
 {
     m_scaleLabel = text;
-    m_colorScale->setLabel(plotstyle::wrapped(text, m_colorScale->axis()->labelFont(), m_plot->axisRect()->height()));
+    m_briefScaleLabel = brief;
+    m_colorScale->setLabel(scaleLabelFor(m_plot->axisRect()->height()));
+}
+
+QString WorkspaceMapView::scaleLabelFor(int height) const
+{
+    const QFont font = m_colorScale->axis()->labelFont();
+    const QString full = plotstyle::wrapped(m_scaleLabel, font, height);
+    return full.count(QLatin1Char('\n')) < 2 || m_briefScaleLabel.isEmpty() ? full
+                                                                            : plotstyle::wrapped(m_briefScaleLabel, font, height);
 }
 
 void WorkspaceMapView::fitView()
@@ -405,7 +415,7 @@ void WorkspaceMapView::fitView()
     // The scale's label broken for the height the layout gave it: broken for the height before
     // (a legend grown by a Russian line, presentation mode's text), "det J (цвета ограничены
     // на" ran past the scale's top and lost its "d".
-    const QString label = plotstyle::wrapped(m_scaleLabel, m_colorScale->axis()->labelFont(), pixels.height());
+    const QString label = scaleLabelFor(pixels.height());
     if (label != m_colorScale->label()) {
         m_colorScale->setLabel(label);
         m_plot->replot(QCustomPlot::rpQueuedReplot);

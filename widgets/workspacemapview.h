@@ -169,8 +169,12 @@ private:
     void updateLegend();
     void fitView();
     /// The colour scale's label, broken into lines for the scale's height now and again after
-    /// every layout (fitView()).
-    void setScaleLabel(const QString &text);
+    /// every layout (fitView()); `brief` (the symbol and unit) where `text` would take more
+    /// than two lines, whose width the map lacks (presentation mode: four lines of "det J
+    /// (colours clipped at …)" left the map 75 px wide). The plot's tooltip says the rest.
+    void setScaleLabel(const QString &text, const QString &brief = {});
+    /// The scale's label broken for `height` pixels (setScaleLabel()).
+    QString scaleLabelFor(int height) const;
     void resetView();
     void retranslate();
 
@@ -213,6 +217,7 @@ private:
     Eigen::AlignedBox2d m_comparisonBounds; ///< of the comparison's grid, mm (empty: none)
     bool m_userView = false; ///< the user zoomed or dragged: keep the view on new maps
     QString m_scaleLabel; ///< the colour scale's label before it is broken into lines
+    QString m_briefScaleLabel; ///< its short form, or empty
     int m_refits = 0; ///< relayouts in a row asked by fitView(), to stop a ping-pong of margins
     bool m_hasPose = false;
     Eigen::Vector2d m_pose = Eigen::Vector2d::Zero();

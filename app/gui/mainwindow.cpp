@@ -131,6 +131,11 @@ MainWindow::MainWindow(QWidget *parent)
     m_poseLabel = new QLabel(this);
     m_poseLabel->setTextFormat(Qt::RichText); // for the lowered symbols (onPoseChanged)
     m_singularityLabel = new QLabel(this);
+    // The read-outs step aside for a message that needs the room (fitStatusMessage()) and
+    // never set the window's least width: in presentation mode the O-X glide's five values
+    // at 150 % asked for 885 px, and with a message beside them more than the projector has.
+    for (QLabel *readOut : {m_poseLabel, m_singularityLabel})
+        readOut->setMinimumWidth(1);
     statusBar()->addPermanentWidget(m_poseLabel);
     statusBar()->addPermanentWidget(m_singularityLabel);
     watchStatusBar();

@@ -167,8 +167,9 @@ void MainWindow::fitStatusMessage()
     QFont font = bar->font();
     font.setBold(m_statusIsError && !message.isEmpty()); // errors are bold (showStatus)
     const QFontMetrics metrics(font);
-    bool readOuts = true;
-    if (!message.isEmpty()) {
+    // Presenting, the large sliders show the pose: the read-outs would only crowd the bar.
+    bool readOuts = !m_presenting;
+    if (readOuts && !message.isEmpty()) {
         const int needed = metrics.horizontalAdvance(message) + statusMessageMargins;
         int beside = 0;
         for (QLabel *label : {m_poseLabel, m_singularityLabel}) {

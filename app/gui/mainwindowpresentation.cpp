@@ -220,9 +220,10 @@ void MainWindow::setPresentationMode(bool on)
         m_variables->setCompact(true);
         m_playBar->setCompact(true);
         showFullScreen();
-        // The linkage is what the class looks at: the larger share, beside its plot or map.
+        // The linkage is what the class looks at: three fifths, beside its plot or map (whose
+        // title and legend take their height whatever its width).
         const int width = screen() ? screen()->geometry().width() : this->width();
-        m_splitter->setSizes({width * 11 / 20, width * 9 / 20});
+        m_splitter->setSizes({width * 3 / 5, width * 2 / 5});
         applyPresentationPlots();
         showStatus(tr("Presentation mode: Esc or F5 leaves it; Page Up and Page Down step through the bookmarks."));
     } else {
@@ -248,7 +249,7 @@ void MainWindow::setPresentationMode(bool on)
     QTimer::singleShot(100, this, [this] {
         if (m_presenting) {
             const int width = m_splitter->width();
-            m_splitter->setSizes({width * 11 / 20, width * 9 / 20});
+            m_splitter->setSizes({width * 3 / 5, width * 2 / 5});
         } else {
             // and the window's own size: showNormal() or showMaximized() ran while the panels
             // still had the presentation's large text, and grew the window to what they asked
@@ -269,6 +270,7 @@ void MainWindow::setPresentationMode(bool on)
             m_splitter->restoreState(m_splitterBeforePresentation);
         }
         m_view->fitToView();
+        fitStatusMessage(); // the read-outs' width at the new text size
     });
 }
 

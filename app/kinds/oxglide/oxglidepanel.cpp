@@ -1,6 +1,7 @@
 #include "kinds/oxglide/oxglidepanel.h"
 
 #include "document/document.h"
+#include "flowlayout.h"
 #include "formworkspaceview.h"
 #include "kinds/oxglide/oxglide.h"
 #include "quantityformat.h"
@@ -49,7 +50,15 @@ OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
 
-    auto *row = new QHBoxLayout;
+    // The form's label and buttons as one, and Animate crossing beside them where there is
+    // room, else under them: one row held the panel to 740 px in Russian, and presentation
+    // mode's linkage to a third of a 1280×720 projector.
+    auto *bar = new QWidget(this);
+    auto *flow = new FlowLayout(bar);
+    flow->setContentsMargins(0, 0, 0, 0);
+    auto *forms = new QWidget(bar);
+    auto *row = new QHBoxLayout(forms);
+    row->setContentsMargins(0, 0, 0, 0);
     auto *formLabel = new QLabel(this);
     m_formLabel = formLabel;
     m_formO = new QPushButton(this);
@@ -67,10 +76,9 @@ OxGlidePanel::OxGlidePanel(Document *document, QWidget *parent)
     row->addWidget(formLabel);
     row->addWidget(m_formO);
     row->addWidget(m_formX);
-    row->addSpacing(16);
-    row->addWidget(m_cross);
-    row->addStretch(1);
-    layout->addLayout(row);
+    flow->addWidget(forms);
+    flow->addWidget(m_cross);
+    layout->addWidget(bar);
 
     m_banner = new QLabel(this);
     m_banner->setWordWrap(true);
