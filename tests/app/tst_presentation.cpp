@@ -182,9 +182,12 @@ private slots:
         MainWindow &w = *m_window;
         QTabWidget *tabs = pjointPage(0);
         QVERIFY(tabs);
+        QVERIFY(language::apply(QStringLiteral("ru")));
+        const auto english = qScopeGuard([] { language::apply(QStringLiteral("en")); });
         const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
         QTest::qWait(200);
         const QList<int> widths {plots[0]->width(), plots[1]->width(), plots[2]->width()};
+        const QList<int> heights {plots[0]->height(), plots[1]->height(), plots[2]->height()};
         const int page = tabs->widget(0)->width();
         QCOMPARE_GT(widths[1], page / 3); // figs. 9 and 10 stack in the wider column
 
@@ -194,9 +197,13 @@ private slots:
         QTest::keyClick(&w, Qt::Key_Escape);
         QVERIFY(!w.isPresenting());
         tabs->setCurrentIndex(0); // presentation mode brought the page of its plot to the front
-        for (int i = 0; i < 3; ++i)
+        for (int i = 0; i < 3; ++i) {
             QTRY_VERIFY2(std::abs(plots[i]->width() - widths[i]) <= 4,
                          qPrintable(QStringLiteral("fig. %1: %2 px, before %3 px").arg(8 + i).arg(plots[i]->width()).arg(widths[i])));
+            // and the rows: in Russian fig. 9 came back 85 px high under fig. 10, from 165 px
+            QTRY_VERIFY2(std::abs(plots[i]->height() - heights[i]) <= 4,
+                         qPrintable(QStringLiteral("fig. %1: %2 px high, before %3 px").arg(8 + i).arg(plots[i]->height()).arg(heights[i])));
+        }
     }
 
     /// Maximised on a 1280×720 projector in Russian, MOMA came back from presentation mode

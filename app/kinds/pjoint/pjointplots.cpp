@@ -163,6 +163,12 @@ PJointPlots::PJointPlots(QWidget *parent)
     geometry->setColumnStretch(1, 3);
     actuator->setColumnStretch(0, 1);
     actuator->setColumnStretch(1, 1);
+    // And the rows: after leaving presentation mode in Russian, fig. 9 over fig. 10 was
+    // squashed from 165 px to 85 px by fig. 10's hint.
+    for (QGridLayout *grid : {geometry, actuator}) {
+        grid->setRowStretch(0, 1);
+        grid->setRowStretch(1, 1);
+    }
     for (QLayout *l : std::initializer_list<QLayout *> {geometry, jacobian, actuator}) {
         l->setContentsMargins(4, 4, 4, 4);
         l->setSpacing(6);
