@@ -167,15 +167,41 @@ private slots:
     /// The 3-RP̲R's x range is the workspace's extent at one orientation; a pose at another
     /// passes it (x = 19.29 mm at q₁ = 19.83 mm, the range ending at 18.49 mm). Nothing stops x
     /// there, and no note says it does ("x stops at its upper limit 18.49 mm" was shown).
-    void aPoseBeyondAnEstimatedRangeIsNotAtALimit()
+    /// A 3-DOF platform's x and y ranges hold its poses at every orientation, not only at
+    /// φ_map: q₁ = 19.83 mm gave x = 19.29 mm past a range that ended at 18.49 mm, and the
+    /// note said "x stops at its upper limit".
+    void outputRangesCoverEveryOrientation()
     {
         Document document;
         QVERIFY(document.open(QStringLiteral("pp-3rpr")).ok());
         const Mechanism &m = *document.mechanism();
         QVERIFY(document.setVariable(0, 19.83).ok());
-        const int x = m.inputCount();
-        QCOMPARE_GT(m.variableValue(document.pose(), x), m.variableRange(x).max + 0.5);
+        const int x = m.inputCount(), y = x + 1;
+        QCOMPARE_GT(m.variableValue(document.pose(), x), 19.2);
         QVERIFY2(!document.limitNote().contains(QStringLiteral("x stops")), qPrintable(document.limitNote()));
+        // every pose of a grid of the inputs, at whatever angle it has
+        int poses = 0;
+        for (double q1 = 5.0; q1 <= 30.0; q1 += 2.5) {
+            for (double q2 = 5.0; q2 <= 30.0; q2 += 2.5) {
+                for (double q3 = 5.0; q3 <= 30.0; q3 += 2.5) {
+                    Coordinates q(3);
+                    q << q1, q2, q3;
+                    const auto pose = m.solveDirect(q);
+                    if (!pose)
+                        continue;
+                    ++poses;
+                    for (const int output : {x, y}) {
+                        const Interval range = m.variableRange(output);
+                        const double value = m.variableValue(*pose, output);
+                        QVERIFY2(value >= range.min && value <= range.max,
+                                 qPrintable(QStringLiteral("%1 = %2 at q = (%3, %4, %5), outside [%6, %7]")
+                                                .arg(output == x ? QStringLiteral("x") : QStringLiteral("y")).arg(value).arg(q1).arg(q2).arg(q3)
+                                                .arg(range.min).arg(range.max)));
+                    }
+                }
+            }
+        }
+        QCOMPARE_GT(poses, 100);
     }
 
     void designChangeKeepsOutputs()

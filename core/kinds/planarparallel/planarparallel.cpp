@@ -265,14 +265,15 @@ PlanarParallel::PlanarParallel(const PlanarParallelDesign &design, SharedSearch 
     buildReport();
     // the bounds depend on the working modes, not on the assembly mode (SharedSearch)
     const std::array<int, 3> working = {design.legs[0].working, design.legs[1].working, design.legs[2].working};
-    const Eigen::AlignedBox2d *known = nullptr;
+    const std::pair<Eigen::AlignedBox2d, Eigen::AlignedBox2d> *known = nullptr;
     if (m_shared) {
         if (const auto found = m_shared->bounds.find(working); found != m_shared->bounds.end())
             known = &found->second;
     }
-    m_bounds = known ? *known : computeBounds();
+    m_bounds = known ? known->first : computeBounds();
+    m_outputBounds = known ? known->second : computeOutputBounds();
     if (m_shared && !known)
-        m_shared->bounds.emplace(working, m_bounds);
+        m_shared->bounds.emplace(working, std::pair(m_bounds, m_outputBounds));
 
     // The home pose: the inputs in the middle of their ranges if the mechanism assembles there
     // in its modes away from singularities, else the best of a grid of inputs.
@@ -352,7 +353,7 @@ Interval PlanarParallel::variableRange(int variable) const
         return m_design.legs[std::size_t(variable)].inputRange();
     if (variable - n == 2)
         return {-pi, pi};
-    const Eigen::AlignedBox2d &b = m_bounds;
+    const Eigen::AlignedBox2d &b = m_outputBounds;
     return variable == n ? Interval{b.min().x(), b.max().x()} : Interval{b.min().y(), b.max().y()};
 }
 

@@ -246,7 +246,7 @@ private:
     /// exactly as create() makes them; nine searches cost little more than one.
     struct SharedSearch {
         std::map<std::tuple<double, double, double>, std::vector<Eigen::Vector3d>> solutions;
-        std::map<std::array<int, 3>, Eigen::AlignedBox2d> bounds;
+        std::map<std::array<int, 3>, std::pair<Eigen::AlignedBox2d, Eigen::AlignedBox2d>> bounds; ///< map, outputs
     };
     explicit PlanarParallel(const PlanarParallelDesign &design, SharedSearch *shared = nullptr);
     /// create() that, given the platform pose an edit starts from, takes it as the home pose
@@ -278,7 +278,15 @@ private:
     /// where the design does not reach X in its modes; `pose` is the caller's scratch.
     void mapCell(MapQuantity quantity, const capability::CellLimits *limits, const Eigen::Vector3d &X, Pose &pose,
                  float &value, float &margin) const;
+    /// The box of the reference points reachable at platform angle `phi`, from a grid of
+    /// `samples`² over the legs' reach, padded by two cells; empty where none is. With no
+    /// samples, the legs' common reach itself (a unit box where they have none).
+    Eigen::AlignedBox2d reachableBox(double phi, int samples) const;
+    /// The maps' bounds: the reachable box at φ = phi_map (0 for two legs).
     Eigen::AlignedBox2d computeBounds() const;
+    /// The ranges of the outputs x and y: for three legs, the reachable boxes over the whole
+    /// turn of φ, with the maps' bounds.
+    Eigen::AlignedBox2d computeOutputBounds() const;
     /// The direct singular curves of a 3-DOF platform's slice at φ = phi_map: the zero set of
     /// det J_x over a grid of the slice (marching squares, each crossing refined by bisection).
     void directSlice(std::vector<SingularCurve> &curves) const;
@@ -288,6 +296,7 @@ private:
     std::vector<VariableInfo> m_variables;
     ReportLayout m_layout;
     Eigen::AlignedBox2d m_bounds;
+    Eigen::AlignedBox2d m_outputBounds;
     Pose m_home;
     /// Only while the constructor searches the home pose (SharedSearch); null after.
     mutable SharedSearch *m_shared = nullptr;

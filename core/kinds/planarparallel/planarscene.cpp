@@ -57,8 +57,31 @@ Eigen::AlignedBox2d reachBox(const PlanarLeg &leg)
 
 Eigen::AlignedBox2d PlanarParallel::computeBounds() const
 {
+    const Eigen::AlignedBox2d reached = reachableBox(m_design.legCount() == 3 ? m_design.mapPhi : 0.0, 96);
+    // nothing reached: the legs' common reach, or a unit box where they have none
+    return reached.isEmpty() ? reachableBox(m_design.legCount() == 3 ? m_design.mapPhi : 0.0, 0) : reached;
+}
+
+Eigen::AlignedBox2d PlanarParallel::computeOutputBounds() const
+{
+    // A 3-DOF platform reaches farther at some angles than at phi_map: the x and y of a pose
+    // at another angle went past a range that was the extent of one slice (x = 19.29 mm where
+    // the 3-R̲PR's range ended at 18.49 mm). Every 7.5° of the turn, on a coarser grid.
+    Eigen::AlignedBox2d box = m_bounds;
+    if (m_design.legCount() != 3)
+        return box;
+    constexpr int angles = 48, samples = 40;
+    for (int k = 0; k < angles; ++k) {
+        const Eigen::AlignedBox2d slice = reachableBox(-pi + 2.0 * pi * k / angles, samples);
+        if (!slice.isEmpty())
+            box.extend(slice);
+    }
+    return box;
+}
+
+Eigen::AlignedBox2d PlanarParallel::reachableBox(double phi, int samples) const
+{
     const int n = m_design.legCount();
-    const double phi = n == 3 ? m_design.mapPhi : 0.0;
     Eigen::AlignedBox2d box;
     for (int i = 0; i < n; ++i) {
         const PlanarLeg &leg = m_design.legs[std::size_t(i)];
@@ -69,10 +92,11 @@ Eigen::AlignedBox2d PlanarParallel::computeBounds() const
         box = i == 0 ? shifted : box.intersection(shifted);
     }
     if (box.isEmpty())
-        return Eigen::AlignedBox2d(Eigen::Vector2d(-1.0, -1.0), Eigen::Vector2d(1.0, 1.0));
+        return samples > 0 ? box : Eigen::AlignedBox2d(Eigen::Vector2d(-1.0, -1.0), Eigen::Vector2d(1.0, 1.0));
+    if (samples <= 0)
+        return box;
     // The legs' reach is a loose box: shrink it to the cells a coarse grid finds reachable,
     // padded by two cells, so that the maps show the workspace large.
-    constexpr int samples = 96;
     const Eigen::Vector2d step = box.sizes() / samples;
     Eigen::AlignedBox2d reached;
     Coordinates q;
@@ -85,7 +109,7 @@ Eigen::AlignedBox2d PlanarParallel::computeBounds() const
         }
     }
     if (reached.isEmpty())
-        reached = box;
+        return reached;
     const Eigen::Vector2d pad = 2.0 * step + Eigen::Vector2d::Constant(1.0);
     return Eigen::AlignedBox2d(reached.min() - pad, reached.max() + pad).intersection(
         Eigen::AlignedBox2d(box.min() - pad, box.max() + pad));
