@@ -11,6 +11,7 @@
 #include <QTextDocument>
 
 #include <algorithm>
+#include <cmath>
 
 namespace pkm {
 
@@ -151,13 +152,40 @@ QValidator::State NumberSpinBox::validate(QString &input, int &pos) const
 {
     // Qt's validator reads only "-"; one character for another keeps the cursor where it is.
     QString plain = plainMinus(input);
-    const QValidator::State state = QDoubleSpinBox::validate(plain, pos);
+    QValidator::State state = QDoubleSpinBox::validate(plain, pos);
     input = typographicMinus(plain);
+    // A number past the range is typed on, not cut: "199" where the range ends at 196.1
+    // kept "19". Entered, it stops at the range's end (fixup()).
+    if (state == QValidator::Invalid && beyondRange(plain))
+        state = QValidator::Intermediate;
     return state;
+}
+
+std::optional<double> NumberSpinBox::beyondRange(const QString &plain) const
+{
+    QString body = plain;
+    if (!prefix().isEmpty() && body.startsWith(prefix()))
+        body.remove(0, prefix().size());
+    if (!suffix().isEmpty() && body.endsWith(suffix()))
+        body.chop(suffix().size());
+    body = body.trimmed();
+    bool ok = false;
+    const double value = locale().toDouble(body, &ok);
+    const qsizetype point = body.indexOf(locale().decimalPoint());
+    const bool fewDecimals = point < 0 || body.size() - point - 1 <= decimals();
+    if (!ok || !std::isfinite(value) || !fewDecimals || body.contains(locale().groupSeparator())
+        || (value >= minimum() && value <= maximum()))
+        return std::nullopt;
+    return std::clamp(value, minimum(), maximum());
 }
 
 void NumberSpinBox::fixup(QString &input) const
 {
+    // Qt's own correction of a number past the range goes to the bound nearest zero.
+    if (const std::optional<double> end = beyondRange(plainMinus(input))) {
+        input = prefix() + textFromValue(*end) + suffix();
+        return;
+    }
     QString plain = plainMinus(input);
     QDoubleSpinBox::fixup(plain);
     input = typographicMinus(plain);

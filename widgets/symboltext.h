@@ -8,6 +8,8 @@
 #include <QDoubleSpinBox>
 #include <QStyledItemDelegate>
 
+#include <optional>
+
 class QPainter;
 
 namespace pkm {
@@ -53,6 +55,11 @@ public:
     double valueFromText(const QString &text) const override;
     QValidator::State validate(QString &input, int &pos) const override;
     void fixup(QString &input) const override;
+
+private:
+    /// The end of the range nearest a number typed past it (`plain`: with "-" for a minus),
+    /// or none for text that is no such number.
+    std::optional<double> beyondRange(const QString &plain) const;
 };
 
 /// `text` with each hyphen-minus turned into the typographic minus "−" (U+2212).

@@ -83,6 +83,36 @@ private slots:
         QVERIFY2(std::abs(boxes[x]->value() - expected) <= 0.5 * std::pow(10.0, -boxes[x]->decimals()) + 1e-12,
                  qPrintable(QStringLiteral("%1 shown for %2").arg(boxes[x]->value()).arg(expected)));
     }
+
+    /// Typing a number past the range is not cut short: "199" where y ends at 196.1 mm kept
+    /// "19" (Qt's validator refused the last key). Entered, the value stops at the end.
+    void typingPastTheRangeStopsAtItsEnd()
+    {
+        const Result<MechanismPtr> fivebar = createMechanism("fivebar", {});
+        QVERIFY(fivebar);
+        const Mechanism &m = **fivebar;
+        VariablePanel panel;
+        panel.setMechanism(*fivebar);
+        panel.setPose(m.homePose());
+        double edited = 0.0;
+        int variable = -1;
+        connect(&panel, &VariablePanel::variableEdited, this, [&](int i, double value) {
+            variable = i;
+            edited = value;
+        });
+        const int y = m.inputCount() + 1;
+        QDoubleSpinBox *box = panel.spinBox(y);
+        const double top = box->maximum();
+        QVERIFY(top < 199.0);
+        box->setFocus();
+        box->selectAll();
+        QTest::keyClicks(box, QStringLiteral("199"));
+        QVERIFY2(box->text().startsWith(QStringLiteral("199")), qPrintable(box->text()));
+        QTest::keyClick(box, Qt::Key_Return);
+        QCOMPARE(box->value(), top);
+        QCOMPARE(variable, y);
+        QCOMPARE(edited, m.variableInfo()[std::size_t(y)].unit.fromDisplay(top));
+    }
 };
 
 QTEST_MAIN(TestVariablePanel)
