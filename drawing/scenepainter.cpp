@@ -263,7 +263,7 @@ void ScenePainter::paintScaleBar(
 }
 
 ScenePainter::MessageLayout ScenePainter::messageLayout(const QRectF &area, const QString &message,
-    const SceneStyle &style, QPaintDevice *device, const QRectF &drawing)
+    const SceneStyle &style, QPaintDevice *device, const QRectF &drawing, const std::vector<QPointF> &joints)
 {
     const double px = style.pixelSize;
     MessageLayout layout;
@@ -310,17 +310,31 @@ ScenePainter::MessageLayout ScenePainter::messageLayout(const QRectF &area, cons
                 const QRectF text = metrics.boundingRect(QRectF(0, 0, width, 1e6), layout.flags, headline);
                 return QSizeF(std::ceil(text.width()) + 2.0 * pad, std::ceil(text.height()) + 2.0 * pad);
             };
-            const QSizeF small = sized(full), beside = sized(std::max(besideScaleBar, 40.0 * px));
-            const double left = area.left() + margin, right = area.right() - margin - small.width();
+            // A joint under the note hides what it says is singular (the Russian five-bar's A
+            // under a headline of four lines beside the scale bar): one costs more than any area.
+            const double ring = (style.pivotRadius + 4.0) * px;
+            const auto cost = [&](const QRectF &box) {
+                const QRectF grown = box.adjusted(-ring, -ring, ring, ring);
+                const auto hidden = std::count_if(joints.begin(), joints.end(), [&](const QPointF &p) { return grown.contains(p); });
+                return covered(box) + double(hidden) * (drawing.width() * drawing.height() + 1.0);
+            };
+            const QSizeF beside = sized(std::max(besideScaleBar, 40.0 * px));
             const double upper = area.top() + margin, lower = area.bottom() - margin;
-            // the scale bar's height (paintScaleBar(): its tick and its label) and a gap
-            const double aboveBar = lower - small.height() - (8.0 * px + metrics.height() + 8.0 * px);
-            // beside the scale bar (wrapped to the room there), or in a corner above it or at the top
+            // beside the scale bar (wrapped to the room there), or in a corner above it or at the
+            // top, wrapped to the whole width or to half of it (two lines in a corner may leave
+            // a joint free that one line across would cover)
+            std::vector<QRectF> boxes {QRectF(QPointF(area.left() + margin, lower - beside.height()), beside)};
+            for (const double width : {full, std::max(0.5 * full, 40.0 * px)}) {
+                const QSizeF small = sized(width);
+                const double left = area.left() + margin, right = area.right() - margin - small.width();
+                // the scale bar's height (paintScaleBar(): its tick and its label) and a gap
+                const double aboveBar = lower - small.height() - (8.0 * px + metrics.height() + 8.0 * px);
+                for (const QPointF &corner : {QPointF(left, upper), QPointF(right, upper), QPointF(left, aboveBar), QPointF(right, aboveBar)})
+                    boxes.emplace_back(corner, small);
+            }
             QRectF best = layout.box;
-            for (const QRectF &box : {QRectF(QPointF(left, lower - beside.height()), beside), QRectF(QPointF(left, upper), small),
-                                      QRectF(QPointF(right, upper), small), QRectF(QPointF(left, aboveBar), small),
-                                      QRectF(QPointF(right, aboveBar), small)}) {
-                if (area.contains(box) && covered(box) < covered(best))
+            for (const QRectF &box : boxes) {
+                if (area.contains(box) && cost(box) < cost(best))
                     best = box;
             }
             if (best != layout.box) {
@@ -347,13 +361,23 @@ QRectF ScenePainter::jointBounds(const Scene &scene, const ViewMapping &mapping,
     return bounds.isValid() ? bounds.adjusted(-grow, -grow, grow, grow) : QRectF();
 }
 
+std::vector<QPointF> ScenePainter::jointPoints(const Scene &scene, const ViewMapping &mapping)
+{
+    std::vector<QPointF> points;
+    for (const SceneJoint &joint : scene.joints) {
+        if (joint.kind != JointKind::Point && joint.position.allFinite())
+            points.push_back(mapping.toDevice(joint.position));
+    }
+    return points;
+}
+
 void ScenePainter::paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style,
-    const QRectF &drawing)
+    const QRectF &drawing, const std::vector<QPointF> &joints)
 {
     if (message.isEmpty())
         return;
     const double px = style.pixelSize;
-    const MessageLayout layout = messageLayout(area, message, style, painter.device(), drawing);
+    const MessageLayout layout = messageLayout(area, message, style, painter.device(), drawing, joints);
 
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);

@@ -15,6 +15,8 @@
 #include <QRectF>
 #include <QString>
 
+#include <vector>
+
 class QPainter;
 class QPaintDevice;
 
@@ -68,9 +70,12 @@ public:
     /// Where the joints of `scene` are drawn, with their rings and a label's height round them.
     static QRectF jointBounds(const Scene &scene, const ViewMapping &mapping, const SceneStyle &style);
     /// `drawing`, where the mechanism is drawn (device), is kept clear where the message can go
-    /// at the top of `area` instead of the bottom and covers less of it there.
+    /// at the top of `area` instead of the bottom and covers less of it there; `joints`, where
+    /// its joints are (device), above all.
     static void paintMessage(QPainter &painter, const QRectF &area, const QString &message, const SceneStyle &style,
-        const QRectF &drawing = QRectF());
+        const QRectF &drawing = QRectF(), const std::vector<QPointF> &joints = {});
+    /// Where the joints of `scene` are drawn (device), points of interest left out.
+    static std::vector<QPointF> jointPoints(const Scene &scene, const ViewMapping &mapping);
     /// Where paintMessage() puts `message` on `device`: the box, the rectangle of the text
     /// inside it, the font and flags it is drawn with, and what it says (the message, or its
     /// headline when the whole one would cover the drawing wherever it went).
@@ -82,7 +87,7 @@ public:
         int flags = 0;
     };
     static MessageLayout messageLayout(const QRectF &area, const QString &message, const SceneStyle &style,
-        QPaintDevice *device, const QRectF &drawing = QRectF());
+        QPaintDevice *device, const QRectF &drawing = QRectF(), const std::vector<QPointF> &joints = {});
 
     /// Grid spacing in mm: the smallest 1/2/5×10ⁿ with spacing × scale ≥ minimumDevice.
     static double niceStep(double minimumDevice, double scale);

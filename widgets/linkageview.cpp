@@ -181,7 +181,8 @@ void LinkageView::paintEvent(QPaintEvent *)
         ScenePainter::paintLegend(painter, area, m_scene, m_style);
     const double legend = m_hasScene ? ScenePainter::legendHeight(area, m_scene, m_style, this) : 0.0;
     ScenePainter::paintMessage(painter, area.adjusted(0.0, legend, 0.0, 0.0), shownMessage(), m_style, // below the legend
-                               m_hasScene ? ScenePainter::jointBounds(m_scene, m_mapping, m_style) : QRectF());
+                               m_hasScene ? ScenePainter::jointBounds(m_scene, m_mapping, m_style) : QRectF(),
+                               m_hasScene ? ScenePainter::jointPoints(m_scene, m_mapping) : std::vector<QPointF>());
     painter.end();
     ++m_paintCount;
     m_lastPaintMilliseconds = double(timer.nsecsElapsed()) * 1e-6;

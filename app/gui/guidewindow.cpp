@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QShortcut>
+#include <QScrollBar>
 #include <QTextBrowser>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -152,16 +153,27 @@ bool GuideWindow::findNext(bool backward)
     if (text.isEmpty())
         return false;
     const QTextDocument::FindFlags flags = backward ? QTextDocument::FindBackward : QTextDocument::FindFlags();
-    if (m_browser->find(text, flags))
-        return true;
-    // round the guide: from the other end once more
-    QTextCursor cursor = m_browser->textCursor();
-    cursor.movePosition(backward ? QTextCursor::End : QTextCursor::Start);
-    m_browser->setTextCursor(cursor);
-    if (m_browser->find(text, flags))
-        return true;
-    m_notFound->show();
-    return false;
+    bool found = m_browser->find(text, flags);
+    if (!found) {
+        // round the guide: from the other end once more
+        QTextCursor cursor = m_browser->textCursor();
+        cursor.movePosition(backward ? QTextCursor::End : QTextCursor::Start);
+        m_browser->setTextCursor(cursor);
+        found = m_browser->find(text, flags);
+    }
+    if (!found) {
+        m_notFound->show();
+        return false;
+    }
+    // The match in the middle of the page, with what leads up to it and follows: scrolled
+    // only into sight, it sat on the bottom edge, its sentence cut.
+    const QRect match = m_browser->cursorRect();
+    const int height = m_browser->viewport()->height();
+    if (match.top() < height / 4 || match.bottom() > 3 * height / 4) {
+        QScrollBar *bar = m_browser->verticalScrollBar();
+        bar->setValue(bar->value() + match.center().y() - height / 2);
+    }
+    return true;
 }
 
 void GuideWindow::changeEvent(QEvent *event)

@@ -27,6 +27,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QStatusBar>
+#include <QScrollBar>
 #include <QTest>
 #include <QTextBlock>
 #include <QTextBrowser>
@@ -195,6 +196,16 @@ private slots:
         const int first = browser->textCursor().position();
         QVERIFY(guide->findNext());
         QVERIFY(browser->textCursor().position() != first);
+        // each match in the middle of the page, not on its bottom edge (where a scroll is left)
+        for (int i = 0; i < 4; ++i) {
+            QVERIFY(guide->findNext());
+            const QRect match = browser->cursorRect();
+            const int height = browser->viewport()->height();
+            QScrollBar *bar = browser->verticalScrollBar();
+            if (bar->value() > bar->minimum() && bar->value() < bar->maximum())
+                QVERIFY2(match.top() >= height / 4 - 2 && match.bottom() <= 3 * height / 4 + 2,
+                         qPrintable(QStringLiteral("a match at %1–%2 px of %3").arg(match.top()).arg(match.bottom()).arg(height)));
+        }
         guide->findField()->setText(QStringLiteral("no such word anywhere"));
         QVERIFY(!guide->findNext());
         // a change of language brings the guide of the new language
@@ -360,6 +371,17 @@ private slots:
         QVERIFY(area.contains(full.box));
         QVERIFY2(!full.box.intersects(drawing), qPrintable(QStringLiteral("%1,%2 %3×%4").arg(full.box.x()).arg(full.box.y()).arg(full.box.width()).arg(full.box.height())));
         QVERIFY(full.text.contains(QFontMetricsF(full.font).boundingRect(full.text, full.flags, full.message)));
+        // a joint is never under the headline where a corner leaves them all free: in Russian
+        // the five-bar's headline took four lines beside the scale bar, over A and θ₁
+        const QRectF narrow(0, 0, 340, 300), spread(20, 20, 300, 260);
+        const std::vector<QPointF> joints {{70, 250}, {170, 45}, {125, 140}, {215, 140}, {225, 250}};
+        const QString russian = QStringLiteral("Особое положение (обратной кинематики): C на границе рабочего пространства.");
+        const auto clear = ScenePainter::messageLayout(narrow, russian, style, nullptr, spread, joints);
+        const double ring = style.pivotRadius + 4.0;
+        for (const QPointF &joint : joints)
+            QVERIFY2(!clear.box.adjusted(-ring, -ring, ring, ring).contains(joint),
+                     qPrintable(QStringLiteral("the note at %1,%2 %3×%4 covers the joint at %5,%6").arg(clear.box.x()).arg(clear.box.y())
+                                    .arg(clear.box.width()).arg(clear.box.height()).arg(joint.x()).arg(joint.y())));
     }
 
     void statusLowersOnlySymbols()
