@@ -6,6 +6,7 @@
 #include "scenegeometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -81,6 +82,26 @@ std::vector<double> SceneLabels::outwardNameAngles(std::size_t joint) const
     return nearest < 60.0 * degree ? angles : std::vector<double> {};
 }
 
+std::array<QPointF, 3> SceneLabels::groundNamePlaces(std::size_t joint, const QSizeF &size) const
+{
+    const QPointF p = m_points[joint];
+    const double symbolHalf = 19.0 * m_px, symbolDepth = 22.0 * m_px; // drawGround()
+    const double side = symbolHalf + 4.0 * m_px + 0.5 * size.width();
+    QPointF middle;
+    int named = 0;
+    for (std::size_t j = 0; j < m_points.size(); ++j) {
+        if (!m_scene.joints[j].label.empty() && valid(int(j))) {
+            middle += m_points[j];
+            ++named;
+        }
+    }
+    const double outer = named > 0 && p.x() < middle.x() / named ? -1.0 : 1.0;
+    // beside it, under the line through the pivot (a ground line, an angle's reference line)
+    const double beside = std::max(0.5 * symbolDepth, 0.5 * size.height() + 6.0 * m_px);
+    return {p + QPointF(outer * side, beside), p + QPointF(0.0, symbolDepth + 3.0 * m_px + 0.5 * size.height()),
+            p + QPointF(-outer * side, beside)};
+}
+
 void SceneLabels::reserveJointNames()
 {
     // Where each joint's name would go first (the middle of the widest gap at its joint): the
@@ -91,7 +112,11 @@ void SceneLabels::reserveJointNames()
         if (m_scene.joints[i].label.empty() || !valid(int(i)))
             continue;
         const QSizeF size = textSize(QString::fromStdString(m_scene.joints[i].label), true);
-        m_reserved.push_back(boxQuad(jointNameCentre(i, size, gapsAround(i).front().second, 0.0), size, 0.0));
+        // a ground pivot's beside its symbol (groundNamePlaces()), which the angle labels then
+        // leave to it
+        const QPointF place = m_scene.joints[i].kind == JointKind::Ground ? groundNamePlaces(i, size)[0]
+                                                                          : jointNameCentre(i, size, gapsAround(i).front().second, 0.0);
+        m_reserved.push_back(boxQuad(place, size, 0.0));
     }
 }
 
@@ -136,6 +161,13 @@ void SceneLabels::placeJointLabels()
             placed.centre = *outside;
             place(placed);
             continue;
+        }
+        // A ground pivot's name beside its symbol, the outer side first, or under it, as a
+        // drawing names it: the middle of the widest free gap put the five-bar's "E" inside
+        // the linkage, among the ghosts, when its angle label took the place outward.
+        if (m_scene.joints[i].kind == JointKind::Ground) {
+            for (const QPointF &centre : groundNamePlaces(i, size))
+                candidates.push_back(centre);
         }
         const std::vector<std::pair<double, double>> gaps = gapsAround(i);
         for (const auto &[width, middle] : gaps) {

@@ -216,6 +216,9 @@ private:
     std::vector<double> outwardNameAngles(std::size_t joint) const;
     /// The centre of a joint's name of `size` in direction `angle`, `extra` beyond the ring.
     QPointF jointNameCentre(std::size_t joint, const QSizeF &size, double angle, double extra) const;
+    /// Where a ground pivot's name goes as a drawing puts it: beside its symbol on the side
+    /// away from the linkage, under it, beside it on the other side.
+    std::array<QPointF, 3> groundNamePlaces(std::size_t joint, const QSizeF &size) const;
     /// Fills m_reserved.
     void reserveJointNames();
 

@@ -428,6 +428,39 @@ private slots:
     /// The П-joint at θ = 0: μ is measured at A between the diagonal and the crank, a narrow
     /// angle inside the parallelogram that the diagonal's length fills. Its label goes where it
     /// covers no other, with a leader to its arc.
+    /// A ground pivot is named beside its symbol, on the outer side, where its angle label
+    /// would take the place outward: at presentation mode's text size the five-bar's "E" went
+    /// inside the linkage among the other assembly mode's dashes.
+    void aGroundPivotIsNamedBesideItsSymbol()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("fivebar-example")));
+        LinkageView *view = m_window->linkageView();
+        SceneStyle style = view->sceneStyle();
+        style.fontPixels *= 1.5;
+        style.jointFontPixels *= 1.5;
+        const Scene &scene = view->scene();
+        const QRectF area(0, 0, 770, 380);
+        const ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
+        const std::vector<drawing::Text> texts = textsOf(drawing::layoutScene(scene, mapping, style));
+        const auto named = [&](const char *name) {
+            const auto text = std::find_if(texts.begin(), texts.end(), [&](const drawing::Text &t) { return t.text == QLatin1String(name); });
+            return text == texts.end() ? QPointF(qQNaN(), qQNaN()) : boxOf(*text).boundingRect().center();
+        };
+        const auto at = [&](const char *name) {
+            for (const SceneJoint &joint : scene.joints) {
+                if (joint.label == name)
+                    return mapping.toDevice(Eigen::Vector2d(joint.position.head<2>()));
+            }
+            return QPointF(qQNaN(), qQNaN());
+        };
+        // E, the right-hand pivot: its name right of it and not above it; A's left of A
+        const QPointF E = at("E"), nameE = named("E"), A = at("A"), nameA = named("A");
+        QVERIFY2(nameE.x() > E.x() && nameE.y() >= E.y(),
+                 qPrintable(QStringLiteral("E at %1, %2, its name at %3, %4").arg(E.x()).arg(E.y()).arg(nameE.x()).arg(nameE.y())));
+        QVERIFY2(nameA.x() < A.x() && nameA.y() >= A.y(),
+                 qPrintable(QStringLiteral("A at %1, %2, its name at %3, %4").arg(A.x()).arg(A.y()).arg(nameA.x()).arg(nameA.y())));
+    }
+
     void narrowAngleGetsALeader()
     {
         QVERIFY(m_window->openDesign(QStringLiteral("pjoint-prototype")));

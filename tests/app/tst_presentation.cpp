@@ -4,11 +4,15 @@
 #include "gui/mainwindow.h"
 
 #include "document/language.h"
+#include "linkageview.h"
+#include "modebar.h"
 #include "plotfocus.h"
 #include "support/app.h"
+#include "variablepanel.h"
 
 #include <qcustomplot.h>
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QLabel>
 #include <QMenu>
@@ -57,6 +61,47 @@ private slots:
         language::apply(QStringLiteral("en"));
     }
     void cleanupTestCase() { delete m_window; }
+
+    /// Presenting at 1280×720, the linkage is what the class looks at: three fifths of the
+    /// width (the O-X glide's form buttons and hidden map page held it to 536 px in Russian)
+    /// and half the height (the five-bar's four slider rows and three mode rows left it a strip
+    /// of 265 px); the rows stand in two blocks side by side, and a group of numbered modes
+    /// wraps whole (the Russian five-bar's "1 2" stood alone on a third row).
+    void presentationGivesTheLinkageTheRoom_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("preset");
+        for (const char *code : {"ru", "sr"}) {
+            for (const char *preset : {"fivebar-example", "oxglide-prototype", "pp-3rpr", "moma-3a"})
+                QTest::addRow("%s %s", code, preset) << QString::fromLatin1(code) << QString::fromLatin1(preset);
+        }
+    }
+    void presentationGivesTheLinkageTheRoom()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, preset);
+        MainWindow &w = *m_window;
+        QVERIFY(language::apply(language));
+        QVERIFY(w.openDesign(preset));
+        w.setPresentationMode(true);
+        const auto leave = qScopeGuard([&w] {
+            w.setPresentationMode(false);
+            language::apply(QStringLiteral("en"));
+        });
+        w.resize(1280, 720);
+        QTest::qWait(250); // the splitter shared out for the width the window has
+        QCoreApplication::processEvents();
+        const QWidget *view = w.linkageView();
+        QVERIFY2(view->width() >= 0.55 * w.width() && view->height() >= 0.45 * w.height(),
+                 qPrintable(QStringLiteral("the linkage view is %1×%2 px").arg(view->width()).arg(view->height())));
+        QVERIFY(w.variablePanel()->hasTwoBlocks());
+        for (int i = 0; QAbstractButton *button = w.modeBar()->button(i); ++i) {
+            const QLabel *caption = button->parentWidget()->findChild<QLabel *>();
+            if (button->text().toInt() > 0 && button->parentWidget() != w.modeBar())
+                QVERIFY(caption && qAbs(caption->mapTo(&w, caption->rect().center()).y()
+                                        - button->mapTo(&w, button->rect().center()).y()) < button->height() / 2);
+        }
+    }
 
     /// Presentation mode shows one plot per page, filling it: three plots side by side at 150 %
     /// text on a 1280×720 projector overlapped and could not be read. View ▸ Presentation Plot
