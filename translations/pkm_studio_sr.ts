@@ -4663,7 +4663,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>δ vs AB — fig. 5</source>
-        <translation>δ у зависности од AB — сл. 5</translation>
+        <translation>δ од AB — сл. 5</translation>
     </message>
     <message>
         <source>The rocker angle δ over the crank&apos;s range (click to set α)</source>

@@ -4663,7 +4663,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>δ vs AB — fig. 5</source>
-        <translation>δ u zavisnosti od AB — sl. 5</translation>
+        <translation>δ od AB — sl. 5</translation>
     </message>
     <message>
         <source>The rocker angle δ over the crank&apos;s range (click to set α)</source>
