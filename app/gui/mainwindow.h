@@ -299,6 +299,9 @@ private:
     QByteArray m_splitterBeforePresentation;
     bool m_maximizedBeforePresentation = false;
     QRect m_geometryBeforePresentation; ///< the window's own place and size, given back on leaving
+    /// The shown docks' sizes: restoreState() shares a dock area out anew when the window's
+    /// size or the docks' least sizes differ from when it was saved.
+    QList<QPair<QPointer<QDockWidget>, QSize>> m_docksBeforePresentation;
 };
 
 } // namespace pkm

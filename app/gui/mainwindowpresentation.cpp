@@ -201,8 +201,12 @@ void MainWindow::setPresentationMode(bool on)
         m_splitterBeforePresentation = m_splitter->saveState();
         m_maximizedBeforePresentation = isMaximized();
         m_geometryBeforePresentation = geometry();
-        for (QDockWidget *dock : findChildren<QDockWidget *>())
+        m_docksBeforePresentation.clear();
+        for (QDockWidget *dock : findChildren<QDockWidget *>()) {
+            if (dock->isVisible())
+                m_docksBeforePresentation.append({dock, dock->size()});
             dock->hide();
+        }
         m_toolBar->hide();
         m_playToolBar->show();
         QPalette palette = QApplication::palette();
@@ -268,6 +272,19 @@ void MainWindow::setPresentationMode(bool on)
             // still full screen, they were shared out anew as it shrank
             restoreState(m_stateBeforePresentation);
             m_splitter->restoreState(m_splitterBeforePresentation);
+            // and each dock at the size it had: restored, the Russian five-bar's left docks came
+            // back 50 px narrower, their titles and the values' columns cut
+            QList<QDockWidget *> docks;
+            QList<int> widths, heights;
+            for (const auto &[dock, size] : std::as_const(m_docksBeforePresentation)) {
+                if (dock && dock->isVisible() && !dock->isFloating()) {
+                    docks << dock;
+                    widths << size.width();
+                    heights << size.height();
+                }
+            }
+            resizeDocks(docks, widths, Qt::Horizontal);
+            resizeDocks(docks, heights, Qt::Vertical);
         }
         m_view->fitToView();
         fitStatusMessage(); // the read-outs' width at the new text size
