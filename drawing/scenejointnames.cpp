@@ -41,20 +41,28 @@ QPointF SceneLabels::jointNameCentre(std::size_t joint, const QSizeF &size, doub
     return m_points[joint] + (clear + extra + support(u, size)) * u;
 }
 
+QPointF SceneLabels::namedMiddle(int *count) const
+{
+    QPointF sum;
+    int named = 0;
+    for (std::size_t j = 0; j < m_points.size(); ++j) {
+        if (!m_scene.joints[j].label.empty() && valid(int(j))) {
+            sum += m_points[j];
+            ++named;
+        }
+    }
+    *count = named;
+    return named > 0 ? sum / double(named) : sum;
+}
+
 std::vector<double> SceneLabels::outwardNameAngles(std::size_t joint) const
 {
     // Outward: from the middle of the named joints to this one. A name inside the linkage
     // stands among its bars and ghosts and reads as the space's between them (the 5R's A₁
     // and A₂ between the legs, over the other assembly mode's dashes).
-    QPointF middle;
     int named = 0;
-    for (std::size_t j = 0; j < m_points.size(); ++j) {
-        if (!m_scene.joints[j].label.empty() && valid(int(j))) {
-            middle += m_points[j];
-            ++named;
-        }
-    }
-    const QPointF away = named > 2 ? m_points[joint] - middle / double(named) : QPointF();
+    const QPointF middle = namedMiddle(&named);
+    const QPointF away = named > 2 ? m_points[joint] - middle : QPointF();
     if (length(away) <= 4.0 * m_style.pivotRadius * m_px)
         return {}; // in the middle: no side is outward
     const double out = sceneAngle(away);
@@ -87,15 +95,8 @@ std::array<QPointF, 3> SceneLabels::groundNamePlaces(std::size_t joint, const QS
     const QPointF p = m_points[joint];
     const double symbolHalf = 19.0 * m_px, symbolDepth = 22.0 * m_px; // drawGround()
     const double side = symbolHalf + 4.0 * m_px + 0.5 * size.width();
-    QPointF middle;
     int named = 0;
-    for (std::size_t j = 0; j < m_points.size(); ++j) {
-        if (!m_scene.joints[j].label.empty() && valid(int(j))) {
-            middle += m_points[j];
-            ++named;
-        }
-    }
-    const double outer = named > 0 && p.x() < middle.x() / named ? -1.0 : 1.0;
+    const double outer = p.x() < namedMiddle(&named).x() && named > 0 ? -1.0 : 1.0;
     // beside it, under the line through the pivot (a ground line, an angle's reference line)
     const double beside = std::max(0.5 * symbolDepth, 0.5 * size.height() + 6.0 * m_px);
     return {p + QPointF(outer * side, beside), p + QPointF(0.0, symbolDepth + 3.0 * m_px + 0.5 * size.height()),

@@ -214,6 +214,8 @@ private:
     /// The directions a joint's name is tried in first: in the gap between what leaves the
     /// joint that faces outward of the linkage, the most outward first; none in its middle.
     std::vector<double> outwardNameAngles(std::size_t joint) const;
+    /// The middle of the named joints that are shown (device), and how many they are.
+    QPointF namedMiddle(int *count) const;
     /// The centre of a joint's name of `size` in direction `angle`, `extra` beyond the ring.
     QPointF jointNameCentre(std::size_t joint, const QSizeF &size, double angle, double extra) const;
     /// Where a ground pivot's name goes as a drawing puts it: beside its symbol on the side
