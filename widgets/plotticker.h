@@ -34,7 +34,15 @@ protected:
                                          : metrics.height();
             setTickCount(std::clamp(length / std::max(1, label * 5 / 4), 2, m_most));
         }
-        return QCPAxisTicker::getTickStep(range);
+        // At least two ticks inside the range: for two, QCustomPlot may take a step as long as
+        // the range, and presentation mode's MOMA map had "0" alone under its x axis.
+        double step = QCPAxisTicker::getTickStep(range);
+        for (int i = 0; i < 4 && step > 0.0 && std::floor(range.upper / step) - std::ceil(range.lower / step) < 1.0; ++i) {
+            const double power = std::pow(10.0, std::floor(std::log10(step)));
+            const double mantissa = step / power;
+            step = (mantissa > 4.99 ? 2.0 : mantissa > 1.99 ? 1.0 : 0.5) * power; // 5 → 2 → 1 → 0.5
+        }
+        return step;
     }
 
     QString getTickLabel(double tick, const QLocale &locale, QChar formatChar, int precision) override

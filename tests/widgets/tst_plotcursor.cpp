@@ -4,6 +4,7 @@
 // 220 px wide fails without the fix). There it takes two lines, the unit on the second, and
 // stays inside the axis rectangle rather than cover the tick labels and the axis title.
 #include "plotstyle.h"
+#include "plotticker.h"
 
 #include <qcustomplot.h>
 
@@ -129,6 +130,29 @@ private slots:
         QVERIFY2(plot.axisRect()->rect().right() + half <= plot.viewport().right(),
                  qPrintable(QStringLiteral("“%1” needs %2 px right of the axis, has %3")
                                 .arg(last).arg(half).arg(plot.viewport().right() - plot.axisRect()->rect().right())));
+    }
+
+    /// A short axis with large text still has two labelled ticks: the MOMA map's x axis in
+    /// presentation mode, −95 … 95 mm, showed "0" alone.
+    void aShortAxisKeepsTwoTicks()
+    {
+        QCustomPlot plot;
+        plot.resize(150, 200);
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        plotstyle::apply(&plot, QApplication::font());
+        plotstyle::setLegendShown(&plot, false);
+        QFont large = plot.xAxis->tickLabelFont();
+        large.setPointSizeF(large.pointSizeF() * 1.5);
+        plot.xAxis->setTickLabelFont(large);
+        plot.xAxis->setTicker(QSharedPointer<MinusTicker>::create(plot.xAxis));
+        for (const auto &[lower, upper] : {std::pair(-95.0, 95.0), std::pair(-150.0, 250.0), std::pair(-320.0, -180.0)}) {
+            plot.xAxis->setRange(lower, upper);
+            plot.replot();
+            plot.replot();
+            QVERIFY2(plot.xAxis->tickVector().size() >= 2,
+                     qPrintable(QStringLiteral("%1 … %2: ticks %3").arg(lower).arg(upper).arg(plot.xAxis->tickVectorLabels().join(u' '))));
+        }
     }
 };
 
