@@ -12,7 +12,9 @@ namespace pkm {
 
 /// Tick labels with a real minus sign ("−200"), as in the rest of the interface. Given its
 /// axis, it also keeps the labels apart: fewer ticks where the axis is short for them (the
-/// map's x axis in presentation mode's large text ran "−100−50 0 50 100150200").
+/// map's x axis in presentation mode's large text ran "−100−50 0 50 100150200"). Very small
+/// or large values share one power of ten, "1,5·10⁻⁴ … 0,5·10⁻⁴ … 0": 'g' format had mixed
+/// "0,00015" with "5E−05" along the 3-R̲RR's colour scale.
 class MinusTicker : public QCPAxisTicker
 {
 public:
@@ -34,6 +36,10 @@ protected:
                                          : metrics.height();
             setTickCount(std::clamp(length / std::max(1, label * 5 / 4), 2, m_most));
         }
+        const double end = std::max(std::abs(range.lower), std::abs(range.upper));
+        m_power = m_sharePower && end > 0.0 && std::isfinite(end) && (end < 1e-2 || end >= 1e5)
+            ? int(std::floor(std::log10(end)))
+            : 0;
         // At least two ticks inside the range: for two, QCustomPlot may take a step as long as
         // the range, and presentation mode's MOMA map had "0" alone under its x axis.
         double step = QCPAxisTicker::getTickStep(range);
@@ -47,10 +53,24 @@ protected:
 
     QString getTickLabel(double tick, const QLocale &locale, QChar formatChar, int precision) override
     {
-        return QCPAxisTicker::getTickLabel(tick, locale, formatChar, precision).replace(QLatin1Char('-'), QChar(0x2212));
+        if (m_power == 0)
+            return QCPAxisTicker::getTickLabel(tick, locale, formatChar, precision).replace(QLatin1Char('-'), QChar(0x2212));
+        const double mantissa = tick / std::pow(10.0, m_power);
+        if (std::abs(mantissa) < 1e-9)
+            return QStringLiteral("0");
+        static const QString superscripts = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+        QString power = m_power < 0 ? QStringLiteral("⁻") : QString();
+        for (const QChar digit : QString::number(std::abs(m_power)))
+            power += superscripts[digit.digitValue()];
+        QString label = locale.toString(mantissa, 'g', std::max(2, precision)) + QStringLiteral("·10") + power;
+        return label.replace(QLatin1Char('-'), QChar(0x2212));
     }
 
+    /// Off for a logarithmic scale, whose ticks span decades (ConditionTicker).
+    bool m_sharePower = true;
+
 private:
+    int m_power = 0; ///< the power of ten the labels share (0: none), set by getTickStep()
     const QCPAxis *m_axis = nullptr;
     int m_most = 5; ///< QCPAxisTicker's own count, where there is room
 };

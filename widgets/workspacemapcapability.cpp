@@ -108,7 +108,7 @@ void WorkspaceMapView::updateCapabilityTitle()
     const QString area = areaText();
     if (m_shownQuantity == MapQuantity::Specification) {
         const double share = m_summary.area > 0.0 ? 100.0 * m_specificationArea / m_summary.area : 0.0;
-        plotstyle::setFittedText(m_title, m_requirements.empty()
+        setTitle(m_requirements.empty()
                 ? tr("No requirements stated (Edit ▸ Requirements…): the whole workspace %1 meets them").arg(area)
                 : tr("Requirements met in %1 of the workspace %2 (%3 %)")
                       .arg(formatQuantity(m_specificationArea, units::squareMillimetre, 0), area,
@@ -118,12 +118,12 @@ void WorkspaceMapView::updateCapabilityTitle()
         const capability::Actuators actuators = capability::actuatorsOf(*m_mechanism);
         for (const capability::Requirement &requirement : m_requirements)
             lines << QString::fromStdString(capability::requirementText(requirement, actuators));
-        m_plot->setToolTip(lines.isEmpty() ? tr("State what the actuators must deliver with Edit ▸ Requirements….")
+        setMapToolTip(lines.isEmpty() ? tr("State what the actuators must deliver with Edit ▸ Requirements….")
                                            : tr("Required: %1").arg(lines.join(QStringLiteral("; "))));
         return;
     }
     const QString unit = m_shownUnit.empty() ? QString() : QStringLiteral(" ") + coreLabel(m_shownUnit);
-    plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4%5 at the grid points")
+    setTitle(tr("Workspace %1 · %2 from %3 to %4%5 at the grid points")
                                           .arg(area, toQString(m_shownSymbol), significant(m_summary.min),
                                                significant(m_summary.max), unit));
     setScaleLabel(tr("%1 (%2): %3, colours end at %4")
@@ -131,7 +131,7 @@ void WorkspaceMapView::updateCapabilityTitle()
                            significant(m_colourLimit)),
                   m_shownUnit.empty() ? toQString(m_shownSymbol)
                                       : QStringLiteral("%1 (%2)").arg(toQString(m_shownSymbol), coreLabel(m_shownUnit)));
-    m_plot->setToolTip(m_shownQuantity == MapQuantity::ToleranceWorst
+    setMapToolTip(m_shownQuantity == MapQuantity::ToleranceWorst
             ? tr("The first-order worst-case error of the platform point at each point of the workspace, from the "
                  "tolerances of the Tolerances panel: ∞ at a direct singularity.")
             : tr("What the actuators deliver at each point of the workspace, from their limits in the design: 0 or ∞ "

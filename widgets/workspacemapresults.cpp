@@ -35,27 +35,6 @@
 
 namespace pkm {
 
-QString workspacemap::significant(double value)
-{
-    const QLocale locale;
-    auto minus = [](QString text) { return text.replace(QLatin1Char('-'), QChar(0x2212)); };
-    const double magnitude = std::abs(value);
-    if (!std::isfinite(value) || magnitude == 0.0 || (magnitude >= 1e-3 && magnitude < 1e4))
-        return minus(locale.toString(value, 'g', 3));
-    int exponent = int(std::floor(std::log10(magnitude)));
-    double mantissa = value / std::pow(10.0, exponent);
-    if (std::abs(mantissa) >= 9.995) { // rounds up to 10
-        mantissa /= 10.0;
-        ++exponent;
-    }
-    static const QString superscripts = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
-    QString power;
-    for (const QChar digit : QString::number(std::abs(exponent)))
-        power += superscripts[digit.digitValue()];
-    return minus(locale.toString(mantissa, 'g', 3)) + QStringLiteral("·10") + (exponent < 0 ? QStringLiteral("⁻") : QString())
-        + power;
-}
-
 namespace {
 using workspacemap::determinantGradient;
 using workspacemap::nan;
@@ -65,6 +44,9 @@ using workspacemap::significant;
 /// few, 1-1.5-2-3-4-5-6-8 over less than one (QCPAxisTickerLog falls back to linear steps there).
 class ConditionTicker : public MinusTicker
 {
+public:
+    ConditionTicker() { m_sharePower = false; }
+
 protected:
     int getSubTickCount(double) override { return 0; }
     QVector<double> createTickVector(double, const QCPRange &range) override
@@ -139,7 +121,7 @@ void WorkspaceMapView::applyMap(WorkspaceMapResult &result)
         ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
         m_colorScale->axis()->setTicker(ticker);
     } else {
-        m_colorScale->axis()->setTicker(QSharedPointer<MinusTicker>::create());
+        m_colorScale->axis()->setTicker(QSharedPointer<MinusTicker>::create(m_colorScale->axis())); // ticks kept apart
     }
     m_colorScale->axis()->setNumberFormat(QStringLiteral("gb"));
     m_colorScale->axis()->setNumberPrecision(3);
@@ -207,168 +189,6 @@ QString WorkspaceMapView::message() const
     return m_stack->currentWidget() == m_messageLabel ? m_messageLabel->text() : QString();
 }
 
-// -- texts -------------------------------------------------------------------------------------
-
-double WorkspaceMapView::shownArea() const
-{
-    // Where the area of the design's own modes is known in closed form (the O-X glide's), the
-    // title gives it, as the sheet and `pkm workspace` do; elsewhere the map's count.
-    if (const PlanarWorkspace *planar = m_mechanism ? m_mechanism->planarWorkspace() : nullptr)
-        for (const ExactArea &known : planar->exactAreas())
-            if (known.key == "area")
-                return known.area;
-    return m_summary.area;
-}
-
-QString WorkspaceMapView::determinantUnit() const
-{
-    // det J's unit follows the kind (and a leg-built mechanism's legs): rad²/mm² for a five-bar
-    const ReportEntry *entry = m_mechanism ? m_mechanism->reportLayout().find("det_J") : nullptr;
-    return entry && !entry->unit.symbol.empty() ? QLatin1Char(' ') + coreLabel(entry->unit.symbol) : QString();
-}
-
-QString WorkspaceMapView::titleText() const
-{
-    return m_title->text().remove(QChar(0x2060)).simplified(); // without the word joiners of unbreakable()
-}
-
-std::optional<double> WorkspaceMapView::sliceAngle() const
-{
-    if (!m_mechanism || m_mechanism->outputCount() != 3 || !m_mechanism->parameterApplies("phi_map"))
-        return std::nullopt;
-    const ParameterSet parameters = m_mechanism->parameters();
-    const auto phi = parameters.find("phi_map");
-    return phi == parameters.end() ? std::nullopt : std::optional<double>(phi->second);
-}
-
-QString WorkspaceMapView::areaText() const
-{
-    const QString area = formatQuantity(shownArea(), units::squareMillimetre, 0);
-    const std::optional<double> slice = sliceAngle();
-    if (!slice)
-        return area;
-    const QString angle = formatQuantity(*slice, units::angle, 1);
-    return m_poseOffSlice ? tr("%1 at φ = %2, not the pose's φ").arg(area, angle) : tr("%1 at φ = %2").arg(area, angle);
-}
-
-void WorkspaceMapView::updateTitle()
-{
-    const bool condition = m_shownQuantity == MapQuantity::Condition;
-    const QString symbol = condition ? QStringLiteral("κ(J)") : QStringLiteral("det J"); // symbols
-    if (isPoseValue(m_shownQuantity) && !m_mapBounds.isEmpty() && m_summary.reachableCells > 0) {
-        updateCapabilityTitle();
-        return;
-    }
-    if (m_mapBounds.isEmpty()) {
-        plotstyle::setFittedText(m_title, tr("Workspace map"));
-        setScaleLabel(QString());
-        return;
-    }
-    if (m_summary.reachableCells == 0) {
-        plotstyle::setFittedText(m_title, tr("Workspace empty in the design's working and assembly modes"));
-    } else if (m_shownQuantity == MapQuantity::OrientationRange) {
-        const double degree = std::numbers::pi / 180.0;
-        plotstyle::setFittedText(m_title, tr("Workspace %1 · orientation range of φ from %2° to %3°")
-                                              .arg(areaText(), significant(m_summary.min / degree), significant(m_summary.max / degree)));
-        setScaleLabel(tr("orientation range of φ (°): the angles that hold the platform"), tr("range of φ (°)"));
-        m_plot->setToolTip(tr("At each point, the total width of the platform angles φ at which the legs can hold it "
-                              "there; the map's outline is the workspace at φ_map."));
-        return;
-    } else {
-        // Broken into lines where the map is narrow (between words, never cut off). The range
-        // is the grid points': the pose's own value can lie outside it, nearer a singularity.
-        plotstyle::setFittedText(m_title, tr("Workspace %1 · %2 from %3 to %4 at the grid points")
-                                              .arg(areaText(), symbol, significant(m_summary.min),
-                                                   significant(m_summary.max) + (condition ? QString() : determinantUnit())));
-    }
-    // Along the scale, broken into lines where the map is short (a projector at 1280×720).
-    const QString scaleLabel = condition ? tr("κ(J), log scale (colours end at %1)").arg(significant(m_colourLimit))
-                                         : tr("det J (colours clipped at ±%1)").arg(significant(m_colourLimit) + determinantUnit());
-    const QString unit = determinantUnit().trimmed();
-    setScaleLabel(scaleLabel, condition ? tr("κ(J), log scale") : unit.isEmpty() ? symbol : QStringLiteral("%1 (%2)").arg(symbol, unit));
-    m_plot->setToolTip(condition
-            ? tr("The colours end at the 98th percentile of κ(J) over the workspace, %1; κ → ∞ at the "
-                 "singularities.")
-                  .arg(significant(m_colourLimit))
-            : tr("The colours are clipped at ±%1, the larger of the 5th and 95th percentiles of |det J| "
-                 "over the workspace: det J → ±∞ at inverse singularities, 0 at direct ones.")
-                  .arg(significant(m_colourLimit)));
-}
-
-void WorkspaceMapView::updateLegend()
-{
-    m_outline->setName(tr("workspace boundary"));
-    const QString none = tr(": none");
-    const auto name = [](const QString &kind, const QString &meaning) {
-        return meaning.isEmpty() ? kind : tr("%1 (%2)").arg(kind, meaning);
-    };
-    m_inverse->setName(name(tr("inverse singularity"), coreLabel(m_singularityMeanings[0]))
-                       + (m_curveCounts[0] || m_mapBounds.isEmpty() ? QString() : none));
-    m_direct->setName(name(tr("direct singularity"), coreLabel(m_singularityMeanings[1]))
-                      + (m_curveCounts[1] || m_mapBounds.isEmpty() ? QString() : none));
-    if (m_comparisonArea > 0.0) {
-        QString text = tr("%1: boundary, %2").arg(m_comparisonLabel, formatQuantity(m_comparisonArea, units::squareMillimetre, 0));
-        if (m_summary.area > 0.0) {
-            const double change = 100.0 * (m_comparisonArea / m_summary.area - 1.0);
-            text += tr(" (%1%2 %)").arg(change >= 0.0 ? QStringLiteral("+") : QString(QChar(0x2212)),
-                QLocale().toString(std::abs(change), 'f', 1));
-        }
-        m_comparisonOutline->setName(text);
-    }
-
-    // A long name (a singular curve's meaning in Russian) wraps rather than run off the plot.
-    QCPLegend *legend = m_plot->legend;
-    const int textRoom = m_plot->width() - legend->margins().left() - legend->margins().right()
-        - legend->iconSize().width() - legend->iconTextPadding() - 12;
-    for (QCPAbstractPlottable *plottable : {static_cast<QCPAbstractPlottable *>(m_outline),
-                                            static_cast<QCPAbstractPlottable *>(m_inverse),
-                                            static_cast<QCPAbstractPlottable *>(m_direct)})
-        plottable->setName(plotstyle::wrapped(plottable->name(), legend->font(), textRoom));
-    // Two columns when they fit beside the colour scale, else one; filled row by row.
-    int widest = 0, count = 0;
-    for (int j = 0; j < legend->itemCount(); ++j)
-        if (const QCPAbstractLegendItem *item = legend->item(j)) {
-            ++count;
-            widest = std::max(widest, item->minimumOuterSizeHint().width());
-        }
-    const int available = m_plot->width() - m_colorScale->outerRect().width() - legend->margins().left()
-        - legend->margins().right();
-    const int columns = count > 1 && 2 * widest + legend->columnSpacing() <= available ? 2 : 1;
-    legend->setWrap(columns);
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true); // also re-flows after items came or went
-    // The columns follow the plot's width (on every resize): the two of a wide screen must not
-    // keep the plot from narrowing on a 1024-pixel one.
-    legend->setMinimumSize(QSize(40, 0));
-}
-
-void WorkspaceMapView::retranslate()
-{
-    m_quantityLabel->setText(tr("&Map:"));
-    m_quantityBox->setItemText(0, QStringLiteral("det J")); // a symbol
-    m_quantityBox->setItemText(1, tr("condition number κ(J)"));
-    if (const int range = m_quantityBox->findData(int(MapQuantity::OrientationRange)); range >= 0)
-        m_quantityBox->setItemText(range, tr("orientation range of φ"));
-    retranslateCapabilityItems();
-    retranslateToleranceItem();
-    m_busyLabel->setText(tr("computing…"));
-    m_plot->xAxis->setLabel(tr("x (mm)"));
-    m_plot->yAxis->setLabel(tr("y (mm)"));
-    if (m_stack->currentWidget() == m_messageLabel)
-        m_messageLabel->setText(messageText());
-    updateTitle();
-    updateLegend();
-}
-
-void WorkspaceMapView::changeEvent(QEvent *event)
-{
-    if (event->type() == QEvent::LanguageChange) {
-        retranslate();
-        updateBusy(); // "computing…" changed its width
-        m_plot->replot(QCustomPlot::rpQueuedReplot);
-    }
-    QWidget::changeEvent(event);
-}
-
 // -- view --------------------------------------------------------------------------------------
 
 Eigen::Vector2d WorkspaceMapView::markerPosition() const
@@ -392,21 +212,6 @@ double WorkspaceMapView::valueAt(const Eigen::Vector2d &pointMm) const
 
 /// Runs after every layout (so the axis rect's size is known) and gives both axes the same
 /// mm per pixel: the whole map (and comparison) fitted, or the user's zoom kept.
-void WorkspaceMapView::setScaleLabel(const QString &text, const QString &brief)
-{
-    m_scaleLabel = text;
-    m_briefScaleLabel = brief;
-    m_colorScale->setLabel(scaleLabelFor(m_plot->axisRect()->height()));
-}
-
-QString WorkspaceMapView::scaleLabelFor(int height) const
-{
-    const QFont font = m_colorScale->axis()->labelFont();
-    const QString full = plotstyle::wrapped(m_scaleLabel, font, height);
-    return full.count(QLatin1Char('\n')) < 2 || m_briefScaleLabel.isEmpty() ? full
-                                                                            : plotstyle::wrapped(m_briefScaleLabel, font, height);
-}
-
 void WorkspaceMapView::fitView()
 {
     const QRect pixels = m_plot->axisRect()->rect();

@@ -77,6 +77,13 @@ public:
     /// The shown specification map's area where every requirement holds, mm² (0 otherwise).
     double specificationArea() const { return m_specificationArea; }
 
+    /// Brief words for a small map (presentation mode): the title gives the workspace alone and
+    /// the legend the curves' kinds; the rest (the value range, what a singularity means) goes
+    /// to the tooltip. At 1280×720 the full title and legend took 320 px and left the map
+    /// 185×145 px.
+    void setBrief(bool on);
+    bool brief() const { return m_brief; }
+
     /// Cells along the longer side of the workspace bounds (default 500); recomputes.
     void setResolution(int cells);
     int resolution() const { return m_resolution; }
@@ -167,6 +174,11 @@ private:
     void syncToleranceItem();
     void retranslateToleranceItem();
     void updateLegend();
+    /// The title, or `brief` instead in brief mode where it is given (setBrief()).
+    void setTitle(const QString &full, const QString &brief = {});
+    /// The plot's tooltip: `text`, after what brief mode left out of the title and legend.
+    void setMapToolTip(const QString &text);
+    void refreshToolTip();
     void fitView();
     /// The colour scale's label, broken into lines for the scale's height now and again after
     /// every layout (fitView()); `brief` (the symbol and unit) where `text` would take more
@@ -218,6 +230,11 @@ private:
     bool m_userView = false; ///< the user zoomed or dragged: keep the view on new maps
     QString m_scaleLabel; ///< the colour scale's label before it is broken into lines
     QString m_briefScaleLabel; ///< its short form, or empty
+    bool m_brief = false;
+    QString m_fullTitle;   ///< the title in full, whichever is shown
+    bool m_titleShortened = false;
+    QString m_toolTip;     ///< the tooltip before brief mode's additions
+    QString m_curveNotes;  ///< what the singular curves are, when the legend leaves it out
     int m_refits = 0; ///< relayouts in a row asked by fitView(), to stop a ping-pong of margins
     bool m_hasPose = false;
     Eigen::Vector2d m_pose = Eigen::Vector2d::Zero();

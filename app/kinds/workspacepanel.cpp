@@ -89,6 +89,7 @@ void WorkspacePanel::setPresenting(bool on)
 {
     for (QWidget *widget : {static_cast<QWidget *>(m_label), static_cast<QWidget *>(m_compare), static_cast<QWidget *>(m_pin)})
         widget->setVisible(!on);
+    m_map->setBrief(on);
     // Now, not when the page is next shown: a hidden page's layout waits, and a tab behind
     // (the O-X glide's map) held its stack, and presentation mode's linkage beside it, to the
     // width of the row just hidden.

@@ -9,6 +9,7 @@
 #include "plotfocus.h"
 #include "support/app.h"
 #include "variablepanel.h"
+#include "workspacemapview.h"
 
 #include <qcustomplot.h>
 
@@ -100,6 +101,17 @@ private slots:
             if (button->text().toInt() > 0 && button->parentWidget() != w.modeBar())
                 QVERIFY(caption && qAbs(caption->mapTo(&w, caption->rect().center()).y()
                                         - button->mapTo(&w, button->rect().center()).y()) < button->height() / 2);
+        }
+        // The map beside it keeps at least 200×200 px: its full title and legend
+        // took 320 px and left it 185×145 px; brief words leave the rest to its tooltip.
+        for (const WorkspaceMapView *map : w.findChildren<WorkspaceMapView *>()) {
+            if (!map->isVisible())
+                continue;
+            const QRect rect = map->plot()->axisRect()->rect();
+            QVERIFY2(rect.width() >= 200 && rect.height() >= 200,
+                     qPrintable(QStringLiteral("the map is %1×%2 px").arg(rect.width()).arg(rect.height())));
+            QVERIFY(map->brief());
+            QVERIFY(map->plot()->toolTip().contains(QStringLiteral("det J")));
         }
     }
 

@@ -154,6 +154,38 @@ private slots:
                      qPrintable(QStringLiteral("%1 … %2: ticks %3").arg(lower).arg(upper).arg(plot.xAxis->tickVectorLabels().join(u' '))));
         }
     }
+
+    /// Small or large values share one power of ten: along the 3-R̲RR's det J scale the 'g'
+    /// format had mixed "0.00015" with "5e−05"; the labels also keep their numbers' order.
+    void tinyTicksShareAPowerOfTen()
+    {
+        QCustomPlot plot;
+        plot.resize(200, 300);
+        plotstyle::apply(&plot, QApplication::font());
+        plot.yAxis->setTicker(QSharedPointer<MinusTicker>::create(plot.yAxis));
+        plot.yAxis->setNumberFormat(QStringLiteral("gb"));
+        plot.yAxis->setNumberPrecision(3);
+        for (const double end : {1.5e-4, 4e-3, 2.5e6}) {
+            plot.yAxis->setRange(-end, end);
+            plot.replot();
+            const QStringList labels = plot.yAxis->tickVectorLabels();
+            const QVector<double> ticks = plot.yAxis->tickVector();
+            QVERIFY(ticks.size() >= 3);
+            const QString power = QStringLiteral("·10") + (end < 1.0 ? QStringLiteral("⁻") : QString());
+            for (int i = 0; i < ticks.size(); ++i) {
+                const QString &label = labels[i];
+                QVERIFY2(!label.contains(u'e', Qt::CaseInsensitive) && (ticks[i] == 0.0 ? label == u"0" : label.contains(power)),
+                         qPrintable(labels.join(u' ')));
+                // the mantissa times the shared power is the tick
+                const QString mantissa = label.section(QStringLiteral("·"), 0, 0).replace(QChar(0x2212), u'-');
+                const int exponent = int(std::floor(std::log10(end)));
+                QVERIFY(std::abs(mantissa.toDouble() * std::pow(10.0, exponent) - ticks[i]) <= 1e-9 * end);
+            }
+        }
+        plot.yAxis->setRange(-120.0, 180.0); // ordinary numbers keep their own form
+        plot.replot();
+        QVERIFY(plot.yAxis->tickVectorLabels().contains(QStringLiteral("−100")));
+    }
 };
 
 QTEST_MAIN(TestPlotCursor)
