@@ -165,6 +165,13 @@ std::string ownModel()
     return text::translate("core", "PKM Studio's model");
 }
 
+std::string roundingNote()
+{
+    return text::translate("core", "The numbers put in are rounded as shown; every result is worked out from the "
+                                   "unrounded values, so the last digits of a result can differ from one worked out by "
+                                   "hand from the shown numbers.");
+}
+
 } // namespace equations
 
 } // namespace pkm

@@ -91,6 +91,9 @@ std::string cite(Document document, std::string_view numbers);
 std::string citeFigure(Document document, std::string_view figure);
 /// For the kinds no document gives equations for: "PKM Studio's model", translated.
 std::string ownModel();
+/// Why a result worked out by hand from the rounded numbers can differ in its last digits
+/// (MOMA 3c's C₁: 48138.0 mm² from the shown x, y against the exact 48140.9 mm²), translated.
+std::string roundingNote();
 
 } // namespace equations
 

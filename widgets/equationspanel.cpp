@@ -118,9 +118,11 @@ void EquationsPanel::refresh()
     if (updateNumbers(structure))
         return;
 
-    QString html;
+    // First, why a result can differ in its last digits from one worked out by hand.
+    QString html = QStringLiteral("<p style=\"color:%1; margin-bottom:4px\">%2</p>")
+                       .arg(QLatin1String(quietColour), toQString(equations::roundingNote()).toHtmlEscaped());
     std::vector<int> lineBlocks;
-    int blocks = 0;
+    int blocks = 1;
     for (std::size_t i = 0; i < m_equations.size(); ++i) {
         const Equation &equation = m_equations[i];
         // A heading begins with a capital, although the string also names a value in the values

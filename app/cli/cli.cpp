@@ -71,7 +71,7 @@ std::vector<std::pair<std::string, double>> displayOutputs(const Mechanism &mech
 /// panel shows them: title and source, the formula, the numbers put in, and the note.
 void addEquationRows(std::string &out, const Mechanism &mechanism, const Pose &pose)
 {
-    out += "\nEquations\n";
+    out += joinText({"\nEquations\n", equations::roundingNote(), "\n"});
     for (const Equation &equation : mechanismEquations(mechanism, pose)) {
         out += joinText({"\n", equation.title, " (", equation.source, ")\n  "});
         std::string text = equationText(equation);

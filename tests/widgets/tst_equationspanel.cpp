@@ -126,6 +126,21 @@ private slots:
         QCOMPARE(panel.resultText(0), QStringLiteral("183.10 mm"));
     }
 
+    /// The page says first that the numbers put in are rounded: MOMA 3c's C₁ worked out by
+    /// hand from the shown x = −40.70 mm is 48138.0 mm², the page's exact value 48140.9 mm².
+    void saysTheNumbersAreRounded()
+    {
+        const MechanismPtr m = test::makeKind("moma");
+        EquationsPanel panel;
+        panel.show();
+        panel.setMechanism(m);
+        panel.setPose(m->homePose());
+        const QString first = panel.document()->firstBlock().text();
+        QCOMPARE(first, QString::fromStdString(equations::roundingNote()));
+        QVERIFY(first.contains(QStringLiteral("rounded")));
+        QVERIFY(panel.toPlainText().indexOf(first) == 0);
+    }
+
     void singularPoseSaysSo()
     {
         const MechanismPtr m = test::makeKind("oxglide");
