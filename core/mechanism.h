@@ -57,6 +57,9 @@ struct ParameterInfo {
     /// Named values of a mode parameter ({"O", +1}, {"X", -1}): files and the command line
     /// may give the name instead of the number.
     std::vector<std::pair<std::string, double>> choices = {};
+    /// How the choices read on screen, in their order, where not as their names: the leg
+    /// types' "R̲RR" with the actuated joint underlined for the names "RRR" of files.
+    std::vector<std::string> choiceLabels = {};
 };
 
 struct VariableInfo {

@@ -4148,6 +4148,18 @@ Please verify the correct file name was given.</source>
         <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch to the other assembly mode to go on.</source>
         <translation>C не может достичь точки %1 в этом варианте сборки (%2): она пересекла бы прямую BD, на которой шатуны лежат на одной линии (особое положение прямой кинематики); чтобы продолжить, переключитесь на другой вариант сборки.</translation>
     </message>
+    <message>
+        <source>The numbers put in are rounded as shown; every result is worked out from the unrounded values, so the last digits of a result can differ from one worked out by hand from the shown numbers.</source>
+        <translation>Подставленные числа округлены так, как показаны; каждый результат вычислен по неокруглённым значениям, поэтому последние цифры результата могут отличаться от полученных вручную по показанным числам.</translation>
+    </message>
+    <message>
+        <source>constant orientation</source>
+        <translation>постоянная ориентация</translation>
+    </message>
+    <message>
+        <source>free body</source>
+        <translation>свободное тело</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6858,7 +6870,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>%1 at φ = %2, not the pose&apos;s φ</source>
-        <translation>%1 при φ = %2, а не при φ положения</translation>
+        <translation>%1 при φ = %2 (у положения другой угол φ)</translation>
     </message>
     <message>
         <source>range of φ (°)</source>
@@ -6867,6 +6879,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>κ(J), log scale</source>
         <translation>κ(J), лог. шкала</translation>
+    </message>
+    <message>
+        <source>Workspace %1</source>
+        <translation>Рабочее пространство %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>

@@ -4148,6 +4148,18 @@ Please verify the correct file name was given.</source>
         <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch to the other assembly mode to go on.</source>
         <translation>C не може да стигне до тачке %1 у овом начину склапања (%2): прешла би праву BD, на којој су спојке на истој правој (сингуларитет директне кинематике); пређите на други начин склапања да бисте наставили.</translation>
     </message>
+    <message>
+        <source>The numbers put in are rounded as shown; every result is worked out from the unrounded values, so the last digits of a result can differ from one worked out by hand from the shown numbers.</source>
+        <translation>Уврштени бројеви су заокружени као што су приказани; сваки резултат је израчунат из незаокружених вредности, па се последње цифре резултата могу разликовати од оних које се добију ручно из приказаних бројева.</translation>
+    </message>
+    <message>
+        <source>constant orientation</source>
+        <translation>стална оријентација</translation>
+    </message>
+    <message>
+        <source>free body</source>
+        <translation>слободно тело</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6858,7 +6870,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>%1 at φ = %2, not the pose&apos;s φ</source>
-        <translation>%1 при φ = %2, а не при φ положаја</translation>
+        <translation>%1 при φ = %2 (положај има други угао φ)</translation>
     </message>
     <message>
         <source>range of φ (°)</source>
@@ -6867,6 +6879,14 @@ Please verify the correct file name was given.</source>
     <message>
         <source>κ(J), log scale</source>
         <translation>κ(J), лог. скала</translation>
+    </message>
+    <message>
+        <source>Workspace %1</source>
+        <translation>Радни простор %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>

@@ -4148,6 +4148,18 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>C cannot reach %1 in this assembly mode (%2): it would cross the line BD, where the distal links are in line (a direct singularity); switch to the other assembly mode to go on.</source>
         <translation>C ne može da stigne do tačke %1 u ovom načinu sklapanja (%2): prešla bi pravu BD, na kojoj su spojke na istoj pravoj (singularitet direktne kinematike); pređite na drugi način sklapanja da biste nastavili.</translation>
     </message>
+    <message>
+        <source>The numbers put in are rounded as shown; every result is worked out from the unrounded values, so the last digits of a result can differ from one worked out by hand from the shown numbers.</source>
+        <translation>Uvršteni brojevi su zaokruženi kao što su prikazani; svaki rezultat je izračunat iz nezaokruženih vrednosti, pa se poslednje cifre rezultata mogu razlikovati od onih koje se dobiju ručno iz prikazanih brojeva.</translation>
+    </message>
+    <message>
+        <source>constant orientation</source>
+        <translation>stalna orijentacija</translation>
+    </message>
+    <message>
+        <source>free body</source>
+        <translation>slobodno telo</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6858,7 +6870,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>%1 at φ = %2, not the pose&apos;s φ</source>
-        <translation>%1 pri φ = %2, a ne pri φ položaja</translation>
+        <translation>%1 pri φ = %2 (položaj ima drugi ugao φ)</translation>
     </message>
     <message>
         <source>range of φ (°)</source>
@@ -6867,6 +6879,14 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>κ(J), log scale</source>
         <translation>κ(J), log. skala</translation>
+    </message>
+    <message>
+        <source>Workspace %1</source>
+        <translation>Radni prostor %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>

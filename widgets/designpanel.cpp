@@ -1,8 +1,10 @@
 #include "designpanel.h"
 
+#include "parameterchoices.h"
 #include "quantityformat.h"
 #include "symboltext.h"
 
+#include <QComboBox>
 #include <QEvent>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -40,6 +42,8 @@ QString groupTitle(ParameterGroup group)
 /// (parseNumber() reads it back, and a typed "-" too).
 QString valueText(const ParameterInfo &info, const ParameterSet &values)
 {
+    if (const QString choice = choices::textOf(info, values.at(info.name)); !choice.isEmpty())
+        return choice; // "RP̲R", not "2"
     const double display = info.unit.toDisplay(values.at(info.name));
     QString text = QLocale().toString(display, 'f', info.decimals + 2);
     const QChar point = QLocale().decimalPoint().at(0);
@@ -186,15 +190,23 @@ void DesignPanel::rebuild()
         rowLayout->setContentsMargins(0, 0, 0, 0);
         Row row;
         row.parameter = i;
-        row.edit = new QLineEdit(rowWidget);
+        // The values are short; a narrow field leaves the width to the label, which wraps less.
+        const int width = fontMetrics().horizontalAdvance(QStringLiteral("−0000.0000")) + 2 * fontMetrics().averageCharWidth();
+        if (info.choices.empty()) {
+            row.edit = new QLineEdit(rowWidget);
+            row.edit->setAlignment(Qt::AlignRight);
+            row.edit->setFixedWidth(width);
+            rowLayout->addWidget(row.edit);
+        } else { // a list of the named values, whose field is its line edit
+            QComboBox *box = choices::makeBox(info, width, rowWidget);
+            row.edit = box->lineEdit();
+            connect(box, &QComboBox::activated, this, [this, name] { commit(name, false); });
+            rowLayout->addWidget(box);
+        }
         row.edit->setObjectName(QStringLiteral("parameter_") + name);
         row.edit->setProperty(nameProperty, name);
-        row.edit->setAlignment(Qt::AlignRight);
-        // The values are short; a narrow field leaves the width to the label, which wraps less.
-        row.edit->setFixedWidth(fontMetrics().horizontalAdvance(QStringLiteral("−0000.0000")) + 2 * fontMetrics().averageCharWidth());
         row.edit->installEventFilter(this);
         connect(row.edit, &QLineEdit::editingFinished, this, [this, name] { commit(name, false); });
-        rowLayout->addWidget(row.edit);
         row.unit = new QLabel(rowWidget);
         row.unit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")));
         rowLayout->addWidget(row.unit);
@@ -268,6 +280,8 @@ void DesignPanel::retranslate()
     const ParameterSet values = m_mechanism->parameters();
     for (const Row &row : std::as_const(m_rows)) {
         describe(row);
+        if (auto *box = qobject_cast<QComboBox *>(row.edit->parentWidget()))
+            choices::retranslateBox(box, m_mechanism->parameterInfo()[std::size_t(row.parameter)]);
         // The value in the new locale's form, unless the field holds what the user typed.
         const bool typing = row.edit->hasFocus() && row.edit->isModified();
         if (row.edit->styleSheet().isEmpty() && !typing)
@@ -371,11 +385,9 @@ void DesignPanel::commit(const QString &name, bool continuous)
         if (toQString(info.name) != name)
             continue;
         double value = 0;
-        // a mode may be typed by its name ("X")
-        for (const auto &[choice, number] : info.choices) {
-            if (edit->text().trimmed().compare(toQString(choice), Qt::CaseInsensitive) == 0)
-                edit->setText(QLocale().toString(number));
-        }
+        // a mode may be typed or picked by its name ("X", "RP̲R")
+        if (const std::optional<double> number = choices::valueOf(info, edit->text()))
+            edit->setText(QLocale().toString(*number));
         // the unit as shown ("мм") or its English symbol ("mm")
         if (!parseNumber(edit->text(), QStringList {unitText(info.unit), toQString(info.unit.symbol)}, &value)) {
             const QString text = edit->text();

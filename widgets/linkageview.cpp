@@ -168,9 +168,11 @@ void LinkageView::paintEvent(QPaintEvent *)
     const QRectF area(rect());
     ScenePainter::paintBackground(painter, area, m_mapping, m_style);
     // Ghosts under the real scene, the hovered one over the others.
+    SceneStyle faint = m_style;
+    faint.ghostOpacity *= ghostShare();
     for (int i = 0; i < int(m_ghosts.size()); ++i) {
         if (i != m_hoverGhost)
-            ScenePainter::paintGhost(painter, m_ghosts[i], m_mapping, m_style, false);
+            ScenePainter::paintGhost(painter, m_ghosts[i], m_mapping, faint, false);
     }
     if (m_hoverGhost >= 0 && m_hoverGhost < int(m_ghosts.size()))
         ScenePainter::paintGhost(painter, m_ghosts[m_hoverGhost], m_mapping, m_style, true);
@@ -371,6 +373,19 @@ void LinkageView::setHoverHandle(int handle)
     updateToolTip();
     updateCursor();
     update();
+}
+
+void LinkageView::highlightGhost(int index)
+{
+    setHoverGhost(index >= 0 && index < int(m_ghosts.size()) ? index : -1);
+}
+
+double LinkageView::ghostShare() const
+{
+    // two ghosts at full strength (a five-bar's modes), five at about half, and fainter still
+    // while one of them is hovered
+    const double crowd = m_ghosts.size() > 2 ? std::sqrt(2.0 / double(m_ghosts.size())) * 0.8 : 1.0;
+    return m_hoverGhost >= 0 ? 0.6 * crowd : crowd;
 }
 
 void LinkageView::setHoverGhost(int ghost)

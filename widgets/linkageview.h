@@ -54,6 +54,12 @@ public:
     int ghostAt(const QPointF &position) const;
     /// The hovered ghost, or −1.
     int hoveredGhost() const { return m_hoverGhost; }
+    /// Shows ghost `index` in front of the others as if hovered (−1: none), for the pointer on
+    /// its mode's button: among a 3-RP̲R's five ghosts the one a button means is found at once.
+    void highlightGhost(int index);
+    /// How strongly a ghost that is not hovered is drawn, of SceneStyle::ghostOpacity: fainter
+    /// where there are more than two, whose dashes had hidden the linkage.
+    double ghostShare() const;
     /// The message line as drawn: the hovered ghost's "Click to switch to: …", else message().
     QString shownMessage() const;
 

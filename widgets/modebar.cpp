@@ -14,6 +14,8 @@
 namespace pkm {
 
 namespace {
+const char *indexProperty = "pkmModeIndex"; ///< a button's alternative
+
 /// The short form of a mode's label, for its button: "other assembly mode" of "other assembly
 /// mode (same inputs)".
 QString brief(const QString &label)
@@ -80,6 +82,7 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
     m_currentText = current;
     if (labels != m_labels) {
         m_labels = labels;
+        emit hovered(-1); // the buttons go, the one under the pointer too
         // Later, not now: this runs inside the clicked() of one of these buttons (a switch
         // changes the modes), and a button deleted in its own signal is used after it is freed.
         for (QWidget *old : std::as_const(m_buttonList))
@@ -117,6 +120,8 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
                                               : new QPushButton(this);
             button->setObjectName(QStringLiteral("modeButton%1").arg(i));
             connect(button, &QAbstractButton::clicked, this, [this, i] { emit switchRequested(i); });
+            button->setProperty(indexProperty, i);
+            button->installEventFilter(this);
             if (inGroup)
                 m_groups.last()->layout()->addWidget(button);
             else
@@ -153,6 +158,16 @@ void ModeBar::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange)
         retranslate();
     QWidget::changeEvent(event);
+}
+
+bool ModeBar::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::Enter || event->type() == QEvent::Leave) {
+        const QVariant index = watched->property(indexProperty);
+        if (index.isValid())
+            emit hovered(event->type() == QEvent::Enter ? index.toInt() : -1);
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 QAbstractButton *ModeBar::button(int index) const

@@ -28,9 +28,13 @@ public:
 
 signals:
     void switchRequested(int index);
+    /// The pointer came onto the button of alternative `index`, or left it (−1): the linkage
+    /// view shows that mode's ghost in front of the others.
+    void hovered(int index);
 
 protected:
     void changeEvent(QEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     /// "Modes: …" and the buttons' texts in the current language.

@@ -159,6 +159,7 @@ MainWindow::MainWindow(QWidget *parent)
             showStatus(failureText(solved.failure()), true);
     });
     connect(m_modeBar, &ModeBar::switchRequested, this, &MainWindow::switchMode);
+    connect(m_modeBar, &ModeBar::hovered, m_view, &LinkageView::highlightGhost);
     connect(m_view, &LinkageView::ghostClicked, this, &MainWindow::switchMode);
     // A click on the map moves the platform there, through the same document call as a drag.
     const auto moveTo = [this](const Eigen::Vector2d &point) {
@@ -201,6 +202,7 @@ MainWindow::~MainWindow()
     disconnect(m_designPanel, nullptr, this, nullptr);
     disconnect(m_variables, nullptr, this, nullptr);
     disconnect(m_modeBar, nullptr, this, nullptr);
+    disconnect(m_modeBar, nullptr, m_view, nullptr);
     for (const auto &[kind, panel] : m_kindPanels)
         disconnect(panel, nullptr, this, nullptr);
     disconnect(m_workspacePanel, nullptr, this, nullptr);

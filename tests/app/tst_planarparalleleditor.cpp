@@ -167,6 +167,35 @@ private slots:
         QCOMPARE(panel()->typeBox(0)->currentData().toInt(), int(LegType::RPR));
     }
 
+    /// The Design panel lists a leg's types by name, as the legs editor does, where it had a
+    /// number field to be read against its label ("2" for RP̲R); a name typed is taken too.
+    void retypesALegInTheDesignPanel()
+    {
+        QLineEdit *field = m_window->designPanel()->field(QStringLiteral("leg1_type"));
+        QVERIFY(field);
+        auto *box = qobject_cast<QComboBox *>(field->parentWidget());
+        QVERIFY(box);
+        QCOMPARE(field->text(), QStringLiteral("RP̲R"));
+        QCOMPARE(box->count(), 4);
+        QCOMPARE(box->itemText(0), QStringLiteral("R̲RR"));
+        box->setCurrentIndex(0);
+        emit box->activated(0);
+        QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RRR);
+        QCOMPARE(field->text(), QStringLiteral("R̲RR"));
+        QCOMPARE(panel()->typeBox(0)->currentData().toInt(), int(LegType::RRR));
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RPR);
+        QCOMPARE(field->text(), QStringLiteral("RP̲R"));
+        // the name of files and the command line, typed in any case
+        field->setFocus();
+        field->selectAll();
+        QTest::keyClicks(field, QStringLiteral("rrr"));
+        QTest::keyClick(field, Qt::Key_Return);
+        QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RRR);
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RPR);
+    }
+
     void removesAndAddsALeg()
     {
         QTest::mouseClick(panel()->removeLegButton(), Qt::LeftButton);
@@ -237,6 +266,16 @@ private slots:
         ModeBar *bar = m_window->modeBar();
         QCOMPARE(bar->labels().size(), 5);
         QCOMPARE(m_window->linkageView()->ghostScenes().size(), 5);
+        // five ghosts are drawn fainter than a five-bar's two; the pointer on a mode's button
+        // brings its ghost to the front, and leaving the button lets it go
+        LinkageView *view = m_window->linkageView();
+        QVERIFY(view->ghostShare() < 0.6);
+        QEvent enter(QEvent::Enter), leave(QEvent::Leave);
+        QCoreApplication::sendEvent(bar->button(2), &enter);
+        QCOMPARE(view->hoveredGhost(), 2);
+        QVERIFY(view->shownMessage().contains(bar->labels()[2]));
+        QCoreApplication::sendEvent(bar->button(2), &leave);
+        QCOMPARE(view->hoveredGhost(), -1);
         const double assembly = document->mechanism()->parameters().at("assembly");
         const int steps = document->undoStack()->index();
         const ModeAlternative target = alternatives.back();

@@ -90,12 +90,15 @@ const ParameterTable<PlanarParallelDesign> &PlanarParallel::table()
         // the leg types and the platform in files by name, as numeric codes in the table
         const std::vector<std::pair<std::string, double>> legTypeChoices
             = {{"RRR", 0.0}, {"PRR", 1.0}, {"RPR", 2.0}, {"PiRR", 3.0}};
+        const std::vector<std::string> platformLabels = {QT_TRANSLATE_NOOP("core", "point"),
+            QT_TRANSLATE_NOOP("core", "constant orientation"), QT_TRANSLATE_NOOP("core", "free body")};
+        const std::vector<std::string> legTypeLabels = {"R̲RR", "P̲RR", "RP̲R", "П̲RR"};
         const std::vector<std::pair<std::string, double>> sideChoices = {{"left", 1.0}, {"right", -1.0}};
         const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "The planar parallel mechanism has no parameter named '%1'."),
                                 .order = CheckOrder::DomainsFirst};
         return T(rules, joinRows<PlanarParallelDesign>({
-            {{"platform", "τ_P", QT_TRANSLATE_NOOP("core", "platform: 0 a point (2 DOF), 1 constant orientation (2 DOF), 2 free (3 DOF)"), units::none, G::Mode, Interval{0.0, 2.0}, false, false, true, 0, 1, {{"point", 0.0}, {"translating", 1.0}, {"free", 2.0}}}, platformField(), &integerRule},
-            {{"leg1_type", "τ₁", QT_TRANSLATE_NOOP("core", "leg 1: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices}, legTypeField<0>(), &integerRule},
+            {{"platform", "τ_P", QT_TRANSLATE_NOOP("core", "platform: 0 a point (2 DOF), 1 constant orientation (2 DOF), 2 free (3 DOF)"), units::none, G::Mode, Interval{0.0, 2.0}, false, false, true, 0, 1, {{"point", 0.0}, {"translating", 1.0}, {"free", 2.0}}, platformLabels}, platformField(), &integerRule},
+            {{"leg1_type", "τ₁", QT_TRANSLATE_NOOP("core", "leg 1: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices, legTypeLabels}, legTypeField<0>(), &integerRule},
             {{"A1x", "x_A₁", QT_TRANSLATE_NOOP("core", "leg 1: base point A₁, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].base.x(); })},
             {{"A1y", "y_A₁", QT_TRANSLATE_NOOP("core", "leg 1: base point A₁, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].base.y(); })},
             {{"B1x", "x_B₁", QT_TRANSLATE_NOOP("core", "leg 1: platform point B₁ in the platform frame, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].platform.x(); })},
@@ -110,7 +113,7 @@ const ParameterTable<PlanarParallelDesign> &PlanarParallel::table()
             {{"theta1_min", "θ₁_min", QT_TRANSLATE_NOOP("core", "leg 1: lower limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].crankRange.min; })},
             {{"theta1_max", "θ₁_max", QT_TRANSLATE_NOOP("core", "leg 1: upper limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[0].crankRange.max; })},
             {{"working1", "w₁", QT_TRANSLATE_NOOP("core", "leg 1: working mode (+1 elbow left of A₁→P₁; P̲RR: sign in q = B ± √…)"), units::none, G::Mode, sign, false, false, true, 0, 2, sideChoices}, T::sign([](auto &d) -> auto & { return d.legs[0].working; }), &signRule},
-            {{"leg2_type", "τ₂", QT_TRANSLATE_NOOP("core", "leg 2: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices}, legTypeField<1>(), &integerRule},
+            {{"leg2_type", "τ₂", QT_TRANSLATE_NOOP("core", "leg 2: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices, legTypeLabels}, legTypeField<1>(), &integerRule},
             {{"A2x", "x_A₂", QT_TRANSLATE_NOOP("core", "leg 2: base point A₂, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].base.x(); })},
             {{"A2y", "y_A₂", QT_TRANSLATE_NOOP("core", "leg 2: base point A₂, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].base.y(); })},
             {{"B2x", "x_B₂", QT_TRANSLATE_NOOP("core", "leg 2: platform point B₂ in the platform frame, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].platform.x(); })},
@@ -125,7 +128,7 @@ const ParameterTable<PlanarParallelDesign> &PlanarParallel::table()
             {{"theta2_min", "θ₂_min", QT_TRANSLATE_NOOP("core", "leg 2: lower limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].crankRange.min; })},
             {{"theta2_max", "θ₂_max", QT_TRANSLATE_NOOP("core", "leg 2: upper limit of the crank angle (R̲RR)"), units::angle, G::Range, turn, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[1].crankRange.max; })},
             {{"working2", "w₂", QT_TRANSLATE_NOOP("core", "leg 2: working mode (+1 elbow left of A₂→P₂; P̲RR: sign in q = B ± √…)"), units::none, G::Mode, sign, false, false, true, 0, 2, sideChoices}, T::sign([](auto &d) -> auto & { return d.legs[1].working; }), &signRule},
-            {{"leg3_type", "τ₃", QT_TRANSLATE_NOOP("core", "leg 3: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices}, legTypeField<2>(), &integerRule},
+            {{"leg3_type", "τ₃", QT_TRANSLATE_NOOP("core", "leg 3: type (0 R̲RR, 1 P̲RR, 2 RP̲R, 3 П̲RR)"), units::none, G::Mode, legType, false, false, true, 0, 1, legTypeChoices, legTypeLabels}, legTypeField<2>(), &integerRule},
             {{"A3x", "x_A₃", QT_TRANSLATE_NOOP("core", "leg 3: base point A₃, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].base.x(); })},
             {{"A3y", "y_A₃", QT_TRANSLATE_NOOP("core", "leg 3: base point A₃, y"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].base.y(); })},
             {{"B3x", "x_B₃", QT_TRANSLATE_NOOP("core", "leg 3: platform point B₃ in the platform frame, x"), units::millimetre, G::Geometry, coordinate, false, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.legs[2].platform.x(); })},
