@@ -276,6 +276,10 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
     const std::vector<GuideShape> guides = guideShapes(scene, points, jointGuide, mapping, style);
     SceneLabels labels(scene, points, mapping, style, options.device);
     labels.setRoom(options.labelRoom);
+    for (const QLineF &line : options.avoid) // a thin line: covered where nothing else is free
+        labels.addObstacle(line.p1(), line.p2(), 1.5 * style.pixelSize);
+    for (const QRectF &box : options.covered)
+        labels.addObstacle(boxQuad(box.center(), box.size(), 0.0));
     const SceneCanvas canvas {list, scene, mapping, style, points, labels, guides, jointGuide};
     list.items.reserve(8 * (scene.joints.size() + scene.bars.size()) + 16);
 
@@ -306,6 +310,34 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
     return list;
 }
 
+namespace {
+/// A ghost's members as drawn: its links and actuators, not its ground (the real scene's).
+std::vector<QLineF> ghostMembers(const Scene &scene, const std::vector<QPointF> &points)
+{
+    auto valid = [&points](int joint) {
+        return joint >= 0 && joint < int(points.size()) && std::isfinite(points[std::size_t(joint)].x())
+            && std::isfinite(points[std::size_t(joint)].y());
+    };
+    std::vector<QLineF> members;
+    for (const SceneBar &bar : scene.bars) {
+        if (bar.kind != BarKind::Ground && valid(bar.from) && valid(bar.to))
+            members.emplace_back(points[std::size_t(bar.from)], points[std::size_t(bar.to)]);
+    }
+    for (const SceneActuator &actuator : scene.actuators) {
+        if (valid(actuator.from) && valid(actuator.to))
+            members.emplace_back(points[std::size_t(actuator.from)], points[std::size_t(actuator.to)]);
+    }
+    return members;
+}
+} // namespace
+
+std::vector<QLineF> ghostLines(const Scene &scene, const ViewMapping &mapping)
+{
+    if (!(mapping.scale > 0.0) || !std::isfinite(mapping.scale))
+        return {};
+    return ghostMembers(scene, devicePoints(scene, mapping, std::numeric_limits<double>::infinity()));
+}
+
 DrawList layoutGhost(const Scene &scene, const ViewMapping &mapping, const SceneStyle &style, bool highlighted)
 {
     DrawList list;
@@ -328,15 +360,7 @@ DrawList layoutGhost(const Scene &scene, const ViewMapping &mapping, const Scene
     const QColor colour = faded(highlighted ? style.handle : style.ghost);
 
     // Members (the ground is the real scene's): dashed, a little thinner than the real ones.
-    std::vector<QLineF> members;
-    for (const SceneBar &bar : scene.bars) {
-        if (bar.kind != BarKind::Ground && valid(bar.from) && valid(bar.to))
-            members.emplace_back(points[std::size_t(bar.from)], points[std::size_t(bar.to)]);
-    }
-    for (const SceneActuator &actuator : scene.actuators) {
-        if (valid(actuator.from) && valid(actuator.to))
-            members.emplace_back(points[std::size_t(actuator.from)], points[std::size_t(actuator.to)]);
-    }
+    const std::vector<QLineF> members = ghostMembers(scene, points);
     const double width = (highlighted ? 0.8 : 0.65) * style.barWidth * px;
     list.add(Lines {std::move(members), Pen {colour, width, Qt::FlatCap, Dash::Ghost}}, Layer::Links, Medium::Screen);
 

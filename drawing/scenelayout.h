@@ -13,10 +13,12 @@
 #include "scene.h"
 #include "scenestyle.h"
 
+#include <QLineF>
 #include <QRectF>
 #include <QString>
 
 #include <limits>
+#include <vector>
 
 class QPaintDevice;
 
@@ -34,6 +36,12 @@ struct LayoutOptions {
     /// Where labels may stand, device units (the view's rectangle: a label past its edge is
     /// cut); empty: anywhere (a file's drawing grows to hold them).
     QRectF labelRoom;
+    /// Lines the labels keep off where they can, device units: on screen the other modes'
+    /// ghosts under the scene (MOMA's R₁ had stood on a ghost's dashes). ghostLines() gives them.
+    std::vector<QLineF> avoid;
+    /// Boxes drawn over the scene afterwards, device units (the scale bar): a label under one
+    /// would be hidden, so the labels go there only where nothing else is left.
+    std::vector<QRectF> covered;
 };
 
 /// The drawing of `scene` with `mapping` and `style`.
@@ -44,6 +52,9 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
 /// mode) — to go under the real one: faded, blue-grey, links dashed, no ground, guides,
 /// labels, dimensions, angles or handles. `highlighted` (hovered) draws it stronger, in the
 /// handle colour. Screen only.
+/// The members layoutGhost() draws of `scene`, device units, for LayoutOptions::avoid.
+std::vector<QLineF> ghostLines(const Scene &scene, const ViewMapping &mapping);
+
 DrawList layoutGhost(const Scene &scene, const ViewMapping &mapping, const SceneStyle &style, bool highlighted);
 
 /// Adds `caption` as a line of text under what `list` shows in CAD, left-aligned with it.

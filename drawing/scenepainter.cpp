@@ -45,11 +45,17 @@ ViewMapping ViewMapping::fit(const Eigen::AlignedBox3d &extent, const QRectF &ta
 
 // -- ScenePainter ------------------------------------------------------------------------
 
-void ScenePainter::paint(
-    QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style, int activeHandle)
+void ScenePainter::paint(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
+    int activeHandle, const QList<Scene> &ghosts, const QRectF &scaleBar)
 {
     drawing::LayoutOptions options;
     options.activeHandle = activeHandle;
+    for (const Scene &ghost : ghosts) {
+        const std::vector<QLineF> lines = drawing::ghostLines(ghost, mapping);
+        options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
+    }
+    if (!scaleBar.isEmpty())
+        options.covered.push_back(scaleBar);
     options.device = painter.device();
     // Labels stay inside what the painter shows (a view's rectangle), where no transform
     // stands between the layout's device units and the painter's window.
@@ -223,42 +229,70 @@ ViewMapping ScenePainter::fitWithLabels(const Scene &scene, const Eigen::Aligned
     return best;
 }
 
+namespace {
+/// Where the scale bar goes in `area`: the bar's ends, the box of its text and the font.
+struct ScaleBarGeometry {
+    QPointF left, right;
+    QRectF textBox;
+    QRectF box; ///< the white knockout under all of it
+    QString text;
+    QFont font;
+    double tick = 0.0;
+};
+
+ScaleBarGeometry scaleBarGeometry(const QRectF &area, const ViewMapping &mapping, const SceneStyle &style,
+    const QPaintDevice *device)
+{
+    ScaleBarGeometry g;
+    const double px = style.pixelSize;
+    const double millimetres = ScenePainter::niceStep(90.0 * px, mapping.scale);
+    const double barLength = millimetres * mapping.scale;
+    g.font = detail::labelFont(style.fontPixels * px, false);
+    const QFontMetricsF metrics(g.font, const_cast<QPaintDevice *>(device));
+    // "50 mm", "0,5 мм": the locale's number (no group separator, as everywhere) and unit.
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    g.text = locale.toString(millimetres, 'g', 6) + QLatin1Char(' ') + unitText(units::millimetre);
+    const double margin = 16.0 * px;
+    g.tick = 8.0 * px;
+    g.right = QPointF(area.right() - margin, area.bottom() - margin);
+    g.left = g.right - QPointF(barLength, 0.0);
+    // Centred over the bar; where large text is wider than the bar ("100 mm" at presentation
+    // mode's size over a bar of 90 px), ending with the bar, whole, never cut to "100 m".
+    const double textWidth = metrics.horizontalAdvance(g.text);
+    const double textLeft = textWidth <= barLength ? g.left.x() : g.right.x() - textWidth;
+    g.textBox = QRectF(textLeft, g.left.y() - g.tick - metrics.height() - 2.0 * px, g.right.x() - textLeft, metrics.height());
+    const double pad = 6.0 * px;
+    g.box = QRectF(QPointF(textLeft - pad, g.textBox.top() - pad), QPointF(g.right.x() + pad, g.right.y() + pad));
+    return g;
+}
+} // namespace
+
+QRectF ScenePainter::scaleBarBox(const QRectF &area, const ViewMapping &mapping, const SceneStyle &style,
+    const QPaintDevice *device)
+{
+    if (!(mapping.scale > 0.0) || !std::isfinite(mapping.scale))
+        return {};
+    return scaleBarGeometry(area, mapping, style, device).box;
+}
+
 void ScenePainter::paintScaleBar(
     QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style)
 {
     if (!(mapping.scale > 0.0) || !std::isfinite(mapping.scale))
         return;
-    const double px = style.pixelSize;
-    const double millimetres = niceStep(90.0 * px, mapping.scale);
-    const double barLength = millimetres * mapping.scale;
-    const QFont font = detail::labelFont(style.fontPixels * px, false);
-    const QFontMetricsF metrics(font, painter.device());
-    // "50 mm", "0,5 мм": the locale's number (no group separator, as everywhere) and unit.
-    QLocale locale;
-    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
-    const QString text = locale.toString(millimetres, 'g', 6) + QLatin1Char(' ') + unitText(units::millimetre);
-    const double margin = 16.0 * px, tick = 8.0 * px;
-    const QPointF right(area.right() - margin, area.bottom() - margin);
-    const QPointF left = right - QPointF(barLength, 0.0);
-    // Centred over the bar; where large text is wider than the bar ("100 mm" at presentation
-    // mode's size over a bar of 90 px), ending with the bar, whole, never cut to "100 m".
-    const double textWidth = metrics.horizontalAdvance(text);
-    const double textLeft = textWidth <= barLength ? left.x() : right.x() - textWidth;
-    const QRectF textBox(textLeft, left.y() - tick - metrics.height() - 2.0 * px, right.x() - textLeft, metrics.height());
-
+    const ScaleBarGeometry g = scaleBarGeometry(area, mapping, style, painter.device());
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
-    const double pad = 6.0 * px;
-    paintKnockout(painter, QRectF(QPointF(textLeft - pad, textBox.top() - pad), QPointF(right.x() + pad, right.y() + pad)),
-                  style);
-    QPen pen(style.ink, 2.0 * px, Qt::SolidLine, Qt::FlatCap);
+    paintKnockout(painter, g.box, style);
+    QPen pen(style.ink, 2.0 * style.pixelSize, Qt::SolidLine, Qt::FlatCap);
     painter.setPen(pen);
-    painter.drawLine(left, right);
-    painter.drawLine(left, left - QPointF(0.0, tick));
-    painter.drawLine(right, right - QPointF(0.0, tick));
-    painter.drawLine(0.5 * (left + right), 0.5 * (left + right) - QPointF(0.0, 0.5 * tick));
-    painter.setFont(font);
-    painter.drawText(textBox, Qt::AlignCenter | Qt::TextDontClip, text);
+    painter.drawLine(g.left, g.right);
+    painter.drawLine(g.left, g.left - QPointF(0.0, g.tick));
+    painter.drawLine(g.right, g.right - QPointF(0.0, g.tick));
+    painter.drawLine(0.5 * (g.left + g.right), 0.5 * (g.left + g.right) - QPointF(0.0, 0.5 * g.tick));
+    painter.setFont(g.font);
+    painter.drawText(g.textBox, Qt::AlignCenter | Qt::TextDontClip, g.text);
     painter.restore();
 }
 

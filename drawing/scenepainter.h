@@ -11,6 +11,7 @@
 
 #include <QColor>
 #include <QFont>
+#include <QList>
 #include <QPointF>
 #include <QRectF>
 #include <QString>
@@ -26,9 +27,10 @@ class ScenePainter
 {
 public:
     /// Draws the scene (not the background). `activeHandle` (index into scene.handles, −1
-    /// none) is the hovered or dragged handle, drawn strongly highlighted.
+    /// none) is the hovered or dragged handle, drawn strongly highlighted; the labels keep off
+    /// the `ghosts` drawn under it and the `scaleBar` box drawn over it where they can.
     static void paint(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
-        int activeHandle = -1);
+        int activeHandle = -1, const QList<Scene> &ghosts = {}, const QRectF &scaleBar = {});
     /// Draws `scene` as a ghost — another pose the mechanism could take (another assembly or
     /// working mode) — to go under the real one: faded, blue-grey, links dashed, no ground,
     /// guides, labels, dimensions, angles or handles. `highlighted` (hovered) draws it
@@ -53,6 +55,9 @@ public:
     static ViewMapping fitWithLabels(const Scene &scene, const Eigen::AlignedBox3d &extent, const QRectF &room,
         const QRectF &labelRoom, double margin, const SceneStyle &style);
     /// A scale bar ("50 mm") in the bottom-right corner of `area`.
+    /// The box the scale bar covers in `area` (its white knockout), device units.
+    static QRectF scaleBarBox(const QRectF &area, const ViewMapping &mapping, const SceneStyle &style,
+        const QPaintDevice *device);
     static void paintScaleBar(
         QPainter &painter, const QRectF &area, const ViewMapping &mapping, const SceneStyle &style);
     /// The scene's legend (Scene::legend: what the capability shapes are and their scales) in a

@@ -177,7 +177,8 @@ void LinkageView::paintEvent(QPaintEvent *)
     if (m_hoverGhost >= 0 && m_hoverGhost < int(m_ghosts.size()))
         ScenePainter::paintGhost(painter, m_ghosts[m_hoverGhost], m_mapping, m_style, true);
     if (m_hasScene)
-        ScenePainter::paint(painter, m_scene, m_mapping, m_style, activeHandle());
+        ScenePainter::paint(painter, m_scene, m_mapping, m_style, activeHandle(), m_ghosts,
+                            ScenePainter::scaleBarBox(area, m_mapping, m_style, this));
     ScenePainter::paintScaleBar(painter, area, m_mapping, m_style);
     if (m_hasScene)
         ScenePainter::paintLegend(painter, area, m_scene, m_style);

@@ -11,6 +11,7 @@
 #include "document/document.h"
 #include "linkageview.h"
 #include "scenelayout.h"
+#include "scenepainter.h"
 #include "support/app.h"
 
 #include <QPolygonF>
@@ -459,6 +460,67 @@ private slots:
                  qPrintable(QStringLiteral("E at %1, %2, its name at %3, %4").arg(E.x()).arg(E.y()).arg(nameE.x()).arg(nameE.y())));
         QVERIFY2(nameA.x() < A.x() && nameA.y() >= A.y(),
                  qPrintable(QStringLiteral("A at %1, %2, its name at %3, %4").arg(A.x()).arg(A.y()).arg(nameA.x()).arg(nameA.y())));
+    }
+
+    /// On screen the labels keep off the other modes' ghosts drawn under the linkage: MOMA
+    /// 3a's R₁ and R₂ had stood on the dashes of its other assembly mode.
+    void labelsKeepOffTheGhosts()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
+        LinkageView *view = m_window->linkageView();
+        QVERIFY(!view->ghostScenes().isEmpty());
+        SceneStyle style = view->sceneStyle();
+        style.fontPixels *= 1.5;
+        style.jointFontPixels *= 1.5;
+        const Scene &scene = view->scene();
+        const QRectF area(0, 0, 760, 410);
+        const ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
+        drawing::LayoutOptions options;
+        options.labelRoom = area;
+        for (const Scene &ghost : view->ghostScenes()) {
+            const std::vector<QLineF> lines = drawing::ghostLines(ghost, mapping);
+            options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
+        }
+        QVERIFY(!options.avoid.empty());
+        const std::vector<drawing::Text> texts = textsOf(drawing::layoutScene(scene, mapping, style, options));
+        QStringList crossed;
+        for (const drawing::Text &text : texts) {
+            const QRectF box = boxOf(text).boundingRect();
+            for (const QLineF &line : options.avoid) {
+                // the line sampled along its length: where it runs through the label's box
+                for (int k = 1; k < 40; ++k) {
+                    if (box.contains(line.pointAt(k / 40.0))) {
+                        crossed << text.text;
+                        break;
+                    }
+                }
+            }
+        }
+        QVERIFY2(crossed.isEmpty(), qPrintable(crossed.join(QStringLiteral(", "))));
+    }
+
+    /// The scale bar is drawn over the linkage: a label keeps out of its box (the five-bar's
+    /// E, named right of its pivot, went under the bar's white box once the pose came near).
+    void labelsKeepOutOfTheScaleBar()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("fivebar-example")));
+        LinkageView *view = m_window->linkageView();
+        const SceneStyle style = view->sceneStyle();
+        const Scene &scene = view->scene();
+        const QRectF area(0, 0, 760, 410);
+        ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
+        const QRectF bar = ScenePainter::scaleBarBox(area, mapping, style, nullptr);
+        QVERIFY(!bar.isEmpty());
+        const auto joint = std::find_if(scene.joints.begin(), scene.joints.end(), [](const SceneJoint &j) { return j.label == "E"; });
+        QVERIFY(joint != scene.joints.end());
+        const QPointF E = mapping.toDevice(Eigen::Vector2d(joint->position.head<2>()));
+        // E 40 px left of the bar's box and 20 px above it: E's name and θ₄ went under it
+        mapping.origin += QPointF(bar.left() - 40.0, bar.top() - 20.0) - E;
+        drawing::LayoutOptions options;
+        options.labelRoom = area;
+        options.covered.push_back(bar);
+        for (const drawing::Text &text : textsOf(drawing::layoutScene(scene, mapping, style, options)))
+            QVERIFY2(!boxOf(text).boundingRect().intersects(bar), qPrintable(text.text));
     }
 
     void narrowAngleGetsALeader()
