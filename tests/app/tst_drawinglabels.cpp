@@ -69,6 +69,15 @@ double distanceTo(const QPointF &a, const QPointF &b, const QPointF &point)
 }
 
 /// "'A' covers 'B'" for each pair of labels that overlap by more than a pixel's sliver.
+/// The view's style at presentation mode's text size (150 %).
+SceneStyle presentationStyle(const LinkageView &view)
+{
+    SceneStyle style = view.sceneStyle();
+    style.fontPixels *= 1.5;
+    style.jointFontPixels *= 1.5;
+    return style;
+}
+
 QStringList coveredLabels(const std::vector<drawing::Text> &texts)
 {
     QStringList covered;
@@ -436,9 +445,7 @@ private slots:
     {
         QVERIFY(m_window->openDesign(QStringLiteral("fivebar-example")));
         LinkageView *view = m_window->linkageView();
-        SceneStyle style = view->sceneStyle();
-        style.fontPixels *= 1.5;
-        style.jointFontPixels *= 1.5;
+        const SceneStyle style = presentationStyle(*view);
         const Scene &scene = view->scene();
         const QRectF area(0, 0, 770, 380);
         const ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
@@ -469,9 +476,7 @@ private slots:
         QVERIFY(m_window->openDesign(QStringLiteral("moma-3a")));
         LinkageView *view = m_window->linkageView();
         QVERIFY(!view->ghostScenes().isEmpty());
-        SceneStyle style = view->sceneStyle();
-        style.fontPixels *= 1.5;
-        style.jointFontPixels *= 1.5;
+        const SceneStyle style = presentationStyle(*view);
         const Scene &scene = view->scene();
         const QRectF area(0, 0, 760, 410);
         const ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
