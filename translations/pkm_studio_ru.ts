@@ -5653,6 +5653,10 @@ Please verify the correct file name was given.</source>
         <source>→ %1, %2:</source>
         <translation>→ %1, %2:</translation>
     </message>
+    <message>
+        <source>The mode the mechanism is in.</source>
+        <translation>Режим, в котором находится механизм.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::OxGlidePanel</name>
@@ -6870,7 +6874,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>%1 at φ = %2, not the pose&apos;s φ</source>
-        <translation>%1 при φ = %2 (у положения другой угол φ)</translation>
+        <translation>%1 при φ = %2 (у текущего положения φ другой)</translation>
     </message>
     <message>
         <source>range of φ (°)</source>

@@ -5653,6 +5653,10 @@ Please verify the correct file name was given.</source>
         <source>→ %1, %2:</source>
         <translation>→ %1, %2:</translation>
     </message>
+    <message>
+        <source>The mode the mechanism is in.</source>
+        <translation>Режим у коме је механизам.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::OxGlidePanel</name>

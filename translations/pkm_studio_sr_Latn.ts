@@ -5653,6 +5653,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>→ %1, %2:</source>
         <translation>→ %1, %2:</translation>
     </message>
+    <message>
+        <source>The mode the mechanism is in.</source>
+        <translation>Režim u kome je mehanizam.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::OxGlidePanel</name>

@@ -9,6 +9,7 @@
 #include <QToolButton>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <optional>
 
 namespace pkm {
@@ -91,6 +92,7 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
         for (QWidget *old : std::as_const(m_groups))
             retire(old);
         m_groups.clear();
+        m_currentButtons.clear(); // in the groups, which go
         m_groupLabels.clear();
         m_groupOf.clear();
         for (int i = 0; i < labels.size(); ++i) {
@@ -128,12 +130,48 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
                 m_layout->addWidget(button);
             m_buttonList.append(button);
         }
+        showCurrentNumbers();
     }
     retranslate();
 }
 
+void ModeBar::showCurrentNumbers()
+{
+    // "→ assembly mode: 1 2 3 4 6" read as if mode 5 were missing: the group's numbers are the
+    // other modes of 1 … n + 1, so the one left out is the mode the mechanism is in, shown
+    // pressed among them. Only where the number names the mode ("assembly mode 5"), not a leg
+    // ("leg 2: other working mode", where a strut's leg has none).
+    for (int g = 0; g < m_groups.size(); ++g) {
+        QList<int> numbers;
+        for (int i = 0; i < m_labels.size(); ++i) {
+            const std::optional<Numbered> mode = m_groupOf[i] == g ? numbered(m_labels[i]) : std::nullopt;
+            if (mode && mode->what.isEmpty())
+                numbers << mode->number.toInt();
+        }
+        QList<int> missing;
+        for (int n = 1; n <= numbers.size() + 1; ++n) {
+            if (!numbers.contains(n))
+                missing << n;
+        }
+        if (numbers.isEmpty() || missing.size() != 1)
+            continue;
+        auto *current = new QToolButton(m_groups[g]);
+        current->setObjectName(QStringLiteral("currentModeButton"));
+        current->setText(QString::number(missing.front()));
+        current->setCheckable(true);
+        current->setChecked(true);
+        current->setFocusPolicy(Qt::NoFocus);
+        connect(current, &QAbstractButton::toggled, current, [current] { current->setChecked(true); }); // stays in
+        const int before = int(std::count_if(numbers.begin(), numbers.end(), [&](int n) { return n < missing.front(); }));
+        static_cast<QHBoxLayout *>(m_groups[g]->layout())->insertWidget(1 + before, current); // after the caption
+        m_currentButtons.append(current);
+    }
+}
+
 void ModeBar::retranslate()
 {
+    for (QAbstractButton *current : std::as_const(m_currentButtons))
+        current->setToolTip(tr("The mode the mechanism is in."));
     m_current->setText(m_currentText.isEmpty() ? QString() : tr("Modes: %1").arg(m_currentText));
     for (int i = 0; i < m_buttonList.size(); ++i) {
         // the short form on the button ("other assembly mode"), the whole label in the tooltip;

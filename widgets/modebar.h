@@ -42,6 +42,8 @@ private:
     /// Takes a button or caption out of the bar and deletes it once control is back in the
     /// event loop.
     void retire(QWidget *widget);
+    /// In a group of numbered modes, the mode the mechanism is in, pressed among the others.
+    void showCurrentNumbers();
 
     QLabel *m_current = nullptr;
     QString m_currentText;
@@ -51,6 +53,7 @@ private:
     QList<QWidget *> m_groups;     ///< the groups of numbered modes: a caption and its buttons
     QList<QLabel *> m_groupLabels; ///< the captions of the groups of numbered modes
     QList<int> m_groupOf;          ///< per button, its group's caption (−1: none)
+    QList<QAbstractButton *> m_currentButtons; ///< showCurrentNumbers()
 };
 
 } // namespace pkm

@@ -62,7 +62,7 @@ QComboBox *makeBox(const ParameterInfo &info, int width, QWidget *parent)
     // Up/Down and the wheel, Ctrl+Z and the invalid mark work the same way.
     box->setEditable(true);
     box->setInsertPolicy(QComboBox::NoInsert);
-    box->lineEdit()->setAlignment(Qt::AlignRight);
+    box->lineEdit()->setAlignment(Qt::AlignLeft); // a word, read from its start as in the list
     box->setProperty(leastWidthProperty, width);
     for (std::size_t i = 0; i < info.choices.size(); ++i)
         box->addItem(text(info, i), info.choices[i].second);

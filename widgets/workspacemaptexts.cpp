@@ -11,6 +11,7 @@
 
 #include <QComboBox>
 #include <QEvent>
+#include <QFontMetrics>
 #include <QLabel>
 #include <QLocale>
 #include <QStackedWidget>
@@ -46,15 +47,25 @@ using workspacemap::significant;
 
 // -- texts -------------------------------------------------------------------------------------
 
-double WorkspaceMapView::shownArea() const
+bool WorkspaceMapView::plotIsShort() const
 {
-    // Where the area of the design's own modes is known in closed form (the O-X glide's), the
-    // title gives it, as the sheet and `pkm workspace` do; elsewhere the map's count.
+    return m_plot->height() < 16 * QFontMetrics(m_title->font()).height();
+}
+
+std::optional<double> WorkspaceMapView::exactArea() const
+{
     if (const PlanarWorkspace *planar = m_mechanism ? m_mechanism->planarWorkspace() : nullptr)
         for (const ExactArea &known : planar->exactAreas())
             if (known.key == "area")
                 return known.area;
-    return m_summary.area;
+    return std::nullopt;
+}
+
+double WorkspaceMapView::shownArea() const
+{
+    // Where the area of the design's own modes is known in closed form (the O-X glide's), the
+    // title gives it, as the sheet and `pkm workspace` do; elsewhere the map's count.
+    return exactArea().value_or(m_summary.area);
 }
 
 QString WorkspaceMapView::determinantUnit() const
@@ -69,6 +80,11 @@ QString WorkspaceMapView::titleText() const
     return m_title->text().remove(QChar(0x2060)).simplified(); // without the word joiners of unbreakable()
 }
 
+QStringList WorkspaceMapView::titleLines() const
+{
+    return m_title->text().remove(QChar(0x2060)).split(QLatin1Char('\n'));
+}
+
 std::optional<double> WorkspaceMapView::sliceAngle() const
 {
     if (!m_mechanism || m_mechanism->outputCount() != 3 || !m_mechanism->parameterApplies("phi_map"))
@@ -80,7 +96,12 @@ std::optional<double> WorkspaceMapView::sliceAngle() const
 
 QString WorkspaceMapView::areaText() const
 {
-    const QString area = formatQuantity(shownArea(), units::squareMillimetre, 0);
+    // The number and its unit kept on one line (U+00A0), and a grid's count marked as an
+    // estimate: the five-bar's 71470 mm² and the same five-bar built from legs, 71451 mm² on
+    // other grid bounds, were both read as exact.
+    QString area = formatQuantity(shownArea(), units::squareMillimetre, 0).replace(QLatin1Char(' '), QChar(0x00A0));
+    if (!exactArea())
+        area = QStringLiteral("≈\u00A0") + area;
     const std::optional<double> slice = sliceAngle();
     if (!slice)
         return area;
@@ -218,6 +239,8 @@ void WorkspaceMapView::changeEvent(QEvent *event)
 
 void WorkspaceMapView::setBrief(bool on)
 {
+    m_briefRequested = on;
+    on = on || plotIsShort();
     if (on == m_brief)
         return;
     m_brief = on;

@@ -342,7 +342,8 @@ void WorkspaceMapView::setPose(const Pose &pose)
     const std::optional<double> slice = sliceAngle();
     const bool offSlice = valid && slice && pose.outputs.size() >= 3
         && std::abs(std::remainder(pose.outputs[2] - *slice, 2.0 * std::numbers::pi)) > offSliceTolerance;
-    if (offSlice != m_poseOffSlice) {
+    const bool titleChanged = offSlice != m_poseOffSlice;
+    if (titleChanged) {
         m_poseOffSlice = offSlice;
         QPen rim(QColor(markerRgb), 2.0);
         rim.setStyle(offSlice ? Qt::DashLine : Qt::SolidLine);
@@ -354,8 +355,13 @@ void WorkspaceMapView::setPose(const Pose &pose)
         item->position->setCoords(m_pose.x(), m_pose.y());
         item->setVisible(valid && !m_mapBounds.isEmpty());
     }
-    if (m_plot->isVisible())
-        m_poseLayer->replot(); // the marker alone; a full replot only if the buffers are stale
+    // The marker alone, a full replot only if the buffers are stale; the title too where it
+    // changed (the marker's layer alone left a playing 3-R̲RR's title saying nothing of the
+    // pose's φ leaving the slice).
+    if (m_plot->isVisible() && titleChanged)
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    else if (m_plot->isVisible())
+        m_poseLayer->replot();
 }
 
 void WorkspaceMapView::setQuantity(MapQuantity quantity)

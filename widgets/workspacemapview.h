@@ -80,7 +80,7 @@ public:
     /// Brief words for a small map (presentation mode): the title gives the workspace alone and
     /// the legend the curves' kinds; the rest (the value range, what a singularity means) goes
     /// to the tooltip. At 1280×720 the full title and legend took 320 px and left the map
-    /// 185×145 px.
+    /// 185×145 px. A plot too short for the full words is brief without being asked.
     void setBrief(bool on);
     bool brief() const { return m_brief; }
 
@@ -104,6 +104,8 @@ public:
     const MapSummary &summary() const { return m_summary; }
     /// The map's title as shown, lines joined by spaces (tests, the walk-through's checks).
     QString titleText() const;
+    /// The title's lines as broken for the plot's width.
+    QStringList titleLines() const;
     double area() const { return m_summary.area; } ///< mm²
     /// The comparison's workspace area, mm² (0 without a comparison result).
     double comparisonArea() const { return m_comparisonArea; }
@@ -161,6 +163,10 @@ private:
     void updateTitle();
     /// The workspace area the title gives: exact where the kind knows it, else the map's count (mm²).
     double shownArea() const;
+    /// The workspace area where the kind knows it in closed form (else the map's count), mm².
+    std::optional<double> exactArea() const;
+    /// The plot is short for the full title and legend: fewer than 16 title lines high.
+    bool plotIsShort() const;
     /// shownArea() as the titles give it, with the slice φ = φ_map of a platform that turns:
     /// the map of a 3-DOF platform is that slice, whatever φ the pose has.
     QString areaText() const;
@@ -230,7 +236,8 @@ private:
     bool m_userView = false; ///< the user zoomed or dragged: keep the view on new maps
     QString m_scaleLabel; ///< the colour scale's label before it is broken into lines
     QString m_briefScaleLabel; ///< its short form, or empty
-    bool m_brief = false;
+    bool m_brief = false;          ///< asked for, or the plot is short
+    bool m_briefRequested = false; ///< setBrief()
     QString m_fullTitle;   ///< the title in full, whichever is shown
     bool m_titleShortened = false;
     QString m_toolTip;     ///< the tooltip before brief mode's additions

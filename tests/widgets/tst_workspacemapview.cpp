@@ -93,6 +93,7 @@ private slots:
     void click();
     void conditionNumber();
     void orientationRange();
+    void shortMapIsBriefAndAGridAreaIsAnEstimate();
     void capabilityMaps();
     void toleranceMap();
     void comparison();
@@ -360,6 +361,46 @@ void TestWorkspaceMapView::conditionNumber()
     QVERIFY(view.summary().max < 0.0);
 }
 
+/// A map too short for its full words gives them briefly, as presentation mode asks; a grid's
+/// count of the area is marked as an estimate and the O-X glide's closed-form area is not, and a
+/// number keeps its unit on its line.
+void TestWorkspaceMapView::shortMapIsBriefAndAGridAreaIsAnEstimate()
+{
+    auto moma = designfile::load(QStringLiteral("moma-3a"));
+    QVERIFY(moma);
+    WorkspaceMapView view;
+    view.resize(600, 900);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QVERIFY(showMap(view, moma->mechanism));
+    QVERIFY(!view.brief());
+    QVERIFY2(view.titleText().startsWith(QStringLiteral("Workspace ≈ ")) && view.titleText().contains(QStringLiteral("det J from")),
+             qPrintable(view.titleText()));
+    view.resize(600, 320);
+    QTRY_VERIFY(view.brief());
+    QVERIFY2(!view.titleText().contains(QStringLiteral("det J from")), qPrintable(view.titleText()));
+    QVERIFY(view.plot()->toolTip().contains(QStringLiteral("det J from")));
+    view.resize(600, 900);
+    QTRY_VERIFY(!view.brief());
+    view.setBrief(true); // asked for: brief whatever its height
+    QVERIFY(view.brief());
+    view.setBrief(false);
+    QVERIFY(!view.brief());
+    auto ox = designfile::load(QStringLiteral("oxglide-prototype"));
+    QVERIFY(ox);
+    QVERIFY(showMap(view, ox->mechanism));
+    QVERIFY2(view.titleText().startsWith(QStringLiteral("Workspace 753 mm²")), qPrintable(view.titleText()));
+    // "mm²" after a no-break space: never alone at the start of a line when the title wraps
+    // the area's number and unit joined by a no-break space, which the title's line breaking
+    // never breaks at (the Russian title had put "мм²" at the start of its second line)
+    auto moma3c = designfile::load(QStringLiteral("moma-3c"));
+    QVERIFY(moma3c);
+    QVERIFY(showMap(view, moma3c->mechanism));
+    const QString area = QString::number(std::lround(view.area()));
+    QVERIFY2(view.titleLines().join(u' ').contains(QStringLiteral("≈\u00A0") + area + QStringLiteral("\u00A0mm²")),
+             qPrintable(view.titleLines().join(u'|')));
+}
+
 /// A platform that turns (the 3-RP̲R) offers the orientation range of φ, in degrees on a 0–360°
 /// scale; a point platform does not, and a range chosen before falls back to det J.
 void TestWorkspaceMapView::orientationRange()
@@ -394,8 +435,16 @@ void TestWorkspaceMapView::orientationRange()
     // a pose at another φ is off the slice: a dashed ring, and the title says so
     Pose pose = design->pose;
     QVERIFY(std::abs(pose.outputs[2]) > 0.1); // the preset stands at φ = 57°
+    // and it is drawn: a pose change replots the marker's layer alone, which left the title
+    // of a playing 3-R̲RR as it was
+    view.resize(900, 800);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QTest::qWait(100); // the replots of showing it done
+    QSignalSpy replots(view.plot(), &QCustomPlot::afterReplot);
     view.setPose(pose);
     QVERIFY(view.markerOffSlice());
+    QTRY_VERIFY(replots.count() > 0);
     QVERIFY2(view.titleText().contains(QStringLiteral("at φ = 0.0°, not the pose's φ · det J")), qPrintable(view.titleText()));
     pose.outputs[2] = 2.0 * std::numbers::pi; // a whole turn from the slice is on it
     view.setPose(pose);

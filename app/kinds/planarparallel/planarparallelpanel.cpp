@@ -226,8 +226,10 @@ void PlanarParallelPanel::showDesign()
         m_types[k]->setVisible(i < n);
         m_working[k]->setVisible(i < n && d.legs[k].type != LegType::RPR); // a strut has one working mode
     }
-    m_add->setEnabled(n == 2);
-    m_remove->setEnabled(n == 3);
+    // Only the one that applies: a greyed "Remove leg 3" under two legs read as if there were
+    // a third to remove.
+    m_add->setVisible(n == 2);
+    m_remove->setVisible(n == 3);
 }
 
 } // namespace pkm
