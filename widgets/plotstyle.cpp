@@ -8,6 +8,7 @@
 #include <QTextDocument>
 
 #include <algorithm>
+#include <limits>
 
 namespace pkm::plotstyle {
 
@@ -169,6 +170,24 @@ QSizeF boxSize(const QCustomPlot *plot, const QCPItemText *label, const QString 
     const QMargins padding = label->padding();
     return {textWidth + padding.left() + padding.right() + 1.0, bounds.height() + padding.top() + padding.bottom() + 1.0};
 }
+/// How many points of the plot's curves (sampled, a few hundred each) lie in `box` (pixels).
+int curvePointsIn(QCustomPlot *plot, const QRectF &box)
+{
+    int count = 0;
+    for (int p = 0; p < plot->plottableCount(); ++p) {
+        QCPAbstractPlottable *plottable = plot->plottable(p);
+        QCPPlottableInterface1D *data = plottable ? plottable->interface1D() : nullptr;
+        if (!data || !plottable->visible() || plottable->keyAxis() == nullptr || plottable->valueAxis() == nullptr)
+            continue;
+        const int n = data->dataCount();
+        const int stride = std::max(1, n / 400);
+        for (int i = 0; i < n; i += stride) {
+            const QPointF point = plottable->coordsToPixels(data->dataMainKey(i), data->dataMainValue(i));
+            count += box.contains(point) ? stride : 0;
+        }
+    }
+    return count;
+}
 } // namespace
 
 void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y)
@@ -198,9 +217,9 @@ void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y)
     }
     const double width = size.width(), height = size.height();
     const QPointF marker(plot->xAxis->coordToPixel(x), plot->yAxis->coordToPixel(y));
-    // beside the marker where there is more room, then inwards until it is whole
-    const auto place = [](double at, double low, double high, double size) {
-        const bool before = at - low > high - at;
+    // beside the marker, on the side with more room first, then inwards until it is whole
+    const auto place = [](double at, double low, double high, double size, bool flip) {
+        const bool before = (at - low > high - at) != flip;
         const double highest = std::max(low + 2.0, high - 2.0 - size);
         return std::clamp(before ? at - gap - size : at + gap, low + 2.0, highest);
     };
@@ -209,10 +228,24 @@ void placeCursorLabel(QCustomPlot *plot, QCPItemText *label, double x, double y)
     const QRect wide = plot->viewport();
     const bool fitsAcross = width + 4.0 <= rect.width(), fitsDown = height + 4.0 <= rect.height();
     label->setClipToAxisRect(fitsAcross && fitsDown);
-    const double left = fitsAcross ? place(marker.x(), rect.left(), rect.right(), width)
-                                   : place(marker.x(), wide.left(), wide.right(), width);
-    const double top = fitsDown ? place(marker.y(), rect.top(), rect.bottom(), height)
-                                : place(marker.y(), wide.top(), wide.bottom(), height);
+    const QRect across = fitsAcross ? rect : wide, down = fitsDown ? rect : wide;
+    // Of the four corners around the marker, the one that hides least of the curves (the
+    // four-bar's "δ = 79.5°" lay across the δ(α) curve beside the marker), the roomier first
+    // among equals.
+    double left = 0.0, top = 0.0;
+    int fewest = std::numeric_limits<int>::max();
+    for (const int corner : {0, 1, 2, 3}) {
+        const double l = place(marker.x(), across.left(), across.right(), width, corner & 1);
+        const double t = place(marker.y(), down.top(), down.bottom(), height, corner & 2);
+        const int hidden = curvePointsIn(plot, QRectF(l, t, width, height));
+        if (hidden < fewest) {
+            fewest = hidden;
+            left = l;
+            top = t;
+        }
+        if (hidden == 0)
+            break;
+    }
     label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
     label->position->setCoords(left - marker.x(), top - marker.y());
 }

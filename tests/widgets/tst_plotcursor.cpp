@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QTest>
 
+#include <cmath>
 #include <memory>
 
 using namespace pkm;
@@ -88,6 +89,40 @@ private slots:
             QVERIFY2(shown.contains(QLatin1Char('\n')) && clipped, qPrintable(shown));
         } else if (width == 420) {
             QCOMPARE(shown, text);
+        }
+    }
+
+    /// The box hides none of the curve where a corner around the marker leaves it free: the
+    /// four-bar's "δ = 79.5°" at α = 60°, past the peak of δ(α), lay on the falling curve.
+    void boxKeepsOffTheCurve()
+    {
+        QCustomPlot plot;
+        plot.resize(420, 380);
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        const plotstyle::Header header = plotstyle::apply(&plot, QApplication::font());
+        QFont large = QApplication::font();
+        large.setPointSizeF(large.pointSizeF() * 1.5);
+        QCPGraph *graph = plot.addGraph();
+        QVector<double> x, y;
+        for (int i = 0; i <= 360; ++i) {
+            x << i;
+            y << 58.0 + 24.0 * std::sin((i + 45.0) * M_PI / 180.0); // a hump at 45°, as δ(α)
+        }
+        graph->setData(x, y);
+        plot.xAxis->setRange(0.0, 360.0);
+        plot.yAxis->setRange(30.0, 86.0);
+        const plotstyle::Cursor cursor = plotstyle::addCursor(&plot, large, header.cursorLayer);
+        const double at = 60.0, value = 58.0 + 24.0 * std::sin(105.0 * M_PI / 180.0);
+        cursor.marker->position->setCoords(at, value);
+        cursor.label->setText(QStringLiteral("δ = 79.5°"));
+        plot.replot();
+        plotstyle::placeCursorLabel(&plot, cursor.label, at, value);
+        plot.replot();
+        const QRectF box(cursor.label->topLeft->pixelPosition(), cursor.label->bottomRight->pixelPosition());
+        for (int i = 0; i <= 360; ++i) {
+            const QPointF point(plot.xAxis->coordToPixel(x[i]), plot.yAxis->coordToPixel(y[i]));
+            QVERIFY2(!box.contains(point), qPrintable(QStringLiteral("the box hides the curve at %1°").arg(i)));
         }
     }
 
