@@ -283,7 +283,7 @@ bool WorkspaceMapView::eventFilter(QObject *watched, QEvent *event)
 {
     if (watched == m_plot && event->type() == QEvent::Resize) {
         // Brief words also where the plot is short for the full ones (a 1280×720 screen beside
-        // the Legs box left the 3-RP̲R's map 110 px high): fewer than 16 title lines high.
+        // the Legs box left the 3-RP̲R's map 110 px high): plotIsShort().
         m_brief = m_briefRequested || plotIsShort();
         updateTitle();
         updateLegend();

@@ -49,7 +49,7 @@ using workspacemap::significant;
 
 bool WorkspaceMapView::plotIsShort() const
 {
-    return m_plot->height() < 16 * QFontMetrics(m_title->font()).height();
+    return m_plot->height() < 22 * QFontMetrics(m_title->font()).height();
 }
 
 std::optional<double> WorkspaceMapView::exactArea() const

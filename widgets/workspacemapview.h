@@ -165,7 +165,7 @@ private:
     double shownArea() const;
     /// The workspace area where the kind knows it in closed form (else the map's count), mm².
     std::optional<double> exactArea() const;
-    /// The plot is short for the full title and legend: fewer than 16 title lines high.
+    /// The plot is short for the full title and legend: fewer than 22 title lines high.
     bool plotIsShort() const;
     /// shownArea() as the titles give it, with the slice φ = φ_map of a platform that turns:
     /// the map of a 3-DOF platform is that slice, whatever φ the pose has.
