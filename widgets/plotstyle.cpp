@@ -8,6 +8,7 @@
 #include <QTextDocument>
 
 #include <algorithm>
+#include <vector>
 #include <limits>
 
 namespace pkm::plotstyle {
@@ -343,23 +344,45 @@ void setLegendShown(QCustomPlot *plot, bool shown)
 int layOutLegend(QCustomPlot *plot)
 {
     QCPLegend *legend = plot->legend;
-    int count = 0, widest = 0, tallest = 0;
+    std::vector<int> widths;
+    int tallest = 0;
     for (int j = 0; j < legend->itemCount(); ++j) { // cells of the grid, some of them empty
         if (const QCPAbstractLegendItem *item = legend->item(j)) {
-            ++count;
-            widest = std::max(widest, item->minimumOuterSizeHint().width());
+            widths.push_back(item->minimumOuterSizeHint().width());
             tallest = std::max(tallest, item->minimumOuterSizeHint().height());
         }
     }
+    const int count = int(widths.size());
     if (count == 0)
         return 0;
     const int available = plot->width() - legend->margins().left() - legend->margins().right();
-    const int fit = std::clamp((available + legend->columnSpacing()) / (widest + legend->columnSpacing()), 1, count);
-    const int rows = (count + fit - 1) / fit;
-    const int columns = (count + rows - 1) / rows;
-    if (columns != legend->wrap() || legend->fillOrder() != QCPLayoutGrid::foColumnsFirst) {
-        legend->setWrap(columns);
-        legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    // The most columns whose own widths fit, filled row by row (item i in column i mod n) or,
+    // where that fits fewer, column by column: the П-joint's fig. 8 has two long entries ("this
+    // design (k = 0.40)", "beyond its θ range") and five short "k = …", and took seven rows
+    // where the widest entry times two did not fit; down the columns they take four.
+    // The width of `rows` rows: across (item i in column i mod n) or down the columns.
+    const auto width = [&](int rows, bool down) {
+        const int columns = (count + rows - 1) / rows;
+        int total = -legend->columnSpacing();
+        for (int c = 0; c < columns; ++c) {
+            int widest = 0;
+            for (int i = 0; i < count; ++i) {
+                if ((down ? i / rows : i % columns) == c)
+                    widest = std::max(widest, widths[std::size_t(i)]);
+            }
+            total += widest + legend->columnSpacing();
+        }
+        return total;
+    };
+    int rows = 1;
+    while (rows < count && width(rows, false) > available && width(rows, true) > available)
+        ++rows;
+    const bool down = rows < count && width(rows, false) > available;
+    const QCPLayoutGrid::FillOrder order = down ? QCPLayoutGrid::foRowsFirst : QCPLayoutGrid::foColumnsFirst;
+    const int wrap = down ? rows : (count + rows - 1) / rows; // rows down a column, or columns across
+    if (wrap != legend->wrap() || legend->fillOrder() != order) {
+        legend->setWrap(wrap);
+        legend->setFillOrder(order, true);
     }
     return rows * (tallest + legend->rowSpacing());
 }

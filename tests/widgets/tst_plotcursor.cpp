@@ -126,6 +126,34 @@ private slots:
         }
     }
 
+    /// A legend of two long entries and five short ones takes columns down the rows where two
+    /// long ones side by side do not fit: fig. 8's seven rows left its curves 145 px at 1280×720.
+    void legendFillsColumnsDown()
+    {
+        QCustomPlot plot;
+        plotstyle::apply(&plot, QApplication::font());
+        const QStringList names {QStringLiteral("this design (k = 0.40)"), QStringLiteral("beyond its θ range"),
+                                 QStringLiteral("k = 0.3"), QStringLiteral("k = 0.4"), QStringLiteral("k = 0.5"),
+                                 QStringLiteral("k = 1.0"), QStringLiteral("k = 1.5")};
+        for (const QString &name : names)
+            plot.addGraph()->setName(name);
+        int longest = 0, shortest = 0;
+        for (int j = 0; j < plot.legend->itemCount(); ++j) {
+            const int width = plot.legend->item(j)->minimumOuterSizeHint().width();
+            longest = j == 0 ? width : std::max(longest, width);
+            shortest = j == 2 ? width : j > 2 ? std::max(shortest, width) : shortest;
+        }
+        // room for a long and a short column, not for two long ones
+        const QMargins margins = plot.legend->margins();
+        plot.resize(longest + plot.legend->columnSpacing() + shortest + margins.left() + margins.right() + 4, 400);
+        QVERIFY(2 * longest + plot.legend->columnSpacing() + margins.left() + margins.right() > plot.width());
+        const int height = plotstyle::layOutLegend(&plot);
+        const int row = plot.legend->item(0)->minimumOuterSizeHint().height() + plot.legend->rowSpacing();
+        QCOMPARE(height, 4 * row);
+        QCOMPARE(plot.legend->fillOrder(), QCPLayoutGrid::foRowsFirst);
+        QCOMPARE(plot.legend->wrap(), 4);
+    }
+
     /// A figure's subtitle with θ̇ (fig. 12: "θ̇ = J⁻¹·ḋ") drew the combining dot apart from
     /// its θ, at the start of the title's line above; plot texts write dθ/dt instead.
     void noCombiningDotInPlotTexts()

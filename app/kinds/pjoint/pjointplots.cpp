@@ -458,6 +458,8 @@ void PJointPlots::fitToWidth(int index)
             setDesignShown(false);
             plotstyle::layOutLegend(plot);
         }
+    } else {
+        plotstyle::layOutLegend(plot); // fig. 8's seven entries in columns where they fit
     }
     // Figs. 15 and 16 share a row above fig. 17 (1280×720): where their legends leave the axes
     // a strip, they show none, since fig. 17 below, as wide as both, names the same curve and
