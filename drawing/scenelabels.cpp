@@ -90,9 +90,9 @@ void SceneLabels::addRay(int joint, const QPointF &towards, double reach)
         m_rays[std::size_t(joint)].push_back({unit(towards), reach});
 }
 
-void SceneLabels::addObstacle(const QPointF &a, const QPointF &b, double halfWidth)
+void SceneLabels::addObstacle(const QPointF &a, const QPointF &b, double halfWidth, bool faint)
 {
-    m_obstacles.push_back({segmentQuad(a, b, halfWidth), a, b, halfWidth, true});
+    m_obstacles.push_back({segmentQuad(a, b, halfWidth), a, b, halfWidth, true, faint});
 }
 
 void SceneLabels::addObstacle(const Quad &quad)
@@ -206,7 +206,7 @@ double SceneLabels::collisions(const Quad &box, double enough, double perLine) c
             return cost;
     }
     for (const Obstacle &o : m_obstacles) {
-        if (!overlap(box, o.quad))
+        if (o.faint || !overlap(box, o.quad))
             continue;
         // the area hidden: a bar counts for more than a thin line
         const double hidden = o.line ? coveredLength(box, o.a, o.b, o.halfWidth) * std::max(2.0 * o.halfWidth, 2.0 * m_px) : 0.0;
@@ -222,19 +222,20 @@ double SceneLabels::thinLinesOnly(const Quad &box) const
     for (const Quad &q : m_reserved) // a joint's name's first place counts as a thin line
         cost += overlap(box, q) ? 1.0 : 0.0;
     for (const Obstacle &o : m_obstacles) {
-        if (cost < coversALabel && overlap(box, o.quad))
+        if (cost < coversALabel && !o.faint && overlap(box, o.quad))
             // bars are 4.5 px wide each side of their axis, dimension lines 3.5, the ground 2.25
             cost += !o.line || o.halfWidth < 4.0 * m_px ? 1.0 : coversALabel;
     }
     return cost;
 }
 
-bool SceneLabels::isFree(const Quad &box) const
+bool SceneLabels::isFree(const Quad &box, bool faint) const
 {
     const auto covers = [&box](const Quad &q) { return overlap(box, q); };
     return !outside(box) && std::none_of(m_labelBoxes.begin(), m_labelBoxes.end(), covers)
         && std::none_of(m_reserved.begin(), m_reserved.end(), covers)
-        && std::none_of(m_obstacles.begin(), m_obstacles.end(), [&box](const Obstacle &o) { return overlap(box, o.quad); });
+        && std::none_of(m_obstacles.begin(), m_obstacles.end(),
+                        [&](const Obstacle &o) { return (faint || !o.faint) && overlap(box, o.quad); });
 }
 
 std::optional<QLineF> SceneLabels::leaderToBox(const QPointF &anchor, const QPointF &centre, const QSizeF &size, double slack)
@@ -281,7 +282,7 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
     const auto leaderAt = [&](std::size_t k) { return leaderFor ? leaderFor(k) : std::nullopt; };
     // Free, and where it needs a leader, one that crosses nothing a reader would follow instead.
     const auto clear = [&](std::size_t k) {
-        if (!isFree(boxAt(k)))
+        if (!isFree(boxAt(k), false))
             return false;
         const std::optional<Leader> leader = leaderAt(k);
         return !leader || leaderIsClear(*leader);
@@ -295,8 +296,15 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
     // place is the rule: the costs are worked out only when there is none.
     std::size_t chosen = count;
     double best = 0.0;
+    // Of the nearest places (all, for a label without leaders), the first clear of the ghosts
+    // too; the search below does not see them.
+    const std::size_t nearest = near > 0 ? near : leaderFor ? 0 : count;
+    for (std::size_t k = 0; k < nearest && chosen == count; ++k) {
+        if (isFree(boxAt(k), true) && (!leaderAt(k) || leaderIsClear(*leaderAt(k))))
+            chosen = k;
+    }
     for (std::size_t k = 0; k < near && chosen == count; ++k)
-        chosen = isFree(boxAt(k)) ? k : count;
+        chosen = isFree(boxAt(k), false) ? k : count;
     if (chosen == count && near > 0) {
         best = nearEnough;
         for (std::size_t k = 0; k < near; ++k) {
@@ -310,7 +318,7 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
     for (std::size_t k = near; k < count && chosen == count; ++k)
         chosen = clear(k) ? k : count;
     for (std::size_t k = near; leaderFor && k < count && chosen == count; ++k)
-        chosen = isFree(boxAt(k)) ? k : count;
+        chosen = isFree(boxAt(k), false) ? k : count;
     if (chosen == count) {
         best = std::numeric_limits<double>::infinity();
         for (std::size_t k = 0; k < count; ++k) {

@@ -120,7 +120,7 @@ public:
     /// names go into the widest gap between such rays.
     void addRay(int joint, const QPointF &towards, double reach);
     /// A drawn line from `a` to `b`, `2 × halfWidth` wide, that no label may cover.
-    void addObstacle(const QPointF &a, const QPointF &b, double halfWidth);
+    void addObstacle(const QPointF &a, const QPointF &b, double halfWidth, bool faint = false);
     void addObstacle(const detail::Quad &quad);
     void addMemberLabel(const PendingMemberLabel &label);
     void addAngleLabel(const PendingAngleLabel &label);
@@ -163,7 +163,8 @@ private:
     /// `enough`.
     double collisions(const detail::Quad &box, double enough, double perLine = 1.0) const;
     /// Whether `box` covers nothing at all (quicker than collisions()).
-    bool isFree(const detail::Quad &box) const;
+    /// Nothing under `box`; `faint`: the faint lines (ghosts) count too.
+    bool isFree(const detail::Quad &box, bool faint = false) const;
     /// The number of thin lines (hatching, extension and dimension lines) and outlines `box`
     /// covers; 100 or more when it covers a label, a pivot or a bar.
     double thinLinesOnly(const detail::Quad &box) const;
@@ -241,6 +242,11 @@ private:
         QPointF a, b;
         double halfWidth = 0.0;
         bool line = false;
+        /// A line drawn faintly under the scene (another mode's ghost): of a label's nearest
+        /// places the first clear of these too is taken; else they count for nothing, so that
+        /// a name is never moved far or left out for them (the 3-RP̲R's q₁ and q₃ vanished
+        /// among five ghosts when they counted as thin lines).
+        bool faint = false;
     };
     std::vector<Obstacle> m_obstacles;
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far

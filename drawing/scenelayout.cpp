@@ -277,7 +277,7 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
     SceneLabels labels(scene, points, mapping, style, options.device);
     labels.setRoom(options.labelRoom);
     for (const QLineF &line : options.avoid) // a thin line: covered where nothing else is free
-        labels.addObstacle(line.p1(), line.p2(), 1.5 * style.pixelSize);
+        labels.addObstacle(line.p1(), line.p2(), 1.5 * style.pixelSize, true);
     for (const QRectF &box : options.covered)
         labels.addObstacle(boxQuad(box.center(), box.size(), 0.0));
     const SceneCanvas canvas {list, scene, mapping, style, points, labels, guides, jointGuide};
