@@ -4150,7 +4150,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The numbers put in are rounded as shown; every result is worked out from the unrounded values, so the last digits of a result can differ from one worked out by hand from the shown numbers.</source>
-        <translation>Подставленные числа округлены так, как показаны; каждый результат вычислен по неокруглённым значениям, поэтому последние цифры результата могут отличаться от полученных вручную по показанным числам.</translation>
+        <translation>Подставленные числа округлены до показанных знаков; каждый результат вычислен по неокруглённым значениям, поэтому его последние цифры могут отличаться от полученных вручную по показанным числам.</translation>
     </message>
     <message>
         <source>constant orientation</source>

@@ -3954,7 +3954,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>stiffness K = Jᵀ·K_q·J (N/mm, N/rad, N·mm/rad)</source>
-        <translation>крутост K = Jᵀ·K_q·J (Н/мм, Н/рад, Н·мм/рад)</translation>
+        <translation>крутост K = Jᵀ·K_q·J (N/mm, N/rad, N·mm/rad)</translation>
     </message>
     <message>
         <source>stiffness K = Jᵀ·K_q·J</source>
@@ -3970,7 +3970,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>N/mm</source>
-        <translation>Н/мм</translation>
+        <translation>N/mm</translation>
     </message>
     <message>
         <source>axial stiffness of the actuator</source>

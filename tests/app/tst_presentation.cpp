@@ -90,11 +90,11 @@ private slots:
             language::apply(QStringLiteral("en"));
         });
         w.resize(1280, 720);
-        QTest::qWait(250); // the splitter shared out for the width the window has
-        QCoreApplication::processEvents();
+        // the splitter shared out for the width the window has, the rows in two blocks: on a
+        // loaded machine that takes more than the 250 ms once waited here
         const QWidget *view = w.linkageView();
-        QVERIFY2(view->width() >= 0.55 * w.width() && view->height() >= 0.45 * w.height(),
-                 qPrintable(QStringLiteral("the linkage view is %1×%2 px").arg(view->width()).arg(view->height())));
+        QTRY_VERIFY2(view->width() >= 0.55 * w.width() && view->height() >= 0.45 * w.height(),
+                     qPrintable(QStringLiteral("the linkage view is %1×%2 px").arg(view->width()).arg(view->height())));
         QVERIFY(w.variablePanel()->hasTwoBlocks());
         for (int i = 0; QAbstractButton *button = w.modeBar()->button(i); ++i) {
             const QLabel *caption = button->parentWidget()->findChild<QLabel *>();
@@ -107,6 +107,7 @@ private slots:
         for (const WorkspaceMapView *map : w.findChildren<WorkspaceMapView *>()) {
             if (!map->isVisible())
                 continue;
+            QTRY_VERIFY(!map->busy() && map->summary().reachableCells > 0); // computed off the GUI thread
             const QRect rect = map->plot()->axisRect()->rect();
             QVERIFY2(rect.width() >= 200 && rect.height() >= 200,
                      qPrintable(QStringLiteral("the map is %1×%2 px").arg(rect.width()).arg(rect.height())));
@@ -242,7 +243,22 @@ private slots:
         QVERIFY(language::apply(QStringLiteral("ru")));
         const auto english = qScopeGuard([] { language::apply(QStringLiteral("en")); });
         const QList<QCustomPlot *> plots = plotfocus::plots(tabs->parentWidget());
-        QTest::qWait(200);
+        // the sizes before, once the new language's layout has settled: unchanged for 400 ms
+        // (a loaded machine took more than the 200 ms once waited here, and fig. 8 then grew
+        // by 8 px after it was measured)
+        const auto sizes = [&plots] {
+            QList<QSize> all;
+            for (const QCustomPlot *plot : plots)
+                all << plot->size();
+            return all;
+        };
+        QList<QSize> settled = sizes();
+        for (int i = 0, still = 0; i < 50 && still < 4; ++i) { // unchanged for 400 ms
+            QTest::qWait(100);
+            const QList<QSize> now = sizes();
+            still = now == settled ? still + 1 : 0;
+            settled = now;
+        }
         const QList<int> widths {plots[0]->width(), plots[1]->width(), plots[2]->width()};
         const QList<int> heights {plots[0]->height(), plots[1]->height(), plots[2]->height()};
         const int page = tabs->widget(0)->width();
