@@ -79,6 +79,18 @@ SceneStyle presentationStyle(const LinkageView &view)
     return style;
 }
 
+/// The screen's layout options in `area`: the labels kept inside it and off the view's ghosts.
+drawing::LayoutOptions screenOptions(const LinkageView &view, const ViewMapping &mapping, const QRectF &area)
+{
+    drawing::LayoutOptions options;
+    options.labelRoom = area;
+    for (const Scene &ghost : view.ghostScenes()) {
+        const std::vector<QLineF> lines = drawing::ghostLines(ghost, mapping);
+        options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
+    }
+    return options;
+}
+
 QStringList coveredLabels(const std::vector<drawing::Text> &texts)
 {
     QStringList covered;
@@ -481,12 +493,7 @@ private slots:
         const Scene &scene = view->scene();
         const QRectF area(0, 0, 760, 410);
         const ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
-        drawing::LayoutOptions options;
-        options.labelRoom = area;
-        for (const Scene &ghost : view->ghostScenes()) {
-            const std::vector<QLineF> lines = drawing::ghostLines(ghost, mapping);
-            options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
-        }
+        const drawing::LayoutOptions options = screenOptions(*view, mapping, area);
         QVERIFY(!options.avoid.empty());
         const std::vector<drawing::Text> texts = textsOf(drawing::layoutScene(scene, mapping, style, options));
         QStringList crossed;
@@ -522,12 +529,7 @@ private slots:
                 QVERIFY(document->switchMode(document->modeAlternatives()[std::size_t(k)]).ok());
             const Scene &scene = view->scene();
             const ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
-            drawing::LayoutOptions options;
-            options.labelRoom = area;
-            for (const Scene &ghost : view->ghostScenes()) {
-                const std::vector<QLineF> lines = drawing::ghostLines(ghost, mapping);
-                options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
-            }
+            const drawing::LayoutOptions options = screenOptions(*view, mapping, area);
             QStringList shown;
             for (const drawing::Text &text : textsOf(drawing::layoutScene(scene, mapping, style, options)))
                 shown << text.text;
