@@ -52,7 +52,7 @@ namespace pkm {
 
 namespace units {
 inline constexpr Unit newtonPerMillimetre{QT_TRANSLATE_NOOP("core", "N/mm"), 1.0};
-inline constexpr Unit degreePerSecond{"°/s", 180.0 / std::numbers::pi}; ///< core: rad/s
+inline constexpr Unit degreePerSecond{QT_TRANSLATE_NOOP("core", "°/s"), 180.0 / std::numbers::pi}; ///< core: rad/s
 } // namespace units
 
 namespace capability {

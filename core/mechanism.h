@@ -60,6 +60,10 @@ struct ParameterInfo {
     /// How the choices read on screen, in their order, where not as their names: the leg
     /// types' "R̲RR" with the actuated joint underlined for the names "RRR" of files.
     std::vector<std::string> choiceLabels = {};
+    /// The label where the choices are offered as a list (the Design panel), when `label`
+    /// spells out their numeric codes for the command line; empty: `label` (English source,
+    /// QT_TRANSLATE_NOOP("core", …)).
+    std::string listLabel = {};
 };
 
 struct VariableInfo {

@@ -3762,15 +3762,15 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Leg %1 (%2): constraint</source>
-        <translation>Ветвь %1 (%2): уравнение связи</translation>
+        <translation>Нога %1 (%2): уравнение связи</translation>
     </message>
     <message>
         <source>Leg %1 (%2): the П-joint&apos;s angle</source>
-        <translation>Ветвь %1 (%2): угол П-шарнира</translation>
+        <translation>Нога %1 (%2): угол П-шарнира</translation>
     </message>
     <message>
         <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
-        <translation>Ветвь %1 (%2): якобиан П-шарнира</translation>
+        <translation>Нога %1 (%2): якобиан П-шарнира</translation>
     </message>
     <message>
         <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
@@ -3778,7 +3778,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
-        <translation>Ветвь %1 (%2): якобиан входа (0: особое положение обратной кинематики)</translation>
+        <translation>Нога %1 (%2): якобиан входа (0: особое положение обратной кинематики)</translation>
     </message>
     <message>
         <source>assembly mode 1 (same inputs)</source>
@@ -4159,6 +4159,26 @@ Please verify the correct file name was given.</source>
     <message>
         <source>free body</source>
         <translation>свободное тело</translation>
+    </message>
+    <message>
+        <source>°/s</source>
+        <translation>°/с</translation>
+    </message>
+    <message>
+        <source>platform: 2 DOF as a point or with constant orientation, 3 as a free body</source>
+        <translation>платформа: 2 степени свободы как точка или с постоянной ориентацией, 3 как свободное тело</translation>
+    </message>
+    <message>
+        <source>leg 1: type (the actuated joint underlined)</source>
+        <translation>нога 1: тип (приводной шарнир подчёркнут)</translation>
+    </message>
+    <message>
+        <source>leg 2: type (the actuated joint underlined)</source>
+        <translation>нога 2: тип (приводной шарнир подчёркнут)</translation>
+    </message>
+    <message>
+        <source>leg 3: type (the actuated joint underlined)</source>
+        <translation>нога 3: тип (приводной шарнир подчёркнут)</translation>
     </message>
 </context>
 <context>

@@ -4160,6 +4160,26 @@ Please verify the correct file name was given.</source>
         <source>free body</source>
         <translation>слободно тело</translation>
     </message>
+    <message>
+        <source>°/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <source>platform: 2 DOF as a point or with constant orientation, 3 as a free body</source>
+        <translation>платформа: 2 степена слободе као тачка или са сталном оријентацијом, 3 као слободно тело</translation>
+    </message>
+    <message>
+        <source>leg 1: type (the actuated joint underlined)</source>
+        <translation>нога 1: тип (погонски зглоб подвучен)</translation>
+    </message>
+    <message>
+        <source>leg 2: type (the actuated joint underlined)</source>
+        <translation>нога 2: тип (погонски зглоб подвучен)</translation>
+    </message>
+    <message>
+        <source>leg 3: type (the actuated joint underlined)</source>
+        <translation>нога 3: тип (погонски зглоб подвучен)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

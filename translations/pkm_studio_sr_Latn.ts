@@ -4160,6 +4160,26 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>free body</source>
         <translation>slobodno telo</translation>
     </message>
+    <message>
+        <source>°/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <source>platform: 2 DOF as a point or with constant orientation, 3 as a free body</source>
+        <translation>platforma: 2 stepena slobode kao tačka ili sa stalnom orijentacijom, 3 kao slobodno telo</translation>
+    </message>
+    <message>
+        <source>leg 1: type (the actuated joint underlined)</source>
+        <translation>noga 1: tip (pogonski zglob podvučen)</translation>
+    </message>
+    <message>
+        <source>leg 2: type (the actuated joint underlined)</source>
+        <translation>noga 2: tip (pogonski zglob podvučen)</translation>
+    </message>
+    <message>
+        <source>leg 3: type (the actuated joint underlined)</source>
+        <translation>noga 3: tip (pogonski zglob podvučen)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

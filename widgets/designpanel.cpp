@@ -40,6 +40,9 @@ QString groupTitle(ParameterGroup group)
 /// A parameter's value as its field shows it: enough decimals to show the stored value,
 /// trailing zeros dropped, in the locale's form, a negative one with the typographic minus
 /// (parseNumber() reads it back, and a typed "-" too).
+/// The English label shown: a list of named values needs no list of their codes.
+const std::string &labelSource(const ParameterInfo &info) { return info.listLabel.empty() ? info.label : info.listLabel; }
+
 QString valueText(const ParameterInfo &info, const ParameterSet &values)
 {
     if (const QString choice = choices::textOf(info, values.at(info.name)); !choice.isEmpty())
@@ -219,7 +222,7 @@ void DesignPanel::rebuild()
         // A label that explains a mode's values ("platform: 0 a point (2 DOF), 1 constant
         // orientation (2 DOF), 2 free (3 DOF)") took six lines of a word or two beside its
         // field: it has the whole width, and its field the line below.
-        if (toQString(info.label).size() > longLabel) {
+        if (toQString(labelSource(info)).size() > longLabel) {
             form->addWidget(row.label, line, 0, 1, 2);
             form->addWidget(rowWidget, line + 1, 1);
         } else {
@@ -235,7 +238,7 @@ void DesignPanel::describe(const Row &row)
 {
     const ParameterInfo &info = m_mechanism->parameterInfo()[std::size_t(row.parameter)];
     const QString name = toQString(info.name);
-    const QString label = coreLabel(info.label);
+    const QString label = coreLabel(labelSource(info));
     const QString unit = unitText(info.unit);
     const QString range = info.domain.max == std::numeric_limits<double>::infinity()
                             ? tr("greater than %1").arg(QLocale().toString(info.unit.toDisplay(info.domain.min)))

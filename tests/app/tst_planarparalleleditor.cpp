@@ -19,6 +19,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSet>
@@ -180,6 +181,14 @@ private slots:
         QCOMPARE(field->text(), QStringLiteral("RP̲R"));
         QCOMPARE(box->count(), 4);
         QCOMPARE(box->itemText(0), QStringLiteral("R̲RR"));
+        // the list names the types, so its label does not spell out their codes as the
+        // command line's does
+        const QList<QLabel *> labels = m_window->designPanel()->findChildren<QLabel *>();
+        const auto label = std::find_if(labels.begin(), labels.end(), [&](QLabel *l) { return l->buddy() == field; });
+        QVERIFY(label != labels.end());
+        QVERIFY2((*label)->text().contains(QStringLiteral("actuated joint underlined"))
+                     && !(*label)->text().contains(QStringLiteral("0 R̲RR")),
+                 qPrintable((*label)->text()));
         box->setCurrentIndex(0);
         emit box->activated(0);
         QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RRR);
