@@ -327,8 +327,10 @@ void SceneLabels::placeAngleLabels()
         place(SceneLabel {centre, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}, {}});
         if (leader) {
             m_leaders.push_back(*leader);
-            // not an obstacle: a joint's name may cover a little of a leader rather than move off
-            // its joint
+            // Only a bar's name keeps off it (the five-bar's "AE" sat on θ₁'s leader): a
+            // joint's name may cover a little of a leader rather than move off its joint.
+            addObstacle(leader->p1(), leader->p2(), 1.0 * m_px, true);
+            m_obstacles.back().leader = true;
         }
         addRay(pending.vertex, centre - v, length(centre - v));
     }

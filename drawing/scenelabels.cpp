@@ -225,6 +225,8 @@ double SceneLabels::thinLinesOnly(const Quad &box) const
         if (cost < coversALabel && !o.faint && overlap(box, o.quad))
             // bars are 4.5 px wide each side of their axis, dimension lines 3.5, the ground 2.25
             cost += !o.line || o.halfWidth < 4.0 * m_px ? 1.0 : coversALabel;
+        else if (o.leader && overlap(box, o.quad))
+            cost += 1.5; // worse than one thin line, better than two
     }
     return cost;
 }
@@ -303,8 +305,11 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
         if (isFree(boxAt(k), true) && (!leaderAt(k) || leaderIsClear(*leaderAt(k))))
             chosen = k;
     }
+    const auto onALeader = [&](const Quad &box) {
+        return std::any_of(m_obstacles.begin(), m_obstacles.end(), [&](const Obstacle &o) { return o.leader && overlap(box, o.quad); });
+    };
     for (std::size_t k = 0; k < near && chosen == count; ++k)
-        chosen = isFree(boxAt(k), false) ? k : count;
+        chosen = isFree(boxAt(k), false) && !onALeader(boxAt(k)) ? k : count;
     if (chosen == count && near > 0) {
         best = nearEnough;
         for (std::size_t k = 0; k < near; ++k) {

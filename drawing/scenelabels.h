@@ -247,6 +247,10 @@ private:
         /// a name is never moved far or left out for them (the 3-RP̲R's q₁ and q₃ vanished
         /// among five ghosts when they counted as thin lines).
         bool faint = false;
+        /// An angle label's leader (faint too): a bar's name beside it reads as what the
+        /// leader points to, so among its nearest places it takes one clear of the leader,
+        /// even one that covers a thin line.
+        bool leader = false;
     };
     std::vector<Obstacle> m_obstacles;
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far

@@ -13,6 +13,7 @@
 #include "scenelayout.h"
 #include "scenepainter.h"
 #include "support/app.h"
+#include "units.h"
 
 #include <QPolygonF>
 #include <QTest>
@@ -538,6 +539,42 @@ private slots:
             if (k >= 0)
                 document->undoStack()->undo();
         }
+    }
+
+    /// An angle's leader does not run under a bar's name: the five-bar's "AE", placed after
+    /// θ₁ and its leader, sat on the leader in presentation mode as Play turned θ₁.
+    void barNamesKeepOffTheLeaders()
+    {
+        QVERIFY(m_window->openDesign(QStringLiteral("fivebar-example")));
+        LinkageView *view = m_window->linkageView();
+        const SceneStyle style = presentationStyle(*view);
+        const QRectF area(0, 0, 760, 410);
+        QStringList crossed;
+        for (double degrees = 60.0; degrees <= 150.0; degrees += 2.0) {
+            if (!m_window->document()->setVariable(0, degrees * units::degree).ok())
+                continue;
+            const Scene &scene = view->scene();
+            const ViewMapping mapping = LinkageView::screenMapping(scene, scene.poseExtent, area, style);
+            const drawing::DrawList list = drawing::layoutScene(scene, mapping, style, screenOptions(*view, mapping, area));
+            for (const drawing::Primitive &item : list.items) {
+                const auto *lines = std::get_if<drawing::Lines>(&item.shape);
+                if (!lines || lines->pen.colour != style.angle || lines->pen.dash != drawing::Dash::Solid)
+                    continue;
+                for (const QLineF &leader : lines->lines) {
+                    for (const drawing::Text &text : textsOf(list)) {
+                        const QPolygonF box = boxOf(text);
+                        const bool bar = text.text.size() == 2 && text.text.at(0).isUpper() && text.text.at(1).isUpper();
+                        for (int k = 2; bar && k <= 18; ++k) {
+                            if (box.containsPoint(leader.pointAt(k / 20.0), Qt::OddEvenFill)) {
+                                crossed << QStringLiteral("θ₁ = %1°: under '%2'").arg(degrees).arg(text.text);
+                                break;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        QVERIFY2(crossed.isEmpty(), qPrintable(crossed.join(QStringLiteral(", "))));
     }
 
     /// The scale bar is drawn over the linkage: a label keeps out of its box (the five-bar's
