@@ -67,6 +67,7 @@ ModeBar::ModeBar(QWidget *parent)
     m_current = new QLabel(this);
     m_current->setTextFormat(Qt::PlainText);
     m_layout->addWidget(m_current);
+    keepRowHeight();
     setVisible(false);
 }
 
@@ -191,10 +192,22 @@ void ModeBar::retranslate()
     }
 }
 
+void ModeBar::keepRowHeight()
+{
+    // The "Modes: …" line as tall as a row with its button: when Play passes a pose with no
+    // other mode (the 3-R̲RR), the button went and everything below moved up 8 px and back.
+    QPushButton probe(QStringLiteral("→"), this); // styled as the buttons are
+    probe.hide();
+    probe.ensurePolished();
+    m_current->setMinimumHeight(probe.sizeHint().height());
+}
+
 void ModeBar::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange)
         retranslate();
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::StyleChange)
+        keepRowHeight();
     QWidget::changeEvent(event);
 }
 

@@ -44,6 +44,7 @@ private:
     void retire(QWidget *widget);
     /// In a group of numbered modes, the mode the mechanism is in, pressed among the others.
     void showCurrentNumbers();
+    void keepRowHeight();
 
     QLabel *m_current = nullptr;
     QString m_currentText;

@@ -20,6 +20,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QLabel>
+#include <QLayout>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSet>
@@ -205,6 +206,25 @@ private slots:
         QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RRR);
         m_window->document()->undoStack()->undo();
         QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RPR);
+    }
+
+    /// Play passes poses with no other assembly mode (the 3-R̲RR): the row keeps its height
+    /// when its button goes, so the view and sliders above do not jump.
+    void modeRowKeepsItsHeight()
+    {
+        ModeBar bar;
+        QFont large = bar.font(); // presentation mode's text size
+        large.setPointSizeF(2.0 * large.pointSizeF());
+        bar.setFont(large);
+        bar.resize(900, 100);
+        bar.show();
+        bar.setModes(QStringLiteral("w₁ = left, w₂ = left, w₃ = left"), {QStringLiteral("assembly mode 1 (same inputs)")});
+        QCoreApplication::processEvents(); // a button added to a shown bar shows then
+        const int withButton = bar.layout()->heightForWidth(900);
+        QVERIFY(withButton > bar.fontMetrics().height());
+        bar.setModes(QStringLiteral("w₁ = left, w₂ = left, w₃ = left"), {});
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the retired button
+        QCOMPARE(bar.layout()->heightForWidth(900), withButton);
     }
 
     void removesAndAddsALeg()
