@@ -37,27 +37,8 @@ QString groupTitle(ParameterGroup group)
     return {};
 }
 
-/// A parameter's value as its field shows it: enough decimals to show the stored value,
-/// trailing zeros dropped, in the locale's form, a negative one with the typographic minus
-/// (parseNumber() reads it back, and a typed "-" too).
 /// The English label shown: a list of named values needs no list of their codes.
 const std::string &labelSource(const ParameterInfo &info) { return info.listLabel.empty() ? info.label : info.listLabel; }
-
-QString valueText(const ParameterInfo &info, const ParameterSet &values)
-{
-    if (const QString choice = choices::textOf(info, values.at(info.name)); !choice.isEmpty())
-        return choice; // "RP̲R", not "2"
-    const double display = info.unit.toDisplay(values.at(info.name));
-    QString text = QLocale().toString(display, 'f', info.decimals + 2);
-    const QChar point = QLocale().decimalPoint().at(0);
-    if (text.contains(point)) {
-        while (text.endsWith(QLatin1Char('0')))
-            text.chop(1);
-        if (text.endsWith(point))
-            text.chop(1);
-    }
-    return typographicMinus(text);
-}
 
 const ParameterInfo *parameterNamed(const MechanismPtr &mechanism, const QString &name)
 {
@@ -288,7 +269,7 @@ void DesignPanel::retranslate()
         // The value in the new locale's form, unless the field holds what the user typed.
         const bool typing = row.edit->hasFocus() && row.edit->isModified();
         if (row.edit->styleSheet().isEmpty() && !typing)
-            row.edit->setText(valueText(m_mechanism->parameterInfo()[std::size_t(row.parameter)], values));
+            row.edit->setText(choices::fieldText(m_mechanism->parameterInfo()[std::size_t(row.parameter)], values));
     }
     showWarnings();
     if (!m_message->isHidden())
@@ -319,7 +300,7 @@ void DesignPanel::showValues()
         QLineEdit *edit = m_fields.value(toQString(info.name));
         if (!edit)
             continue;
-        edit->setText(valueText(info, values));
+        choices::showInField(edit, choices::fieldText(info, values), values.at(info.name));
         setMark(edit, false);
     }
     m_message->hide();
@@ -388,11 +369,12 @@ void DesignPanel::commit(const QString &name, bool continuous)
         if (toQString(info.name) != name)
             continue;
         double value = 0;
-        // a mode may be typed or picked by its name ("X", "RP̲R")
-        if (const std::optional<double> number = choices::valueOf(info, edit->text()))
-            edit->setText(QLocale().toString(*number));
-        // the unit as shown ("мм") or its English symbol ("mm")
-        if (!parseNumber(edit->text(), QStringList {unitText(info.unit), toQString(info.unit.symbol)}, &value)) {
+        // a mode may be typed or picked by its name ("X", "RP̲R"); else the unit as shown
+        // ("мм") or its English symbol ("mm")
+        const std::optional<double> named = choices::valueOf(info, edit->text());
+        if (named)
+            value = *named;
+        else if (!parseNumber(edit->text(), QStringList {unitText(info.unit), toQString(info.unit.symbol)}, &value)) {
             const QString text = edit->text();
             markInvalid(name, notNumberMessage(name, coreLabel(info.label), text));
             m_notNumberField = name;
@@ -402,8 +384,11 @@ void DesignPanel::commit(const QString &name, bool continuous)
         // An unchanged field (focus left without an edit) is not an edit.
         const double current = info.unit.toDisplay(values.at(info.name));
         if (!continuous && std::abs(value - current) <= 1e-12 * std::max(1.0, std::abs(current))
-            && edit->styleSheet().isEmpty())
+            && edit->styleSheet().isEmpty()) {
+            if (!info.choices.empty()) // "free body", not the "2" typed or the "Free" of a file
+                choices::showInField(edit, choices::fieldText(info, values), values.at(info.name));
             return;
+        }
         emit parameterEdited(name, value, continuous);
         return;
     }

@@ -1,9 +1,11 @@
 #include "parameterchoices.h"
 
 #include "quantityformat.h"
+#include "symboltext.h"
 
 #include <QComboBox>
 #include <QLineEdit>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QStyle>
 
@@ -39,6 +41,22 @@ std::optional<double> valueOf(const ParameterInfo &info, const QString &typed)
     return std::nullopt;
 }
 
+QString fieldText(const ParameterInfo &info, const ParameterSet &values)
+{
+    if (const QString choice = textOf(info, values.at(info.name)); !choice.isEmpty())
+        return choice; // "RP̲R", not "2"
+    const double display = info.unit.toDisplay(values.at(info.name));
+    QString text = QLocale().toString(display, 'f', info.decimals + 2);
+    const QChar point = QLocale().decimalPoint().at(0);
+    if (text.contains(point)) {
+        while (text.endsWith(QLatin1Char('0')))
+            text.chop(1);
+        if (text.endsWith(point))
+            text.chop(1);
+    }
+    return typographicMinus(text);
+}
+
 namespace {
 const char *leastWidthProperty = "pkmLeastWidth";
 
@@ -68,6 +86,15 @@ QComboBox *makeBox(const ParameterInfo &info, int width, QWidget *parent)
         box->addItem(text(info, i), info.choices[i].second);
     fitWidth(box);
     return box;
+}
+
+void showInField(QLineEdit *field, const QString &text, double value)
+{
+    if (auto *box = qobject_cast<QComboBox *>(field->parentWidget())) {
+        const QSignalBlocker blocker(box);
+        box->setCurrentIndex(box->findData(value));
+    }
+    field->setText(text);
 }
 
 void retranslateBox(QComboBox *box, const ParameterInfo &info)

@@ -181,6 +181,16 @@ private slots:
         QVERIFY(box);
         QCOMPARE(field->text(), QStringLiteral("RP̲R"));
         QCOMPARE(box->count(), 4);
+        // the opened list marks the value, and leaving the field unchanged keeps its words: it
+        // showed the code "2" once the list had been opened and closed without a choice
+        QCOMPARE(box->currentIndex(), 2);
+        const int before = m_window->document()->undoStack()->index();
+        emit field->editingFinished();
+        QCOMPARE(field->text(), QStringLiteral("RP̲R"));
+        field->setText(QStringLiteral("2")); // typed as a number, unchanged
+        emit field->editingFinished();
+        QCOMPARE(field->text(), QStringLiteral("RP̲R"));
+        QCOMPARE(m_window->document()->undoStack()->index(), before);
         QCOMPARE(box->itemText(0), QStringLiteral("R̲RR"));
         // the list names the types, so its label does not spell out their codes as the
         // command line's does
