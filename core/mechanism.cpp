@@ -188,7 +188,7 @@ Result<Pose> Mechanism::solveWith(const Pose &current, int variable, double valu
     if (variable < inputs) {
         Coordinates q = current.inputs;
         q[variable] = value;
-        return solveDirect(q, &current);
+        return followDirect(q, current);
     }
     Coordinates x = current.outputs;
     x[variable - inputs] = value;

@@ -229,8 +229,12 @@ public:
     /// Inverse kinematics: inputs from outputs.
     virtual Result<Pose> solveInverse(const Coordinates &outputs, const Pose *near = nullptr) const = 0;
     /// Solve with one variable (index into variableInfo()) set and the others of its kind
-    /// taken from `current`.
+    /// taken from `current`, the pose moving from `current` (followDirect()).
     Result<Pose> solveWith(const Pose &current, int variable, double value) const;
+    /// Direct kinematics as the inputs move from `current`'s to `inputs`: where several
+    /// assembly modes lie close, the one `current` is in, or a failure where it ends on the way
+    /// (solveDirect() takes `near` as a hint of the pose wanted, not as a path's start).
+    virtual Result<Pose> followDirect(const Coordinates &inputs, const Pose &current) const { return solveDirect(inputs, &current); }
     /// Index into variableInfo() of the named variable, or -1.
     int variableIndex(std::string_view name) const;
     /// The design parameter called `name` (parameterInfo()), or nullptr.

@@ -4180,6 +4180,10 @@ Please verify the correct file name was given.</source>
         <source>leg 3: type (the actuated joint underlined)</source>
         <translation>нога 3: тип (приводной шарнир подчёркнут)</translation>
     </message>
+    <message>
+        <source>At these inputs the platform would have left its assembly mode: it ends on the way, where it meets another at a direct singularity. Switch the assembly mode to go on.</source>
+        <translation>При этих входах платформа покинула бы свой режим сборки: он заканчивается по пути, где встречается с другим в особом положении прямой кинематики. Чтобы продолжить, переключите режим сборки.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

@@ -4180,6 +4180,10 @@ Please verify the correct file name was given.</source>
         <source>leg 3: type (the actuated joint underlined)</source>
         <translation>нога 3: тип (погонски зглоб подвучен)</translation>
     </message>
+    <message>
+        <source>At these inputs the platform would have left its assembly mode: it ends on the way, where it meets another at a direct singularity. Switch the assembly mode to go on.</source>
+        <translation>При овим улазима платформа би напустила свој начин склапања: он се завршава на путу, где се среће са другим у сингуларитету директне кинематике. Да бисте наставили, промените начин склапања.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

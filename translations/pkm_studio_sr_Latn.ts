@@ -4180,6 +4180,10 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>leg 3: type (the actuated joint underlined)</source>
         <translation>noga 3: tip (pogonski zglob podvučen)</translation>
     </message>
+    <message>
+        <source>At these inputs the platform would have left its assembly mode: it ends on the way, where it meets another at a direct singularity. Switch the assembly mode to go on.</source>
+        <translation>Pri ovim ulazima platforma bi napustila svoj način sklapanja: on se završava na putu, gde se sreće sa drugim u singularitetu direktne kinematike. Da biste nastavili, promenite način sklapanja.</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>

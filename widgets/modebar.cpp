@@ -67,7 +67,6 @@ ModeBar::ModeBar(QWidget *parent)
     m_current = new QLabel(this);
     m_current->setTextFormat(Qt::PlainText);
     m_layout->addWidget(m_current);
-    keepRowHeight();
     setVisible(false);
 }
 
@@ -83,6 +82,7 @@ void ModeBar::setModes(const QString &current, const QStringList &labels)
     setVisible(!current.isEmpty() || !labels.isEmpty());
     m_currentText = current;
     if (labels != m_labels) {
+        keepRowHeight(labels.isEmpty());
         m_labels = labels;
         emit hovered(-1); // the buttons go, the one under the pointer too
         // Later, not now: this runs inside the clicked() of one of these buttons (a switch
@@ -192,22 +192,25 @@ void ModeBar::retranslate()
     }
 }
 
-void ModeBar::keepRowHeight()
+void ModeBar::keepRowHeight(bool buttonsGo)
 {
-    // The "Modes: …" line as tall as a row with its button: when Play passes a pose with no
-    // other mode (the 3-R̲RR), the button went and everything below moved up 8 px and back.
-    QPushButton probe(QStringLiteral("→"), this); // styled as the buttons are
-    probe.hide();
-    probe.ensurePolished();
-    m_current->setMinimumHeight(probe.sizeHint().height());
+    // When Play passes a pose with no other mode (the 3-R̲RR), the button beside "Modes: …"
+    // went, and everything below moved up 8 px and back: the line alone keeps the height of
+    // the row it shared. With buttons it needs none (on a row of its own above them, the
+    // 3-P̲RR's sliders at 1280×720 have no pixel to spare).
+    if (!buttonsGo) {
+        m_current->setMinimumHeight(0);
+        return;
+    }
+    QLayoutItem *next = m_layout->count() > 1 ? m_layout->itemAt(1) : nullptr;
+    if (next && next->geometry().top() < m_current->geometry().bottom())
+        m_current->setMinimumHeight(std::max(m_current->height(), next->geometry().height()));
 }
 
 void ModeBar::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange)
         retranslate();
-    if (event->type() == QEvent::FontChange || event->type() == QEvent::StyleChange)
-        keepRowHeight();
     QWidget::changeEvent(event);
 }
 

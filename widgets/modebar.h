@@ -44,7 +44,8 @@ private:
     void retire(QWidget *widget);
     /// In a group of numbered modes, the mode the mechanism is in, pressed among the others.
     void showCurrentNumbers();
-    void keepRowHeight();
+    /// Before the buttons change: whether they all go.
+    void keepRowHeight(bool buttonsGo);
 
     QLabel *m_current = nullptr;
     QString m_currentText;

@@ -266,6 +266,36 @@ private slots:
         w.setPlaying(false);
     }
 
+    /// The 3-R̲RR's platform stays in its assembly mode while Play moves q₁ forth and back in
+    /// large steps (a slow repaint): it turned back near a direct singularity and came down in
+    /// another mode (φ −55° where it had gone up through −8°), and where that one ended it
+    /// snapped back (φ turned 116° in a frame). An assembly mode keeps the sign of det J_x.
+    void theRRRPlatformStaysInItsAssemblyMode()
+    {
+        open(QStringLiteral("pp-3rrr"));
+        MainWindow &w = *m_window;
+        w.playBar()->setVariable(0);
+        w.playBar()->setMode(PlayMode::ForthAndBack);
+        QSignalSpy turned(w.player(), &Player::turned);
+        const Mechanism &mechanism = *w.document()->mechanism();
+        const ReportEntry *detJx = mechanism.reportLayout().find("det_Jx");
+        QVERIFY(detJx);
+        std::vector<double> values(mechanism.reportLayout().size);
+        const auto sign = [&] {
+            mechanism.evaluate(w.document()->pose(), values);
+            return values[std::size_t(detJx->offset)] > 0.0;
+        };
+        const bool first = sign();
+        w.setPlaying(true);
+        for (int i = 0; i < 300 && w.player()->isPlaying(); ++i) {
+            w.player()->advance(0.1); // 7.2° of q₁ a step
+            QVERIFY2(sign() == first, qPrintable(QStringLiteral("q₁ = %1°, φ = %2°")
+                .arg(variable(w, 0) / deg).arg(variable(w, mechanism.variableIndex("phi")) / deg)));
+        }
+        QVERIFY(turned.count() >= 2);
+        w.setPlaying(false);
+    }
+
     void aNewDesignStopsPlay()
     {
         open(QStringLiteral("pjoint-prototype"));

@@ -177,20 +177,28 @@ double residual(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle
     return worst;
 }
 
+Eigen::Matrix3d circleJacobian(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle, 3> &circles,
+                               const Eigen::Vector3d &X, Eigen::Vector3d *F)
+{
+    Eigen::Matrix3d G;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Eigen::Vector2d P = platformPoint(legs[i], X), e = P - circles[i].centre;
+        const Eigen::Vector2d arm = P - X.head<2>();
+        if (F)
+            (*F)[Eigen::Index(i)] = 0.5 * (e.squaredNorm() - circles[i].radius * circles[i].radius);
+        G.row(Eigen::Index(i)) << e.x(), e.y(), cross(arm, e);
+    }
+    return G;
+}
+
 bool polish(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle, 3> &circles, Eigen::Vector3d &X)
 {
     double scale = 1.0;
     for (std::size_t i = 0; i < 3; ++i)
         scale = std::max({scale, circles[i].radius, legs[i].platform.norm()});
     for (int iteration = 0; iteration < 60; ++iteration) {
-        Eigen::Matrix3d G;
         Eigen::Vector3d F;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const Eigen::Vector2d P = platformPoint(legs[i], X), e = P - circles[i].centre;
-            const Eigen::Vector2d arm = P - X.head<2>();
-            F[Eigen::Index(i)] = 0.5 * (e.squaredNorm() - circles[i].radius * circles[i].radius);
-            G.row(Eigen::Index(i)) << e.x(), e.y(), cross(arm, e);
-        }
+        const Eigen::Matrix3d G = circleJacobian(legs, circles, X, &F);
         const Eigen::Vector3d step = G.fullPivLu().solve(F);
         if (!step.allFinite())
             return false;

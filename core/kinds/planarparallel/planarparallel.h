@@ -46,6 +46,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -146,8 +147,23 @@ std::vector<Eigen::Vector3d> threeCircleSolutions(const std::array<PlanarLeg, 3>
 /// The largest residual | |P_i − C_i| − ρ_i | of a pose, mm.
 double residual(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle, 3> &circles, int count,
                 const Eigen::Vector3d &X);
+/// The Jacobian of the circle equations ½(|P_i − C_i|² − ρ_i²) in X = (x, y, φ) (the rows of
+/// J_x, each scaled by its leg's length) and, if `F` is given, their values.
+Eigen::Matrix3d circleJacobian(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle, 3> &circles,
+                               const Eigen::Vector3d &X, Eigen::Vector3d *F = nullptr);
 /// Newton's method on the three circle equations from X; false when it does not converge.
 bool polish(const std::array<PlanarLeg, 3> &legs, const std::array<LegCircle, 3> &circles, Eigen::Vector3d &X);
+/// How a pose followed from one set of inputs to another ends.
+enum class Followed {
+    Along,   ///< on the same branch throughout
+    Lost,    ///< the branch ends between (two assembly modes meet and vanish)
+    Crossed, ///< a step reached another branch: a direct singularity lies between
+};
+/// Continuation: X, a solution at circlesAt(0), followed to circlesAt(1) in `steps` equal steps
+/// of the inputs by Newton's method from the previous solution, the sign of the circle
+/// equations' Jacobian (of det J_x's) kept.
+Followed follow(const std::array<PlanarLeg, 3> &legs, const std::function<std::array<LegCircle, 3>(double)> &circlesAt,
+                int steps, Eigen::Vector3d &X);
 } // namespace planar
 
 class PlanarParallel final : public TabledMechanism<PlanarParallel, PlanarParallelDesign>, public PlanarWorkspace
@@ -182,6 +198,7 @@ public:
     Interval variableRange(int variable) const override;
     Pose homePose() const override { return m_home; }
     Result<Pose> solveDirect(const Coordinates &inputs, const Pose *near = nullptr) const override;
+    Result<Pose> followDirect(const Coordinates &inputs, const Pose &current) const override;
     Result<Pose> solveInverse(const Coordinates &outputs, const Pose *near = nullptr) const override;
     /// Every assembly mode at these inputs in the design's working modes (3 DOF: in order of φ;
     /// 2 DOF: the design's assembly mode first), without range checks.
@@ -264,6 +281,10 @@ private:
     /// Inverse kinematics of every leg and the 2-DOF assembly check; the culprit leg on failure.
     planar::Reach inverseCheck(const Eigen::Vector3d &X, const Coordinates *reference, Coordinates &q, int &culprit) const;
     std::array<planar::LegCircle, 3> circles(const Coordinates &inputs) const;
+    /// The platform pose X of `near` followed to `inputs` (planar::follow()); none where
+    /// `near` is not a pose of this design at its inputs. `size`: the workspace's, mm.
+    std::optional<planar::Followed> followedFrom(const Pose &near, const Coordinates &inputs, double size,
+                                                 Eigen::Vector3d &X) const;
     /// One map row of `quantity` (det J, κ, or with `limits` what the actuators deliver): a
     /// 2-DOF platform's in blocks of cells, branch-free and vectorised, the rest cell by cell
     /// (ppmaprow.cpp).
