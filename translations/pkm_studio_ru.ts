@@ -4184,6 +4184,18 @@ Please verify the correct file name was given.</source>
         <source>At these inputs the platform would have left its assembly mode: it ends on the way, where it meets another at a direct singularity. Switch the assembly mode to go on.</source>
         <translation>При этих входах платформа покинула бы свой режим сборки: он заканчивается по пути, где встречается с другим в особом положении прямой кинематики. Чтобы продолжить, переключите режим сборки.</translation>
     </message>
+    <message>
+        <source>leg 1: working mode, the elbow left or right of A₁→P₁ (P̲RR: left, the root q = B + √…)</source>
+        <translation>нога 1: рабочий режим, локоть слева или справа от A₁→P₁ (P̲RR: слева — корень q = B + √…)</translation>
+    </message>
+    <message>
+        <source>leg 2: working mode, the elbow left or right of A₂→P₂ (P̲RR: left, the root q = B + √…)</source>
+        <translation>нога 2: рабочий режим, локоть слева или справа от A₂→P₂ (P̲RR: слева — корень q = B + √…)</translation>
+    </message>
+    <message>
+        <source>leg 3: working mode, the elbow left or right of A₃→P₃ (P̲RR: left, the root q = B + √…)</source>
+        <translation>нога 3: рабочий режим, локоть слева или справа от A₃→P₃ (P̲RR: слева — корень q = B + √…)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6172,10 +6184,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>free body</source>
         <translation>свободное тело</translation>
-    </message>
-    <message>
-        <source>mode %1</source>
-        <translation>режим %1</translation>
     </message>
 </context>
 <context>

@@ -4184,6 +4184,18 @@ Please verify the correct file name was given.</source>
         <source>At these inputs the platform would have left its assembly mode: it ends on the way, where it meets another at a direct singularity. Switch the assembly mode to go on.</source>
         <translation>При овим улазима платформа би напустила свој начин склапања: он се завршава на путу, где се среће са другим у сингуларитету директне кинематике. Да бисте наставили, промените начин склапања.</translation>
     </message>
+    <message>
+        <source>leg 1: working mode, the elbow left or right of A₁→P₁ (P̲RR: left, the root q = B + √…)</source>
+        <translation>нога 1: радни режим, лакат лево или десно од A₁→P₁ (P̲RR: лево — корен q = B + √…)</translation>
+    </message>
+    <message>
+        <source>leg 2: working mode, the elbow left or right of A₂→P₂ (P̲RR: left, the root q = B + √…)</source>
+        <translation>нога 2: радни режим, лакат лево или десно од A₂→P₂ (P̲RR: лево — корен q = B + √…)</translation>
+    </message>
+    <message>
+        <source>leg 3: working mode, the elbow left or right of A₃→P₃ (P̲RR: left, the root q = B + √…)</source>
+        <translation>нога 3: радни режим, лакат лево или десно од A₃→P₃ (P̲RR: лево — корен q = B + √…)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6172,10 +6184,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>free body</source>
         <translation>слободно тело</translation>
-    </message>
-    <message>
-        <source>mode %1</source>
-        <translation>режим %1</translation>
     </message>
 </context>
 <context>

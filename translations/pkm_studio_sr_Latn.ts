@@ -4184,6 +4184,18 @@ Proverite da li je ime datoteke tačno.</translation>
         <source>At these inputs the platform would have left its assembly mode: it ends on the way, where it meets another at a direct singularity. Switch the assembly mode to go on.</source>
         <translation>Pri ovim ulazima platforma bi napustila svoj način sklapanja: on se završava na putu, gde se sreće sa drugim u singularitetu direktne kinematike. Da biste nastavili, promenite način sklapanja.</translation>
     </message>
+    <message>
+        <source>leg 1: working mode, the elbow left or right of A₁→P₁ (P̲RR: left, the root q = B + √…)</source>
+        <translation>noga 1: radni režim, lakat levo ili desno od A₁→P₁ (P̲RR: levo — koren q = B + √…)</translation>
+    </message>
+    <message>
+        <source>leg 2: working mode, the elbow left or right of A₂→P₂ (P̲RR: left, the root q = B + √…)</source>
+        <translation>noga 2: radni režim, lakat levo ili desno od A₂→P₂ (P̲RR: levo — koren q = B + √…)</translation>
+    </message>
+    <message>
+        <source>leg 3: working mode, the elbow left or right of A₃→P₃ (P̲RR: left, the root q = B + √…)</source>
+        <translation>noga 3: radni režim, lakat levo ili desno od A₃→P₃ (P̲RR: levo — koren q = B + √…)</translation>
+    </message>
 </context>
 <context>
     <name>pkm::Animation</name>
@@ -6172,10 +6184,6 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>free body</source>
         <translation>slobodno telo</translation>
-    </message>
-    <message>
-        <source>mode %1</source>
-        <translation>režim %1</translation>
     </message>
 </context>
 <context>

@@ -166,6 +166,9 @@ private slots:
         QVERIFY(fieldShown("r1") && fieldShown("theta1_min") && fieldShown("working1"));
         QVERIFY(!fieldShown("q1_min"));
         QVERIFY(panel()->workingBox(0)->isVisibleTo(panel()));
+        // in the words of the Design panel and the modes line ("w₁ = left"), not "mode +1"
+        QCOMPARE(panel()->workingBox(0)->itemText(0), QStringLiteral("left"));
+        QCOMPARE(panel()->workingBox(0)->itemText(1), QStringLiteral("right"));
         m_window->document()->undoStack()->undo();
         QCOMPARE(legsOf(*m_window).design().legs[0].type, LegType::RPR);
         QCOMPARE(panel()->typeBox(0)->currentData().toInt(), int(LegType::RPR));

@@ -2,6 +2,7 @@
 
 #include "document/document.h"
 #include "kinds/workspacepanel.h"
+#include "quantityformat.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -200,8 +201,9 @@ void PlanarParallelPanel::retranslate()
             add(m_types[k], QStringLiteral("П̲RR"), tr("П̲RR: active П-joint and link"), int(LegType::PiRR));
             m_types[k]->setToolTip(tr("The leg's joints from the base, the actuated one underlined."));
             m_working[k]->clear();
-            add(m_working[k], tr("mode %1").arg(QStringLiteral("+1")), tr("working mode +1"), 1);
-            add(m_working[k], tr("mode %1").arg(QStringLiteral("−1")), tr("working mode −1"), -1);
+            // the words of the Design panel and the modes line ("w₁ = left"), not "mode +1"
+            add(m_working[k], coreLabel("left"), tr("working mode +1"), 1);
+            add(m_working[k], coreLabel("right"), tr("working mode −1"), -1);
             m_working[k]->setToolTip(tr("+1: the elbow left of the line from A to the platform point (P̲RR: the slider beyond the foot of the perpendicular)."));
         }
     }
