@@ -3,6 +3,7 @@
 #include "quantityformat.h"
 
 #include <QEvent>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QTextBlock>
 #include <QTextCursor>
@@ -19,6 +20,14 @@ QString number(const EquationNumber &number)
     return formatQuantity(number.value, number.unit, number.decimals);
 }
 
+/// The text with a word joiner after each slash between terms: a unit ("рад/с"), a quotient
+/// ("(a + b)/2"), a derivative ("dθ/dt", spelled out of θ̇ by symbolHtml()) stay whole.
+QString slashesKept(const QString &text)
+{
+    static const QRegularExpression slash(QStringLiteral("(?<=[\\w)])/(?=[\\w(])"), QRegularExpression::UseUnicodePropertiesOption);
+    return QString(text).replace(slash, QStringLiteral("/\u2060"));
+}
+
 /// A formula as HTML that a narrow dock wraps only after an operator, never between "sin" and
 /// its angle or a number and its unit.
 QString formulaText(const QString &text)
@@ -28,7 +37,12 @@ QString formulaText(const QString &text)
     kept.replace(QLatin1Char(' '), keep);
     for (const QString &op : {QStringLiteral("="), QStringLiteral("+"), QStringLiteral("−"), QStringLiteral("/")})
         kept.replace(keep + op + keep, keep + op + QLatin1Char(' '));
-    return kept;
+    // A product of numbers may break after its dot: "17879,379·17879,379·17879,379" had no
+    // place to break and was cut inside a number ("17879,3" / "79"). A unit's slash may not:
+    // "рад/с" broke after "рад/".
+    static const QRegularExpression product(QStringLiteral("(?<=[\\d)])·(?=[\\w(−])")); // not N·m
+    kept.replace(product, QStringLiteral("·\u200B"));
+    return slashesKept(kept);
 }
 
 QString formulaHtml(const QString &text)
@@ -134,7 +148,7 @@ void EquationsPanel::refresh()
         const QString &result = m_results[qsizetype(i)];
         html += QStringLiteral("<p style=\"margin-top:10px; margin-bottom:2px\"><b>%1</b> "
                                "<span style=\"color:%2; font-size:small\">— %3</span></p>")
-                    .arg(symbolHtml(title), QLatin1String(quietColour),
+                    .arg(slashesKept(symbolHtml(unbreakable(title))), QLatin1String(quietColour),
                          toQString(equation.source).toHtmlEscaped());
         html += QStringLiteral("<p style=\"margin-left:12px; margin-top:0px; margin-bottom:0px; font-size:large\">%1</p>")
                     .arg(symbolHtml(formulaText(toQString(equation.symbolic))));
@@ -146,7 +160,7 @@ void EquationsPanel::refresh()
         blocks += 3;
         if (!equation.note.empty()) {
             html += QStringLiteral("<p style=\"margin-left:12px; margin-top:0px; color:%1\">%2</p>")
-                        .arg(QLatin1String(noteColour), symbolHtml(toQString(equation.note)));
+                        .arg(QLatin1String(noteColour), slashesKept(symbolHtml(unbreakable(toQString(equation.note)))));
             ++blocks;
         }
     }

@@ -202,7 +202,7 @@ QString symbolHtmlKnown(const QString &text, const QStringList &symbols)
 
 QString unbreakable(QString text)
 {
-    static const QRegularExpression slash(QStringLiteral("(?<=\\w)/(?=\\w)"));
+    static const QRegularExpression slash(QStringLiteral("(?<=\\w)/(?=\\w)"), QRegularExpression::UseUnicodePropertiesOption); // "рад/с" too
     // a hyphen after a letter or two that name a form: "П-шарнира" broke as "П-" and "шарнира"
     static const QRegularExpression shortPrefix(QStringLiteral("(?:(?<=\\b\\w)|(?<=\\b\\w\\w))-(?=\\w)"),
                                                 QRegularExpression::UseUnicodePropertiesOption); // Cyrillic letters are \w too

@@ -9,7 +9,9 @@
 
 #include <QRegularExpression>
 #include <QTest>
+#include <QAbstractTextDocumentLayout>
 #include <QTextBlock>
+#include <QTextLayout>
 #include <QTextDocument>
 
 #include <cmath>
@@ -95,7 +97,8 @@ private slots:
         for (QTextBlock block = stepped.document()->begin(); block.isValid(); block = block.next()) {
             for (auto it = block.begin(); !it.atEnd(); ++it) {
                 if (it.fragment().charFormat().fontWeight() == QFont::Bold)
-                    bold << it.fragment().text().replace(QChar(0x00A0), QLatin1Char(' '));
+                    // the spaces that do not break as spaces; the joiners that keep "rad/s" whole unseen
+                    bold << it.fragment().text().replace(QChar(0x00A0), QLatin1Char(' ')).remove(QChar(0x2060)).remove(QChar(0x200B));
             }
         }
         for (int i = 0; i < int(stepped.shownEquations().size()); ++i)
@@ -139,6 +142,35 @@ private slots:
         QCOMPARE(first, QString::fromStdString(equations::roundingNote()));
         QVERIFY(first.contains(QStringLiteral("rounded")));
         QVERIFY(panel.toPlainText().indexOf(first) == 0);
+    }
+
+    /// A narrow panel wraps a line between terms: not inside a number ("17879,3" / "79" in a
+    /// product of numbers with no place to break) nor after a unit's slash ("рад/" / "с").
+    void wrapsBetweenTerms_data() { test::addKindRows(); }
+    void wrapsBetweenTerms()
+    {
+        QFETCH(QString, kind);
+        const MechanismPtr m = test::makeKind(kind.toStdString());
+        EquationsPanel panel;
+        panel.resize(190, 800);
+        panel.show();
+        panel.setMechanism(m);
+        panel.setPose(m->homePose());
+        QTextDocument *document = panel.document();
+        QStringList bad;
+        for (QTextBlock block = document->begin(); block.isValid(); block = block.next()) {
+            document->documentLayout()->blockBoundingRect(block); // laid out
+            const QString text = block.text();
+            for (int i = 1; i < block.layout()->lineCount(); ++i) {
+                const int at = block.layout()->lineAt(i).textStart();
+                if (at <= 0 || at >= text.size())
+                    continue;
+                const QChar before = text.at(at - 1), after = text.at(at);
+                if ((before.isDigit() || before == u'/') && after.isLetterOrNumber())
+                    bad << text.left(at) + QStringLiteral(" | ") + text.mid(at);
+            }
+        }
+        QVERIFY2(bad.isEmpty(), qPrintable(bad.join(QLatin1Char('\n'))));
     }
 
     void singularPoseSaysSo()
