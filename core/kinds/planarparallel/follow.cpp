@@ -38,24 +38,26 @@ Followed follow(const std::array<PlanarLeg, 3> &legs, const std::function<std::a
 
 Result<Pose> PlanarParallel::followDirect(const Coordinates &inputs, const Pose &current) const
 {
-    // the inputs' ranges and the legs' reach first, with their own messages
-    Result<Pose> nearest = solveDirect(inputs, &current);
-    if (!nearest || m_design.legCount() != 3 || current.outputs.size() != 3)
-        return nearest;
+    if (m_design.legCount() != 3 || current.outputs.size() != 3 || !inputs.allFinite())
+        return solveDirect(inputs, &current);
     const double L = std::max(1.0, m_bounds.sizes().norm());
     Eigen::Vector3d X = platformPose(current.outputs);
     const std::optional<planar::Followed> followed = followedFrom(current, inputs, L, X);
-    if (followed && followed != planar::Followed::Along)
+    if (!followed) // not a pose of this design: its outputs are a hint
+        return solveDirect(inputs, &current);
+    if (followed != planar::Followed::Along) {
+        // an input out of its range or a leg out of reach says so in its own words
+        if (Result<Pose> nearest = solveDirect(inputs, &current); !nearest)
+            return nearest;
         return Failure{FailureKind::Unreachable, "q1",
                        text::translate("core", "At these inputs the platform would have left its assembly mode: it "
                                                "ends on the way, where it meets another at a direct singularity. "
                                                "Switch the assembly mode to go on.")};
-    if (!followed) // not a pose of this design: its outputs are a hint
-        return nearest;
+    }
     Pose along = current; // the solution nearest the pose followed, on the same turn of φ
     along.outputs = Coordinates(3);
     along.outputs << X.x(), X.y(), current.outputs[2] + std::remainder(X.z() - current.outputs[2], 2 * pi);
-    return solveDirect(inputs, &along);
+    return solveDirect(inputs, &along); // checks the inputs' ranges and the legs' reach too
 }
 
 std::optional<planar::Followed> PlanarParallel::followedFrom(const Pose &near, const Coordinates &inputs, double size,
