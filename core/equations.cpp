@@ -36,10 +36,16 @@ std::string fillEquation(const Equation &equation, const std::function<std::stri
         if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] >= '1' && pattern[i + 1] <= '9') {
             const auto index = static_cast<std::size_t>(pattern[i + 1] - '1');
             if (index < equation.numbers.size()) {
-                // a negative number in brackets: "x − (−5.00)", not "x − −5.00"
+                // a negative number in brackets: "x − (−5.00)", not "x − −5.00", and "(−5.00)²";
+                // where it opens a bracket or a list and nothing raises it to a power, bare:
+                // "det[(−14.92, 1.34); …]", "−288816494.0 / 5715540237669.9"
                 const std::string number = format(inFormula(equation.numbers[index]));
                 const bool negative = number.starts_with("-") || number.starts_with("−");
-                text += negative ? "(" + number + ")" : number;
+                const std::string_view before = std::string_view(text), after = std::string_view(pattern).substr(i + 2);
+                const bool opens = before.empty() || before.ends_with("(") || before.ends_with("[") || before.ends_with(", ")
+                                   || before.ends_with("; ");
+                const bool raised = after.starts_with("²") || after.starts_with("³") || after.starts_with("^");
+                text += negative && !(opens && !raised) ? "(" + number + ")" : number;
                 ++i;
                 continue;
             }

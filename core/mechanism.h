@@ -64,6 +64,9 @@ struct ParameterInfo {
     /// spells out their numeric codes for the command line; empty: `label` (English source,
     /// QT_TRANSLATE_NOOP("core", …)).
     std::string listLabel = {};
+    /// The command line's JSON gives the mode as its number even where it has choices: MOMA's
+    /// β_i and σ were ±1 there before they had words, and scripts read them so.
+    bool numberInJson = false;
 };
 
 struct VariableInfo {

@@ -3709,10 +3709,6 @@ Please verify the correct file name was given.</source>
         <translation>J в мм/рад, умноженный на F в Н, даёт Н·мм; множитель 10⁻³ переводит в Н·м.</translation>
     </message>
     <message>
-        <source>Output speed at ḋ_max</source>
-        <translation>Выходная скорость при ḋ_max</translation>
-    </message>
-    <message>
         <source>Output resolution per motor step</source>
         <translation>Выходное разрешение на шаг двигателя</translation>
     </message>
@@ -3723,10 +3719,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
         <translation>В таблице 1 нет КПД винтовой передачи η; в примерах принято 0,4.</translation>
-    </message>
-    <message>
-        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
-        <translation>Производная J, для ускорения d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
     </message>
     <message>
         <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
@@ -4195,6 +4187,58 @@ Please verify the correct file name was given.</source>
     <message>
         <source>leg 3: working mode, the elbow left or right of A₃→P₃ (P̲RR: left, the root q = B + √…)</source>
         <translation>нога 3: рабочий режим, локоть слева или справа от A₃→P₃ (P̲RR: слева — корень q = B + √…)</translation>
+    </message>
+    <message>
+        <source>Jacobian, its own determinant (one input, one output)</source>
+        <translation>Якобиан, он же свой определитель (один вход, один выход)</translation>
+    </message>
+    <message>
+        <source>J maps the rocker&apos;s rate onto the crank&apos;s, α̇ = J·δ̇, so J = 1/i₃₁.</source>
+        <translation>J переводит скорость коромысла в скорость кривошипа, α̇ = J·δ̇, поэтому J = 1/i₃₁.</translation>
+    </message>
+    <message>
+        <source>behind</source>
+        <translation>позади</translation>
+    </message>
+    <message>
+        <source>ahead</source>
+        <translation>впереди</translation>
+    </message>
+    <message>
+        <source>working mode of leg 1: the platform behind slider Z₁ along guide 1 or ahead of it</source>
+        <translation>рабочий режим ноги 1: платформа позади ползуна Z₁ вдоль направляющей 1 или впереди него</translation>
+    </message>
+    <message>
+        <source>working mode of leg 2: the platform behind slider Z₂ along guide 2 or ahead of it</source>
+        <translation>рабочий режим ноги 2: платформа позади ползуна Z₂ вдоль направляющей 2 или впереди него</translation>
+    </message>
+    <message>
+        <source>assembly mode: the platform left or right of Z₁→Z₂</source>
+        <translation>вариант сборки: платформа слева или справа от Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>u₁ = x − s/2 − x_AB and u₂ = x + s/2 − x_CD are the rods&apos; runs along the guides, w and −w in the O form, −w and w in the X form.</source>
+        <translation>u₁ = x − s/2 − x_AB и u₂ = x + s/2 − x_CD — выносы тяг вдоль направляющих: w и −w в форме O, −w и w в форме X.</translation>
+    </message>
+    <message>
+        <source>Jacobian J = ∂d/∂θ</source>
+        <translation>Якобиан J = ∂d/∂θ</translation>
+    </message>
+    <message>
+        <source>Output speed at the diagonal&apos;s top speed</source>
+        <translation>Скорость выхода при наибольшей скорости диагонали</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the diagonal&apos;s acceleration</source>
+        <translation>Производная J, для ускорения диагонали</translation>
+    </message>
+    <message>
+        <source>J_i is the П-joint&apos;s Jacobian ∂d/∂θ of a П̲RR leg and 1 for the other leg types; C_i is A_i for an RP̲R leg.</source>
+        <translation>J_i — якобиан П-шарнира ∂d/∂θ для ноги П̲RR и 1 для ног других типов; C_i — это A_i для ноги RP̲R.</translation>
+    </message>
+    <message>
+        <source>C_i is the centre of leg i&apos;s circle: the elbow, the slider joint, or A_i for an RP̲R leg.</source>
+        <translation>C_i — центр окружности ноги i: локоть, шарнир ползуна или A_i для ноги RP̲R.</translation>
     </message>
 </context>
 <context>

@@ -2142,11 +2142,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Planar chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
-        <translation>Равански ланац (%1, %2 и %3): ранг његове Јакобијан матрице веза даје покретљивост %4</translation>
+        <translation>Равански ланац (%1, %2 и %3): ранг његове Јакобијеве матрице веза даје покретљивост %4</translation>
     </message>
     <message>
         <source>Spatial chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
-        <translation>Просторни ланац (%1, %2 и %3): ранг његове Јакобијан матрице веза даје покретљивост %4</translation>
+        <translation>Просторни ланац (%1, %2 и %3): ранг његове Јакобијеве матрице веза даје покретљивост %4</translation>
     </message>
     <message numerus="yes">
         <source>Chebyshev&apos;s W = %1 is wrong: %n planar loop equation(s) is/are redundant (an overconstrained planar chain)</source>
@@ -2958,7 +2958,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>inverse Jacobian θ̇ = J⁻¹·ḋ</source>
-        <translation>инверзни Јакобијан θ̇ = J⁻¹·ḋ</translation>
+        <translation>инверзни јакобијан θ̇ = J⁻¹·ḋ</translation>
     </message>
     <message>
         <source>J_d = 2d</source>
@@ -3709,10 +3709,6 @@ Please verify the correct file name was given.</source>
         <translation>J у mm/rad пута F у N даје N·mm; чинилац 10⁻³ претвара то у N·m.</translation>
     </message>
     <message>
-        <source>Output speed at ḋ_max</source>
-        <translation>Излазна угаона брзина при ḋ_max</translation>
-    </message>
-    <message>
         <source>Output resolution per motor step</source>
         <translation>Излазна резолуција по кораку мотора</translation>
     </message>
@@ -3723,10 +3719,6 @@ Please verify the correct file name was given.</source>
     <message>
         <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
         <translation>Табела 1 не даје степен искоришћења вретена η; примери узимају 0,4.</translation>
-    </message>
-    <message>
-        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
-        <translation>Извод од J, за убрзање d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
     </message>
     <message>
         <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
@@ -3770,7 +3762,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
-        <translation>Нога %1 (%2): Јакобијан П-зглоба</translation>
+        <translation>Нога %1 (%2): јакобијан П-зглоба</translation>
     </message>
     <message>
         <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
@@ -3778,7 +3770,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
-        <translation>Нога %1 (%2): Јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
+        <translation>Нога %1 (%2): јакобијан улаза (0: сингуларитет инверзне кинематике)</translation>
     </message>
     <message>
         <source>assembly mode 1 (same inputs)</source>
@@ -4195,6 +4187,58 @@ Please verify the correct file name was given.</source>
     <message>
         <source>leg 3: working mode, the elbow left or right of A₃→P₃ (P̲RR: left, the root q = B + √…)</source>
         <translation>нога 3: радни режим, лакат лево или десно од A₃→P₃ (P̲RR: лево — корен q = B + √…)</translation>
+    </message>
+    <message>
+        <source>Jacobian, its own determinant (one input, one output)</source>
+        <translation>Јакобијан, уједно своја детерминанта (један улаз, један излаз)</translation>
+    </message>
+    <message>
+        <source>J maps the rocker&apos;s rate onto the crank&apos;s, α̇ = J·δ̇, so J = 1/i₃₁.</source>
+        <translation>J пресликава брзину клацкалице у брзину полуге, α̇ = J·δ̇, па је J = 1/i₃₁.</translation>
+    </message>
+    <message>
+        <source>behind</source>
+        <translation>иза</translation>
+    </message>
+    <message>
+        <source>ahead</source>
+        <translation>испред</translation>
+    </message>
+    <message>
+        <source>working mode of leg 1: the platform behind slider Z₁ along guide 1 or ahead of it</source>
+        <translation>радни режим ноге 1: платформа иза клизача Z₁ дуж вођице 1 или испред њега</translation>
+    </message>
+    <message>
+        <source>working mode of leg 2: the platform behind slider Z₂ along guide 2 or ahead of it</source>
+        <translation>радни режим ноге 2: платформа иза клизача Z₂ дуж вођице 2 или испред њега</translation>
+    </message>
+    <message>
+        <source>assembly mode: the platform left or right of Z₁→Z₂</source>
+        <translation>начин склапања: платформа лево или десно од Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>u₁ = x − s/2 − x_AB and u₂ = x + s/2 − x_CD are the rods&apos; runs along the guides, w and −w in the O form, −w and w in the X form.</source>
+        <translation>u₁ = x − s/2 − x_AB и u₂ = x + s/2 − x_CD су пројекције шипки дуж вођица: w и −w у облику O, −w и w у облику X.</translation>
+    </message>
+    <message>
+        <source>Jacobian J = ∂d/∂θ</source>
+        <translation>Јакобијан J = ∂d/∂θ</translation>
+    </message>
+    <message>
+        <source>Output speed at the diagonal&apos;s top speed</source>
+        <translation>Излазна брзина при највећој брзини дијагонале</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the diagonal&apos;s acceleration</source>
+        <translation>Извод J, за убрзање дијагонале</translation>
+    </message>
+    <message>
+        <source>J_i is the П-joint&apos;s Jacobian ∂d/∂θ of a П̲RR leg and 1 for the other leg types; C_i is A_i for an RP̲R leg.</source>
+        <translation>J_i је јакобијан П-зглоба ∂d/∂θ за ногу П̲RR и 1 за ноге других типова; C_i је A_i за ногу RP̲R.</translation>
+    </message>
+    <message>
+        <source>C_i is the centre of leg i&apos;s circle: the elbow, the slider joint, or A_i for an RP̲R leg.</source>
+        <translation>C_i је средиште кружнице ноге i: лакат, зглоб клизача или A_i за ногу RP̲R.</translation>
     </message>
 </context>
 <context>
@@ -5280,7 +5324,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The values at this pose: joint variables, the Jacobian, its determinant and condition number and what the actuators deliver, each with its unit and meaning. At a singular pose a value that is infinite reads ∞ and one that is undefined reads —.</source>
-        <translation>Вредности у овом положају: координате, Јакобијан, његова детерминанта и број условљености и оно што дају актуатори, свака са јединицом и значењем. У сингуларном положају бесконачна вредност се приказује као ∞, а неодређена као —.</translation>
+        <translation>Вредности у овом положају: координате, јакобијан, његова детерминанта и број условљености и оно што дају актуатори, свака са јединицом и значењем. У сингуларном положају бесконачна вредност се приказује као ∞, а неодређена као —.</translation>
     </message>
     <message>
         <source>The mobility of the mechanism: its degrees of freedom counted by the structural formulas and by the rank of its loop equations at this pose, and where the formulas are wrong.</source>
@@ -5499,7 +5543,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>From the rank of the constraint Jacobian</source>
-        <translation>Из ранга Јакобијан матрице веза</translation>
+        <translation>Из ранга Јакобијеве матрице веза</translation>
     </message>
     <message numerus="yes">
         <source>An open chain, no loop: nothing holds the %n freedom(s) of its pairs, M = F = %n.</source>
@@ -5845,11 +5889,11 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>Fig. 11 — Jacobian J(θ) = ∂d/∂θ, (7)</source>
-        <translation>Сл. 11 — Јакобијан J(θ) = ∂d/∂θ, (7)</translation>
+        <translation>Сл. 11 — јакобијан J(θ) = ∂d/∂θ, (7)</translation>
     </message>
     <message>
         <source>Fig. 12 — inverse Jacobian J⁻¹(θ), (8)</source>
-        <translation>Сл. 12 — инверзни Јакобијан J⁻¹(θ), (8)</translation>
+        <translation>Сл. 12 — инверзни јакобијан J⁻¹(θ), (8)</translation>
     </message>
     <message>
         <source>Fig. 15 — output resolution Δθ = Δd/J</source>
@@ -7175,7 +7219,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>MOMA configuration 3a (Vasilić and Živanović, the MOMA document, fig. 3a) rebuilt from the leg library: two P̲RR legs on guides from R₁ = (−100, 0) and R₂ = (100, 0) mm turned by γ = ∓5° from the vertical (α = 265°, 275°), strokes 0 to 200 mm, links 195 mm, both legs with q = B − √…, the platform right of C₁→C₂. Its poses and Jacobians are the MOMA kind&apos;s.</source>
-        <translation>Конфигурација MOMA 3a (Васић и Живановић, документ о MOMA, сл. 3a) састављена из библиотеке ногу: две ноге P̲RR на вођицама од R₁ = (−100, 0) и R₂ = (100, 0) мм, закренутим за γ = ∓5° од вертикале (α = 265°, 275°), ходови од 0 до 200 мм, спојке 195 мм, обе ноге са q = B − √…, платформа десно од C₁→C₂. Њене позе и Јакобијан матрице исте су као код врсте MOMA.</translation>
+        <translation>Конфигурација MOMA 3a (Васић и Живановић, документ о MOMA, сл. 3a) састављена из библиотеке ногу: две ноге P̲RR на вођицама од R₁ = (−100, 0) и R₂ = (100, 0) мм, закренутим за γ = ∓5° од вертикале (α = 265°, 275°), ходови од 0 до 200 мм, спојке 195 мм, обе ноге са q = B − √…, платформа десно од C₁→C₂. Њене позе и Јакобијеве матрице исте су као код врсте MOMA.</translation>
     </message>
     <message>
         <source>Planar parallel: a 3-RP̲R with six assembly modes</source>
@@ -7207,7 +7251,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>The five-bar example rebuilt from the leg library (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov, fig. 1): two R̲RR legs from A₁ = (0, 0) and A₂ = (100, 0) mm, cranks 80 mm, distal links 120 mm, elbows out, the platform point above the elbows. Its poses and Jacobians are the five-bar kind&apos;s.</source>
-        <translation>Пример петочланог механизма састављен из библиотеке ногу (документ о зглобном четвороуглу и покретљивости Хабибулине, Хабибулина и Исламова, сл. 1): две ноге R̲RR од A₁ = (0, 0) и A₂ = (100, 0) мм, полуге 80 мм, дисталне спојке 120 мм, лактови ка споља, тачка платформе изнад лактова. Његове позе и Јакобијан матрице исте су као код врсте петочланог механизма.</translation>
+        <translation>Пример петочланог механизма састављен из библиотеке ногу (документ о зглобном четвороуглу и покретљивости Хабибулине, Хабибулина и Исламова, сл. 1): две ноге R̲RR од A₁ = (0, 0) и A₂ = (100, 0) мм, полуге 80 мм, дисталне спојке 120 мм, лактови ка споља, тачка платформе изнад лактова. Његове позе и Јакобијеве матрице исте су као код врсте петочланог механизма.</translation>
     </message>
     <message>
         <source>Planar parallel: a translating platform driven by two П-joints</source>

@@ -2142,11 +2142,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Planar chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
-        <translation>Ravanski lanac (%1, %2 i %3): rang njegove Jakobijan matrice veza daje pokretljivost %4</translation>
+        <translation>Ravanski lanac (%1, %2 i %3): rang njegove Jakobijeve matrice veza daje pokretljivost %4</translation>
     </message>
     <message>
         <source>Spatial chain of %1, %2 and %3: the rank of its constraint Jacobian gives mobility %4</source>
-        <translation>Prostorni lanac (%1, %2 i %3): rang njegove Jakobijan matrice veza daje pokretljivost %4</translation>
+        <translation>Prostorni lanac (%1, %2 i %3): rang njegove Jakobijeve matrice veza daje pokretljivost %4</translation>
     </message>
     <message numerus="yes">
         <source>Chebyshev&apos;s W = %1 is wrong: %n planar loop equation(s) is/are redundant (an overconstrained planar chain)</source>
@@ -2958,7 +2958,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>inverse Jacobian θ̇ = J⁻¹·ḋ</source>
-        <translation>inverzni Jakobijan θ̇ = J⁻¹·ḋ</translation>
+        <translation>inverzni jakobijan θ̇ = J⁻¹·ḋ</translation>
     </message>
     <message>
         <source>J_d = 2d</source>
@@ -3709,10 +3709,6 @@ Proverite da li je ime datoteke tačno.</translation>
         <translation>J u mm/rad puta F u N daje N·mm; činilac 10⁻³ pretvara to u N·m.</translation>
     </message>
     <message>
-        <source>Output speed at ḋ_max</source>
-        <translation>Izlazna ugaona brzina pri ḋ_max</translation>
-    </message>
-    <message>
         <source>Output resolution per motor step</source>
         <translation>Izlazna rezolucija po koraku motora</translation>
     </message>
@@ -3723,10 +3719,6 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>Table 1 gives no screw efficiency η; the presets assume 0.4.</source>
         <translation>Tabela 1 ne daje stepen iskorišćenja vretena η; primeri uzimaju 0,4.</translation>
-    </message>
-    <message>
-        <source>Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</source>
-        <translation>Izvod od J, za ubrzanje d̈ = J·θ̈ + (∂J/∂θ)·θ̇²</translation>
     </message>
     <message>
         <source>The document&apos;s acceleration (19–20) drops θ̈ from the first term and writes θ̇ where θ̇² belongs; the program uses d̈ = J·θ̈ + (∂J/∂θ)·θ̇², which agrees with the numerical second derivative.</source>
@@ -3770,7 +3762,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Leg %1 (%2): the П-joint&apos;s Jacobian</source>
-        <translation>Noga %1 (%2): Jakobijan P-zgloba</translation>
+        <translation>Noga %1 (%2): jakobijan P-zgloba</translation>
     </message>
     <message>
         <source>The leg&apos;s row of J_x carries this J as a factor, so the П-joint&apos;s own singularity (θ = ±90°) is a direct singularity of the whole mechanism (the П-joint document, section 4).</source>
@@ -3778,7 +3770,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Leg %1 (%2): input Jacobian (0: inverse singularity)</source>
-        <translation>Noga %1 (%2): Jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
+        <translation>Noga %1 (%2): jakobijan ulaza (0: singularitet inverzne kinematike)</translation>
     </message>
     <message>
         <source>assembly mode 1 (same inputs)</source>
@@ -4195,6 +4187,58 @@ Proverite da li je ime datoteke tačno.</translation>
     <message>
         <source>leg 3: working mode, the elbow left or right of A₃→P₃ (P̲RR: left, the root q = B + √…)</source>
         <translation>noga 3: radni režim, lakat levo ili desno od A₃→P₃ (P̲RR: levo — koren q = B + √…)</translation>
+    </message>
+    <message>
+        <source>Jacobian, its own determinant (one input, one output)</source>
+        <translation>Jakobijan, ujedno svoja determinanta (jedan ulaz, jedan izlaz)</translation>
+    </message>
+    <message>
+        <source>J maps the rocker&apos;s rate onto the crank&apos;s, α̇ = J·δ̇, so J = 1/i₃₁.</source>
+        <translation>J preslikava brzinu klackalice u brzinu poluge, α̇ = J·δ̇, pa je J = 1/i₃₁.</translation>
+    </message>
+    <message>
+        <source>behind</source>
+        <translation>iza</translation>
+    </message>
+    <message>
+        <source>ahead</source>
+        <translation>ispred</translation>
+    </message>
+    <message>
+        <source>working mode of leg 1: the platform behind slider Z₁ along guide 1 or ahead of it</source>
+        <translation>radni režim noge 1: platforma iza klizača Z₁ duž vođice 1 ili ispred njega</translation>
+    </message>
+    <message>
+        <source>working mode of leg 2: the platform behind slider Z₂ along guide 2 or ahead of it</source>
+        <translation>radni režim noge 2: platforma iza klizača Z₂ duž vođice 2 ili ispred njega</translation>
+    </message>
+    <message>
+        <source>assembly mode: the platform left or right of Z₁→Z₂</source>
+        <translation>način sklapanja: platforma levo ili desno od Z₁→Z₂</translation>
+    </message>
+    <message>
+        <source>u₁ = x − s/2 − x_AB and u₂ = x + s/2 − x_CD are the rods&apos; runs along the guides, w and −w in the O form, −w and w in the X form.</source>
+        <translation>u₁ = x − s/2 − x_AB i u₂ = x + s/2 − x_CD su projekcije šipki duž vođica: w i −w u obliku O, −w i w u obliku X.</translation>
+    </message>
+    <message>
+        <source>Jacobian J = ∂d/∂θ</source>
+        <translation>Jakobijan J = ∂d/∂θ</translation>
+    </message>
+    <message>
+        <source>Output speed at the diagonal&apos;s top speed</source>
+        <translation>Izlazna brzina pri najvećoj brzini dijagonale</translation>
+    </message>
+    <message>
+        <source>Derivative of J, for the diagonal&apos;s acceleration</source>
+        <translation>Izvod J, za ubrzanje dijagonale</translation>
+    </message>
+    <message>
+        <source>J_i is the П-joint&apos;s Jacobian ∂d/∂θ of a П̲RR leg and 1 for the other leg types; C_i is A_i for an RP̲R leg.</source>
+        <translation>J_i je jakobijan P-zgloba ∂d/∂θ za nogu P̲RR i 1 za noge drugih tipova; C_i je A_i za nogu RP̲R.</translation>
+    </message>
+    <message>
+        <source>C_i is the centre of leg i&apos;s circle: the elbow, the slider joint, or A_i for an RP̲R leg.</source>
+        <translation>C_i je središte kružnice noge i: lakat, zglob klizača ili A_i za nogu RP̲R.</translation>
     </message>
 </context>
 <context>
@@ -5280,7 +5324,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>The values at this pose: joint variables, the Jacobian, its determinant and condition number and what the actuators deliver, each with its unit and meaning. At a singular pose a value that is infinite reads ∞ and one that is undefined reads —.</source>
-        <translation>Vrednosti u ovom položaju: koordinate, Jakobijan, njegova determinanta i broj uslovljenosti i ono što daju aktuatori, svaka sa jedinicom i značenjem. U singularnom položaju beskonačna vrednost se prikazuje kao ∞, a neodređena kao —.</translation>
+        <translation>Vrednosti u ovom položaju: koordinate, jakobijan, njegova determinanta i broj uslovljenosti i ono što daju aktuatori, svaka sa jedinicom i značenjem. U singularnom položaju beskonačna vrednost se prikazuje kao ∞, a neodređena kao —.</translation>
     </message>
     <message>
         <source>The mobility of the mechanism: its degrees of freedom counted by the structural formulas and by the rank of its loop equations at this pose, and where the formulas are wrong.</source>
@@ -5499,7 +5543,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>From the rank of the constraint Jacobian</source>
-        <translation>Iz ranga Jakobijan matrice veza</translation>
+        <translation>Iz ranga Jakobijeve matrice veza</translation>
     </message>
     <message numerus="yes">
         <source>An open chain, no loop: nothing holds the %n freedom(s) of its pairs, M = F = %n.</source>
@@ -5845,11 +5889,11 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>Fig. 11 — Jacobian J(θ) = ∂d/∂θ, (7)</source>
-        <translation>Sl. 11 — Jakobijan J(θ) = ∂d/∂θ, (7)</translation>
+        <translation>Sl. 11 — jakobijan J(θ) = ∂d/∂θ, (7)</translation>
     </message>
     <message>
         <source>Fig. 12 — inverse Jacobian J⁻¹(θ), (8)</source>
-        <translation>Sl. 12 — inverzni Jakobijan J⁻¹(θ), (8)</translation>
+        <translation>Sl. 12 — inverzni jakobijan J⁻¹(θ), (8)</translation>
     </message>
     <message>
         <source>Fig. 15 — output resolution Δθ = Δd/J</source>
@@ -7175,7 +7219,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>MOMA configuration 3a (Vasilić and Živanović, the MOMA document, fig. 3a) rebuilt from the leg library: two P̲RR legs on guides from R₁ = (−100, 0) and R₂ = (100, 0) mm turned by γ = ∓5° from the vertical (α = 265°, 275°), strokes 0 to 200 mm, links 195 mm, both legs with q = B − √…, the platform right of C₁→C₂. Its poses and Jacobians are the MOMA kind&apos;s.</source>
-        <translation>Konfiguracija MOMA 3a (Vasić i Živanović, dokument o MOMA, sl. 3a) sastavljena iz biblioteke nogu: dve noge P̲RR na vođicama od R₁ = (−100, 0) i R₂ = (100, 0) mm, zakrenutim za γ = ∓5° od vertikale (α = 265°, 275°), hodovi od 0 do 200 mm, spojke 195 mm, obe noge sa q = B − √…, platforma desno od C₁→C₂. Njene poze i Jakobijan matrice iste su kao kod vrste MOMA.</translation>
+        <translation>Konfiguracija MOMA 3a (Vasić i Živanović, dokument o MOMA, sl. 3a) sastavljena iz biblioteke nogu: dve noge P̲RR na vođicama od R₁ = (−100, 0) i R₂ = (100, 0) mm, zakrenutim za γ = ∓5° od vertikale (α = 265°, 275°), hodovi od 0 do 200 mm, spojke 195 mm, obe noge sa q = B − √…, platforma desno od C₁→C₂. Njene poze i Jakobijeve matrice iste su kao kod vrste MOMA.</translation>
     </message>
     <message>
         <source>Planar parallel: a 3-RP̲R with six assembly modes</source>
@@ -7207,7 +7251,7 @@ Proverite da li je ime datoteke tačno.</translation>
     </message>
     <message>
         <source>The five-bar example rebuilt from the leg library (the four-bar and mobility document of Khabibullina, Khabibullin and Islamov, fig. 1): two R̲RR legs from A₁ = (0, 0) and A₂ = (100, 0) mm, cranks 80 mm, distal links 120 mm, elbows out, the platform point above the elbows. Its poses and Jacobians are the five-bar kind&apos;s.</source>
-        <translation>Primer petočlanog mehanizma sastavljen iz biblioteke nogu (dokument o zglobnom četvorouglu i pokretljivosti Habibuline, Habibulina i Islamova, sl. 1): dve noge R̲RR od A₁ = (0, 0) i A₂ = (100, 0) mm, poluge 80 mm, distalne spojke 120 mm, laktovi ka spolja, tačka platforme iznad laktova. Njegove poze i Jakobijan matrice iste su kao kod vrste petočlanog mehanizma.</translation>
+        <translation>Primer petočlanog mehanizma sastavljen iz biblioteke nogu (dokument o zglobnom četvorouglu i pokretljivosti Habibuline, Habibulina i Islamova, sl. 1): dve noge R̲RR od A₁ = (0, 0) i A₂ = (100, 0) mm, poluge 80 mm, distalne spojke 120 mm, laktovi ka spolja, tačka platforme iznad laktova. Njegove poze i Jakobijeve matrice iste su kao kod vrste petočlanog mehanizma.</translation>
     </message>
     <message>
         <source>Planar parallel: a translating platform driven by two П-joints</source>

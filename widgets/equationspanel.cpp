@@ -40,7 +40,7 @@ QString formulaText(const QString &text)
     // A product of numbers may break after its dot: "17879,379·17879,379·17879,379" had no
     // place to break and was cut inside a number ("17879,3" / "79"). A unit's slash may not:
     // "рад/с" broke after "рад/".
-    static const QRegularExpression product(QStringLiteral("(?<=[\\d)])·(?=[\\w(−])")); // not N·m
+    static const QRegularExpression product(QStringLiteral("(?<=[\\d)°])·(?=[\\w(−])")); // not N·m
     kept.replace(product, QStringLiteral("·\u200B"));
     return slashesKept(kept);
 }

@@ -200,7 +200,7 @@ std::string workspaceJson(const PreparedDesign &prepared, const CommandWorkspace
     for (const ModeArea &mode : areas) {
         json.beginObject(true);
         for (std::size_t i = 0; i < modes.size(); ++i) {
-            if (modes[i]->choices.empty())
+            if (modes[i]->choices.empty() || modes[i]->numberInJson)
                 json.key(modes[i]->name).number(mode.values[i]);
             else
                 json.key(modes[i]->name).string(modeValueText(*modes[i], mode.values[i]));

@@ -229,7 +229,7 @@ private slots:
         const QList<std::array<const char *, 4>> terms = {
             // English pattern, Serbian Cyrillic, Serbian Latin, Russian (stems: any case ending)
             {"П-joint", "П-зглоб", "P-zglob", "П-шарнир"},
-            {"Jacobian", "Јакобијан", "Jakobijan", "Якоби"},
+            {"Jacobian", "Јакобиј", "Jakobij", "Якоби"}, // јакобијан, Јакобијева матрица
             {"workspace", "радн", "radn", "рабоч"},
             {"four-bar", "четвороуг", "četvoroug", "четырёхзвен"},
             {"transmission angle", "угао преноса", "ugao prenosa", "угол передачи"},

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 using namespace pkm;
 
@@ -116,6 +117,39 @@ private slots:
         Equation e{.symbolic = "y = x − c", .substituted = "%1 − %2", .numbers = {equations::length(3.0), equations::length(-5.0)},
                    .result = equations::length(8.0)};
         QCOMPARE(fillEquation(e, plainEquationNumber), std::string("3.00 − (−5.00)"));
+        // bare where it opens a bracket or a list, as in a matrix; bracketed where raised to a power
+        e.substituted = "%2·%1 + det[(%2, %1); (%1, %2)] + (%2)² + √(%2² + 1)";
+        QCOMPARE(fillEquation(e, plainEquationNumber),
+                 std::string("−5.00·3.00 + det[(−5.00, 3.00); (3.00, −5.00)] + (−5.00)² + √((−5.00)² + 1)"));
+    }
+
+    void everyDeterminantHasItsEquation_data() { test::addKindRows(); }
+    void everyDeterminantHasItsEquation()
+    {
+        // det J = det J_x / det J_q: each determinant put into it has an equation of its own,
+        // which says how it is worked out and where it vanishes, and each has a unit
+        QFETCH(QString, kind);
+        const MechanismPtr m = test::makeKind(kind.toStdString());
+        const std::vector<Equation> equations = mechanismEquations(*m, m->homePose());
+        std::set<std::string> own;
+        for (const Equation &e : equations)
+            own.insert(e.resultName);
+        for (const ReportEntry &entry : m->reportLayout().entries) {
+            if (!entry.name.starts_with("det_"))
+                continue;
+            QVERIFY2(own.count(entry.name), entry.name.c_str());
+        }
+        // a heading is set in bold, which runs a dot over a letter into it: "ḋ" read as "d"
+        for (const Equation &e : equations) {
+            const QString title = QString::fromStdString(e.title);
+            for (const QChar c : title.normalized(QString::NormalizationForm_D))
+                QVERIFY2(c != QChar(0x0307) && c != QChar(0x0308), e.title.c_str());
+        }
+        // a J_q entry of a leg carries its unit, as the determinant it is a factor of does
+        for (const Equation &e : equations) {
+            if (e.symbolic.starts_with("(J_q)"))
+                QVERIFY2(!std::string_view(e.result.unit.symbol).empty(), e.symbolic.c_str());
+        }
     }
 
     /// The O-X glide at the O↔X crossing (w = 0: combined) and the five-bar with leg 1 stretched

@@ -1454,6 +1454,58 @@ private slots:
         }
     }
 
+    void modeWordsDescribeThePose_data() { addPresetRows(); }
+    void modeWordsDescribeThePose()
+    {
+        // The modes' words, shown in the mode bar and accepted in files, say what is true of
+        // every pose of the mode: "behind" has the platform's foot on guide i behind its
+        // slider (p_i = B_i + √…, (7–9)), "left" the platform left of Z₁→Z₂.
+        const auto preset = rowMoma();
+        const auto word = [](const ParameterInfo &info, double value) {
+            for (const auto &[name, choice] : info.choices)
+                if (choice == value)
+                    return name;
+            return std::string();
+        };
+        int poses = 0, designs = 0;
+        for (int mode = 0; mode < 8; ++mode) {
+            const ParameterSet values = {{"branch1", mode & 1 ? 1.0 : -1.0},
+                                         {"branch2", mode & 2 ? 1.0 : -1.0},
+                                         {"assembly", mode & 4 ? 1.0 : -1.0}};
+            auto made = preset->withParameters(values);
+            if (!made)
+                continue; // no workspace in this combination of modes
+            ++designs;
+            const auto &m = static_cast<const Moma &>(**made);
+            std::map<std::string, std::string> words;
+            for (const ParameterInfo &info : m.parameterInfo())
+                if (info.group == ParameterGroup::Mode && info.name != "one_side")
+                    words[info.name] = word(info, values.at(info.name));
+            QCOMPARE(words.size(), std::size_t(3));
+            const MomaDesign &d = m.design();
+            for (int i = 1; i < 10; ++i) {
+                for (int j = 1; j < 10; ++j) {
+                    auto pose = m.solveDirect(pair(d.strokeMin + (d.strokeMax - d.strokeMin) * i / 10,
+                                                   d.strokeMin + (d.strokeMax - d.strokeMin) * j / 10));
+                    if (!pose)
+                        continue;
+                    const Eigen::Vector2d platform = pose->outputs.head<2>();
+                    for (int leg = 0; leg < 2; ++leg) {
+                        const double foot = moma::projection(d, leg, platform), slider = pose->inputs[leg];
+                        QCOMPARE(words.at(leg == 0 ? "branch1" : "branch2"), std::string(foot < slider ? "behind" : "ahead"));
+                    }
+                    const Eigen::Vector2d z1 = moma::sliderJoint(d, 0, pose->inputs[0]), z2 = moma::sliderJoint(d, 1, pose->inputs[1]);
+                    const Eigen::Vector2d a = z2 - z1, b = platform - z1;
+                    QCOMPARE(words.at("assembly"), std::string(a.x() * b.y() - a.y() * b.x() > 0 ? "left" : "right"));
+                    ++poses;
+                }
+            }
+        }
+        QVERIFY(designs >= 2);
+        QVERIFY(poses > 50);
+        qInfo("%d of 8 mode combinations with a workspace, %d poses", designs, poses);
+    }
+
     void dragHandle_data() { addPresetRows(); }
     void dragHandle()
     {

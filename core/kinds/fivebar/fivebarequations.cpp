@@ -51,13 +51,22 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .formula = (C.x() - B.x()) * (C.y() - D.y()) - (C.y() - B.y()) * (C.x() - D.x()),
                     .source = source});
     const EquationNumber detJx = report.number("det_Jx"), k1 = report.number("Jq", 0), k4 = report.number("Jq", 3);
+    const EquationNumber detJq = report.number("det_Jq");
+    list.push_back({.title = text::translate("core", "Input Jacobian (0: inverse singularity)"),
+                    .symbolic = "det J_q = k₁·k₄",
+                    .substituted = "%1·%2",
+                    .numbers = {k1, k4},
+                    .result = detJq,
+                    .resultName = "det_Jq",
+                    .formula = k1.value * k4.value,
+                    .source = source});
     list.push_back({.title = text::translate("core", "Determinant of J"),
-                    .symbolic = "det J = det J_x / (k₁·k₄)",
-                    .substituted = "%1 / (%2·%3)",
-                    .numbers = {detJx, k1, k4},
+                    .symbolic = "det J = det J_x / det J_q",
+                    .substituted = "%1 / %2",
+                    .numbers = {detJx, detJq},
                     .result = report.number("det_J"),
                     .resultName = "det_J",
-                    .formula = detJx.value / (k1.value * k4.value),
+                    .formula = detJx.value / detJq.value,
                     .source = source,
                     .note = text::translate("core", "J = J_q⁻¹·J_x maps lengths to angles, so det J is in rad²/mm², not "
                                                     "dimensionless as MOMA's and the O-X glide's.")});

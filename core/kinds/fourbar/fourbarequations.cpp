@@ -103,6 +103,16 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .resultName = "Jx",
                     .formula = -2.0 * bc * cd * std::sin(gamma.value),
                     .source = ownModel()});
+    const EquationNumber jq = report.number("Jq"), jx = report.number("Jx");
+    list.push_back({.title = text::translate("core", "Jacobian, its own determinant (one input, one output)"),
+                    .symbolic = "det J = J = J_q⁻¹·J_x",
+                    .substituted = "%1 / %2",
+                    .numbers = {jx, jq},
+                    .result = report.number("det_J"),
+                    .resultName = "det_J",
+                    .formula = jx.value / jq.value,
+                    .source = ownModel(),
+                    .note = text::translate("core", "J maps the rocker's rate onto the crank's, α̇ = J·δ̇, so J = 1/i₃₁.")});
     return list;
 }
 

@@ -150,6 +150,13 @@ const ParameterTable<MomaDesign> &Moma::table()
         using G = ParameterGroup;
         // every given value against its own domain first, so that a bad γ is named as γ, not
         // as the α it would make
+        // the modes by name in files and on screen ("β₁ = ahead, σ = right"), as other kinds'
+        // modes: p_i = B_i + β_i·√… (7–9) puts the platform's foot on guide i behind the slider
+        // for β_i = +1 and ahead of it for −1; σ = +1 puts the platform left of Z₁→Z₂
+        const std::vector<std::pair<std::string, double>> ends = {{QT_TRANSLATE_NOOP("core", "behind"), 1.0},
+                                                                  {QT_TRANSLATE_NOOP("core", "ahead"), -1.0}};
+        const std::vector<std::pair<std::string, double>> sides = {{QT_TRANSLATE_NOOP("core", "left"), 1.0},
+                                                                   {QT_TRANSLATE_NOOP("core", "right"), -1.0}};
         const ChangeRules rules{.unknownName = QT_TRANSLATE_NOOP("core", "MOMA has no parameter named '%1'."),
                                 .order = CheckOrder::DomainsFirst};
         return T(rules, joinRows<MomaDesign>({
@@ -165,9 +172,9 @@ const ParameterTable<MomaDesign> &Moma::table()
             {{"l2", "l₂", QT_TRANSLATE_NOOP("core", "length of link S₂"), units::millimetre, G::Geometry, positive, true, false, true, 2, 1}, T::real([](auto &d) -> auto & { return d.length[1]; })},
             {{"p_min", "p_min", QT_TRANSLATE_NOOP("core", "start of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::strokeMin>()},
             {{"p_max", "p_max", QT_TRANSLATE_NOOP("core", "end of the stroke"), units::millimetre, G::Range, coordinate, false, false, true, 2, 1}, T::real<&D::strokeMax>()},
-            {{"branch1", "β₁", QT_TRANSLATE_NOOP("core", "working mode of leg 1: sign in p₁ = B₁ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2}, T::sign([](auto &d) -> auto & { return d.branch[0]; }), &signRule},
-            {{"branch2", "β₂", QT_TRANSLATE_NOOP("core", "working mode of leg 2: sign in p₂ = B₂ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2}, T::sign([](auto &d) -> auto & { return d.branch[1]; }), &signRule},
-            {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: +1 platform left of Z₁→Z₂"), units::none, G::Mode, sign, false, false, true, 0, 2}, T::sign<&D::assembly>(), &signRule},
+            {{"branch1", "β₁", QT_TRANSLATE_NOOP("core", "working mode of leg 1: sign in p₁ = B₁ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2, ends, {}, QT_TRANSLATE_NOOP("core", "working mode of leg 1: the platform behind slider Z₁ along guide 1 or ahead of it"), true}, T::sign([](auto &d) -> auto & { return d.branch[0]; }), &signRule},
+            {{"branch2", "β₂", QT_TRANSLATE_NOOP("core", "working mode of leg 2: sign in p₂ = B₂ ± √…"), units::none, G::Mode, sign, false, false, true, 0, 2, ends, {}, QT_TRANSLATE_NOOP("core", "working mode of leg 2: the platform behind slider Z₂ along guide 2 or ahead of it"), true}, T::sign([](auto &d) -> auto & { return d.branch[1]; }), &signRule},
+            {{"assembly", "σ", QT_TRANSLATE_NOOP("core", "assembly mode: +1 platform left of Z₁→Z₂"), units::none, G::Mode, sign, false, false, true, 0, 2, sides, {}, QT_TRANSLATE_NOOP("core", "assembly mode: the platform left or right of Z₁→Z₂"), true}, T::sign<&D::assembly>(), &signRule},
             {{"one_side", QT_TRANSLATE_NOOP("core", "one side"), QT_TRANSLATE_NOOP("core", "links kept on the inner side of the guides (1: on)"), units::none, G::Mode, Interval{0.0, 1.0}, false, false, true, 0, 1}, T::flag<&D::oneSide>(), &switchRule},
             {{"guide_width", "w_g", QT_TRANSLATE_NOOP("core", "drawn width of a guide"), units::millimetre, G::Drawing, positive, true, false, true, 1, 1}, T::real<&D::guideWidth>()},
         }, {actuatorRows<MomaDesign, 0>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[0]; }), actuatorRows<MomaDesign, 1>(ActuatorNames::Linear, [](auto &d) -> auto & { return d.actuators[1]; }), loadRows<MomaDesign>(LoadNames::Force, [](auto &d) -> auto & { return d.load; })}));

@@ -71,6 +71,26 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .note = text::translate("core", "The document prints “+ s” in the X form's direct kinematics, which "
                                                     "contradicts its own inverse kinematics; with “− s” both forms return "
                                                     "their poses exactly. The sign of x_CD − x_AB − s is the form.")});
+    // J_q = diag(−2u₁, −2u₂) and J_x rows 2·(u_i, y) with u₁ = x − s/2 − x_AB = ±w and
+    // u₂ = x + s/2 − x_CD = ∓w (upper signs the O form): w = 0 makes both vanish
+    list.push_back({.title = text::translate("core", "Input Jacobian (0: inverse singularity)"),
+                    .symbolic = "det J_q = 4·u₁·u₂ = −4w²",
+                    .substituted = "−4·%1²",
+                    .numbers = {length(w)},
+                    .result = report.number("det_Jq"),
+                    .resultName = "det_Jq",
+                    .formula = -4.0 * w * w,
+                    .source = ownModel()});
+    list.push_back({.title = text::translate("core", "Output Jacobian (0: direct singularity)"),
+                    .symbolic = O ? "det J_x = 4y·(u₁ − u₂) = 8y·w" : "det J_x = 4y·(u₁ − u₂) = −8y·w",
+                    .substituted = O ? "8·%1·%2" : "−8·%1·%2",
+                    .numbers = {y, length(w)},
+                    .result = report.number("det_Jx"),
+                    .resultName = "det_Jx",
+                    .formula = 8.0 * g.form * y.value * w,
+                    .source = ownModel(),
+                    .note = text::translate("core", "u₁ = x − s/2 − x_AB and u₂ = x + s/2 − x_CD are the rods' runs along "
+                                                    "the guides, w and −w in the O form, −w and w in the X form.")});
     list.push_back({.title = text::translate("core", "Determinant of J"),
                     .symbolic = O ? "det J = −2y/w" : "det J = 2y/w",
                     .substituted = O ? "−2·%1/%2" : "2·%1/%2",

@@ -40,7 +40,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .resultName = "theta",
                     .formula = std::asin((d.value * d.value - aa * (1.0 + p.k() * p.k())) / (2.0 * aa * p.k())),
                     .source = cite(Document::PJointDocument, "(3–5)")});
-    list.push_back({.title = text::translate("core", "Jacobian ḋ = J·θ̇"),
+    list.push_back({.title = text::translate("core", "Jacobian J = ∂d/∂θ"),
                     .symbolic = "J = a²k·cos θ / d",
                     .substituted = "%1²·%2·cos %3 / %4",
                     .numbers = {a, k, theta, d},
@@ -83,7 +83,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .formula = J.value * p.forceMax * 1e-3,
                     .source = cite(Document::PJointDocument, "(13)"),
                     .note = text::translate("core", "J in mm/rad times F in N gives N·mm; 10⁻³ turns it into N·m.")});
-    list.push_back({.title = text::translate("core", "Output speed at ḋ_max"),
+    list.push_back({.title = text::translate("core", "Output speed at the diagonal's top speed"),
                     .symbolic = "θ̇ = ḋ_max / J",
                     .substituted = "%1 / %2",
                     .numbers = {speed, J},
@@ -109,9 +109,9 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                     .source = cite(Document::PJointDocument, "(15)"),
                     .note = text::translate("core", "Table 1 gives no screw efficiency η; the presets assume 0.4.")});
     const double root = 1.0 + p.k() * p.k() + 2.0 * p.k() * sinTheta;
-    list.push_back({.title = text::translate("core", "Derivative of J, for the acceleration d̈ = J·θ̈ + (∂J/∂θ)·θ̇²"),
-                    .symbolic = "∂J/∂θ = −a·k·(k + sin θ)(1 + k·sin θ) / (1 + k² + 2k·sin θ)^(3/2)",
-                    .substituted = "−%1·%2·(%2 + sin %3)·(1 + %2·sin %3) / (1 + %2² + 2·%2·sin %3)^(3/2)",
+    list.push_back({.title = text::translate("core", "Derivative of J, for the diagonal's acceleration"),
+                    .symbolic = "∂J/∂θ = −a·k·(k + sin θ)(1 + k·sin θ) / √(1 + k² + 2k·sin θ)³",
+                    .substituted = "−%1·%2·(%2 + sin %3)·(1 + %2·sin %3) / √(1 + %2² + 2·%2·sin %3)³",
                     .numbers = {a, k, theta},
                     .result = report.number("dJ_dtheta"),
                     .resultName = "dJ_dtheta",

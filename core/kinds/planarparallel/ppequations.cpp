@@ -29,6 +29,38 @@ std::string legSymbol(const char *pattern, int leg)
     static const char *subscripts[3] = {"₁", "₂", "₃"};
     return text::format(pattern, {subscripts[leg]});
 }
+/// det J_x from J_x's entries as the pose gives them: the direct singularity's test, which
+/// det J = det J_x / det J_q divides by.
+Equation outputJacobian(const Eigen::Matrix3d &jx, int n, bool pjointLegs, const equations::Report &report)
+{
+    using equations::plain;
+    Equation equation{.title = text::translate("core", "Output Jacobian (0: direct singularity)"),
+                      .result = report.number("det_Jx"),
+                      .resultName = "det_Jx",
+                      .source = equations::ownModel()};
+    const std::string factor = pjointLegs ? "J_i·" : "";
+    if (n == 2) {
+        equation.symbolic = "det J_x = (J_x)₁₁·(J_x)₂₂ − (J_x)₁₂·(J_x)₂₁, (J_x)_i = −" + factor + "(P_i − C_i)ᵀ";
+        equation.substituted = "%1·%2 − %3·%4";
+        equation.numbers = {plain(jx(0, 0), 2), plain(jx(1, 1), 2), plain(jx(0, 1), 2), plain(jx(1, 0), 2)};
+        equation.formula = jx(0, 0) * jx(1, 1) - jx(0, 1) * jx(1, 0);
+    } else {
+        equation.symbolic = "det J_x = det[(J_x)₁; (J_x)₂; (J_x)₃], (J_x)_i = −" + factor + "((P_i − C_i)ᵀ, (P_i − O)×(P_i − C_i))";
+        equation.substituted = "det[(%1, %2, %3); (%4, %5, %6); (%7, %8, %9)]";
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                equation.numbers.push_back(plain(jx(i, j), 2));
+        equation.formula = jx.determinant();
+    }
+    if (pjointLegs) {
+        equation.note = text::translate("core", "J_i is the П-joint's Jacobian ∂d/∂θ of a П̲RR leg and 1 for the other "
+                                                "leg types; C_i is A_i for an RP̲R leg.");
+    } else {
+        equation.note = text::translate("core", "C_i is the centre of leg i's circle: the elbow, the slider joint, or A_i "
+                                                "for an RP̲R leg.");
+    }
+    return equation;
+}
 } // namespace
 
 std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
@@ -44,6 +76,8 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
     const std::string own = ownModel();
 
     std::vector<Equation> list;
+    Eigen::Matrix3d jx = Eigen::Matrix3d::Identity(); // J_x's rows, for its determinant below
+    bool pjointLegs = false;
     for (int i = 0; i < n; ++i) {
         const PlanarLeg &leg = design.legs[std::size_t(i)];
         const LegCircle c = circle(leg, pose.inputs[i]);
@@ -105,6 +139,10 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
                        .result = report.number("Jq", i * n + i),
                        .formula = -e.dot(c.centreRate) - c.radius * c.radiusRate,
                        .source = own};
+        // g_i is in mm²: a row by a crank's or a П-joint's angle is in mm²/rad, by a slider's or
+        // a strut's length in mm (the determinants' units, planaranalysis.cpp)
+        const bool byAngle = leg.type == LegType::RRR || leg.type == LegType::PiRR;
+        input.result.unit = byAngle ? units::squareMillimetrePerRadian : units::millimetre;
         const bool guide = leg.type == LegType::PRR; // ∂C/∂q is the guide's unit vector
         const auto rate = [&](double v) { return guide ? plain(v, 3) : length(v); };
         switch (leg.type) {
@@ -128,6 +166,12 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
             input.numbers = {length(e.x()), rate(c.centreRate.x()), length(e.y()), rate(c.centreRate.y())};
         }
         list.push_back(input);
+        // J_x = −∂g/∂X, row i −J_i·(e_iᵀ, (P_i − O)×e_i), J_i the П-joint's ∂d/∂θ or 1
+        jx(i, 0) = -c.pjointRate * e.x();
+        jx(i, 1) = -c.pjointRate * e.y();
+        if (n == 3)
+            jx(i, 2) = -c.pjointRate * cross(P - X.head<2>(), e);
+        pjointLegs = pjointLegs || leg.type == LegType::PiRR;
     }
     // J_q is diagonal: its determinant is the product of the legs' entries
     Equation inputs{.title = text::translate("core", "Input Jacobian (0: inverse singularity)"),
@@ -142,6 +186,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
         inputs.formula *= report.value("Jq", i * n + i);
     }
     list.push_back(inputs);
+    list.push_back(outputJacobian(jx, n, pjointLegs, report));
     list.push_back({.title = text::translate("core", "Determinant of J"),
                     .symbolic = "det J = det J_x / det J_q",
                     .substituted = "%1 / %2",
