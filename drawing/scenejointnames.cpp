@@ -112,7 +112,14 @@ void SceneLabels::reserveJointNames()
     for (std::size_t i = 0; i < m_points.size(); ++i) {
         if (m_scene.joints[i].label.empty() || !valid(int(i)))
             continue;
-        const QSizeF size = textSize(QString::fromStdString(m_scene.joints[i].label), true);
+        const QString text = QString::fromStdString(m_scene.joints[i].label);
+        const QSizeF size = textSize(text, true);
+        // In motion, where it stood in the frame before instead: the widest gap can turn to
+        // another side from one frame to the next and push the other labels with it.
+        if (const std::optional<QPointF> was = lastPlace(text, m_points[i])) {
+            m_reserved.push_back(boxQuad(*was, size, 0.0));
+            continue;
+        }
         // a ground pivot's beside its symbol (groundNamePlaces()), which the angle labels then
         // leave to it
         const QPointF place = m_scene.joints[i].kind == JointKind::Ground ? groundNamePlaces(i, size)[0]
@@ -140,10 +147,20 @@ void SceneLabels::placeJointLabels()
         const QSizeF size = textSize(text, true);
         const auto centreAt = [&](double a, double extra) { return jointNameCentre(i, size, a, extra); };
         const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
+        // Out there a name nearer another joint than its own reads as that one's, leader or
+        // not (the five-bar's "E" under A): such places come last.
+        const auto nearerAnother = [&](const QPointF &centre) {
+            const double own = length(centre - m_points[i]);
+            for (std::size_t j = 0; j < m_points.size(); ++j) {
+                if (j != i && valid(int(j)) && !m_scene.joints[j].label.empty() && length(centre - m_points[j]) < own)
+                    return true;
+            }
+            return false;
+        };
         candidates.clear();
         // Outward beside the joint, covering a little of one thin line at most (the ground's
         // hatching under a pivot), rather than free inside the linkage.
-        const SceneLabel label {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}, {}};
+        const SceneLabel label {{}, 0.0, text, true, m_style.ink, drawing::Layer::Text, {}, {}, m_points[i]};
         const QSizeF room = size + QSizeF(4.0 * m_px, 4.0 * m_px); // keep a gap, as placeFirstFree()
         std::optional<QPointF> outside;
         double least = 1.0; // a little of a thin line (collisions()), never a bar, a pivot or a label
@@ -155,6 +172,31 @@ void SceneLabels::placeJointLabels()
             if (cost < least) {
                 least = cost;
                 outside = centre;
+            }
+        }
+        // In motion, unless the outward place found is free with room to spare (keptMargin):
+        // where it stood beside its joint in the frame before, while that is still free and
+        // still nearest its own joint; else, of the outward places as good as the best, the
+        // nearest to it if one is near (the best if none is: the nearest of those far
+        // away put MOMA's Z₁ on R₁'s place as the slider left it).
+        const std::optional<QPointF> was = lastPlace(text, m_points[i]);
+        const bool roomy = outside && least == 0.0
+            && isFree(boxQuad(*outside, room + QSizeF(2.0 * keptMargin, 2.0 * keptMargin) * m_px, 0.0));
+        if (was && !roomy && length(*was - m_points[i]) < length(centreAt(0.0, 8.0 * m_px) - m_points[i]) + size.width()) {
+            if (isFree(boxQuad(*was, room, 0.0), false) && !nearerAnother(*was)) {
+                SceneLabel placed = label;
+                placed.centre = *was;
+                place(placed);
+                continue;
+            }
+        }
+        if (outside && was && !roomy) {
+            for (const double angle : outwardNameAngles(i)) {
+                const QPointF centre = centreAt(angle, 0.0);
+                const double away = QLineF(centre, *was).length();
+                if (away < QLineF(*outside, *was).length() && away < size.width() + size.height() && !nearerAnother(centre)
+                    && collisions(boxQuad(centre, room, 0.0), least + 1e-9) <= least)
+                    outside = centre;
             }
         }
         if (outside) {
@@ -178,16 +220,6 @@ void SceneLabels::placeJointLabels()
         // The far rings clear a large neighbour such as a zoomed-in carriage. Before going
         // there, a name next to its joint may cover a few thin lines, never a bar (in a
         // crowded pose a "B" far from B names the wrong joint).
-        // Out there a name nearer another joint than its own reads as that one's, leader or
-        // not (the five-bar's "E" under A): such places come last.
-        const auto nearerAnother = [&](const QPointF &centre) {
-            const double own = length(centre - m_points[i]);
-            for (std::size_t j = 0; j < m_points.size(); ++j) {
-                if (j != i && valid(int(j)) && !m_scene.joints[j].label.empty() && length(centre - m_points[j]) < own)
-                    return true;
-            }
-            return false;
-        };
         std::size_t near = 0;
         std::vector<QPointF> last;
         for (double extra : {0.0, 8.0 * m_px, 16.0 * m_px, 26.0 * m_px, 40.0 * m_px, 60.0 * m_px, 90.0 * m_px}) {

@@ -95,7 +95,7 @@ void SceneLabels::placeMemberLabels(bool dimensions)
         const QSizeF size = textSize(pending.text);
         // a dimension's text is dimension layer, a member's name text
         SceneLabel label {{}, 0.0, pending.text, false, pending.colour,
-            pending.preferReadingUp ? drawing::Layer::Dimensions : drawing::Layer::Text, pending.cad, {}};
+            pending.preferReadingUp ? drawing::Layer::Dimensions : drawing::Layer::Text, pending.cad, {}, {}};
         double firstSide = 1.0;
         if (pending.preferReadingUp) {
             // Rotated with the member, above it as read.
@@ -288,6 +288,24 @@ void SceneLabels::placeAngleLabels()
                 centre = near[k];
             }
         }
+        // In motion, where it stood in the frame before while that is still free, reads as its
+        // own angle and has a short, clear leader if it needs one, unless the place beside its
+        // arc found above is free with room to spare (a margin, so that a place freed by a
+        // pixel does not pull it back and forth): the five-bar's θ₁ went from under the ground
+        // to beside its arc and back within three frames of Play.
+        const bool roomy = best == 0.0 && isFree(boxQuad(centre, room + QSizeF(2.0 * keptMargin, 2.0 * keptMargin) * m_px, 0.0));
+        if (const std::optional<QPointF> was = lastPlace(pending.text, v);
+            was && !roomy && isFree(boxQuad(*was, room, 0.0)) && !onALeader(*was) && leaderClear(*was)
+            && !nearerAnotherJoint(*was, size, pending.vertex)) {
+            const std::optional<QLineF> line = leaderTo(pending, *was, size);
+            const bool shortAndClear = !line
+                || (line->length() <= 80.0 * m_px
+                    && collisions(segmentQuad(line->p1() + 5.0 * m_px * unit(line->p2() - line->p1()), line->p2(), 1.0 * m_px), 3.0) < 3.0);
+            if (shortAndClear) {
+                best = 0.0;
+                centre = *was;
+            }
+        }
         // a leader that would run under another label shows only a stray tick beside it: the
         // label, a few pixels off its arc, goes without
         std::optional<QLineF> leader = leaderClear(centre) ? leaderTo(pending, centre, size) : std::nullopt;
@@ -324,7 +342,7 @@ void SceneLabels::placeAngleLabels()
         // is left out: the values panel states the angle, and a pile of text states nothing.
         if (best >= coversALabel)
             continue;
-        place(SceneLabel {centre, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}, {}});
+        place(SceneLabel {centre, 0.0, pending.text, false, m_style.angle, drawing::Layer::Dimensions, {}, {}, v});
         if (leader) {
             m_leaders.push_back(*leader);
             // Only a bar's name keeps off it (the five-bar's "AE" sat on θ₁'s leader): a
@@ -402,7 +420,7 @@ void SceneLabels::placeGuideLabels()
                     pending.start + fraction * axis + (pending.outerReach + extra + support(normal, size)) * normal);
             }
         }
-        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}, {}}, candidates);
+        placeFirstFree(SceneLabel {{}, 0.0, pending.text, false, pending.colour, drawing::Layer::Text, {}, {}, {}}, candidates);
     }
 }
 

@@ -334,6 +334,33 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
             }
         }
     }
+    // In motion, unless the place chosen is free with room to spare (keptMargin): where it
+    // stood in the frame before (setPrevious()) while that is still free (a ghost moving under
+    // it may stay) and off the leaders, with its leader if it had one; else the free place
+    // nearest to that, if one is near and no farther from what it names than the one chosen.
+    // A label moves no more than what it names rather than to the first free place in the
+    // order: during Play MOMA's Z₁, PO₁ and S₂ went from side to side and back.
+    if (!label.anchor && count > 0)
+        label.anchor = candidates.front();
+    const std::optional<QPointF> was = count > 0 ? lastPlace(label.text, *label.anchor) : std::nullopt;
+    const bool roomy = chosen < count && best == 0.0
+        && isFree(boxQuad(candidates[chosen], size + QSizeF(2.0 * keptMargin, 2.0 * keptMargin) * m_px, label.rotationDegrees));
+    if (was && chosen < count && !roomy) {
+        const auto away = [&](std::size_t k) { return QLineF(candidates[k], *was).length(); };
+        std::vector<std::size_t> nearer;
+        for (std::size_t k = 0; k < count; ++k) {
+            if (k != chosen && away(k) < away(chosen) && away(k) < size.width() + size.height())
+                nearer.push_back(k);
+        }
+        std::sort(nearer.begin(), nearer.end(), [&](std::size_t a, std::size_t b) { return away(a) < away(b); });
+        for (const std::size_t k : nearer) {
+            if ((best > 0.0 || k < near || chosen >= near || away(k) < 1.0) && clear(k) && !onALeader(boxAt(k))) {
+                chosen = k;
+                best = 0.0;
+                break;
+            }
+        }
+    }
     if (chosen == count || best >= leaveOutAt)
         return false;
     // A name that may be left out (a bar's) is, where its leader would have to cross what it
@@ -346,6 +373,34 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
     if (leader)
         m_nameLeaders.push_back({leader->line, label.colour, false});
     return best == 0.0;
+}
+
+namespace {
+/// A label as the next frame knows it: a value's symbol ("θ₄" of "θ₄ = 60.7°", whose number
+/// changes as it moves), else its text.
+QString placeKey(const QString &text)
+{
+    const qsizetype equals = text.indexOf(QStringLiteral(" = "));
+    return equals > 0 ? text.left(equals) : text;
+}
+} // namespace
+
+std::optional<QPointF> SceneLabels::lastPlace(const QString &text, const QPointF &anchor) const
+{
+    if (!m_previous)
+        return std::nullopt;
+    const QString key = placeKey(text);
+    const auto was = std::find_if(m_previous->begin(), m_previous->end(), [&](const auto &place) { return place.first == key; });
+    return was == m_previous->end() ? std::nullopt : std::optional<QPointF>(anchor + was->second);
+}
+
+std::vector<std::pair<QString, QPointF>> SceneLabels::places() const
+{
+    std::vector<std::pair<QString, QPointF>> placed;
+    placed.reserve(m_labels.size());
+    for (const SceneLabel &label : m_labels)
+        placed.emplace_back(placeKey(label.text), label.centre - label.anchor.value_or(QPointF()));
+    return placed;
 }
 
 // -- adding to the draw list --------------------------------------------------------------

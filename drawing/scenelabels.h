@@ -53,6 +53,11 @@ double coveredLength(const Quad &box, const QPointF &a, const QPointF &b, double
 /// lines it could hide.
 inline constexpr double coversALabel = 100.0;
 
+/// How much room (style pixels on each side) a label's first-choice place must have to take
+/// it back from the place it kept from the frame before: a place freed by a pixel would pull
+/// it back and forth.
+inline constexpr double keptMargin = 6.0;
+
 /// The application's font at `pixels` device units, so labels match the rest of the UI.
 QFont labelFont(double pixels, bool bold);
 
@@ -70,6 +75,9 @@ struct SceneLabel {
     /// Where a CAD drawing writes it when that is not where the screen shows it: a dimension's
     /// text on its dimension line, which the screen moved off its member with a leader.
     std::optional<std::pair<QPointF, double>> cadPlace;
+    /// What it names, device (its joint; else its first, preferred place): a moving drawing
+    /// keeps a label where it stood relative to this (SceneLabels::setPrevious()).
+    std::optional<QPointF> anchor;
 };
 
 /// Labels placed once all geometry is known, so they can avoid it.
@@ -114,6 +122,12 @@ public:
 
     /// Where labels may stand (device); empty: anywhere. A place past it is never free.
     void setRoom(const QRectF &room) { m_room = room; }
+    /// Where the labels stood in the frame before relative to what they name, by text (null:
+    /// nowhere): of the places as good as the best, each label takes the one nearest its last.
+    void setPrevious(const std::vector<std::pair<QString, QPointF>> *previous) { m_previous = previous; }
+    /// The placed labels' centres relative to what they name, by text, for the next frame's
+    /// setPrevious().
+    std::vector<std::pair<QString, QPointF>> places() const;
 
     // -- while the geometry is laid out ---------------------------------------------------
     /// Something leaves `joint` towards `towards` (device) for `reach` device units: joint
@@ -224,6 +238,9 @@ private:
     std::array<QPointF, 3> groundNamePlaces(std::size_t joint, const QSizeF &size) const;
     /// Fills m_reserved.
     void reserveJointNames();
+    /// Where a label of `text` that names what is now at `anchor` stood in the frame before
+    /// (setPrevious()), moved with it; none if it was not drawn.
+    std::optional<QPointF> lastPlace(const QString &text, const QPointF &anchor) const;
 
     const Scene &m_scene;
     const std::vector<QPointF> &m_points; ///< joint positions, device
@@ -257,6 +274,7 @@ private:
     /// the joints' names' first places, kept free while the other labels are placed
     std::vector<detail::Quad> m_reserved;
     QRectF m_room; ///< where labels may stand; empty: anywhere
+    const std::vector<std::pair<QString, QPointF>> *m_previous = nullptr; ///< the frame before
     /// Whether `box` lies past the room's edge.
     bool outside(const detail::Quad &box) const
     {

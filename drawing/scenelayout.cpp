@@ -276,6 +276,7 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
     const std::vector<GuideShape> guides = guideShapes(scene, points, jointGuide, mapping, style);
     SceneLabels labels(scene, points, mapping, style, options.device);
     labels.setRoom(options.labelRoom);
+    labels.setPrevious(options.previousLabels);
     for (const QLineF &line : options.avoid) // a thin line: covered where nothing else is free
         labels.addObstacle(line.p1(), line.p2(), 1.5 * style.pixelSize, true);
     for (const QRectF &box : options.covered)
@@ -307,6 +308,8 @@ DrawList layoutScene(const Scene &scene, const ViewMapping &mapping, const Scene
     layoutJoints(canvas);
     labels.placeAll();
     labels.addTo(list);
+    if (options.placedLabels)
+        *options.placedLabels = labels.places();
     return list;
 }
 

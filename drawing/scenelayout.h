@@ -14,15 +14,22 @@
 #include "scenestyle.h"
 
 #include <QLineF>
+#include <QPointF>
 #include <QRectF>
 #include <QString>
 
 #include <limits>
+#include <utility>
 #include <vector>
 
 class QPaintDevice;
 
 namespace pkm::drawing {
+
+/// Where each label of a drawing stood relative to what it names, by its text (a value by its
+/// symbol), device units: a moving drawing's last
+/// frame, so that the next keeps each label on its side while that side stays free.
+using LabelPlaces = std::vector<std::pair<QString, QPointF>>;
 
 struct LayoutOptions {
     /// The hovered or dragged handle (index into scene.handles, −1 none), drawn highlighted.
@@ -42,6 +49,12 @@ struct LayoutOptions {
     /// Boxes drawn over the scene afterwards, device units (the scale bar): a label under one
     /// would be hidden, so the labels go there only where nothing else is left.
     std::vector<QRectF> covered;
+    /// The labels' places in the frame before (null: none). Of the places as good as the best,
+    /// a label takes the one nearest where it stood: during Play, MOMA's Z₁, PO₁ and S₂ had
+    /// jumped between two equally free sides from one frame to the next.
+    const LabelPlaces *previousLabels = nullptr;
+    /// Where the labels were placed, written for the next frame (null: not wanted).
+    LabelPlaces *placedLabels = nullptr;
 };
 
 /// The drawing of `scene` with `mapping` and `style`.

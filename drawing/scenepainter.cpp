@@ -46,7 +46,7 @@ ViewMapping ViewMapping::fit(const Eigen::AlignedBox3d &extent, const QRectF &ta
 // -- ScenePainter ------------------------------------------------------------------------
 
 void ScenePainter::paint(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
-    int activeHandle, const QList<Scene> &ghosts, const QRectF &scaleBar)
+    int activeHandle, const QList<Scene> &ghosts, const QRectF &scaleBar, std::vector<std::pair<QString, QPointF>> *labelPlaces)
 {
     drawing::LayoutOptions options;
     options.activeHandle = activeHandle;
@@ -61,6 +61,12 @@ void ScenePainter::paint(QPainter &painter, const Scene &scene, const ViewMappin
     // stands between the layout's device units and the painter's window.
     if (painter.worldTransform().isIdentity())
         options.labelRoom = QRectF(painter.window()).adjusted(2.0, 2.0, -2.0, -2.0);
+    drawing::LabelPlaces previous;
+    if (labelPlaces) {
+        previous = std::move(*labelPlaces);
+        options.previousLabels = &previous;
+        options.placedLabels = labelPlaces;
+    }
     drawing::paintDrawList(painter, drawing::layoutScene(scene, mapping, style, options));
 }
 
@@ -470,13 +476,13 @@ double ScenePainter::legendHeight(const QRectF &area, const Scene &scene, const 
     return l.frame.bottom() - area.top();
 }
 
-void ScenePainter::paintPicture(
-    QPainter &painter, const QRectF &area, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style)
+void ScenePainter::paintPicture(QPainter &painter, const QRectF &area, const Scene &scene, const ViewMapping &mapping,
+    const SceneStyle &style, std::vector<std::pair<QString, QPointF>> *labelPlaces)
 {
     painter.save();
     painter.setClipRect(area, Qt::IntersectClip);
     paintBackground(painter, area, mapping, style);
-    paint(painter, scene, mapping, style);
+    paint(painter, scene, mapping, style, -1, {}, {}, labelPlaces);
     paintScaleBar(painter, area, mapping, style);
     paintLegend(painter, area, scene, style);
     painter.restore();

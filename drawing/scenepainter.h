@@ -16,6 +16,7 @@
 #include <QRectF>
 #include <QString>
 
+#include <utility>
 #include <vector>
 
 class QPainter;
@@ -29,8 +30,11 @@ public:
     /// Draws the scene (not the background). `activeHandle` (index into scene.handles, −1
     /// none) is the hovered or dragged handle, drawn strongly highlighted; the labels keep off
     /// the `ghosts` drawn under it and the `scaleBar` box drawn over it where they can.
+    /// `labelPlaces` (a view's, kept from frame to frame; null: none) holds where the labels
+    /// stood in the frame before, which they keep while it is as good, and gets where they stand.
     static void paint(QPainter &painter, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style,
-        int activeHandle = -1, const QList<Scene> &ghosts = {}, const QRectF &scaleBar = {});
+        int activeHandle = -1, const QList<Scene> &ghosts = {}, const QRectF &scaleBar = {},
+        std::vector<std::pair<QString, QPointF>> *labelPlaces = nullptr);
     /// Draws `scene` as a ghost — another pose the mechanism could take (another assembly or
     /// working mode) — to go under the real one: faded, blue-grey, links dashed, no ground,
     /// guides, labels, dimensions, angles or handles. `highlighted` (hovered) draws it
@@ -64,9 +68,10 @@ public:
     /// box at the top-left of `area`, each line after a sample of its pen: solid for the
     /// polygon, dashed for the ellipse; long lines wrap. Nothing when the legend is empty.
     static void paintLegend(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style);
-    /// A picture of the scene in `area`, clipped to it: background, scene, scale bar and legend.
-    static void paintPicture(
-        QPainter &painter, const QRectF &area, const Scene &scene, const ViewMapping &mapping, const SceneStyle &style);
+    /// A picture of the scene in `area`, clipped to it: background, scene, scale bar and legend;
+    /// `labelPlaces` as paint()'s (an animation's frames).
+    static void paintPicture(QPainter &painter, const QRectF &area, const Scene &scene, const ViewMapping &mapping,
+        const SceneStyle &style, std::vector<std::pair<QString, QPointF>> *labelPlaces = nullptr);
     /// How much of the top of `area` the legend takes, its margin included (0: no legend): a
     /// fit leaves it free, so that the legend covers none of the mechanism.
     static double legendHeight(const QRectF &area, const Scene &scene, const SceneStyle &style, QPaintDevice *device);

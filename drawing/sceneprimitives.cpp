@@ -212,12 +212,12 @@ void drawDimension(const SceneCanvas &canvas, const SceneDimension &dimension)
     const double rotation = readableRotation(u);
     const QPointF middle = 0.5 * (d1 + d2);
     if (textInside) {
-        canvas.labels.place({middle, rotation, text, false, colour, Layer::Dimensions, cad, {}});
+        canvas.labels.place({middle, rotation, text, false, colour, Layer::Dimensions, cad, {}, {}});
         return;
     }
     const double beside = 0.5 * size.height() + 3.0 * px;
     const double past = 2.0 * arrow + 4.0 * px + 0.5 * size.width();
-    canvas.labels.addFreeLabel({{{}, rotation, text, false, colour, Layer::Dimensions, cad, {}},
+    canvas.labels.addFreeLabel({{{}, rotation, text, false, colour, Layer::Dimensions, cad, {}, {}},
         {middle + beside * side, d2 + past * u, d1 - past * u, middle - beside * side,
             middle + (beside + 12.0 * px) * side}});
 }

@@ -178,7 +178,7 @@ void LinkageView::paintEvent(QPaintEvent *)
         ScenePainter::paintGhost(painter, m_ghosts[m_hoverGhost], m_mapping, m_style, true);
     if (m_hasScene)
         ScenePainter::paint(painter, m_scene, m_mapping, m_style, activeHandle(), m_ghosts,
-                            ScenePainter::scaleBarBox(area, m_mapping, m_style, this));
+                            ScenePainter::scaleBarBox(area, m_mapping, m_style, this), &m_labelPlaces);
     ScenePainter::paintScaleBar(painter, area, m_mapping, m_style);
     if (m_hasScene)
         ScenePainter::paintLegend(painter, area, m_scene, m_style);

@@ -171,6 +171,8 @@ private:
     QPointF m_lastPanPosition;
 
     QList<Scene> m_ghosts;
+    /// Where the labels stood in the last repaint: a moving drawing keeps each on its side.
+    std::vector<std::pair<QString, QPointF>> m_labelPlaces;
     QStringList m_ghostLabels;
     int m_hoverGhost = -1;
     int m_pressGhost = -1; ///< the ghost a left press began on, until it becomes a drag

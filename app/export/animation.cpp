@@ -11,6 +11,9 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace pkm {
 
@@ -128,6 +131,41 @@ std::vector<const Pose *> frameOrder(const std::vector<Pose> &poses, bool bounce
     }
     return order;
 }
+
+/// Where the labels stood, pose by pose, as an animation's frames are drawn: on the way forth
+/// each frame starts from the frame before's places, so that a label keeps its side while it
+/// can; on the way back each pose is drawn from its own places of the way forth, so that a
+/// bounced animation passes the same pictures back and closes its loop on the first.
+class FrameLabels
+{
+public:
+    explicit FrameLabels(const std::vector<Pose> &poses)
+        : m_poses(poses)
+        , m_byPose(poses.size())
+    {
+    }
+    /// The places to draw `pose` (one of the poses) from; the drawing leaves its own there.
+    std::vector<std::pair<QString, QPointF>> *before(const Pose *pose)
+    {
+        m_index = std::size_t(pose - m_poses.data());
+        m_buffer = m_byPose[m_index] ? *m_byPose[m_index] : m_last;
+        return &m_buffer;
+    }
+    /// After the frame of before()'s pose is drawn.
+    void after()
+    {
+        if (!m_byPose[m_index]) {
+            m_byPose[m_index] = m_buffer;
+            m_last = m_buffer;
+        }
+    }
+
+private:
+    const std::vector<Pose> &m_poses;
+    std::vector<std::optional<std::vector<std::pair<QString, QPointF>>>> m_byPose;
+    std::vector<std::pair<QString, QPointF>> m_last, m_buffer;
+    std::size_t m_index = 0;
+};
 } // namespace
 
 Eigen::AlignedBox3d sweptExtent(const Mechanism &mechanism, const std::vector<Pose> &poses)
@@ -146,7 +184,8 @@ Eigen::AlignedBox3d sweptExtent(const Mechanism &mechanism, const std::vector<Po
     return swept;
 }
 
-QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings)
+QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings,
+                      std::vector<std::pair<QString, QPointF>> *labelPlaces)
 {
     const SceneStyle style;
     QImage image(settings.size, QImage::Format_RGB32);
@@ -170,7 +209,8 @@ QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const Animat
     Scene drawn = mechanism.scene(pose);
     if (!settings.extent.isEmpty())
         drawn.extent = settings.extent;
-    pictures::paintScenePicture(painter, QRectF(scene), drawn, style, caption, pictures::PictureFit::MotionRange);
+    pictures::paintScenePicture(painter, QRectF(scene), drawn, style, caption, pictures::PictureFit::MotionRange,
+                                labelPlaces);
     painter.end();
     return image;
 }
@@ -183,10 +223,12 @@ QList<QImage> animationFrames(const Mechanism &mechanism, const std::vector<Pose
     const std::vector<const Pose *> order = frameOrder(poses, settings.bounce);
     QList<QImage> frames;
     frames.reserve(static_cast<qsizetype>(order.size()));
+    FrameLabels labels(poses);
     for (const Pose *pose : order) {
         if (cancel && cancel->load())
             return {};
-        frames.append(animationFrame(mechanism, *pose, fitted));
+        frames.append(animationFrame(mechanism, *pose, fitted, labels.before(pose)));
+        labels.after();
     }
     return frames;
 }
@@ -210,13 +252,15 @@ VideoExport writeAnimationVideo(const Mechanism &mechanism, const std::vector<Po
     fitted.extent = sweptExtent(mechanism, poses);
     const std::vector<const Pose *> order = frameOrder(poses, settings.bounce);
     const int total = static_cast<int>(order.size());
+    FrameLabels labels(poses);
     for (int i = 0; i < total; ++i) {
         if (cancel && cancel->load()) {
             result.cancelled = true;
             return result; // the writer discards its temporary file
         }
-        if (!writer.addFrame(animationFrame(mechanism, *order[i], fitted), &result.error))
+        if (!writer.addFrame(animationFrame(mechanism, *order[i], fitted, labels.before(order[i])), &result.error))
             return result;
+        labels.after();
         if (progress)
             progress(i + 1, total);
     }
@@ -245,12 +289,14 @@ Result<QByteArray> renderAnimation(const Mechanism &mechanism, const Pose &start
     fitted.extent = sweptExtent(mechanism, *poses);
     if (!encoder.begin(settings.size, options, &error))
         return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
+    FrameLabels labels(*poses);
     for (const Pose *pose : frameOrder(*poses, settings.bounce)) {
         if (cancel && cancel->load())
             return Failure{FailureKind::InvalidParameter, {},
                            message(QCoreApplication::translate("pkm::Animation", "The animation was cancelled."))};
-        if (!encoder.addFrame(animationFrame(mechanism, *pose, fitted), &error))
+        if (!encoder.addFrame(animationFrame(mechanism, *pose, fitted, labels.before(pose)), &error))
             return Failure{FailureKind::InvalidParameter, {}, error.toStdString()};
+        labels.after();
     }
     const QByteArray gif = encoder.finish(&error);
     if (gif.isEmpty())

@@ -8,11 +8,13 @@
 
 #include <QImage>
 #include <QList>
+#include <QPointF>
 #include <QSize>
 #include <QString>
 
 #include <atomic>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace pkm {
@@ -63,7 +65,10 @@ Interval animationRange(const Mechanism &mechanism, const Pose &start, int varia
 int animationFrameCount(int poses, bool bounce);
 
 /// The picture of one pose, as every frame of GIF and video is drawn; thread-safe.
-QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings);
+/// `labelPlaces` carries where the labels stood from one frame to the next, so that a label
+/// keeps its side while that stays free (null: each frame laid out afresh).
+QImage animationFrame(const Mechanism &mechanism, const Pose &pose, const AnimationSettings &settings,
+                      std::vector<std::pair<QString, QPointF>> *labelPlaces = nullptr);
 
 /// The frames of the poses (bounced if asked); thread-safe (QImage and QPainter only). Stops
 /// early, returning no frames, once `*cancel` becomes true.

@@ -131,14 +131,14 @@ ViewMapping pictureMapping(const QRectF &area, const Scene &scene, const SceneSt
 }
 
 void paintScenePicture(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &sceneStyle,
-    const QString &caption, PictureFit fit)
+    const QString &caption, PictureFit fit, std::vector<std::pair<QString, QPointF>> *labelPlaces)
 {
     SceneStyle style = sceneStyle;
     style.showHandles = false; // rings are an affordance of the screen, not of a picture
     const double px = style.pixelSize;
     const ViewMapping mapping = pictureMapping(area, scene, style, fit, painter.device());
 
-    ScenePainter::paintPicture(painter, area, scene, mapping, style);
+    ScenePainter::paintPicture(painter, area, scene, mapping, style, labelPlaces);
     painter.save();
     painter.setClipRect(area, Qt::IntersectClip);
     // the scale bar: at most 2.5 × its minimum length (1-2-5 steps), its knock-out and a gap

@@ -7,8 +7,12 @@
 
 #include <QFont>
 #include <QFontMetricsF>
+#include <QPointF>
 #include <QStringList>
 #include <QString>
+
+#include <utility>
+#include <vector>
 
 class QPaintDevice;
 class QPainter;
@@ -37,8 +41,10 @@ ViewMapping pictureMapping(const QRectF &area, const Scene &scene, const SceneSt
 
 /// Draws the 2D picture into `area` of any paint device: background and grid, the scene fitted
 /// above a band for the scale bar and the caption (none when empty), no handle rings.
+/// `labelPlaces`: an animation's, kept from frame to frame (ScenePainter::paint()).
 void paintScenePicture(QPainter &painter, const QRectF &area, const Scene &scene, const SceneStyle &style,
-    const QString &caption, PictureFit fit = PictureFit::LabelsWhole);
+    const QString &caption, PictureFit fit = PictureFit::LabelsWhole,
+    std::vector<std::pair<QString, QPointF>> *labelPlaces = nullptr);
 
 /// `caption` as it is drawn in `available` device units of width: one line, or two broken
 /// after a comma where one is too long; a line still too long ends in "…".
