@@ -168,7 +168,8 @@ void SceneLabels::placeJointLabels()
             if (least == 0.0)
                 break;
             const QPointF centre = centreAt(angle, 0.0);
-            const double cost = collisions(boxQuad(centre, room, 0.0), least);
+            // an angle's leader under a name reads as part of it ("P −δ = 79.1°")
+            const double cost = collisions(boxQuad(centre, room, 0.0), least) + (onALeader(boxQuad(centre, room, 0.0)) ? 1.0 : 0.0);
             if (cost < least) {
                 least = cost;
                 outside = centre;

@@ -276,15 +276,22 @@ bool SceneLabels::leaderIsClear(const Leader &leader) const
     return true;
 }
 
+bool SceneLabels::onALeader(const Quad &box) const
+{
+    return std::any_of(m_obstacles.begin(), m_obstacles.end(), [&](const Obstacle &o) { return o.leader && overlap(box, o.quad); });
+}
+
 bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &candidates, double leaveOutAt,
     std::size_t near, double nearEnough, const LeaderFor &leaderFor)
 {
     const QSizeF size = textSize(label.text, label.joint) + QSizeF(4.0 * m_px, 4.0 * m_px); // keep a gap
     const auto boxAt = [&](std::size_t k) { return boxQuad(candidates[k], size, label.rotationDegrees); };
     const auto leaderAt = [&](std::size_t k) { return leaderFor ? leaderFor(k) : std::nullopt; };
-    // Free, and where it needs a leader, one that crosses nothing a reader would follow instead.
+    // Free and off the angles' leaders (a name over one reads as part of the angle's label:
+    // the four-bar's "P −δ = 79.1°"), and where it needs a leader, one that crosses nothing a
+    // reader would follow instead.
     const auto clear = [&](std::size_t k) {
-        if (!isFree(boxAt(k), false))
+        if (!isFree(boxAt(k), false) || onALeader(boxAt(k)))
             return false;
         const std::optional<Leader> leader = leaderAt(k);
         return !leader || leaderIsClear(*leader);
@@ -305,15 +312,12 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
         if (isFree(boxAt(k), true) && (!leaderAt(k) || leaderIsClear(*leaderAt(k))))
             chosen = k;
     }
-    const auto onALeader = [&](const Quad &box) {
-        return std::any_of(m_obstacles.begin(), m_obstacles.end(), [&](const Obstacle &o) { return o.leader && overlap(box, o.quad); });
-    };
     for (std::size_t k = 0; k < near && chosen == count; ++k)
         chosen = isFree(boxAt(k), false) && !onALeader(boxAt(k)) ? k : count;
     if (chosen == count && near > 0) {
         best = nearEnough;
         for (std::size_t k = 0; k < near; ++k) {
-            const double thin = thinLinesOnly(boxAt(k));
+            const double thin = thinLinesOnly(boxAt(k)) + (onALeader(boxAt(k)) ? nearEnough : 0.0);
             if (thin < best) {
                 best = thin;
                 chosen = k;
@@ -323,11 +327,11 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
     for (std::size_t k = near; k < count && chosen == count; ++k)
         chosen = clear(k) ? k : count;
     for (std::size_t k = near; leaderFor && k < count && chosen == count; ++k)
-        chosen = isFree(boxAt(k), false) ? k : count;
+        chosen = isFree(boxAt(k), false) && !onALeader(boxAt(k)) ? k : count;
     if (chosen == count) {
         best = std::numeric_limits<double>::infinity();
         for (std::size_t k = 0; k < count; ++k) {
-            const double cost = collisions(boxAt(k), best);
+            const double cost = collisions(boxAt(k), best) + (onALeader(boxAt(k)) ? 1.0 : 0.0);
             if (cost < best) {
                 best = cost;
                 chosen = k;

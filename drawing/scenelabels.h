@@ -176,6 +176,8 @@ private:
     /// `perLine` × (½ + the area hidden / 80 px²) for each line; the sum stops once it reaches
     /// `enough`.
     double collisions(const detail::Quad &box, double enough, double perLine = 1.0) const;
+    /// Whether `box` lies on an angle label's leader.
+    bool onALeader(const detail::Quad &box) const;
     /// Whether `box` covers nothing at all (quicker than collisions()).
     /// Nothing under `box`; `faint`: the faint lines (ghosts) count too.
     bool isFree(const detail::Quad &box, bool faint = false) const;
