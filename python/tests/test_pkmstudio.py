@@ -107,6 +107,12 @@ def test_with_parameters_is_set_and_leaves_the_design_alone():
     assert design.parameters["l1"] != 210 and wider.parameters["l1"] == 210
     crossed = pkmstudio.load("oxglide-prototype").with_parameters(mode="X")
     same(crossed.evaluate(), pkm_json("eval", "oxglide-prototype", "--set", "mode=X", "--json"))
+    # MOMA's modes by their words or their numbers
+    corner = pkmstudio.load("moma-3c")
+    words = corner.with_parameters(branch1="ahead", assembly="left")
+    assert words.parameters["branch1"] == -1 and words.parameters["assembly"] == 1
+    same(words.evaluate(), corner.with_parameters(branch1=-1, assembly=1).evaluate())
+    assert dict(next(i for i in design.parameter_info if i["name"] == "branch1")["choices"]) == {"behind": 1, "ahead": -1}
 
 
 def test_a_bad_value_raises_the_command_lines_message():
