@@ -42,6 +42,14 @@ QString formulaText(const QString &text)
     // "рад/с" broke after "рад/".
     static const QRegularExpression product(QStringLiteral("(?<=[\\d)°])·(?=[\\w(−])")); // not N·m
     kept.replace(product, QStringLiteral("·\u200B"));
+    // A list may break after its separators, a matrix after its rows: the 3-RP̲R's
+    // "det[(−14,92, 1,34, 0,00); (−8,19, …)]" had none and was cut inside "−8,1" / "9". A
+    // decimal comma has no space after it and stays whole.
+    kept.replace(QStringLiteral(",") + keep, QStringLiteral(", "));
+    kept.replace(QStringLiteral(";") + keep, QStringLiteral("; "));
+    // A sign before its term stays with it ("−" / "((P_i − C_i)ᵀ" was broken after the sign).
+    static const QRegularExpression sign(QStringLiteral("−(?=[^\\s\\x{00A0}])"));
+    kept.replace(sign, QStringLiteral("−\u2060"));
     return slashesKept(kept);
 }
 

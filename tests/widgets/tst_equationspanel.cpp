@@ -5,9 +5,12 @@
 #include "equationspanel.h"
 #include "kinds/oxglide/oxglide.h"
 #include "support/kinematics.h"
+#include "support/planardesigns.h"
 #include "valuestable.h"
 
+#include <QLocale>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QTest>
 #include <QAbstractTextDocumentLayout>
 #include <QTextBlock>
@@ -146,11 +149,25 @@ private slots:
 
     /// A narrow panel wraps a line between terms: not inside a number ("17879,3" / "79" in a
     /// product of numbers with no place to break) nor after a unit's slash ("рад/" / "с").
-    void wrapsBetweenTerms_data() { test::addKindRows(); }
+    void wrapsBetweenTerms_data()
+    {
+        test::addKindRows();
+        // its det J_x is a 3×3 matrix of numbers, one long list
+        QTest::newRow("3-RPR") << QStringLiteral("planar-parallel/3-RPR");
+        // and with a decimal comma, which the list's separators must not be taken for
+        QTest::newRow("3-RPR ru") << QStringLiteral("planar-parallel/3-RPR ru");
+    }
     void wrapsBetweenTerms()
     {
         QFETCH(QString, kind);
-        const MechanismPtr m = test::makeKind(kind.toStdString());
+        const bool russian = kind.endsWith(QStringLiteral(" ru"));
+        const QLocale before;
+        if (russian)
+            QLocale::setDefault(QLocale(QLocale::Russian, QLocale::Russia));
+        const auto restore = qScopeGuard([&] { QLocale::setDefault(before); });
+        const MechanismPtr m = kind.startsWith(QStringLiteral("planar-parallel/3-RPR"))
+            ? test::makeKind("planar-parallel", test::legdesigns::threeRpr())
+            : test::makeKind(kind.toStdString());
         EquationsPanel panel;
         panel.resize(190, 800);
         panel.show();
@@ -166,7 +183,8 @@ private slots:
                 if (at <= 0 || at >= text.size())
                     continue;
                 const QChar before = text.at(at - 1), after = text.at(at);
-                if ((before.isDigit() || before == u'/') && after.isLetterOrNumber())
+                // not inside a number or a unit, nor between a sign and its term
+                if (((before.isDigit() || before == u'/') && after.isLetterOrNumber()) || before == QChar(0x2212))
                     bad << text.left(at) + QStringLiteral(" | ") + text.mid(at);
             }
         }
