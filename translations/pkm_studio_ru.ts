@@ -5957,7 +5957,7 @@ Please verify the correct file name was given.</source>
     </message>
     <message>
         <source>beyond its θ range</source>
-        <translation>за пределами её диапазона θ</translation>
+        <translation>вне её диапазона θ</translation>
     </message>
     <message>
         <source>k = %1</source>
