@@ -29,10 +29,14 @@ std::string legSymbol(const char *pattern, int leg)
     static const char *subscripts[3] = {"₁", "₂", "₃"};
     return text::format(pattern, {subscripts[leg]});
 }
-/// det J_x from J_x's entries as the pose gives them: the direct singularity's test, which
+/// det J_x from J_x's entries in the report of the pose: the direct singularity's test, which
 /// det J = det J_x / det J_q divides by.
-Equation outputJacobian(const Eigen::Matrix3d &jx, int n, bool pjointLegs, const equations::Report &report)
+Equation outputJacobian(int n, bool pjointLegs, const equations::Report &report)
 {
+    Eigen::Matrix3d jx = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            jx(i, j) = report.value("Jx", i * n + j);
     using equations::plain;
     Equation equation{.title = text::translate("core", "Output Jacobian (0: direct singularity)"),
                       .result = report.number("det_Jx"),
@@ -76,7 +80,6 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
     const std::string own = ownModel();
 
     std::vector<Equation> list;
-    Eigen::Matrix3d jx = Eigen::Matrix3d::Identity(); // J_x's rows, for its determinant below
     bool pjointLegs = false;
     for (int i = 0; i < n; ++i) {
         const PlanarLeg &leg = design.legs[std::size_t(i)];
@@ -166,11 +169,6 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
             input.numbers = {length(e.x()), rate(c.centreRate.x()), length(e.y()), rate(c.centreRate.y())};
         }
         list.push_back(input);
-        // J_x = −∂g/∂X, row i −J_i·(e_iᵀ, (P_i − O)×e_i), J_i the П-joint's ∂d/∂θ or 1
-        jx(i, 0) = -c.pjointRate * e.x();
-        jx(i, 1) = -c.pjointRate * e.y();
-        if (n == 3)
-            jx(i, 2) = -c.pjointRate * cross(P - X.head<2>(), e);
         pjointLegs = pjointLegs || leg.type == LegType::PiRR;
     }
     // J_q is diagonal: its determinant is the product of the legs' entries
@@ -186,7 +184,7 @@ std::vector<Equation> equations(const Mechanism &mechanism, const Pose &pose)
         inputs.formula *= report.value("Jq", i * n + i);
     }
     list.push_back(inputs);
-    list.push_back(outputJacobian(jx, n, pjointLegs, report));
+    list.push_back(outputJacobian(n, pjointLegs, report));
     list.push_back({.title = text::translate("core", "Determinant of J"),
                     .symbolic = "det J = det J_x / det J_q",
                     .substituted = "%1 / %2",
