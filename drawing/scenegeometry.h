@@ -7,6 +7,7 @@
 #include <QPointF>
 #include <QSizeF>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -37,6 +38,14 @@ inline double sceneAngle(const QPointF &deviceVector)
 inline double dot(const QPointF &a, const QPointF &b)
 {
     return a.x() * b.x() + a.y() * b.y();
+}
+/// How far `p` lies from the segment from `a` to `b`.
+inline double distanceToSegment(const QPointF &p, const QPointF &a, const QPointF &b)
+{
+    const QPointF d = b - a;
+    const double squared = dot(d, d);
+    const double t = squared > 0.0 ? std::clamp(dot(p - a, d) / squared, 0.0, 1.0) : 0.0;
+    return length(p - (a + t * d));
 }
 /// Left-hand normal as seen on screen (y down): turns +x into −y (up).
 inline QPointF screenLeft(const QPointF &u)

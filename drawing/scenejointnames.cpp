@@ -5,6 +5,8 @@
 
 #include "scenegeometry.h"
 
+#include <QPolygonF>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -44,15 +46,15 @@ QPointF SceneLabels::jointNameCentre(std::size_t joint, const QSizeF &size, doub
 QPointF SceneLabels::namedMiddle(int *count) const
 {
     QPointF sum;
-    int named = 0;
+    int shown = 0;
     for (std::size_t j = 0; j < m_points.size(); ++j) {
-        if (!m_scene.joints[j].label.empty() && valid(int(j))) {
+        if (named(j)) {
             sum += m_points[j];
-            ++named;
+            ++shown;
         }
     }
-    *count = named;
-    return named > 0 ? sum / double(named) : sum;
+    *count = shown;
+    return shown > 0 ? sum / double(shown) : sum;
 }
 
 std::vector<double> SceneLabels::outwardNameAngles(std::size_t joint) const
@@ -103,6 +105,58 @@ std::array<QPointF, 3> SceneLabels::groundNamePlaces(std::size_t joint, const QS
             p + QPointF(-outer * side, beside)};
 }
 
+void SceneLabels::settleJointNames()
+{
+    m_jointNames.assign(m_points.size(), QString());
+    m_crowdedPlatform = QRectF();
+    m_crowdedCorners.clear();
+    for (std::size_t j = 0; j < m_points.size(); ++j) {
+        if (!m_scene.joints[j].label.empty() && valid(int(j)))
+            m_jointNames[j] = QString::fromStdString(m_scene.joints[j].label);
+    }
+    // A platform's corners drawn closer than one and a half times a name and two pivots side
+    // by side leave no room beside each for its name: pushed a leg's length away with leaders, P₁…P₃ crossed
+    // the base's names and read as theirs. A drawing that small names the platform by its
+    // reference point alone (Oₚ, which is not a corner) and its legs by their bars; zoomed in,
+    // the corners get their names back. Two corners (the O-X glide's A′B′ and C′D′ at the ends
+    // of s) always have the outward side each.
+    std::vector<std::size_t> corners;
+    for (const SceneBar &bar : m_scene.bars) {
+        for (const int end : {bar.from, bar.to}) {
+            const std::size_t j = std::size_t(end);
+            if (bar.kind == BarKind::Platform && named(j) && m_scene.joints[j].kind != JointKind::Point
+                && std::find(corners.begin(), corners.end(), j) == corners.end())
+                corners.push_back(j);
+        }
+    }
+    double shortest = std::numeric_limits<double>::infinity(), widest = 0.0;
+    for (std::size_t a = 0; a < corners.size(); ++a) {
+        const QSizeF size = textSize(m_jointNames[corners[a]], true);
+        widest = std::max({widest, size.width(), size.height()});
+        for (std::size_t b = a + 1; b < corners.size(); ++b)
+            shortest = std::min(shortest, length(m_points[corners[a]] - m_points[corners[b]]));
+    }
+    if (corners.size() >= 3 && shortest < 1.5 * (widest + 2.0 * m_style.pivotRadius * m_px)) {
+        for (const std::size_t j : corners) {
+            m_jointNames[j].clear();
+            m_crowdedCorners.push_back(m_points[j]);
+        }
+        m_crowdedPlatform = QPolygonF(QList<QPointF>(m_crowdedCorners.begin(), m_crowdedCorners.end())).boundingRect();
+    }
+    // Joints on one spot by design (the 3-RP̲R's reference point Oₚ at its corner P₁) share
+    // one name: the second, pushed off by the first, stood a leg's length away with a leader.
+    // Two joints passing each other keep their own.
+    const double together = 0.5 * m_px;
+    for (std::size_t j = 0; j < m_points.size(); ++j) {
+        for (std::size_t k = j + 1; k < m_points.size() && named(j); ++k) {
+            if (named(k) && length(m_points[j] - m_points[k]) < together) {
+                m_jointNames[j] += QStringLiteral(" = ") + m_jointNames[k];
+                m_jointNames[k].clear();
+            }
+        }
+    }
+}
+
 void SceneLabels::reserveJointNames()
 {
     // Where each joint's name would go first (the middle of the widest gap at its joint): the
@@ -110,9 +164,9 @@ void SceneLabels::reserveJointNames()
     // pushed away from E by an angle measured at A.
     m_reserved.clear();
     for (std::size_t i = 0; i < m_points.size(); ++i) {
-        if (m_scene.joints[i].label.empty() || !valid(int(i)))
+        if (!named(i))
             continue;
-        const QString text = QString::fromStdString(m_scene.joints[i].label);
+        const QString &text = m_jointNames[i];
         const QSizeF size = textSize(text, true);
         // In motion, where it stood in the frame before instead: the widest gap can turn to
         // another side from one frame to the next and push the other labels with it.
@@ -133,8 +187,7 @@ void SceneLabels::placeJointLabels()
     m_reserved.clear();
     std::vector<QPointF> candidates;
     for (std::size_t i = 0; i < m_points.size(); ++i) {
-        const std::string &name = m_scene.joints[i].label;
-        if (name.empty() || !valid(int(i)))
+        if (!named(i))
             continue;
         // A joint out of sight (the four-bar's instant centre P when AB and DC are nearly
         // parallel) keeps its name out too: in sight with a leader, it named nothing.
@@ -143,7 +196,7 @@ void SceneLabels::placeJointLabels()
         // Preferred: outward beside the joint (outwardNameAngles()); else the middles of the angular
         // gaps between what leaves the joint (members, ground, extension lines, arc labels),
         // widest first; then all round, farther out.
-        const QString text = QString::fromStdString(name);
+        const QString &text = m_jointNames[i];
         const QSizeF size = textSize(text, true);
         const auto centreAt = [&](double a, double extra) { return jointNameCentre(i, size, a, extra); };
         const double clear = (m_style.pivotRadius + (m_style.showHandles ? 10.0 : 5.0)) * m_px;
@@ -152,7 +205,7 @@ void SceneLabels::placeJointLabels()
         const auto nearerAnother = [&](const QPointF &centre) {
             const double own = length(centre - m_points[i]);
             for (std::size_t j = 0; j < m_points.size(); ++j) {
-                if (j != i && valid(int(j)) && !m_scene.joints[j].label.empty() && length(centre - m_points[j]) < own)
+                if (j != i && named(j) && length(centre - m_points[j]) < own)
                     return true;
             }
             return false;
@@ -244,6 +297,29 @@ void SceneLabels::placeJointLabels()
             const std::optional<QLineF> line = leaderToBox(start, candidates[k], size, clear - ring + 12.0 * m_px);
             return line ? std::optional<Leader>(Leader {*line, joint, joint, false, k >= firstLast}) : std::nullopt;
         };
+        // The reference point inside a crowded platform: just outside the platform, over thin
+        // lines at most, with a leader across the platform's edge to the point (without one,
+        // Oₚ read as the corner's it stood beside), or not at all (farther out, a leader from
+        // that small a triangle crossed the legs and the base's names).
+        if (m_crowdedPlatform.contains(joint)) {
+            // across an edge of the platform, between its corners: past a corner it named that
+            const auto pastACorner = [&](const QPointF &centre) {
+                const QPointF end = leaderToBox(joint, centre, size, 0.0).value_or(QLineF(joint, joint)).p2();
+                return std::any_of(m_crowdedCorners.begin(), m_crowdedCorners.end(), [&](const QPointF &corner) {
+                    return distanceToSegment(corner, joint, end) < (m_style.pivotRadius + 2.0) * m_px;
+                });
+            };
+            candidates.resize(near);
+            candidates.erase(std::remove_if(candidates.begin(), candidates.end(), pastACorner), candidates.end());
+            const std::size_t before = m_labels.size();
+            placeFirstFree(label, candidates, coversALabel, candidates.size(), 4.0);
+            if (m_labels.size() > before) {
+                const QPointF centre = m_labels.back().centre;
+                if (const std::optional<QLineF> line = leaderToBox(joint + ring * unit(centre - joint), centre, size, 0.0))
+                    m_nameLeaders.push_back({*line, label.colour, false});
+            }
+            continue;
+        }
         placeFirstFree(label, candidates,
             std::numeric_limits<double>::infinity(), near, 4.0, leaderFor);
     }

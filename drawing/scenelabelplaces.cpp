@@ -40,12 +40,7 @@ double SceneLabels::memberHalfWidth(int from, int to, double fraction) const
 
 bool SceneLabels::nearerAnotherBar(const QPointF &centre, int from, int to) const
 {
-    const auto distance = [&centre](const QPointF &a, const QPointF &b) {
-        const QPointF d = b - a;
-        const double squared = dot(d, d);
-        const double t = squared > 0.0 ? std::clamp(dot(centre - a, d) / squared, 0.0, 1.0) : 0.0;
-        return length(centre - (a + t * d));
-    };
+    const auto distance = [&centre](const QPointF &a, const QPointF &b) { return distanceToSegment(centre, a, b); };
     const double own = distance(point(from), point(to));
     return std::any_of(m_scene.bars.begin(), m_scene.bars.end(), [&](const SceneBar &bar) {
         const bool same = (bar.from == from && bar.to == to) || (bar.from == to && bar.to == from);
@@ -60,6 +55,7 @@ void SceneLabels::placeAll()
     // names (anywhere around).
     for (const PendingFreeLabel &pending : m_freeLabels)
         placeFirstFree(pending.label, pending.candidates);
+    settleJointNames();
     reserveJointNames();
     placeMemberLabels(true);
     placeAngleLabels();
@@ -364,7 +360,7 @@ bool SceneLabels::nearerAnotherJoint(const QPointF &centre, const QSizeF &size, 
     };
     const double own = gap(point(vertex));
     for (std::size_t j = 0; j < m_points.size(); ++j) {
-        if (int(j) != vertex && valid(int(j)) && !m_scene.joints[j].label.empty() && gap(m_points[j]) < own)
+        if (int(j) != vertex && named(j) && gap(m_points[j]) < own)
             return true;
     }
     return false;

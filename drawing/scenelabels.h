@@ -240,6 +240,13 @@ private:
     std::array<QPointF, 3> groundNamePlaces(std::size_t joint, const QSizeF &size) const;
     /// Fills m_reserved.
     void reserveJointNames();
+    /// Fills m_jointNames: each shown joint's name as drawn. Joints drawn on one spot share one
+    /// name ("Oₚ = P₁"); the corners of a platform of three or more named corners drawn too
+    /// small for a name beside each (a 3-leg platform with the whole range of motion in sight)
+    /// are left out.
+    void settleJointNames();
+    /// Whether joint `joint` has a name to place (settleJointNames()).
+    bool named(std::size_t joint) const { return joint < m_jointNames.size() && !m_jointNames[joint].isEmpty(); }
     /// Where a label of `text` that names what is now at `anchor` stood in the frame before
     /// (setPrevious()), moved with it; none if it was not drawn.
     std::optional<QPointF> lastPlace(const QString &text, const QPointF &anchor) const;
@@ -275,6 +282,9 @@ private:
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
     /// the joints' names' first places, kept free while the other labels are placed
     std::vector<detail::Quad> m_reserved;
+    std::vector<QString> m_jointNames; ///< per joint: its name as drawn, empty if none (settleJointNames())
+    std::vector<QPointF> m_crowdedCorners; ///< the corners of a platform whose corners are unnamed
+    QRectF m_crowdedPlatform; ///< and their bounds
     QRectF m_room; ///< where labels may stand; empty: anywhere
     const std::vector<std::pair<QString, QPointF>> *m_previous = nullptr; ///< the frame before
     /// Whether `box` lies past the room's edge.

@@ -8,13 +8,16 @@
 #include "document/document.h"
 #include "linkageview.h"
 #include "scenelayout.h"
+#include "scenepainter.h"
 #include "support/app.h"
 #include "units.h"
 
+#include <QScopeGuard>
 #include <QTest>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -224,6 +227,117 @@ private slots:
         qInfo("%s: %d leaders under a name in %d poses", qPrintable(preset), int(under.size()), poses);
         QVERIFY(poses > 50);
         QVERIFY2(under.size() <= allowed, qPrintable(under.join(QStringLiteral(", "))));
+    }
+
+    void platformNamesStayByTheirJoints_data()
+    {
+        QTest::addColumn<QString>("preset");
+        QTest::addColumn<bool>("presentation");
+        for (const char *preset : {"pp-3rrr", "pp-3prr", "pp-3rpr"}) {
+            QTest::newRow(preset) << QString::fromLatin1(preset) << false;
+            QTest::newRow(qPrintable(QStringLiteral("%1 presentation").arg(QLatin1String(preset)))) << QString::fromLatin1(preset) << true;
+        }
+    }
+    /// A 3-leg platform drawn small (the whole range of motion in sight) had no room beside its
+    /// corners for P₁…P₃ and Oₚ: the names stood a leg's length away with leaders crossing
+    /// other names (P₃ on A₃'s leader), and read as the base's. A platform's name is next to
+    /// its joint — its gap to the name's box at most a name's height past the pivot's ring —
+    /// or not drawn; the corners' names come back once the platform is drawn large enough.
+    /// (Before: 96, 62 and 7 of the 3-R̲RR's, 3-P̲RR's and 3-RP̲R's platform names far in the
+    /// window's view, 37, 42 and 16 in presentation mode, up to 3.1 name heights away.)
+    void platformNamesStayByTheirJoints()
+    {
+        QFETCH(QString, preset);
+        QFETCH(bool, presentation);
+        m_window->setPresentationMode(presentation);
+        const auto back = qScopeGuard([&] { m_window->setPresentationMode(false); });
+        QVERIFY(m_window->openDesign(preset));
+        QTest::qWait(50);
+        LinkageView *view = m_window->linkageView();
+        const MechanismPtr mechanism = m_window->document()->mechanism();
+        QTest::keyClick(view, Qt::Key_Home); // fitted to the view's size in this mode
+        QStringList far;
+        int poses = 0, named = 0;
+        double farthest = 0.0;
+        drawing::LabelPlaces places;
+        // the platform across its workspace's width and its first input across its range, each
+        // from home
+        const int x = mechanism->inputCount();
+        for (int k = 0; k <= 60; ++k) {
+            const int variable = k <= 30 ? x : 0;
+            if (k == 31)
+                QVERIFY(m_window->document()->moveOutputsTo(mechanism->homePose().outputs).ok());
+            const Interval range = mechanism->variableRange(variable);
+            const double value = range.min + (range.max - range.min) * (k % 31) / 30.0;
+            if (!m_window->document()->setVariable(variable, value).ok())
+                continue;
+            ++poses;
+            const SceneStyle &style = view->sceneStyle();
+            const Scene &scene = view->scene();
+            drawing::LayoutOptions options;
+            options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
+            for (const Scene &ghost : view->ghostScenes()) {
+                const std::vector<QLineF> lines = drawing::ghostLines(ghost, view->mapping());
+                options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
+            }
+            // as the view paints it: clear of the scale bar, each label kept where it stood
+            options.covered.push_back(ScenePainter::scaleBarBox(QRectF(view->rect()), view->mapping(), style, view));
+            const drawing::LabelPlaces previous = places;
+            options.previousLabels = &previous;
+            options.placedLabels = &places;
+            const drawing::DrawList list = drawing::layoutScene(scene, view->mapping(), style, options);
+            for (const drawing::Primitive &item : list.items) {
+                const auto *text = std::get_if<drawing::Text>(&item.shape);
+                if (!text || !drawing::shownOnScreen(item.medium) || text->box.isEmpty())
+                    continue;
+                for (const SceneJoint &joint : scene.joints) {
+                    // joints on one spot share a name ("Oₚ = P₁"), placed by the first
+                    if (QString::fromStdString(joint.label) != text->text.section(QStringLiteral(" = "), 0, 0))
+                        continue;
+                    ++named;
+                    const QPointF at = view->mapping().toDevice(joint.position.head<2>());
+                    const double dx = std::max(std::abs(at.x() - text->centre.x()) - 0.5 * text->box.width(), 0.0);
+                    const double dy = std::max(std::abs(at.y() - text->centre.y()) - 0.5 * text->box.height(), 0.0);
+                    const double gap = std::hypot(dx, dy) - style.pivotRadius * style.pixelSize;
+                    farthest = std::max(farthest, gap / text->box.height());
+                    const bool platform = joint.label.starts_with("P") || joint.label.starts_with("O");
+                    if (gap > text->box.height() && platform)
+                        far << QStringLiteral("%1 at %2 (%3 px)").arg(text->text).arg(value, 0, 'f', 2).arg(gap, 0, 'f', 0);
+                }
+            }
+        }
+        qInfo("%s: %d names in %d poses, %d of the platform's far from their joints, of all the farthest %.1f name "
+              "heights away", qPrintable(preset), named, poses, int(far.size()), farthest);
+        QVERIFY(poses > 12);
+        QVERIFY2(far.isEmpty(), qPrintable(far.join(QStringLiteral(", "))));
+        // In presentation mode every name is next to its joint. In the window's small view a
+        // base pivot crowded by its leg's actuator may still go a ring farther out, with a
+        // leader (the 3-RP̲R's A₃ above q₃'s motor).
+        QVERIFY2(farthest <= (presentation ? 1.5 : 3.5), qPrintable(QString::number(farthest)));
+        // Zoomed in on the platform until its corners are 150 px apart, each has its name again
+        // (the 3-RP̲R's P₁ with Oₚ, which stands on it).
+        QVERIFY(m_window->document()->moveOutputsTo(mechanism->homePose().outputs).ok());
+        const QRectF area(view->rect());
+        double side = std::numeric_limits<double>::infinity();
+        for (const SceneJoint &a : view->scene().joints) {
+            for (const SceneJoint &b : view->scene().joints) {
+                if (&a != &b && a.label.starts_with("P") && b.label.starts_with("P"))
+                    side = std::min(side, (a.position - b.position).norm());
+            }
+        }
+        QVERIFY(std::isfinite(side));
+        ViewMapping zoomed = view->mapping();
+        zoomed.scale = 150.0 / side;
+        zoomed.origin = area.center() - (zoomed.toDevice(view->scene().joints.front().position) - zoomed.origin);
+        drawing::LayoutOptions options;
+        options.labelRoom = area.adjusted(2.0, 2.0, -2.0, -2.0);
+        QString shown;
+        for (const drawing::Primitive &item : drawing::layoutScene(view->scene(), zoomed, view->sceneStyle(), options).items) {
+            if (const auto *text = std::get_if<drawing::Text>(&item.shape); text && drawing::shownOnScreen(item.medium))
+                shown += text->text + QLatin1Char(' ');
+        }
+        for (const char *corner : {"P₁", "P₂", "P₃"})
+            QVERIFY2(shown.contains(QString::fromUtf8(corner)), qPrintable(shown));
     }
 };
 
