@@ -57,6 +57,7 @@ void SceneLabels::placeAll()
         placeFirstFree(pending.label, pending.candidates);
     settleJointNames();
     reserveJointNames();
+    reserveBarNames();
     placeMemberLabels(true);
     placeAngleLabels();
     placeGuideLabels();
@@ -68,17 +69,7 @@ void SceneLabels::placeMemberLabels(bool dimensions)
 {
     if (m_points.empty())
         return;
-    QPointF centroid;
-    int shown = 0;
-    for (int j = 0; j < int(m_points.size()); ++j) {
-        if (valid(j)) {
-            centroid += point(j);
-            ++shown;
-        }
-    }
-    if (shown > 0)
-        centroid /= double(shown);
-
+    const QPointF centroid = shownCentroid();
     std::vector<QPointF> candidates;
     std::vector<std::optional<QPointF>> anchors; // where a candidate's leader starts, if it needs one
     for (const PendingMemberLabel &pending : m_memberLabels) {
@@ -99,8 +90,7 @@ void SceneLabels::placeMemberLabels(bool dimensions)
             const QPointF up = deviceDirection((90.0 - label.rotationDegrees) * degree);
             firstSide = dot(up, left) >= 0.0 ? 1.0 : -1.0;
         } else {
-            // Bar names upright, on the outside of the mechanism.
-            firstSide = dot(left, 0.5 * (p + q) - centroid) >= 0.0 ? 1.0 : -1.0;
+            firstSide = barNameSide(pending, centroid);
         }
         candidates.clear();
         anchors.clear();
@@ -119,7 +109,7 @@ void SceneLabels::placeMemberLabels(bool dimensions)
                     const double extent = pending.preferReadingUp ? 0.5 * size.height() : support(normal, size);
                     const double edge = memberHalfWidth(pending.from, pending.to, fraction) + 1.0 * m_px;
                     const QPointF onMember = p + fraction * (q - p);
-                    const QPointF centre = onMember + (edge + (4.0 + extra) * m_px + extent) * normal;
+                    const QPointF centre = memberLabelCentre(pending, fraction, normal, extent, extra);
                     // a name nearer another bar than its own would name that one (MOMA's S₁
                     // between both links)
                     if (!dimensions && nearerAnotherBar(centre, pending.from, pending.to))
@@ -146,6 +136,51 @@ void SceneLabels::placeMemberLabels(bool dimensions)
         // A name next to its bar on the outside may cover one thin line (a guide's axis, an
         // angle's reference) rather than go inside, where between two bars it names either.
         placeFirstFree(label, candidates, coversALabel, near, 2.0, leaderFor);
+    }
+}
+
+QPointF SceneLabels::shownCentroid() const
+{
+    QPointF centroid;
+    int shown = 0;
+    for (int j = 0; j < int(m_points.size()); ++j) {
+        if (valid(j)) {
+            centroid += point(j);
+            ++shown;
+        }
+    }
+    return shown > 0 ? centroid / double(shown) : centroid;
+}
+
+double SceneLabels::barNameSide(const PendingMemberLabel &pending, const QPointF &centroid) const
+{
+    // upright, on the outside of the mechanism
+    const QPointF p = point(pending.from), q = point(pending.to);
+    return dot(screenLeft(unit(q - p)), 0.5 * (p + q) - centroid) >= 0.0 ? 1.0 : -1.0;
+}
+
+QPointF SceneLabels::memberLabelCentre(const PendingMemberLabel &pending, double fraction, const QPointF &normal, double extent,
+    double extra) const
+{
+    const QPointF p = point(pending.from), q = point(pending.to);
+    const double edge = memberHalfWidth(pending.from, pending.to, fraction) + 1.0 * m_px;
+    return p + fraction * (q - p) + (edge + (4.0 + extra) * m_px + extent) * normal;
+}
+
+void SceneLabels::reserveBarNames()
+{
+    // Where each bar's name goes first (beside its middle, outward): an angle label's leader
+    // keeps off while it has another way, so that the name is not pushed off or left on it
+    // (the П-joint's coupler name b under μ's leader in a tight pose).
+    m_barNamePlaces.clear();
+    const QPointF centroid = shownCentroid();
+    for (const PendingMemberLabel &pending : m_memberLabels) {
+        if (pending.preferReadingUp || !valid(pending.from) || !valid(pending.to)
+            || length(point(pending.to) - point(pending.from)) < 1e-6)
+            continue;
+        const QSizeF size = textSize(pending.text);
+        const QPointF normal = barNameSide(pending, centroid) * screenLeft(unit(point(pending.to) - point(pending.from)));
+        m_barNamePlaces.push_back(boxQuad(memberLabelCentre(pending, 0.5, normal, support(normal, size), 0.0), size, 0.0));
     }
 }
 
@@ -255,6 +290,18 @@ void SceneLabels::placeAngleLabels()
         // A free place that reads as another joint's costs as much as a short leader: at a
         // large text size the five-bar's θ₁ went under the ground beside E, and E inside.
         constexpr double readsAsAnother = 2.0;
+        // A leader across where a bar's or a joint's name goes first leaves the name on it or
+        // pushes it off (the П-joint's b under μ's leader, the four-bar's A under α's).
+        const auto overAName = [&](const QLineF &line) {
+            const Quad path = segmentQuad(line.p1() + 5.0 * m_px * unit(line.p2() - line.p1()), line.p2(), 1.0 * m_px);
+            const auto under = [&](const Quad &place) { return overlap(path, place); };
+            return std::any_of(m_barNamePlaces.begin(), m_barNamePlaces.end(), under)
+                || std::any_of(m_reserved.begin(), m_reserved.end(), under);
+        };
+        const auto leaderOverAName = [&](const QPointF &candidate) {
+            const std::optional<QLineF> line = leaderTo(pending, candidate, size);
+            return line && overAName(*line);
+        };
         // An earlier angle label's leader is no obstacle to a joint's name, but an angle label
         // over it hides where it goes.
         const auto onALeader = [&](const QPointF &candidate) {
@@ -263,7 +310,7 @@ void SceneLabels::placeAngleLabels()
                 [&](const QLineF &line) { return overlap(box, segmentQuad(line.p1(), line.p2(), 1.0 * m_px)); });
         };
         for (const QPointF &candidate : near) {
-            if (!isFree(boxQuad(candidate, room, 0.0)) || onALeader(candidate) || !leaderClear(candidate))
+            if (!isFree(boxQuad(candidate, room, 0.0)) || onALeader(candidate) || !leaderClear(candidate) || leaderOverAName(candidate))
                 continue;
             if (!nearerAnotherJoint(candidate, size, pending.vertex)) {
                 best = 0.0;
@@ -292,7 +339,7 @@ void SceneLabels::placeAngleLabels()
         const bool roomy = best == 0.0 && isFree(boxQuad(centre, room + QSizeF(2.0 * keptMargin, 2.0 * keptMargin) * m_px, 0.0));
         if (const std::optional<QPointF> was = lastPlace(pending.text, v);
             was && !roomy && isFree(boxQuad(*was, room, 0.0)) && !onALeader(*was) && leaderClear(*was)
-            && !nearerAnotherJoint(*was, size, pending.vertex)) {
+            && !leaderOverAName(*was) && !nearerAnotherJoint(*was, size, pending.vertex)) {
             const std::optional<QLineF> line = leaderTo(pending, *was, size);
             const bool shortAndClear = !line
                 || (line->length() <= 80.0 * m_px
@@ -323,10 +370,11 @@ void SceneLabels::placeAngleLabels()
             if (line && cost < best) {
                 // It starts a little off the arc, which it touches.
                 const QPointF start = line->p1() + 5.0 * m_px * unit(line->p2() - line->p1());
-                const double crossed = collisions(segmentQuad(start, line->p2(), 1.0 * m_px), 3.0);
+                const Quad path = segmentQuad(start, line->p2(), 1.0 * m_px);
+                const double crossed = collisions(path, 3.0);
                 if (crossed >= 3.0 || line->length() > 80.0 * m_px)
                     continue;
-                cost += 0.5 + 0.02 * line->length() / m_px + 1.5 * crossed;
+                cost += 0.5 + 0.02 * line->length() / m_px + 1.5 * crossed + (overAName(*line) ? readsAsAnother : 0.0);
             }
             if (cost < best) {
                 best = cost;

@@ -328,10 +328,14 @@ bool SceneLabels::placeFirstFree(SceneLabel label, const std::vector<QPointF> &c
         chosen = clear(k) ? k : count;
     for (std::size_t k = near; leaderFor && k < count && chosen == count; ++k)
         chosen = isFree(boxAt(k), false) && !onALeader(boxAt(k)) ? k : count;
+    // A label that may be left out (a bar's name) is rather left out than put on an angle's
+    // leader, so any place off the leaders that covers less wins: the П-joint's b sat on μ's
+    // leader, kept there from frame to frame, while a place beside C was left.
+    const double onALeaderCost = std::isfinite(leaveOutAt) ? leaveOutAt : 1.0;
     if (chosen == count) {
         best = std::numeric_limits<double>::infinity();
         for (std::size_t k = 0; k < count; ++k) {
-            const double cost = collisions(boxAt(k), best) + (onALeader(boxAt(k)) ? 1.0 : 0.0);
+            const double cost = collisions(boxAt(k), best) + (onALeader(boxAt(k)) ? onALeaderCost : 0.0);
             if (cost < best) {
                 best = cost;
                 chosen = k;

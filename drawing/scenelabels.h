@@ -212,6 +212,16 @@ private:
     bool leaderIsClear(const Leader &leader) const;
     double memberHalfWidth(int from, int to, double fraction) const;
     void placeMemberLabels(bool dimensions);
+    /// The middle of the joints shown (device).
+    QPointF shownCentroid() const;
+    /// The side of its bar a bar's name tries first (±1 along screenLeft() of from→to): outward.
+    double barNameSide(const PendingMemberLabel &pending, const QPointF &centroid) const;
+    /// A member label's centre `extra` beyond its place beside the member at `fraction` along
+    /// it, on the side of unit `normal`; `extent`: the label's half extent along `normal`.
+    QPointF memberLabelCentre(const PendingMemberLabel &pending, double fraction, const QPointF &normal, double extent,
+        double extra) const;
+    /// Fills m_barNamePlaces.
+    void reserveBarNames();
     /// A dimension's text along its member (`beside`: the candidate centres there) or, where
     /// that covers a bar, upright away from it with a leader.
     void placeDimensionText(const PendingMemberLabel &pending, const SceneLabel &label, const std::vector<QPointF> &beside);
@@ -282,6 +292,8 @@ private:
     std::vector<detail::Quad> m_labelBoxes; ///< the labels placed so far
     /// the joints' names' first places, kept free while the other labels are placed
     std::vector<detail::Quad> m_reserved;
+    /// the bars' names' first places, which an angle label's leader keeps off where it can
+    std::vector<detail::Quad> m_barNamePlaces;
     std::vector<QString> m_jointNames; ///< per joint: its name as drawn, empty if none (settleJointNames())
     std::vector<QPointF> m_crowdedCorners; ///< the corners of a platform whose corners are unnamed
     QRectF m_crowdedPlatform; ///< and their bounds
