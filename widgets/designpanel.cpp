@@ -12,7 +12,6 @@
 #include <QLabel>
 #include <QKeySequence>
 #include <QLineEdit>
-#include <QTextDocument>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
@@ -92,49 +91,6 @@ DesignPanel::DesignPanel(QWidget *parent)
     layout->addStretch(1);
 }
 
-void DesignPanel::setNote(const QString &title, const QString &note)
-{
-    m_noteTitle = title;
-    m_noteText = note;
-    m_noteExpanded = false;
-    showNote();
-    fitNote();
-}
-
-QString DesignPanel::firstSentence() const
-{
-    // The first full stop that ends a sentence: one followed by a capital letter, so that
-    // abbreviations before a number ("fig. 3a", "рис. 3a", "сл. 3a", "табл. 1") do not split.
-    qsizetype end = m_noteText.indexOf(QStringLiteral(". "));
-    while (end > 0 && (end + 2 >= m_noteText.size() || !m_noteText.at(end + 2).isUpper()))
-        end = m_noteText.indexOf(QStringLiteral(". "), end + 2);
-    return end > 0 && end + 2 < m_noteText.size() ? m_noteText.left(end + 1) : m_noteText;
-}
-
-void DesignPanel::showNote()
-{
-    if (m_noteText.isEmpty()) {
-        m_note->clear();
-        m_note->hide();
-        return;
-    }
-    // The first sentence says what the design is (and whether it is interpreted); the rest
-    // opens on request, so the fields stay in sight. On a short panel the title alone.
-    const QString first = firstSentence();
-    const bool longer = first.size() < m_noteText.size() || m_noteCompact;
-    const QString link = QStringLiteral("<a href=\"#toggle\">%1</a>").arg(m_noteExpanded ? tr("less") : tr("more…"));
-    QString text;
-    if (m_noteExpanded || !longer)
-        text = QStringLiteral("<br>") + m_noteText.toHtmlEscaped();
-    else if (!m_noteCompact)
-        text = QStringLiteral("<br>") + first.toHtmlEscaped();
-    if (longer)
-        text += QLatin1Char(' ') + link;
-    m_note->setText(QStringLiteral("<b>%1</b>%2").arg(unbreakable(m_noteTitle).toHtmlEscaped(), text));
-    m_note->setToolTip(m_noteText);
-    m_note->show();
-}
-
 void DesignPanel::setMechanism(const MechanismPtr &mechanism)
 {
     const bool rebuildNeeded = !m_mechanism || m_mechanism->kind() != mechanism->kind();
@@ -192,27 +148,23 @@ void DesignPanel::rebuild()
         row.edit->installEventFilter(this);
         connect(row.edit, &QLineEdit::editingFinished, this, [this, name] { commit(name, false); });
         row.unit = new QLabel(rowWidget);
-        row.unit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")));
         rowLayout->addWidget(row.unit);
+        rowLayout->addStretch(1); // a field without a unit (hidden) starts where the others do
         row.label = new QLabel;
         row.label->setWordWrap(true); // long labels wrap rather than push the fields out of the dock
         row.label->setBuddy(row.edit);
         describe(row);
-        QGridLayout *form = forms.value(group);
-        const int line = form->rowCount() - (form->count() == 0 ? 1 : 0);
+        row.field = rowWidget;
+        row.form = forms.value(group);
         // A label that explains a mode's values ("platform: 0 a point (2 DOF), 1 constant
         // orientation (2 DOF), 2 free (3 DOF)") took six lines of a word or two beside its
         // field: it has the whole width, and its field the line below.
-        if (toQString(labelSource(info)).size() > longLabel) {
-            form->addWidget(row.label, line, 0, 1, 2);
-            form->addWidget(rowWidget, line + 1, 1);
-        } else {
-            form->addWidget(row.label, line, 0);
-            form->addWidget(rowWidget, line, 1);
-        }
+        row.ownLine = toQString(labelSource(info)).size() > longLabel;
         m_fields.insert(name, row.edit);
         m_rows.append(row);
     }
+    alignUnits();
+    placeRows(false);
 }
 
 void DesignPanel::describe(const Row &row)
@@ -236,10 +188,6 @@ void DesignPanel::describe(const Row &row)
     if (row.edit->styleSheet().isEmpty()) // an invalid field's tooltip says why
         row.edit->setToolTip(help);
     row.unit->setText(unit);
-    // The units line up at the width of "mm/step", and a longer one in the language chosen
-    // ("mm/корак") is shown whole.
-    row.unit->setMinimumWidth(std::max(fontMetrics().horizontalAdvance(QStringLiteral("mm/step")),
-                                       row.unit->fontMetrics().horizontalAdvance(unit)));
     // A symbol is the same in every language, unless it is a word ("form"), which core marks.
     row.label->setText(
         QStringLiteral("<b>%1</b>&nbsp; %2").arg(symbolHtml(coreLabel(info.symbol)), unbreakable(label).toHtmlEscaped()));
@@ -271,6 +219,8 @@ void DesignPanel::retranslate()
         if (row.edit->styleSheet().isEmpty() && !typing)
             row.edit->setText(choices::fieldText(m_mechanism->parameterInfo()[std::size_t(row.parameter)], values));
     }
+    alignUnits();
+    fitRows();
     showWarnings();
     if (!m_message->isHidden())
         showMessage();
@@ -290,6 +240,7 @@ void DesignPanel::showApplicable()
     }
     for (auto it = m_boxes.cbegin(); it != m_boxes.cend(); ++it)
         it.value()->setVisible(used.value(it.key()));
+    fitRows();
 }
 
 void DesignPanel::showValues()
@@ -412,6 +363,10 @@ void DesignPanel::step(const QString &name, int steps)
 
 bool DesignPanel::event(QEvent *event)
 {
+    // New texts, a new design or a new font change how wide the rows need to be side by side:
+    // the panel's layout asks again, and so do the rows (the viewport may not resize).
+    if (event->type() == QEvent::LayoutRequest)
+        fitRows();
     if (event->type() == QEvent::ParentChange) {
         if (m_viewport) // in a scroll area, the viewport shows the panel
             m_viewport->removeEventFilter(this);
@@ -422,30 +377,13 @@ bool DesignPanel::event(QEvent *event)
     return QWidget::event(event);
 }
 
-void DesignPanel::fitNote()
-{
-    // At 720 lines the panel has some 220 px, and a first sentence of six lines (the Russian
-    // П-joint's) would hide the fields: past 40 % of the panel in sight, the title alone.
-    bool compact = false;
-    if (m_viewport && !m_noteText.isEmpty()) {
-        QTextDocument document;
-        document.setDefaultFont(m_note->font());
-        const int frame = 2 * (m_note->frameWidth() + 5) + layout()->contentsMargins().left() + layout()->contentsMargins().right();
-        document.setTextWidth(std::max(40, m_viewport->width() - frame));
-        document.setHtml(QStringLiteral("<b>%1</b><br>%2").arg(m_noteTitle.toHtmlEscaped(), firstSentence().toHtmlEscaped()));
-        compact = document.size().height() > 0.4 * m_viewport->height();
-    }
-    if (compact != m_noteCompact) {
-        m_noteCompact = compact;
-        showNote();
-    }
-}
-
 bool DesignPanel::eventFilter(QObject *watched, QEvent *event)
 {
     if (watched == m_viewport) {
-        if (event->type() == QEvent::Resize)
+        if (event->type() == QEvent::Resize) {
             fitNote();
+            fitRows();
+        }
         return QWidget::eventFilter(watched, event);
     }
     auto *edit = qobject_cast<QLineEdit *>(watched);

@@ -10,6 +10,7 @@
 #include <QVector>
 #include <QWidget>
 
+class QGridLayout;
 class QGroupBox;
 class QLabel;
 class QLineEdit;
@@ -53,12 +54,24 @@ private:
         QLabel *label = nullptr;
         QLineEdit *edit = nullptr;
         QLabel *unit = nullptr;
+        QWidget *field = nullptr; ///< the field and its unit
+        QGridLayout *form = nullptr; ///< its group's grid
+        bool ownLine = false; ///< a long label, on a line of its own above its field
     };
     void rebuild();
     /// Sets every text again in the current language: group titles, labels, units, tooltips,
     /// the values in the locale's form (a field being typed into or marked invalid keeps its
     /// text), the warnings, the note's link and the message.
     void retranslate();
+    /// Gives every unit the width of the widest one shown, so they line up.
+    void alignUnits();
+    /// Puts the rows into their groups' grids: each label beside its field, or (`stacked`, or
+    /// a long label) on a line of its own above it.
+    void placeRows(bool stacked);
+    /// How wide the panel must be for every label beside its field.
+    int sideBySideWidth() const;
+    /// Stacks the rows when the panel in sight is narrower than that (designpanelnote.cpp).
+    void fitRows();
     /// The label, unit and tooltip of one field.
     void describe(const Row &row);
     void showWarnings();
@@ -94,6 +107,7 @@ private:
     bool m_noteExpanded = false;
     bool m_noteCompact = false;
     QWidget *m_viewport = nullptr; ///< what shows the panel (a scroll area's viewport)
+    bool m_stacked = false; ///< each field under its label (fitRows())
     QLabel *m_warnings = nullptr;
 };
 
