@@ -155,8 +155,13 @@ std::vector<Label3D> jointLabels(const Scene &scene, const std::vector<Solid> &s
             continue;
         const bool named = std::any_of(labels.begin(), labels.end(),
                                        [&](const Label3D &label) { return label.text == joint.label; });
-        if (!named)
-            labels.push_back({joint.position, joint.label});
+        if (named)
+            continue;
+        const int index = int(&joint - scene.joints.data());
+        const bool corner = std::any_of(scene.bars.begin(), scene.bars.end(), [&](const SceneBar &bar) {
+            return bar.kind == BarKind::Platform && (bar.from == index || bar.to == index);
+        });
+        labels.push_back({joint.position, joint.label, corner && joint.kind != JointKind::Point});
     }
     return labels;
 }

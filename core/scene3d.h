@@ -89,6 +89,9 @@ struct Solid {
 struct Label3D {
     Eigen::Vector3d at = Eigen::Vector3d::Zero();
     std::string text;
+    /// A corner of a platform (an end of a platform bar): the corners of a platform drawn too
+    /// small for a name at each go unnamed, as in the 2D view.
+    bool platformCorner = false;
 };
 
 struct Scene3D {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace pkm {
 
@@ -33,10 +34,29 @@ void paintLabels3D(QPainter &painter, const std::vector<Label3D> &labels, const 
     const QRectF picture(0.0, 0.0, camera.viewportWidth(), camera.viewportHeight());
     const double gap = 0.35 * metrics.height(), pad = 0.15 * metrics.height();
     std::vector<QRectF> placed;
+    // A platform of three or more corners drawn closer than one and a half times a name and
+    // a point's dot leaves its corners unnamed (the 2D view's rule, settleJointNames()): the
+    // 3-R̲RR's P₁…P₃ piled on Oₚ in the small 3D view.
+    std::vector<Eigen::Vector2d> corners;
+    double widest = 0.0;
+    for (const Label3D &label : labels) {
+        if (label.platformCorner) {
+            corners.push_back(camera.project(label.at));
+            widest = std::max({widest, metrics.horizontalAdvance(QString::fromStdString(label.text)) + 2.0 * pad, metrics.height()});
+        }
+    }
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < corners.size(); ++a) {
+        for (std::size_t b = a + 1; b < corners.size(); ++b)
+            shortest = std::min(shortest, (corners[a] - corners[b]).norm());
+    }
+    const bool crowded = corners.size() >= 3 && shortest < 1.5 * (widest + gap);
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setFont(shown);
     for (const Label3D &label : labels) {
+        if (crowded && label.platformCorner)
+            continue;
         double depth = 0.0;
         const Eigen::Vector2d at = camera.project(label.at, &depth);
         if (!std::isfinite(at.x()) || !std::isfinite(at.y()) || depth < -1.0 || depth > 1.0

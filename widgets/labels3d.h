@@ -3,7 +3,8 @@
 /// view, in its saved pictures and in `pkm render --view 3d`, by one function, so that all
 /// three put the same name at the same place. Each name sits up and to the right of its point
 /// on a light knock-out, moved to another corner when it would cover a name already placed;
-/// a point behind the camera or outside the picture is not named.
+/// a point behind the camera or outside the picture is not named, nor are the corners of a
+/// platform drawn too small for a name at each.
 
 #include "camera3d.h"
 #include "scene3d.h"

@@ -259,10 +259,11 @@ private slots:
     /// A 3-leg platform drawn small (the whole range of motion in sight) had no room beside its
     /// corners for P₁…P₃ and Oₚ: the names stood a leg's length away with leaders crossing
     /// other names (P₃ on A₃'s leader), and read as the base's. A platform's name is next to
-    /// its joint — its gap to the name's box at most a name's height past the pivot's ring —
-    /// or not drawn; the corners' names come back once the platform is drawn large enough.
-    /// (Before: 96, 62 and 7 of the 3-R̲RR's, 3-P̲RR's and 3-RP̲R's platform names far in the
-    /// window's view, 37, 42 and 16 in presentation mode, up to 3.1 name heights away.)
+    /// its joint — its gap to the name's box at most one and a half names' height past the
+    /// pivot's ring, a leader's first ring — or not drawn; the corners' names come back once
+    /// the platform is drawn large enough.
+    /// (Before: 76, 60 and 26 of the 3-R̲RR's, 3-P̲RR's and 3-RP̲R's platform names far in the
+    /// window's view, 41, 24 and 15 in presentation mode, up to 3.1 name heights away.)
     void platformNamesStayByTheirJoints()
     {
         QFETCH(QString, preset);
@@ -270,8 +271,12 @@ private slots:
         m_window->setPresentationMode(presentation);
         const auto back = qScopeGuard([&] { m_window->setPresentationMode(false); });
         QVERIFY(m_window->openDesign(preset));
-        QTest::qWait(50);
         LinkageView *view = m_window->linkageView();
+        // the window's layout settled in this mode (on a busy machine it takes a while)
+        for (QSize before; before != view->size();) {
+            before = view->size();
+            QTest::qWait(50);
+        }
         const MechanismPtr mechanism = m_window->document()->mechanism();
         QTest::keyClick(view, Qt::Key_Home); // fitted to the view's size in this mode
         QStringList far;
@@ -308,7 +313,7 @@ private slots:
                     const double gap = std::hypot(dx, dy) - style.pivotRadius * style.pixelSize;
                     farthest = std::max(farthest, gap / text->box.height());
                     const bool platform = joint.label.starts_with("P") || joint.label.starts_with("O");
-                    if (gap > text->box.height() && platform)
+                    if (gap > 1.5 * text->box.height() && platform)
                         far << QStringLiteral("%1 at %2 (%3 px)").arg(text->text).arg(value, 0, 'f', 2).arg(gap, 0, 'f', 0);
                 }
             }

@@ -8,6 +8,9 @@
 #include <QTest>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
 
 using namespace pkm;
 
@@ -77,6 +80,30 @@ private slots:
         const Eigen::Vector2d at = camera.project(point);
         QVERIFY(changedArea(one, one.rect()).left() > at.x() - 6);
         QVERIFY(changedArea(two, two.rect()).left() < at.x() - 15);
+    }
+
+    /// A 3-leg platform drawn small: its corners' names piled on each other and on Oₚ. They
+    /// are left out while the corners are closer than one and a half names, as in the 2D view;
+    /// drawn larger, each corner is named.
+    void smallPlatformNamesItsReferenceOnly()
+    {
+        const Camera3D camera = frontCamera();
+        const auto platform = [](double size) {
+            std::vector<Label3D> labels {{Eigen::Vector3d::Zero(), "Oₚ", false}};
+            const std::array<const char *, 3> names {"P₁", "P₂", "P₃"};
+            for (int k = 0; k < 3; ++k) {
+                const double angle = 2.0 * std::numbers::pi * k / 3.0;
+                labels.push_back({size * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0), names[std::size_t(k)], true});
+            }
+            return labels;
+        };
+        const QImage reference = painted({{Eigen::Vector3d::Zero(), "Oₚ"}}, camera);
+        const QImage small = painted(platform(3.0), camera); // corners about 10 px apart
+        QCOMPARE(small, reference);
+        const QImage large = painted(platform(40.0), camera); // about 140 px apart
+        const Eigen::Vector2d corner = camera.project(Eigen::Vector3d(40.0, 0.0, 0.0));
+        QVERIFY(!changedArea(large, QRect(int(corner.x()) - 2, int(corner.y()) - 30, 40, 32)).isEmpty());
+        QVERIFY(changedArea(reference, QRect(int(corner.x()) - 2, int(corner.y()) - 30, 40, 32)).isEmpty());
     }
 
     void pointsOutOfSightAreNotNamed()
