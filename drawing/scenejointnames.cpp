@@ -115,11 +115,11 @@ void SceneLabels::settleJointNames()
             m_jointNames[j] = QString::fromStdString(m_scene.joints[j].label);
     }
     // A platform's corners drawn closer than one and a half times a name and two pivots side
-    // by side leave no room beside each for its name: pushed a leg's length away with
-    // leaders, P₁…P₃ crossed the base's names and read as theirs. A drawing that small names
-    // the platform by its reference point alone (Oₚ, which is not a corner) and its legs by
-    // their bars; zoomed in, the corners get their names back. Two corners (the O-X glide's
-    // A′B′ and C′D′ at the ends of s) always have the outward side each.
+    // by side leave no room beside each for its name: pushed a leg's length away with leaders, P₁…P₃ crossed
+    // the base's names and read as theirs. A drawing that small names the platform by its
+    // reference point alone (Oₚ, which is not a corner) and its legs by their bars; zoomed in,
+    // the corners get their names back. Two corners (the O-X glide's A′B′ and C′D′ at the ends
+    // of s) always have the outward side each.
     std::vector<std::size_t> corners;
     for (const SceneBar &bar : m_scene.bars) {
         for (const int end : {bar.from, bar.to}) {

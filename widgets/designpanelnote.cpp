@@ -117,17 +117,31 @@ void DesignPanel::placeRows(bool stacked)
 
 int DesignPanel::sideBySideWidth() const
 {
-    // The narrowest the panel could be with each label beside its field: the label's longest
-    // word, the spacing, the field and its unit, inside the group's frame and the panel's
-    // margins (the note wraps to any width).
-    int widest = 0;
+    // The narrowest the panel could be with each label beside its field, as its grids lay the
+    // rows out: a group's labels share one column and its fields the next, so the group is as
+    // wide as its widest label plus its widest field, even where they are on different rows
+    // (taking the widest row instead left a Serbian П-joint's panel 8 px short, every line
+    // cut). A long label on its own line spans both columns; its field is in the second. The
+    // note wraps to any width.
+    struct Columns
+    {
+        int label = 0, field = 0, spanning = 0;
+    };
+    QHash<QGridLayout *, Columns> forms;
     for (const Row &row : std::as_const(m_rows)) {
         if (row.label->isHidden())
             continue;
-        const int label = row.label->minimumSizeHint().width(), field = row.field->minimumSizeHint().width();
-        const int line = row.ownLine ? std::max(label, field) : label + row.form->horizontalSpacing() + field;
-        const QMargins frame = row.form->contentsMargins() + row.form->parentWidget()->contentsMargins();
-        widest = std::max(widest, line + frame.left() + frame.right());
+        Columns &columns = forms[row.form];
+        const int label = row.label->minimumSizeHint().width();
+        (row.ownLine ? columns.spanning : columns.label) = std::max(row.ownLine ? columns.spanning : columns.label, label);
+        columns.field = std::max(columns.field, row.field->minimumSizeHint().width());
+    }
+    int widest = 0;
+    for (auto it = forms.cbegin(); it != forms.cend(); ++it) {
+        const Columns &columns = it.value();
+        const int beside = columns.label > 0 ? columns.label + it.key()->horizontalSpacing() : 0;
+        const QMargins frame = it.key()->contentsMargins() + it.key()->parentWidget()->contentsMargins();
+        widest = std::max(widest, std::max(beside + columns.field, columns.spanning) + frame.left() + frame.right());
     }
     const QMargins margins = layout()->contentsMargins();
     return widest + margins.left() + margins.right();

@@ -57,11 +57,13 @@ int FlowLayout::heightForWidth(int width) const
 
 QSize FlowLayout::minimumSize() const
 {
-    // one item to a row at the narrowest: as wide as the widest item
+    // one item to a row at the narrowest: as wide as the widest item at its least (a button
+    // or a label as wide as its text; a text that wraps, the Russian modes line, as its
+    // longest word; a list as narrow as its size policy lets it be)
     QSize size;
     for (const QLayoutItem *item : m_items) {
         if (!item->isEmpty())
-            size = size.expandedTo(item->minimumSize().expandedTo(item->sizeHint().boundedTo(item->maximumSize())));
+            size = size.expandedTo(item->minimumSize());
     }
     const QMargins margins = contentsMargins();
     return size + QSize(margins.left() + margins.right(), margins.top() + margins.bottom());
@@ -109,7 +111,10 @@ int FlowLayout::arrange(const QRect &rect, bool apply) const
     for (QLayoutItem *item : m_items) {
         if (item->isEmpty())
             continue;
-        const QSize size = item->sizeHint().boundedTo(QSize(std::max(area.width(), 1), item->maximumSize().height()));
+        QSize size = item->sizeHint().boundedTo(QSize(std::max(area.width(), 1), item->maximumSize().height()));
+        // a text that wraps, narrower than it would like, takes the lines it needs
+        if (item->hasHeightForWidth() && size.width() < item->sizeHint().width())
+            size.setHeight(item->heightForWidth(size.width()));
         if (!rows.last().isEmpty() && x + gap() + size.width() > area.width()) {
             rows.append(QList<Placed>());
             x = 0;

@@ -1,7 +1,9 @@
 #pragma once
 /// A layout that places its items in a row, left to right, and starts a new row where the
 /// width runs out — for rows of buttons whose texts are longer in some languages than in
-/// others (the mode bar), so that they never widen the window or squeeze its docks.
+/// others (the mode bar), so that they never widen the window or squeeze its docks. An item
+/// whose height depends on its width (a word-wrapped label) wraps its text where a row is
+/// narrower than its one line.
 
 #include <QLayout>
 #include <QList>

@@ -1,5 +1,7 @@
 #include "modebar.h"
 
+#include "wraplabel.h"
+
 #include "flowlayout.h"
 
 #include <QEvent>
@@ -55,6 +57,18 @@ bool sameGroup(const QStringList &labels, qsizetype i, qsizetype j)
     const std::optional<Numbered> a = numbered(labels[i]), b = numbered(labels[j]);
     return a && b && a->key == b->key;
 }
+/// A word-wrapped label that would rather be one line: QLabel's own hint for a wrapped text
+/// is a guess that took two lines where one fitted, and the sliders under it lost a line.
+class OneLineLabel : public QLabel
+{
+public:
+    using QLabel::QLabel;
+    QSize sizeHint() const override
+    {
+        const int width = WrapLabel::widthForLines(this, 1);
+        return {width, heightForWidth(width)};
+    }
+};
 } // namespace
 
 ModeBar::ModeBar(QWidget *parent)
@@ -64,8 +78,11 @@ ModeBar::ModeBar(QWidget *parent)
     // row rather than widen the window's middle and squeeze the docks.
     m_layout = new FlowLayout(this);
     m_layout->setContentsMargins(6, 2, 6, 2);
-    m_current = new QLabel(this);
+    m_current = new OneLineLabel(this);
     m_current->setTextFormat(Qt::PlainText);
+    // "Режимы: β₁ = впереди, β₂ = впереди, σ = справа" on two lines in a narrow window
+    // rather than widen it past a 1024×768 projector; on one where there is room
+    m_current->setWordWrap(true);
     m_layout->addWidget(m_current);
     setVisible(false);
 }

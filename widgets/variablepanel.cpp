@@ -1,4 +1,5 @@
 #include "variablepanel.h"
+#include "wraplabel.h"
 
 #include "quantityformat.h"
 #include "symboltext.h"
@@ -54,11 +55,10 @@ void VariablePanel::rebuild()
     for (int i = 0; i < static_cast<int>(variables.size()); ++i) {
         const VariableInfo &info = variables[i];
         Row row;
-        row.name = new QLabel(this);
-        row.name->setFont(big);
         // The role wraps under the symbol where the panel is narrow (a projector at 1024×768)
-        // rather than widening the window.
-        row.name->setWordWrap(true);
+        // rather than widening the window, on two lines at most (WrapLabel).
+        row.name = new WrapLabel(2, this);
+        row.name->setFont(big);
         row.minimum = new QLabel(this);
         row.maximum = new QLabel(this);
         row.minimum->setAlignment(Qt::AlignRight | Qt::AlignVCenter);

@@ -64,7 +64,9 @@ private:
     /// A block's columns: name, lower limit, slider, upper limit, spin box, and a gap.
     static constexpr int blockColumns = 6;
     static constexpr int blockGap = 16;
-    static constexpr int minimumSliderWidth = 60;
+    /// A slider this short still moves by hand; at 60 px, names on two lines (WrapLabel) left a
+    /// Serbian MOMA's window a pixel wider than a 1024×768 projector.
+    static constexpr int minimumSliderWidth = 48;
     /// The least width of a block of rows, without the limits.
     int blockWidth() const;
     /// Compact, with four rows or more, and wide enough for two blocks side by side.

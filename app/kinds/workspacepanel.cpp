@@ -1,12 +1,13 @@
 #include "kinds/workspacepanel.h"
 
 #include "document/designfile.h"
+#include "flowlayout.h"
 #include "quantityformat.h"
 #include "workspacemapview.h"
 
+#include <QAbstractItemView>
 #include <QComboBox>
 #include <QEvent>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -26,20 +27,24 @@ WorkspacePanel::WorkspacePanel(QWidget *parent)
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto *row = new QHBoxLayout;
+    // In a row that wraps: the Russian "Сравнить рабочее пространство с:", its list and
+    // "Запомнить эту конструкцию" side by side asked for 592 px, past a 1024×768 projector.
+    auto *row = new FlowLayout;
     row->setContentsMargins(8, 4, 8, 0);
     auto *label = new QLabel(this);
     m_label = label;
     m_compare = new QComboBox(this);
     m_compare->setObjectName(QStringLiteral("comparisonBox"));
-    m_compare->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // as wide as a short name closed (its list shows the long ones whole): a list as wide as
+    // its longest design's name pushed the rest of the row onto lines of their own
+    m_compare->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_compare->setMinimumContentsLength(18);
     label->setBuddy(m_compare);
     m_pin = new QPushButton(this);
     m_pin->setObjectName(QStringLiteral("pinButton"));
     row->addWidget(label);
     row->addWidget(m_compare);
     row->addWidget(m_pin);
-    row->addStretch(1);
     layout->addLayout(row);
     layout->addWidget(m_map, 1);
     // A click on the map moves the platform there (the main window asks the document).
@@ -113,6 +118,8 @@ void WorkspacePanel::fillComparisons(const QString &keep)
     if (m_pinned)
         m_compare->addItem(tr("pinned: %1").arg(designfile::presetText(m_pinnedTitle)), pinnedItem);
     m_compare->setCurrentIndex(std::max(0, m_compare->findData(keep)));
+    // the list open shows every name whole, however narrow the box closed
+    m_compare->view()->setMinimumWidth(m_compare->view()->sizeHintForColumn(0) + 2 * m_compare->view()->frameWidth() + 16);
 }
 
 void WorkspacePanel::compareWith(int index)

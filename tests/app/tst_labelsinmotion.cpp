@@ -118,23 +118,6 @@ private:
         return jumps;
     }
 
-    /// The view's drawing as it paints it (ScenePainter::paint()): clear of the ghosts and the
-    /// scale bar, each label kept where it stood in `places`, which it updates.
-    static drawing::DrawList viewLayout(const LinkageView *view, drawing::LabelPlaces &places)
-    {
-        drawing::LayoutOptions options;
-        options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
-        for (const Scene &ghost : view->ghostScenes()) {
-            const std::vector<QLineF> lines = drawing::ghostLines(ghost, view->mapping());
-            options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
-        }
-        options.covered.push_back(ScenePainter::scaleBarBox(QRectF(view->rect()), view->mapping(), view->sceneStyle(), view));
-        const drawing::LabelPlaces previous = places;
-        options.previousLabels = &previous;
-        options.placedLabels = &places;
-        return drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle(), options);
-    }
-
 private slots:
     void initTestCase()
     {

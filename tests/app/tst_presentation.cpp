@@ -173,7 +173,7 @@ private slots:
         }
         // and the lengths, Grashof's class and the γ gauge above them step aside
         auto *grashof = w.findChild<QLabel *>(QStringLiteral("grashofLabel"));
-        QVERIFY(grashof && grashof->parentWidget()->isHidden());
+        QVERIFY(grashof && !grashof->isVisible());
         QVERIFY(w.openDesign(QStringLiteral("pjoint-prototype")));
         QTest::keyClick(&w, Qt::Key_Escape);
         QVERIFY(!w.isPresenting());

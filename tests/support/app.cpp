@@ -1,7 +1,9 @@
 #include "support/app.h"
 
 #include "gui/mainwindow.h"
+#include "linkageview.h"
 #include "registry.h"
+#include "scenepainter.h"
 #include "textscale.h"
 
 #include <QApplication>
@@ -126,6 +128,21 @@ QMenu *openMenu(QWidget *widget)
             return menu;
     }
     return nullptr;
+}
+
+drawing::DrawList viewLayout(const LinkageView *view, drawing::LabelPlaces &places)
+{
+    drawing::LayoutOptions options;
+    options.labelRoom = QRectF(view->rect()).adjusted(2.0, 2.0, -2.0, -2.0);
+    for (const Scene &ghost : view->ghostScenes()) {
+        const std::vector<QLineF> lines = drawing::ghostLines(ghost, view->mapping());
+        options.avoid.insert(options.avoid.end(), lines.begin(), lines.end());
+    }
+    options.covered.push_back(ScenePainter::scaleBarBox(QRectF(view->rect()), view->mapping(), view->sceneStyle(), view));
+    const drawing::LabelPlaces previous = places;
+    options.previousLabels = &previous;
+    options.placedLabels = &places;
+    return drawing::layoutScene(view->scene(), view->mapping(), view->sceneStyle(), options);
 }
 
 } // namespace pkm::test

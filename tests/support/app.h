@@ -5,6 +5,7 @@
 /// with its name), and the main window opened afresh and driven with the mouse.
 
 #include "document/designfile.h"
+#include "scenelayout.h"
 
 #include <QList>
 #include <QPointF>
@@ -16,6 +17,7 @@ class QMenu;
 class QWidget;
 
 namespace pkm {
+class LinkageView;
 class MainWindow;
 }
 
@@ -67,5 +69,10 @@ void drag(QWidget *widget, QPointF from, QPointF to, int steps = 8);
 
 /// The visible menu among the children of `widget` (a context menu it opened), or null.
 QMenu *openMenu(QWidget *widget);
+
+/// The 2D view's drawing laid out as the view paints it: its labels kept inside the view, off
+/// the ghosts' lines and the scale bar, each where it stood the frame before (`places`, which
+/// the layout updates, as the view keeps them from frame to frame).
+drawing::DrawList viewLayout(const LinkageView *view, drawing::LabelPlaces &places);
 
 } // namespace pkm::test

@@ -9,6 +9,7 @@
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QTest>
+#include <QTranslator>
 
 using namespace pkm;
 using namespace pkm::test;
@@ -67,6 +68,48 @@ private slots:
         area.resize(420, 600);
         QTest::qWait(20);
         QCOMPARE(besideAndUnder(panel), std::make_pair(wideBeside, wideUnder));
+    }
+
+    // At every width the panel's rows either fit side by side or stand stacked: a width just
+    // under what they need side by side (the estimate was 8 px short) cut each line's end.
+    void noWidthCutsTheRows_data()
+    {
+        QTest::addColumn<QByteArray>("kind");
+        QTest::addColumn<QString>("language");
+        for (const char *language : {"en", "ru", "sr", "sr_Latn"})
+            for (const char *kind : {"pjoint", "moma", "fivebar", "planar-parallel"})
+                QTest::addRow("%s %s", language, kind) << QByteArray(kind) << QString::fromLatin1(language);
+    }
+    void noWidthCutsTheRows()
+    {
+        QFETCH(QByteArray, kind);
+        QFETCH(QString, language);
+        QTranslator catalogue;
+        if (language != QLatin1String("en")) {
+            QVERIFY(catalogue.load(QStringLiteral(":/i18n/pkm_studio_") + language));
+            QCoreApplication::installTranslator(&catalogue);
+        }
+        QScrollArea area;
+        auto *panel = new DesignPanel;
+        area.setWidget(panel);
+        area.setWidgetResizable(true);
+        area.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        panel->setMechanism(makeKind(kind.constData()));
+        area.resize(420, 600);
+        area.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&area));
+        int besideAt = 0;
+        for (int width = 420; width >= 270; width -= 2) {
+            area.resize(width, 600);
+            QTest::qWait(1);
+            QCoreApplication::processEvents();
+            const int view = area.viewport()->width();
+            QVERIFY2(panel->minimumSizeHint().width() <= view,
+                     qPrintable(QStringLiteral("%1 px wanted in a view of %2").arg(panel->minimumSizeHint().width()).arg(view)));
+            if (besideAndUnder(panel).first > 0)
+                besideAt = view;
+        }
+        QVERIFY(besideAt > 0); // stacking at 230 px is fieldsGoUnderTheirLabelsWhenNarrow's
     }
 };
 

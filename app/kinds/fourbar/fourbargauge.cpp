@@ -1,6 +1,6 @@
 // The four-bar panel's transmission gauge: |γ| on a bar 0°…180° with the poor bands below 40°
 // and above 140° shaded, the range over the motion and the current value as a needle
-// (docs/mathematics.md, section 4).
+// (docs/mathematics.md, section 4), and the group that shows it with the value in words.
 
 #include "kinds/fourbar/fourbarpanel.h"
 
@@ -8,6 +8,9 @@
 #include "plotfont.h"
 
 #include <QEvent>
+#include <QGroupBox>
+#include <QLabel>
+#include <QVBoxLayout>
 #include <QLocale>
 #include <QPainter>
 #include <QPainterPath>
@@ -92,6 +95,28 @@ void TransmissionGauge::paintEvent(QPaintEvent *)
     painter.setPen(Qt::NoPen);
     painter.setBrush(needle);
     painter.drawPath(triangle);
+}
+
+QGroupBox *FourBarPanel::createTransmissionGroup(const QFont &labelFont)
+{
+    auto *transmission = new QGroupBox(this);
+    m_transmissionGroup = transmission;
+    transmission->setFont(labelFont);
+    auto *column = new QVBoxLayout(transmission);
+    column->setContentsMargins(8, 2, 8, 4);
+    column->setSpacing(2);
+    m_transmission = new QLabel(transmission);
+    m_transmission->setObjectName(QStringLiteral("transmissionLabel"));
+    m_transmission->setFont(fontOf(font(), 14.0, true));
+    m_transmission->setWordWrap(true); // "— poor: below 40°" under the value where narrow
+    m_gauge = new TransmissionGauge(transmission);
+    m_transmissionRange = new QLabel(transmission);
+    m_transmissionRange->setFont(labelFont);
+    m_transmissionRange->setWordWrap(true);
+    column->addWidget(m_transmission);
+    column->addWidget(m_gauge);
+    column->addWidget(m_transmissionRange);
+    return transmission;
 }
 
 } // namespace pkm

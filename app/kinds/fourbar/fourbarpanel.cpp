@@ -1,11 +1,12 @@
 // The four-bar's own panel (docs/mathematics.md, section 4): the link lengths with sliders and
 // spin boxes, Grashof's class, the transmission angle now and over the motion, and why α stops;
 // the gauge is drawn in fourbargauge.cpp, the plots are FourBarPlots.
-
 #include "kinds/fourbar/fourbarpanel.h"
 
 #include "document/designfile.h"
 #include "document/document.h"
+#include "fitscrollarea.h"
+#include "gridreflow.h"
 #include "kinds/fourbar/fourbar.h"
 #include "kinds/fourbar/fourbarplots.h"
 #include "plotfont.h"
@@ -139,13 +140,6 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
         spin->setKeyboardTracking(false);
         spin->setMinimumWidth(80);
         label->setBuddy(spin);
-        const int r = int(i) / 2, c = (int(i) % 2) * 4;
-        grid->addWidget(label, r, c);
-        grid->addWidget(row.slider, r, c + 1);
-        grid->addWidget(spin, r, c + 2);
-        grid->setColumnStretch(c + 1, 1);
-        if (c == 0)
-            grid->setColumnMinimumWidth(3, 18);
 
         connect(row.slider, &QSlider::sliderPressed, this, [this, i] {
             m_dragging = int(i);
@@ -170,6 +164,10 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
                 requestLength(name, value, spin->stepping());
         });
     }
+    std::vector<std::vector<QWidget *>> rows;
+    for (const LinkRow &row : m_rows)
+        rows.push_back({row.label, row.slider, row.spinBox});
+    m_linksReflow = new GridReflow(links, grid, std::move(rows), 1, 18); // two to a line where they fit
     details->addWidget(links);
 
     m_linkMessage = new QLabel(this);
@@ -182,9 +180,12 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
     details->addWidget(m_linkMessage);
 
     // -- the design in words and the transmission angle ----------------------------------------
-    auto *info = new QHBoxLayout;
-    info->setSpacing(12);
-    auto *words = new QVBoxLayout;
+    auto *infoBox = new QWidget;
+    auto *info = new QGridLayout(infoBox);
+    info->setContentsMargins(0, 0, 0, 0);
+    auto *wordsBox = new QWidget(infoBox);
+    auto *words = new QVBoxLayout(wordsBox);
+    words->setContentsMargins(0, 0, 0, 0);
     words->setSpacing(4);
     m_grashof = new QLabel(this);
     m_grashof->setObjectName(QStringLiteral("grashofLabel"));
@@ -201,27 +202,10 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
         words->addWidget(label);
     }
     words->addStretch(1);
-    info->addLayout(words, 3);
-
-    auto *transmission = new QGroupBox(this);
-    m_transmissionGroup = transmission;
-    transmission->setFont(labelFont);
-    auto *column = new QVBoxLayout(transmission);
-    column->setContentsMargins(8, 2, 8, 4);
-    column->setSpacing(2);
-    m_transmission = new QLabel(transmission);
-    m_transmission->setObjectName(QStringLiteral("transmissionLabel"));
-    m_transmission->setFont(fontOf(font(), 14.0, true));
-    m_transmission->setWordWrap(true); // "— poor: below 40°" under the value where narrow
-    m_gauge = new TransmissionGauge(transmission);
-    m_transmissionRange = new QLabel(transmission);
-    m_transmissionRange->setFont(labelFont);
-    m_transmissionRange->setWordWrap(true);
-    column->addWidget(m_transmission);
-    column->addWidget(m_gauge);
-    column->addWidget(m_transmissionRange);
-    info->addWidget(transmission, 2);
-    details->addLayout(info);
+    // The words beside the gauge (3 : 2), or above it where a small window has no room
+    QGroupBox *transmission = createTransmissionGroup(labelFont);
+    m_infoReflow = new GridReflow(infoBox, info, {{wordsBox}, {transmission}}, 0, 12, {3, 2});
+    details->addWidget(new FitScrollArea(infoBox, this)); // scrolls where a small window cuts it
 
     // -- plots ----------------------------------------------------------------------------------
     m_plots = new FourBarPlots(this);
@@ -249,6 +233,10 @@ void FourBarPanel::retranslate()
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         m_rows[i].label->setText(titles[i]);
         m_rows[i].spinBox->setSuffix(QLatin1Char(' ') + unitText(units::millimetre));
+    }
+    for (GridReflow *reflow : {m_linksReflow, m_infoReflow}) {
+        if (reflow)
+            reflow->refit();
     }
     m_transmissionGroup->setTitle(tr("Transmission angle γ at C"));
     m_transmissionGroup->setToolTip(tr("The crank drives the rocker well when γ stays between %1° and %2°.")

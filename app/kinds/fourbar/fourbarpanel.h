@@ -18,6 +18,8 @@ class QSlider;
 
 namespace pkm {
 
+class GridReflow;
+
 class Document;
 class FourBarPlots;
 class TransmissionGauge;
@@ -70,6 +72,9 @@ private:
         QDoubleSpinBox *spinBox = nullptr;
     };
     void retranslate();
+    /// The transmission angle's group: γ in words, the gauge, the range over the motion
+    /// (fourbargauge.cpp).
+    QGroupBox *createTransmissionGroup(const QFont &labelFont);
     void showLengths(bool ranges);
     void showDesignInfo();
     /// The texts of the pose: γ, its warning, and why α stops.
@@ -83,6 +88,8 @@ private:
     std::array<LinkRow, 4> m_rows;
     QWidget *m_details = nullptr; ///< everything above the plots
     QGroupBox *m_linksGroup = nullptr;
+    GridReflow *m_linksReflow = nullptr; ///< the link lengths two or one to a line
+    GridReflow *m_infoReflow = nullptr; ///< the words beside the gauge or above it
     QGroupBox *m_transmissionGroup = nullptr;
     QLabel *m_linkMessage = nullptr;
     QString m_linkFailure; ///< the core's reason for the last refused length

@@ -41,7 +41,9 @@ PlanarParallelPanel::PlanarParallelPanel(Document *document, QWidget *parent)
     m_remove = new QPushButton(m_box);
     m_remove->setObjectName(QStringLiteral("removeLegButton"));
     grid->addWidget(m_platformLabel, 0, 0);
-    grid->addWidget(m_platform, 0, 1);
+    // over the legs' type and working mode both: in its own column "постоянная ориентация"
+    // made every leg's type as wide, and the panel 420 px, past a 1024×768 projector
+    grid->addWidget(m_platform, 0, 1, 1, 2, Qt::AlignLeft);
     // Below the legs, not beside the platform: a column of its own would widen the panel
     // past what a 1024-pixel screen leaves it.
     auto *buttons = new QHBoxLayout;
