@@ -445,6 +445,8 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QTest::qWait(100);
         QCOMPARE(w.size(), QSize(1024, 768));
+        QStringList clipped;
+        QTRY_VERIFY2_WITH_TIMEOUT((clipped = clippedTexts(&w)).isEmpty(), qPrintable(clipped.join(QStringLiteral("\n"))), 2000);
     }
 
     void labelsAreWholeAfterFit_data() { addEveryPresetRows(); }

@@ -138,7 +138,6 @@ FourBarPanel::FourBarPanel(Document *document, QWidget *parent)
         spin->setRange(0.0, 1e5); // 0 is refused by the core with its message
         spin->setSingleStep(1.0);
         spin->setKeyboardTracking(false);
-        spin->setMinimumWidth(80);
         label->setBuddy(spin);
 
         connect(row.slider, &QSlider::sliderPressed, this, [this, i] {
@@ -232,7 +231,13 @@ void FourBarPanel::retranslate()
     const std::array<QString, 4> titles = {tr("AB crank"), tr("BC coupler"), tr("CD rocker"), tr("AD ground")};
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         m_rows[i].label->setText(titles[i]);
-        m_rows[i].spinBox->setSuffix(QLatin1Char(' ') + unitText(units::millimetre));
+        QDoubleSpinBox *spin = m_rows[i].spinBox;
+        spin->setSuffix(QLatin1Char(' ') + unitText(units::millimetre));
+        // Wide enough for "8888.88 mm" whole (its hint is for the range's 100000.00 mm), so
+        // that two to a line are only placed where the lengths are not cut
+        const QFontMetrics metrics(spin->font());
+        const auto text = [&](double v) { return metrics.horizontalAdvance(spin->textFromValue(v) + spin->suffix()); };
+        spin->setMinimumWidth(spin->sizeHint().width() - text(spin->maximum()) + text(8888.88));
     }
     for (GridReflow *reflow : {m_linksReflow, m_infoReflow}) {
         if (reflow)
