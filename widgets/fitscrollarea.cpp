@@ -26,12 +26,22 @@ FitScrollArea::FitScrollArea(QWidget *content, QWidget *parent)
     setSizePolicy(policy);
 }
 
+int FitScrollArea::contentWidth() const
+{
+    // as a layout takes it: the least width it was given, else the one it asks for (a
+    // GridReflow's box asks for its rows two to a line, and takes one to a line if narrower)
+    const QWidget *content = widget();
+    if (!content)
+        return 0;
+    return content->minimumWidth() > 0 ? content->minimumWidth() : content->minimumSizeHint().width();
+}
+
 int FitScrollArea::contentHeight() const
 {
     const QWidget *content = widget();
     if (!content)
         return 0;
-    const int width = std::max(viewport()->width(), content->minimumSizeHint().width());
+    const int width = std::max(viewport()->width(), contentWidth());
     return content->hasHeightForWidth() ? content->heightForWidth(width) : content->sizeHint().height();
 }
 
@@ -53,7 +63,7 @@ QSize FitScrollArea::minimumSizeHint() const
     // (less than that shows too little to be worth scrolling), or the whole content if less.
     const QMargins frame = contentsMargins();
     const int lines = 3 * fontMetrics().lineSpacing();
-    return {content->minimumSizeHint().width() + verticalScrollBar()->sizeHint().width() + frame.left() + frame.right(),
+    return {contentWidth() + verticalScrollBar()->sizeHint().width() + frame.left() + frame.right(),
         std::min(contentHeight(), lines) + frame.top() + frame.bottom()};
 }
 

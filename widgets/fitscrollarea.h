@@ -23,6 +23,8 @@ protected:
     void resizeEvent(QResizeEvent *event) override;
 
 private:
+    /// The content's least width.
+    int contentWidth() const;
     /// The content's height at the viewport's width (its whole text, wrapped there).
     int contentHeight() const;
 };

@@ -48,6 +48,22 @@ void GridReflow::place(int perLine)
 
 void GridReflow::refit()
 {
+    // Nothing to do where no row asks for another width than at the last fit (a four-bar's
+    // words change with every length while a slider is dragged, their longest word seldom).
+    std::vector<int> widths;
+    for (const auto &row : m_rows) {
+        for (const QWidget *widget : row)
+            widths.push_back(widget->isHidden() ? -1 : widget->minimumSizeHint().width());
+    }
+    if (widths == m_fittedWidths && m_twoWide > 0)
+        return;
+    m_fittedWidths = std::move(widths);
+    // The grid keeps what each row asked for until told: a text just set (a box of words) is
+    // measured now, not at its next layout (the fit took the four-bar's words as empty)
+    for (const auto &row : m_rows) {
+        for (QWidget *widget : row)
+            widget->updateGeometry();
+    }
     // The box's least width each way, from its own layout; it then asks only for the
     // narrower, and takes two to a line once it is given the wider.
     m_box->setMinimumWidth(0);

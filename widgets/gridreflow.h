@@ -22,7 +22,8 @@ public:
     /// on one line (each row's weight, 1 each when empty).
     GridReflow(QWidget *box, QGridLayout *grid, std::vector<std::vector<QWidget *>> rows, int stretchColumn, int gap,
         std::vector<int> weights = {});
-    /// Works out again how wide the box must be for each arrangement (after a change of text).
+    /// Works out again how wide the box must be for each arrangement, after a change of text
+    /// (nothing is laid out again where no row's least width changed).
     void refit();
     int perLine() const { return m_perLine; }
 
@@ -41,6 +42,7 @@ private:
     std::vector<int> m_weights;
     int m_perLine = 0;
     int m_twoWide = 0; ///< the box's least width with two rows to a line
+    std::vector<int> m_fittedWidths; ///< the rows' widgets' least widths at the last refit()
 };
 
 } // namespace pkm

@@ -16,6 +16,7 @@
 #include "linkageview3d.h"
 #include "mobilitypanel.h"
 #include "modebar.h"
+#include "pagestack.h"
 #include "pictureexport.h"
 #include "quantityformat.h"
 #include "export/sheet.h"
@@ -46,7 +47,6 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
-#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
@@ -101,7 +101,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     // The panels beside the linkage: one per kind whose module has one, and the generic
     // workspace map for the other planar kinds. All are made here, once.
-    m_plots = new QStackedWidget(this);
+    m_plots = new PageStack(this); // as large as the page in sight, not the largest
     for (const KindModule &module : kinds::modules()) {
         if (!module.createPanel)
             continue;

@@ -1,8 +1,11 @@
 // Texts that wrap and still fit: a slider's name on no more than two lines at its narrowest
 // (WrapLabel; "q₁ (улаз, са погоном)" took three, more than six rows had room for), and a
 // column of texts that takes the height its words need where there is room and scrolls where
-// there is not (FitScrollArea; the four-bar's class in words was cut mid-sentence at 1024×768).
+// there is not (FitScrollArea; the four-bar's class in words was cut mid-sentence at 1024×768);
+// and pages that ask for the room of the one in sight only (PageStack: the kinds' panels not
+// shown held the side panel wide, and the docks' tabs lost their titles' ends).
 #include "fitscrollarea.h"
+#include "pagestack.h"
 #include "wraplabel.h"
 
 #include <QLabel>
@@ -67,6 +70,26 @@ private slots:
         QVERIFY(below->height() >= 100);
         QVERIFY(text->height() >= text->heightForWidth(text->width())); // whole, in the scrolled view
         QVERIFY(area->minimumSizeHint().height() <= 3 * area->fontMetrics().lineSpacing());
+    }
+
+    void pageStackAsksForThePageInSight()
+    {
+        PageStack stack;
+        auto *narrow = new QWidget;
+        narrow->setMinimumSize(100, 50);
+        auto *wide = new QWidget;
+        wide->setMinimumSize(400, 80);
+        stack.addWidget(narrow);
+        stack.addWidget(wide);
+        QCOMPARE(stack.minimumSizeHint(), QSize(100, 50));
+        stack.setCurrentWidget(wide);
+        QCOMPARE(stack.minimumSizeHint(), QSize(400, 80));
+        QStackedWidget plain; // what QStackedWidget asks for: its largest page, whichever is shown
+        plain.addWidget(new QWidget);
+        plain.widget(0)->setMinimumSize(100, 50);
+        plain.addWidget(new QWidget);
+        plain.widget(1)->setMinimumSize(400, 80);
+        QCOMPARE(plain.minimumSizeHint().width(), 400);
     }
 };
 

@@ -233,11 +233,12 @@ void FourBarPanel::retranslate()
         m_rows[i].label->setText(titles[i]);
         QDoubleSpinBox *spin = m_rows[i].spinBox;
         spin->setSuffix(QLatin1Char(' ') + unitText(units::millimetre));
-        // Wide enough for "8888.88 mm" whole (its hint is for the range's 100000.00 mm), so
-        // that two to a line are only placed where the lengths are not cut
+        // Wide enough for "888.88 mm" whole (its hint is for the range's 100000.00 mm), so
+        // that two to a line are only placed where the lengths are not cut; a metre or more
+        // at the narrowest only (room for more took the Serbian docks' tabs' last pixels)
         const QFontMetrics metrics(spin->font());
         const auto text = [&](double v) { return metrics.horizontalAdvance(spin->textFromValue(v) + spin->suffix()); };
-        spin->setMinimumWidth(spin->sizeHint().width() - text(spin->maximum()) + text(8888.88));
+        spin->setMinimumWidth(spin->sizeHint().width() - text(spin->maximum()) + text(888.88));
     }
     for (GridReflow *reflow : {m_linksReflow, m_infoReflow}) {
         if (reflow)
@@ -408,6 +409,7 @@ void FourBarPanel::showDesignInfo()
     m_range->setText((d.branch == fourbar::crossed ? tr("%1. <b>δ</b> swings over %2 … %3 (crossed branch).")
                                                    : tr("%1. <b>δ</b> swings over %2 … %3 (open branch)."))
                          .arg(alphaText, degreeText(delta.min), degreeText(delta.max)));
+    m_infoReflow->refit(); // the words' longest word: beside the gauge or above it
 
     // |γ| over the motion
     double lo = 180.0, hi = 0.0;
@@ -489,6 +491,7 @@ void FourBarPanel::showLimit(const Pose &pose)
     }
     m_limit->setText(m_limitText.toHtmlEscaped());
     m_limit->setVisible(!m_limitText.isEmpty());
+    m_infoReflow->refit();
 }
 
 } // namespace pkm
