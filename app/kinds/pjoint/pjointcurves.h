@@ -32,6 +32,12 @@ inline constexpr int quantityCount = 8;
 /// In the order of PJointPlots::PlotIndex: d, φ, μ, J, J⁻¹, Δθ, θ̇, T.
 extern const std::array<Quantity, quantityCount> quantities;
 
+/// Fig. 10: below this μ the actuator pushes almost along the crank, so J = a·sin μ (and with it
+/// the output torque per newton) is nearly zero. Not the four-bar's usual 40°: with this μ (at
+/// A, between diagonal and crank) μ ≤ arcsin k, ≤ 30° for every preferred k ≤ 0.5. The document
+/// accepts θ within −75…75°, where μ ≥ 3.4° (k = 0.3) … 5.0° (k = 0.5).
+inline constexpr double weakTransmission = 5.0; ///< °
+
 /// Fig. 8's family; figs. 9–10 use its first three (k ≤ 0.5, the preferred designs).
 inline constexpr std::array<double, 5> familyK {0.3, 0.4, 0.5, 1.0, 1.5};
 
