@@ -56,6 +56,18 @@ struct ChangeRules {
     bool blameSingle = true;
 };
 
+/// The rule of a mode that is a sign, exactly −1 or +1 (MOMA's β₁, β₂ and σ, a leg's working
+/// mode): any other number is refused with the parameter's name.
+inline Result<double> signRule(const ParameterInfo &info, double value)
+{
+    if (value != 1.0 && value != -1.0) {
+        return Failure{FailureKind::InvalidParameter, info.name,
+                       text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
+                                    {info.name, text::number(value)})};
+    }
+    return value;
+}
+
 template <class Design>
 struct ParameterRow {
     ParameterInfo info;

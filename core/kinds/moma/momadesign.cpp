@@ -19,17 +19,6 @@ using moma::legName;
 // -- design --------------------------------------------------------------------------------
 
 namespace {
-/// β_i and σ are signs: exactly −1 or +1.
-Result<double> signRule(const ParameterInfo &info, double value)
-{
-    if (value != 1.0 && value != -1.0) {
-        return Failure{FailureKind::InvalidParameter, info.name,
-                       text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
-                                    {info.name, text::number(value)})};
-    }
-    return value;
-}
-
 /// The one-side constraint is a switch: exactly 0 or 1.
 Result<double> switchRule(const ParameterInfo &, double value)
 {

@@ -25,17 +25,6 @@ Result<double> integerRule(const ParameterInfo &info, double value)
     return value;
 }
 
-/// Working modes are signs: exactly −1 or +1.
-Result<double> signRule(const ParameterInfo &info, double value)
-{
-    if (value != 1.0 && value != -1.0) {
-        return Failure{FailureKind::InvalidParameter, info.name,
-                       text::format(text::translate("core", "%1 = %2 is invalid: it must be -1 or +1."),
-                                    {info.name, text::number(value)})};
-    }
-    return value;
-}
-
 /// The assembly mode: ±1 (2 DOF) or 1…6 (3 DOF), checked against the platform by create().
 Result<double> assemblyRule(const ParameterInfo &info, double value)
 {
