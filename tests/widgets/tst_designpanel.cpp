@@ -34,6 +34,17 @@ private:
         return {beside, under};
     }
 
+    /// A Design panel of `kind` in `area`, as the Design dock holds it: never scrolled sideways.
+    static DesignPanel *panelIn(QScrollArea &area, const QByteArray &kind)
+    {
+        auto *panel = new DesignPanel;
+        area.setWidget(panel);
+        area.setWidgetResizable(true);
+        area.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        panel->setMechanism(makeKind(kind.constData()));
+        return panel;
+    }
+
 private slots:
     void fieldsGoUnderTheirLabelsWhenNarrow_data()
     {
@@ -45,11 +56,7 @@ private slots:
     {
         QFETCH(QByteArray, kind);
         QScrollArea area;
-        auto *panel = new DesignPanel;
-        area.setWidget(panel);
-        area.setWidgetResizable(true);
-        area.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-        panel->setMechanism(makeKind(kind.constData()));
+        DesignPanel *panel = panelIn(area, kind);
         panel->setNote(QStringLiteral("A design's title (a = 170 mm, k = 0.4)"), QStringLiteral("Its note. More."));
         area.resize(420, 600);
         area.show();
@@ -90,11 +97,7 @@ private slots:
             QCoreApplication::installTranslator(&catalogue);
         }
         QScrollArea area;
-        auto *panel = new DesignPanel;
-        area.setWidget(panel);
-        area.setWidgetResizable(true);
-        area.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-        panel->setMechanism(makeKind(kind.constData()));
+        DesignPanel *panel = panelIn(area, kind);
         area.resize(420, 600);
         area.show();
         QVERIFY(QTest::qWaitForWindowExposed(&area));
