@@ -76,9 +76,9 @@ void GridReflow::refit()
 
 void GridReflow::follow()
 {
-    // Out of sight (another kind's page of the window) two to a line: a page unseen still
-    // counts in its stack's least height, and one to a line there made the window 34 px
-    // taller than a 1280×720 screen before anything was laid out.
+    // Out of sight, two to a line: a page unseen counts in a QStackedWidget's least height,
+    // and the four-bar's lengths one to a line there made the window 34 px taller than a
+    // 1280×720 screen before anything was laid out (the window's own stack is a PageStack now).
     place(!m_box->isVisible() || m_box->width() >= m_twoWide ? 2 : 1);
 }
 
